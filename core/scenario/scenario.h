@@ -1,0 +1,116 @@
+#pragma once
+// The scenario document (format "thespis-scenario", version 1): characters with their skeleton
+// and clips, layers of actions (the blending schedules), named joint masks. Plain data with
+// value semantics; io is in scenario_io.h, building runnable schedules in scenario_runtime.h.
+// Times are exact integer ticks (util/tick.h). Fields this version does not know are kept in
+// `extra` and written back unchanged.
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "anim/blending_params.h"
+#include "anim/curve.h"
+#include "anim/joint_mask.h"
+#include "util/tick.h"
+
+namespace thespis::core::scenario {
+
+/// A clip a character can play: a BVH file beside the scenario, or keyframes stored inline.
+struct ClipAsset {
+    std::string name;
+    std::string file;                 ///< path relative to the scenario file; empty for inline clips
+    double frameRateOverride = 0;     ///< > 0: replaces the BVH header's frame rate
+    // Inline keyframes (file empty), per frame in this order: rotations for `joints` (x y z w
+    // each), when `rootTranslation` is set the translation of joints[0] (x y z), then one value
+    // per name in `scalars` (e.g. MPEG-4 FAPs "fap3", for face layers).
+    double frameRate = 30;
+    std::vector<std::string> joints;
+    bool rootTranslation = false;
+    std::vector<std::string> scalars;
+    std::vector<float> frames;
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const ClipAsset&) const = default;
+};
+
+enum class ModifierKind { TimeStretch, TimeWarp, Loop, Mirror, GlobalTransform, TimeOffset, Trim };
+
+/// One modifier in an action's chain (applied in order, first wraps the clip).
+struct ModifierSpec {
+    ModifierKind kind = ModifierKind::Loop;
+    double factor = 1;        ///< TimeStretch
+    anim::Curve warp;         ///< TimeWarp: local time → source time
+    double duration = 0;      ///< TimeWarp
+    int count = 0;            ///< Loop: 0 = forever
+    int axis = 0;             ///< Mirror
+    anim::Quat rotation;      ///< GlobalTransform
+    anim::Vec3 translation;   ///< GlobalTransform
+    double offset = 0;        ///< TimeOffset (seconds)
+    double start = 0, end = 0;///< Trim (source seconds)
+    nlohmann::json extra = nlohmann::json::object();
+    nlohmann::json warpExtra = nlohmann::json::object(); ///< unknown fields of the warp curve
+    bool operator==(const ModifierSpec&) const = default;
+};
+
+struct ActionSpec {
+    std::string name;
+    std::string clip;                     ///< name of a ClipAsset of the character
+    Tick start = 0;
+    std::vector<ModifierSpec> modifiers;
+    anim::Curve weight;
+    anim::Curve scale;
+    std::string mask;                     ///< name of a scenario mask; empty = whole body
+    anim::BlendMode mode = anim::BlendMode::Normalized;
+    bool renderOutsideDomain = false;
+    nlohmann::json extra = nlohmann::json::object();
+    /// Unknown fields of the weight / scale curve objects (and, under "keys", of their keys).
+    nlohmann::json weightExtra = nlohmann::json::object();
+    nlohmann::json scaleExtra = nlohmann::json::object();
+    bool operator==(const ActionSpec&) const = default;
+};
+
+enum class LayerKind { Body, Face };
+
+/// A track of actions blended into one schedule; a character's layers of one kind are
+/// combined in order, the first as the base and each next one with its own mode.
+struct Layer {
+    std::string name;
+    LayerKind kind = LayerKind::Body;
+    anim::BlendMode mode = anim::BlendMode::Normalized;
+    std::vector<ActionSpec> actions;
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const Layer&) const = default;
+};
+
+struct Character {
+    std::string name;
+    /// "hanim-loa1", "hanim-loa2", "hanim-25", or "clip:NAME" to use a BVH clip's own skeleton.
+    std::string skeleton = "hanim-loa1";
+    std::vector<ClipAsset> clips;
+    std::vector<Layer> layers;
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const Character&) const = default;
+};
+
+struct NamedMask {
+    std::string name;
+    anim::JointMask mask;
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const NamedMask&) const = default;
+};
+
+struct Scenario {
+    std::string name;
+    Tick duration = 0; ///< length of the scenario's timeline (0: up to the last action's end)
+    std::vector<Character> characters;
+    std::vector<NamedMask> masks;
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const Scenario&) const = default;
+
+    const Character* findCharacter(const std::string& name) const;
+    const NamedMask* findMask(const std::string& name) const;
+};
+
+} // namespace thespis::core::scenario

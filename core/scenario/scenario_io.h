@@ -1,0 +1,35 @@
+#pragma once
+// Reading and writing scenario files (.thespis): JSON with
+//   {"format": "thespis-scenario", "version": N, "schema": "Scenario.1", …}
+// Readers accept every older version (upgrade steps run in order before parsing) and refuse
+// newer ones with ErrorCode::NewerVersion, never loading part of a file. Any malformed input
+// gets CorruptData naming the field path ("characters[0].layers[1].actions[2].start: expected an
+// integer number of ticks") — never a crash. Writers always write the current version, and
+// keep unknown fields.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "scenario/scenario.h"
+#include "util/error.h"
+
+namespace thespis::core::scenario {
+
+inline constexpr std::string_view FormatName = "thespis-scenario";
+inline constexpr std::string_view FileExtension = ".thespis";
+
+namespace format {
+enum Version : int {
+    Initial = 1,
+    Current = Initial,
+};
+} // namespace format
+
+Result<Scenario> parseScenario(std::string_view json);
+Result<Scenario> loadScenario(const std::filesystem::path& path);
+std::string serializeScenario(const Scenario& scenario);
+/// Atomic: a crash or full disk never leaves a half-written file.
+Result<void> saveScenario(const std::filesystem::path& path, const Scenario& scenario);
+
+} // namespace thespis::core::scenario
