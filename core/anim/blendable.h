@@ -45,6 +45,13 @@ public:
     /// Changes whenever an edit changes what evaluate() returns (including edits of nested
     /// blendables); caches compare it. Immutable blendables return 0.
     virtual std::uint64_t revision() const { return 0; }
+    /// True when `other` is played somewhere inside this blendable (not counting itself), so
+    /// schedules can refuse cycles, which would recurse forever.
+    virtual bool plays(const BlendableObject& other) const
+    {
+        (void)other;
+        return false;
+    }
 };
 
 using BlendablePtr = std::shared_ptr<const BlendableObject>;

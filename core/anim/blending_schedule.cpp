@@ -57,7 +57,7 @@ Result<void> BlendingSchedule::prepare(Entry& entry) const
     const std::string label = "Action '" + action.name + "'";
     if (!action.source)
         return makeError(ErrorCode::InvalidSchedule, label + " has nothing to play.");
-    if (action.source.get() == this)
+    if (action.source.get() == this || action.source->plays(*this))
         return makeError(ErrorCode::InvalidSchedule, label + " would play the schedule inside itself.");
     if (action.source->layout() != m_layout && !(*action.source->layout() == *m_layout))
         return makeError(ErrorCode::InvalidSchedule,
@@ -182,7 +182,7 @@ Result<void> BlendingSchedule::setActionSource(ActionId id, BlendablePtr source)
 int BlendingSchedule::removeFinishedActions(double t)
 {
     const auto before = m_actions.size();
-    std::erase_if(m_actions, [&](const Entry& e) { return !active(e, t) && t >= e.action.start; });
+    std::erase_if(m_actions, [&](const Entry& e) { return t >= endTime(e.id); });
     const int removed = int(before - m_actions.size());
     if (removed > 0)
         sortAndResize();
@@ -220,8 +220,7 @@ bool BlendingSchedule::active(const Entry& entry, double t) const
 
 bool BlendingSchedule::isFinished(ActionId id, double t) const
 {
-    const Entry* entry = find(id);
-    return !entry || (t >= entry->action.start && !active(*entry, t));
+    return !find(id) || t >= endTime(id);
 }
 
 double BlendingSchedule::endTime(ActionId id) const
@@ -269,6 +268,14 @@ TimeDomain BlendingSchedule::domain() const
     for (const Entry& e : m_actions)
         end = std::max(end, endTime(e.id));
     return {0.0, end};
+}
+
+bool BlendingSchedule::plays(const BlendableObject& other) const
+{
+    for (const Entry& e : m_actions)
+        if (e.action.source.get() == &other || e.action.source->plays(other))
+            return true;
+    return false;
 }
 
 std::uint64_t BlendingSchedule::revision() const

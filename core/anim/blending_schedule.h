@@ -51,7 +51,8 @@ public:
     /// A body schedule for a skeleton: its layout, rest pose and hierarchy.
     explicit BlendingSchedule(const Skeleton& skeleton);
 
-    /// Adds an action. Errors: no source, a source on another layout, invalid curves or mask.
+    /// Adds an action. Errors: no source, a source on another layout, a source that plays this
+    /// schedule (a cycle), invalid curves or mask.
     Result<ActionId> addAction(BlendingAction action);
     /// Removes an action at once. False when there is no such action.
     bool removeAction(ActionId id);
@@ -62,12 +63,13 @@ public:
     Result<void> setActionStart(ActionId id, double start);
     Result<void> setActionParams(ActionId id, BlendingParams params);
     Result<void> setActionSource(ActionId id, BlendablePtr source);
-    /// Removes every action that is finished at time t; returns how many.
+    /// Removes every action that isFinished() at time t; returns how many.
     int removeFinishedActions(double t);
     void clear();
 
-    /// True when the action no longer contributes at time t (past its end and not rendering
-    /// outside its domain, or its cut-off fade has ended), or when it does not exist.
+    /// True when t ≥ endTime(id): the action has ended naturally (not rendering outside its
+    /// domain) or its cut-off fade is over; also when it does not exist. Evaluation at exactly
+    /// the end still plays a natural end's last frame (its weight curve has usually reached 0).
     bool isFinished(ActionId id, double t) const;
     /// Time at which the action ends (∞ when open-ended), or NaN when it does not exist.
     double endTime(ActionId id) const;
@@ -89,6 +91,7 @@ public:
     bool hasCoverage() const override { return true; }
     void evaluateWithCoverage(double t, std::span<float> out, std::span<float> coverage) const override;
     std::uint64_t revision() const override;
+    bool plays(const BlendableObject& other) const override;
 
 private:
     struct Entry {

@@ -40,6 +40,7 @@ struct ImportReport {
     int channelCount = 0;              ///< channels per frame
     int frameCount = 0;                ///< "Frames:" of the header
     double frameTime = 0;              ///< "Frame Time:" of the header, seconds
+    int extraFrameLines = 0;           ///< frame lines past "Frames:", well-formed but skipped
     std::vector<std::string> unmapped; ///< file joint names that kept their own name
 };
 

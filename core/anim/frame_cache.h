@@ -20,6 +20,10 @@ public:
     TimeDomain domain() const override { return m_source->domain(); }
     void evaluate(double t, std::span<float> out) const override;
     std::uint64_t revision() const override { return m_source->revision(); }
+    bool plays(const BlendableObject& other) const override
+    {
+        return m_source.get() == &other || m_source->plays(other);
+    }
 
     int capacity() const { return m_capacity; }
     std::uint64_t hits() const { return m_hits; }

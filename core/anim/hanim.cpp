@@ -204,8 +204,8 @@ std::string mirrorName(std::string_view name)
         }
         return false;
     };
-    // Left/Right words (CMU, Mixamo-like), L/R prefixes (DAZ lCollar, CMU LHipJoint), .L/.R
-    // suffixes (MakeHuman, Blender).
+    // Left/Right words (CMU, Mixamo-like), L/R prefixes (DAZ lCollar, CMU LHipJoint), .L/.R and
+    // _L/_R suffixes (MakeHuman, Blender).
     if (swapWord("Left", "Right") || swapWord("Right", "Left") || swapWord("left", "right")
         || swapWord("right", "left"))
         return s;
@@ -214,7 +214,7 @@ std::string mirrorName(std::string_view name)
         s[0] = s[0] == 'l' ? 'r' : s[0] == 'r' ? 'l' : s[0] == 'L' ? 'R' : 'L';
         return s;
     }
-    if (s.size() > 2 && s[s.size() - 2] == '.') {
+    if (s.size() > 2 && (s[s.size() - 2] == '.' || s[s.size() - 2] == '_')) {
         char& side = s.back();
         if (side == 'L' || side == 'R' || side == 'l' || side == 'r')
             side = side == 'L' ? 'R' : side == 'R' ? 'L' : side == 'l' ? 'r' : 'l';

@@ -33,7 +33,7 @@ std::string_view fromHAnim11(std::string_view name);
 
 /// The name of the joint on the other side ("l_elbow" ↔ "r_elbow"), or the name itself for a
 /// joint on the mid-line. Also understands common Left/Right spellings (LeftArm, lCollar,
-/// upperarm.L) for joints that were not mapped to H-Anim.
+/// upperarm.L, Eye_L) for joints that were not mapped to H-Anim.
 std::string mirrorName(std::string_view name);
 
 /// LOA 2 parent of an H-Anim joint name ("" for humanoid_root or an unknown name).

@@ -18,6 +18,10 @@ public:
     const BlendablePtr& source() const { return m_source; }
     const FrameLayoutPtr& layout() const override { return m_source->layout(); }
     std::uint64_t revision() const override { return m_source->revision(); }
+    bool plays(const BlendableObject& other) const override
+    {
+        return m_source.get() == &other || m_source->plays(other);
+    }
 
 protected:
     BlendablePtr m_source;

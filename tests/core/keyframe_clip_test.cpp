@@ -95,6 +95,8 @@ TEST(HAnim, NamesMirrorAndTranslateFromVersion11)
     EXPECT_EQ(hanim::mirrorName("LeftForeArm"), "RightForeArm");
     EXPECT_EQ(hanim::mirrorName("lCollar"), "rCollar");
     EXPECT_EQ(hanim::mirrorName("upperarm01.L"), "upperarm01.R");
+    EXPECT_EQ(hanim::mirrorName("__Clavicle_L"), "__Clavicle_R");
+    EXPECT_EQ(hanim::mirrorName("Eye_r"), "Eye_l");
     EXPECT_EQ(hanim::mirrorName("Head"), "Head");
     EXPECT_EQ(hanim::fromHAnim11("HumanoidRoot"), "humanoid_root");
     EXPECT_EQ(hanim::fromHAnim11("l_wrist"), "l_radiocarpal");

@@ -4,6 +4,7 @@
 
 #include "anim/blending_schedule.h"
 #include "anim/hanim.h"
+#include "anim/modifiers.h"
 #include "allocation_counter.h"
 #include "anim_test_support.h"
 
@@ -225,6 +226,39 @@ TEST(BlendingSchedule, RefusesActionsItCannotPlay)
     auto refused = schedule.addAction(badMask);
     ASSERT_FALSE(refused);
     EXPECT_NE(refused.error().message.find("joint1"), std::string::npos);
+}
+
+TEST(BlendingSchedule, RefusesCyclesThroughNestingAndModifiers)
+{
+    const auto layout = makeLayout(2);
+    auto a = std::make_shared<BlendingSchedule>(layout);
+    auto b = std::make_shared<BlendingSchedule>(layout);
+    EXPECT_FALSE(a->addAction(action(a)));
+    ASSERT_TRUE(a->addAction(action(b)));
+    auto cycle = b->addAction(action(a));
+    ASSERT_FALSE(cycle);
+    EXPECT_NE(cycle.error().message.find("inside itself"), std::string::npos);
+    // Also through a modifier, and through setActionSource.
+    auto looped = Loop::create(a, 2);
+    ASSERT_TRUE(looped);
+    EXPECT_FALSE(b->addAction(action(*looped)));
+    const ActionId id = *b->addAction(action(makeTurningClip(layout, 1, 30, 1)));
+    EXPECT_FALSE(b->setActionSource(id, a));
+}
+
+TEST(BlendingSchedule, FinishedAtTheEndTimeForNaturalEndsAndCutOffsAlike)
+{
+    const auto layout = makeLayout(2);
+    BlendingSchedule schedule(layout);
+    const ActionId natural = *schedule.addAction(action(makeTurningClip(layout, 1.0, 30, 1), 0.5));
+    const ActionId cut = *schedule.addAction(action(makeTurningClip(layout, 5.0, 30, 1), 0.0));
+    schedule.cutOffAction(cut, 1.0, 0.5);
+    EXPECT_DOUBLE_EQ(schedule.endTime(natural), 1.5);
+    EXPECT_DOUBLE_EQ(schedule.endTime(cut), 1.5);
+    EXPECT_FALSE(schedule.isFinished(natural, 1.4999));
+    EXPECT_FALSE(schedule.isFinished(cut, 1.4999));
+    EXPECT_TRUE(schedule.isFinished(natural, 1.5));
+    EXPECT_TRUE(schedule.isFinished(cut, 1.5));
 }
 
 TEST(BlendingSchedule, NestedScheduleEqualsFlattened)

@@ -1,0 +1,52 @@
+#pragma once
+// Private to the BVH reader: the built-in joint naming conventions of motion capture files and
+// their tables onto H-Anim 2.0 joint names. Each table lists every joint name the convention
+// uses; names with no sensible H-Anim counterpart (pelvis side bones, twist helpers, end bones)
+// are listed with an empty H-Anim name, so that they count when the convention is detected but
+// keep their own name on import.
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "anim/bvh.h"
+
+namespace thespis::core::anim::bvh::naming {
+
+struct NameEntry {
+    std::string_view file;  ///< joint name as the convention writes it
+    std::string_view hanim; ///< H-Anim 2.0 name, or empty when there is none
+};
+
+struct Convention {
+    std::string_view id; ///< reported as ImportReport::convention
+    std::span<const NameEntry> entries;
+};
+
+/// Every built-in convention, in the order ties are broken.
+std::span<const Convention> conventions();
+
+/// The name without a "namespace:" prefix ("mixamorig:Hips" → "Hips").
+std::string_view stripNamespace(std::string_view name);
+
+struct Detection {
+    std::string convention; ///< "none" when no convention knows enough of the names
+    int known = 0;          ///< how many of the names the convention knows
+    JointMapping mapping;   ///< file name → H-Anim name for the names it maps
+};
+
+/// Picks the convention that knows the most of `names` (namespace prefixes ignored), or the
+/// "hanim" convention for files already written with H-Anim 1.1 / 2.0 names. A convention is
+/// only taken when it knows at least 4 names and a quarter of the file's joints.
+Detection detect(std::span<const std::string> names);
+
+/// True for joints of a face rig (eyes, jaw, tongue, lips, brows and the MakeHuman face muscle
+/// bones): a clip that moves only such joints is a face clip, not a body motion.
+bool isFacialName(std::string_view name);
+
+/// H-Anim joints a mapping must reach for the file to count as a body: the root plus the main
+/// joints of the legs and arms (14 in all).
+std::span<const std::string_view> essentialJoints();
+
+} // namespace thespis::core::anim::bvh::naming
