@@ -1,0 +1,492 @@
+#include "scenario/scenario_runtime.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+#include <set>
+#include <utility>
+
+#include "anim/bvh.h"
+#include "anim/hanim.h"
+#include "anim/modifiers.h"
+
+namespace thespis::core::scenario {
+
+const CharacterRuntime* ScenarioRuntime::findCharacter(const std::string& characterName) const
+{
+    for (const CharacterRuntime& character : characters)
+        if (character.name == characterName)
+            return &character;
+    return nullptr;
+}
+
+namespace {
+
+using anim::BlendingSchedule;
+using anim::KeyframeClip;
+
+std::string quote(const std::string& text)
+{
+    return "\"" + text + "\"";
+}
+
+std::string joinNames(const std::vector<std::string>& names, std::size_t limit = 12)
+{
+    std::string text;
+    for (std::size_t i = 0; i < names.size() && i < limit; ++i)
+        text += (i ? ", " : "") + names[i];
+    if (names.size() > limit)
+        text += " and " + std::to_string(names.size() - limit) + " more";
+    return text;
+}
+
+// A clip as read from its source, before it is put on a character's layout.
+struct SourceClip {
+    std::shared_ptr<KeyframeClip> clip;
+    std::optional<anim::Skeleton> skeleton; // BVH clips bring their own
+};
+
+// Builds the runtime of a scenario and collects every problem it meets (buildRuntime fails with
+// the first, validateScenario lists them all). A part that fails (a clip, an action, a
+// character's skeleton) is left out, so that one mistake is reported once and not again by
+// everything that depends on it. Problems name the character, layer, action and field.
+class RuntimeBuilder {
+public:
+    RuntimeBuilder(const Scenario& scenario, std::filesystem::path baseDir)
+        : m_scenario(scenario), m_baseDir(std::move(baseDir))
+    {
+    }
+
+    ScenarioRuntime build()
+    {
+        ScenarioRuntime runtime;
+        if (m_scenario.duration < 0)
+            problem(ErrorCode::InvalidSchedule, "The scenario's duration must not be negative.");
+        buildMasks();
+        std::set<std::string> names;
+        for (std::size_t i = 0; i < m_scenario.characters.size(); ++i) {
+            const Character& character = m_scenario.characters[i];
+            if (character.name.empty())
+                problem(ErrorCode::InvalidSchedule, "Character " + std::to_string(i + 1) + " has no name.");
+            else if (!names.insert(character.name).second)
+                problem(ErrorCode::InvalidSchedule, "Two characters are named " + quote(character.name) + ".");
+            if (auto built = buildCharacter(character))
+                runtime.characters.push_back(std::move(*built));
+        }
+        runtime.duration = ticksToSeconds(m_scenario.duration);
+        if (m_scenario.duration == 0) {
+            for (const CharacterRuntime& character : runtime.characters)
+                for (const auto& layer : character.layers)
+                    for (const anim::ActionId id : layer->actionIds())
+                        if (const double end = layer->endTime(id); std::isfinite(end))
+                            runtime.duration = std::max(runtime.duration, end);
+        }
+        return runtime;
+    }
+
+    std::vector<Error> errors;
+
+private:
+    void problem(ErrorCode code, std::string message, std::string detail = {})
+    {
+        errors.push_back(makeError(code, std::move(message), std::move(detail)));
+    }
+
+    void buildMasks()
+    {
+        std::set<std::string> names;
+        for (std::size_t i = 0; i < m_scenario.masks.size(); ++i) {
+            const NamedMask& mask = m_scenario.masks[i];
+            if (mask.name.empty()) {
+                problem(ErrorCode::InvalidSchedule, "Mask " + std::to_string(i + 1) + " has no name.");
+                continue;
+            }
+            if (!names.insert(mask.name).second) {
+                problem(ErrorCode::InvalidSchedule, "Two masks are named " + quote(mask.name) + ".");
+                continue;
+            }
+            if (auto ok = mask.mask.validate(); !ok) {
+                problem(ErrorCode::InvalidSchedule, "Mask " + quote(mask.name) + ": " + ok.error().message);
+                continue;
+            }
+            m_masks[mask.name] = std::make_shared<const anim::JointMask>(mask.mask);
+        }
+    }
+
+    // Reads a clip from its BVH file or its inline keyframes (not yet on the character's layout).
+    std::optional<SourceClip> loadClip(const ClipAsset& asset, const std::string& where,
+                                       std::vector<std::string>& warnings)
+    {
+        SourceClip source;
+        if (!asset.file.empty()) {
+            if (!asset.frames.empty() || !asset.joints.empty() || !asset.scalars.empty()) {
+                problem(ErrorCode::InvalidSchedule, where + ": a clip read from a file cannot also hold inline keyframes.");
+                return std::nullopt;
+            }
+            if (asset.frameRateOverride < 0 || !std::isfinite(asset.frameRateOverride)) {
+                problem(ErrorCode::InvalidSchedule, where + ": the frame rate override must be a positive number.");
+                return std::nullopt;
+            }
+            anim::bvh::ImportOptions options;
+            if (asset.frameRateOverride > 0)
+                options.frameRate = asset.frameRateOverride;
+            const std::filesystem::path path = m_baseDir / asset.file;
+            auto imported = anim::bvh::load(path, options);
+            if (!imported) {
+                const Error& e = imported.error();
+                problem(e.code, where + ", file " + quote(asset.file) + ": " + e.message,
+                        "looked for " + path.string() + (e.detail.empty() ? "" : "; " + e.detail));
+                return std::nullopt;
+            }
+            if (!imported->report.unmapped.empty())
+                warnings.push_back(where + ": " + std::to_string(imported->report.unmapped.size())
+                                   + " BVH joints kept their own names (not H-Anim): "
+                                   + joinNames(imported->report.unmapped) + ".");
+            source.clip = imported->clip;
+            source.skeleton = std::move(imported->skeleton);
+            return source;
+        }
+        if (asset.joints.empty() && asset.scalars.empty()) {
+            problem(ErrorCode::InvalidSchedule, where + ": the clip has neither a file nor inline keyframes.");
+            return std::nullopt;
+        }
+        std::set<std::string> seen;
+        for (const std::string& name : asset.joints)
+            if (name.empty() || !seen.insert(name).second) {
+                problem(ErrorCode::InvalidSchedule, where + ": joint names must be non-empty and unique ("
+                                                        + quote(name) + ").");
+                return std::nullopt;
+            }
+        seen.clear();
+        for (const std::string& name : asset.scalars)
+            if (name.empty() || !seen.insert(name).second) {
+                problem(ErrorCode::InvalidSchedule, where + ": scalar names must be non-empty and unique ("
+                                                        + quote(name) + ").");
+                return std::nullopt;
+            }
+        if (asset.rootTranslation && asset.joints.empty()) {
+            problem(ErrorCode::InvalidSchedule, where + ": a root translation needs a root joint.");
+            return std::nullopt;
+        }
+        std::vector<std::string> translations;
+        if (asset.rootTranslation)
+            translations.push_back(asset.joints.front());
+        auto layout = anim::FrameLayout::create(asset.joints, std::move(translations), asset.scalars);
+        auto clip = KeyframeClip::create(std::move(layout), asset.frameRate, asset.frames, asset.name);
+        if (!clip) {
+            problem(ErrorCode::InvalidSchedule, where + ": " + clip.error().message, clip.error().detail);
+            return std::nullopt;
+        }
+        source.clip = std::move(clip).value();
+        return source;
+    }
+
+    std::optional<anim::Skeleton> resolveSkeleton(const Character& character, const std::string& who,
+                                                  std::map<std::string, SourceClip>& sources)
+    {
+        const std::string& spec = character.skeleton;
+        if (spec == "hanim-loa1")
+            return anim::hanim::skeleton(anim::hanim::Level::Loa1);
+        if (spec == "hanim-loa2")
+            return anim::hanim::skeleton(anim::hanim::Level::Loa2);
+        if (spec == "hanim-25")
+            return anim::hanim::skeleton(anim::hanim::Level::Subset25);
+        if (spec.starts_with("clip:") && spec.size() > 5) {
+            const std::string clipName = spec.substr(5);
+            const auto it = sources.find(clipName);
+            if (it == sources.end()) {
+                const bool exists = std::any_of(character.clips.begin(), character.clips.end(),
+                                                [&](const ClipAsset& c) { return c.name == clipName; });
+                if (!exists)
+                    problem(ErrorCode::InvalidSchedule,
+                            who + ", skeleton " + quote(spec) + ": the character has no clip named " + quote(clipName) + ".");
+                return std::nullopt; // a clip that failed to load was reported already
+            }
+            if (!it->second.skeleton) {
+                problem(ErrorCode::InvalidSchedule, who + ", skeleton " + quote(spec)
+                                                        + ": the clip is stored inline; only a BVH clip carries a skeleton.");
+                return std::nullopt;
+            }
+            return *it->second.skeleton;
+        }
+        problem(ErrorCode::InvalidSchedule, who + ": unknown skeleton " + quote(spec)
+                                                + " (expected hanim-loa1, hanim-loa2, hanim-25 or clip:NAME).");
+        return std::nullopt;
+    }
+
+    // The clip on `layout`; caches per layout kind. Null (and a problem) when the clip shares no
+    // element with the layout.
+    std::shared_ptr<KeyframeClip> onLayout(const SourceClip& source, const anim::FrameLayoutPtr& layout,
+                                           std::span<const float> rest, const std::string& where,
+                                           std::vector<std::string>* dropped)
+    {
+        if (source.clip->layout() == layout || *source.clip->layout() == *layout)
+            return source.clip;
+        std::vector<std::string> lost;
+        auto remapped = anim::remapClip(*source.clip, layout, rest, &lost);
+        if (!remapped) {
+            problem(ErrorCode::InvalidSchedule, where + ": " + remapped.error().message);
+            return nullptr;
+        }
+        if (int(lost.size()) >= source.clip->layout()->elementCount())
+            return nullptr;
+        if (dropped) {
+            std::sort(lost.begin(), lost.end());
+            lost.erase(std::unique(lost.begin(), lost.end()), lost.end());
+            *dropped = std::move(lost);
+        }
+        return std::move(remapped).value();
+    }
+
+    Result<anim::BlendablePtr> applyModifier(anim::BlendablePtr source, const ModifierSpec& m)
+    {
+        auto wrap = [](auto made) -> Result<anim::BlendablePtr> {
+            if (!made)
+                return made.error();
+            return anim::BlendablePtr(std::move(made).value());
+        };
+        switch (m.kind) {
+        case ModifierKind::TimeStretch: return wrap(anim::TimeStretch::create(std::move(source), m.factor));
+        case ModifierKind::TimeWarp: return wrap(anim::TimeWarp::create(std::move(source), m.warp, m.duration));
+        case ModifierKind::Loop: return wrap(anim::Loop::create(std::move(source), m.count));
+        case ModifierKind::Mirror: return wrap(anim::Mirror::create(std::move(source), m.axis));
+        case ModifierKind::GlobalTransform: {
+            const anim::Quat q = m.rotation;
+            const float length = std::sqrt(anim::dot(q, q));
+            if (!std::isfinite(length) || std::abs(length - 1.0f) > 1e-3f)
+                return makeError(ErrorCode::InvalidArgument, "The rotation must be a unit quaternion.");
+            return wrap(anim::GlobalTransform::create(std::move(source), anim::normalize(q), m.translation));
+        }
+        case ModifierKind::TimeOffset:
+            if (!std::isfinite(m.offset))
+                return makeError(ErrorCode::InvalidArgument, "A time offset must be a finite number.");
+            return anim::BlendablePtr(std::make_shared<anim::TimeOffset>(std::move(source), m.offset));
+        case ModifierKind::Trim: return wrap(anim::Trim::create(std::move(source), m.start, m.end));
+        }
+        return makeError(ErrorCode::Internal, "Unknown modifier kind.");
+    }
+
+    static bool weightIsNonNegative(const anim::Curve& curve)
+    {
+        if (curve.kind() == anim::CurveKind::Keyframed)
+            return std::all_of(curve.keys().begin(), curve.keys().end(),
+                               [](const anim::CurveKey& k) { return k.value >= 0; });
+        return curve.envelope().peak >= 0;
+    }
+
+    struct Context {
+        const Character& character;
+        const std::map<std::string, SourceClip>& sources;
+        std::map<std::string, std::shared_ptr<KeyframeClip>> faceClips;
+    };
+
+    std::optional<anim::BlendingAction> buildAction(const ActionSpec& spec, const Layer& layer, Context& ctx,
+                                                    const std::string& where, CharacterRuntime& runtime)
+    {
+        const std::size_t before = errors.size();
+        anim::BlendingAction action;
+        action.name = spec.name;
+        action.start = ticksToSeconds(spec.start);
+        action.renderOutsideDomain = spec.renderOutsideDomain;
+        if (spec.start < 0)
+            problem(ErrorCode::InvalidSchedule, where + ", start: must not be negative.");
+
+        // Source: the clip on the layer's layout.
+        anim::BlendablePtr source;
+        const auto clip = ctx.sources.find(spec.clip);
+        const bool declared = std::any_of(ctx.character.clips.begin(), ctx.character.clips.end(),
+                                          [&](const ClipAsset& c) { return c.name == spec.clip; });
+        if (!declared) {
+            std::vector<std::string> names;
+            for (const ClipAsset& c : ctx.character.clips)
+                names.push_back(c.name);
+            problem(ErrorCode::InvalidSchedule, where + ", clip: the character has no clip named " + quote(spec.clip)
+                                                    + (names.empty() ? "." : " (its clips: " + joinNames(names) + ")."));
+        } else if (clip != ctx.sources.end()) { // else it failed to load, reported already
+            if (layer.kind == LayerKind::Body) {
+                const auto it = runtime.clips.find(spec.clip);
+                if (it != runtime.clips.end())
+                    source = it->second;
+                else
+                    problem(ErrorCode::InvalidSchedule, where + ", clip " + quote(spec.clip)
+                                                            + ": it moves no joint of the character's skeleton.");
+            } else {
+                auto& face = ctx.faceClips[spec.clip];
+                if (!face) {
+                    const auto layout = anim::FrameLayout::mpeg4Face();
+                    face = onLayout(clip->second, layout, anim::neutralFrame(*layout), where, nullptr);
+                }
+                if (face)
+                    source = face;
+                else
+                    problem(ErrorCode::InvalidSchedule, where + ", clip " + quote(spec.clip)
+                                                            + ": a face layer needs MPEG-4 FAP values (fap1 … fap68), and the clip has none.");
+            }
+        }
+
+        // Modifiers, in order: the first wraps the clip.
+        for (std::size_t m = 0; source && m < spec.modifiers.size(); ++m) {
+            auto wrapped = applyModifier(source, spec.modifiers[m]);
+            if (!wrapped) {
+                problem(ErrorCode::InvalidSchedule,
+                        where + ", modifiers[" + std::to_string(m) + "]: " + wrapped.error().message);
+                source = nullptr;
+            } else {
+                source = std::move(wrapped).value();
+            }
+        }
+        action.source = source;
+
+        // Blending parameters.
+        if (auto ok = spec.weight.validate(); !ok)
+            problem(ErrorCode::InvalidSchedule, where + ", weight: " + ok.error().message);
+        else if (!weightIsNonNegative(spec.weight))
+            problem(ErrorCode::InvalidSchedule, where + ", weight: a weight must not be negative.");
+        if (auto ok = spec.scale.validate(); !ok)
+            problem(ErrorCode::InvalidSchedule, where + ", scale: " + ok.error().message);
+        action.params.weight = spec.weight;
+        action.params.scale = spec.scale;
+        action.params.mode = spec.mode;
+        if (!spec.mask.empty()) {
+            const auto mask = m_masks.find(spec.mask);
+            if (mask != m_masks.end())
+                action.params.mask = mask->second;
+            else if (!m_scenario.findMask(spec.mask))
+                problem(ErrorCode::InvalidSchedule, where + ", mask: the scenario has no mask named " + quote(spec.mask) + ".");
+        }
+        if (errors.size() != before || !source)
+            return std::nullopt;
+        return action;
+    }
+
+    std::optional<CharacterRuntime> buildCharacter(const Character& character)
+    {
+        const std::string who = "Character " + quote(character.name);
+        const std::size_t before = errors.size();
+        CharacterRuntime runtime;
+        runtime.name = character.name;
+
+        // Clips as read from their sources.
+        std::map<std::string, SourceClip> sources;
+        for (std::size_t i = 0; i < character.clips.size(); ++i) {
+            const ClipAsset& asset = character.clips[i];
+            const std::string where = who + ", clip " + (asset.name.empty() ? std::to_string(i + 1) : quote(asset.name));
+            if (asset.name.empty()) {
+                problem(ErrorCode::InvalidSchedule, where + ": a clip needs a name.");
+                continue;
+            }
+            if (sources.count(asset.name)) {
+                problem(ErrorCode::InvalidSchedule, where + ": two clips have this name.");
+                continue;
+            }
+            if (auto loaded = loadClip(asset, where, runtime.warnings))
+                sources.emplace(asset.name, std::move(*loaded));
+        }
+
+        auto skeleton = resolveSkeleton(character, who, sources);
+        if (!skeleton)
+            return std::nullopt;
+        runtime.skeleton = *skeleton;
+        const std::vector<float> rest = runtime.skeleton.restFrame();
+        for (const auto& [name, source] : sources) {
+            std::vector<std::string> dropped;
+            auto onSkeleton = onLayout(source, runtime.skeleton.frameLayout(), rest, who + ", clip " + quote(name), &dropped);
+            if (!onSkeleton)
+                continue; // no body joint: fine for a face clip, an error if a body layer plays it
+            if (!dropped.empty())
+                runtime.warnings.push_back(who + ", clip " + quote(name) + ": " + std::to_string(dropped.size())
+                                           + " of its joints are not in the skeleton and are left out: "
+                                           + joinNames(dropped) + ".");
+            runtime.clips.emplace(name, std::move(onSkeleton));
+        }
+
+        Context ctx{character, sources, {}};
+        runtime.body = std::make_shared<BlendingSchedule>(runtime.skeleton);
+        runtime.face = std::make_shared<BlendingSchedule>(anim::FrameLayout::mpeg4Face());
+        bool firstBody = true, firstFace = true;
+        std::set<std::string> layerNames;
+        for (std::size_t l = 0; l < character.layers.size(); ++l) {
+            const Layer& layer = character.layers[l];
+            const std::string where = who + ", layer " + (layer.name.empty() ? std::to_string(l + 1) : quote(layer.name));
+            if (layer.name.empty())
+                problem(ErrorCode::InvalidSchedule, where + ": a layer needs a name.");
+            else if (!layerNames.insert(layer.name).second)
+                problem(ErrorCode::InvalidSchedule, where + ": two layers of the character have this name.");
+            const bool body = layer.kind == LayerKind::Body;
+            auto schedule = body ? std::make_shared<BlendingSchedule>(runtime.skeleton)
+                                 : std::make_shared<BlendingSchedule>(anim::FrameLayout::mpeg4Face());
+            std::vector<anim::ActionId> ids;
+            for (std::size_t a = 0; a < layer.actions.size(); ++a) {
+                const ActionSpec& spec = layer.actions[a];
+                const std::string at = where + ", action " + (spec.name.empty() ? std::to_string(a + 1) : quote(spec.name));
+                auto action = buildAction(spec, layer, ctx, at, runtime);
+                if (!action) {
+                    ids.push_back(0);
+                    continue;
+                }
+                auto id = schedule->addAction(std::move(*action));
+                if (!id) {
+                    problem(ErrorCode::InvalidSchedule, at + ": " + id.error().message, id.error().detail);
+                    ids.push_back(0);
+                    continue;
+                }
+                ids.push_back(*id);
+            }
+
+            // Nest the layer in the character's schedule of its kind. It starts at 0 and renders
+            // outside its domain, so it keeps playing while actions are added to it live. A nested
+            // schedule passes on its coverage, so a layer above the base changes only the joints
+            // its actions drive, and only while they play.
+            bool& first = body ? firstBody : firstFace;
+            anim::BlendingAction nested;
+            nested.name = layer.name;
+            nested.source = schedule;
+            nested.start = 0;
+            nested.renderOutsideDomain = true;
+            nested.params.mode = first ? anim::BlendMode::Normalized : layer.mode;
+            nested.params.additiveReference = anim::AdditiveReference::RestPose;
+            first = false;
+            auto& parent = body ? runtime.body : runtime.face;
+            if (auto id = parent->addAction(std::move(nested)); !id)
+                problem(ErrorCode::InvalidSchedule, where + ": " + id.error().message, id.error().detail);
+            runtime.layers.push_back(std::move(schedule));
+            runtime.actionIds.push_back(std::move(ids));
+        }
+        if (errors.size() != before)
+            return std::nullopt;
+        return runtime;
+    }
+
+    const Scenario& m_scenario;
+    std::filesystem::path m_baseDir;
+    std::map<std::string, std::shared_ptr<const anim::JointMask>> m_masks;
+};
+
+} // namespace
+
+Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const std::filesystem::path& baseDir)
+{
+    RuntimeBuilder builder(scenario, baseDir);
+    ScenarioRuntime runtime = builder.build();
+    if (builder.errors.empty())
+        return runtime;
+    Error first = builder.errors.front();
+    if (builder.errors.size() > 1) {
+        std::string others = std::to_string(builder.errors.size() - 1) + " more problem(s): ";
+        for (std::size_t i = 1; i < builder.errors.size(); ++i)
+            others += (i > 1 ? " | " : "") + builder.errors[i].message;
+        first.detail = first.detail.empty() ? others : first.detail + "; " + others;
+    }
+    return first;
+}
+
+std::vector<Error> validateScenario(const Scenario& scenario, const std::filesystem::path& baseDir)
+{
+    RuntimeBuilder builder(scenario, baseDir);
+    (void)builder.build();
+    return std::move(builder.errors);
+}
+
+} // namespace thespis::core::scenario

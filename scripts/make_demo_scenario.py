@@ -1,0 +1,315 @@
+#!/usr/bin/python3
+"""Writes resources/demo.thespis, the built-in demo scenario the studio opens.
+
+Everything in it is made here: procedural clips stored inline as keyframes on H-Anim joints
+(a breathing / weight-shifting idle loop, a right-arm wave, a head nod, eye blinks as MPEG-4
+FAPs), two characters of the paper's script (Creon and Antigone, §4.5) and their schedules.
+
+The file is written in the exact form Thespis writes scenarios (key order, indentation, one
+line per frame, numbers in their shortest form), so that loading and saving it in the studio
+changes nothing; tests/core/scenario_test.cpp checks that byte for byte.
+
+Axes as H-Anim: +Y up, the character faces +Z, +X is its left. A joint's rotation is in its
+parent's frame; identity is the H-Anim rest pose (standing, arms at the sides).
+
+Usage: /usr/bin/python3 scripts/make_demo_scenario.py [output path]
+"""
+
+import json
+import math
+import sys
+from pathlib import Path
+
+TICKS_PER_SECOND = 705_600_000
+DEG = math.pi / 180.0
+
+
+def ticks(seconds):
+    return round(seconds * TICKS_PER_SECOND)
+
+
+# --- quaternions (x, y, z, w) ----------------------------------------------------------------
+
+def axis_angle(axis, degrees):
+    half = degrees * DEG / 2.0
+    s = math.sin(half)
+    return (axis[0] * s, axis[1] * s, axis[2] * s, math.cos(half))
+
+
+def mul(a, b):
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return (aw * bx + ax * bw + ay * bz - az * by,
+            aw * by - ax * bz + ay * bw + az * bx,
+            aw * bz + ax * by - ay * bx + az * bw,
+            aw * bw - ax * bx - ay * by - az * bz)
+
+
+X, Y, Z = (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)
+
+
+def rx(d): return axis_angle(X, d)
+def ry(d): return axis_angle(Y, d)
+def rz(d): return axis_angle(Z, d)
+
+
+def number(value):
+    """Four decimals (well inside float precision), never -0."""
+    return round(value, 4) + 0.0
+
+
+def smooth(u):
+    u = min(1.0, max(0.0, u))
+    return u * u * (3.0 - 2.0 * u)
+
+
+# --- clips -----------------------------------------------------------------------------------
+
+def clip(name, rate, joints, sample, duration, root_translation=False, scalars=()):
+    """Samples `sample(t)` -> list of floats at `rate` over [0, duration] (both ends included,
+    so a loop's last frame equals its first)."""
+    count = round(duration * rate) + 1
+    frames = []
+    for k in range(count):
+        values = sample(k / rate)
+        frames.append([number(v) for v in values])
+    out = {"schema": "Clip.1", "name": name, "frameRate": float(rate), "joints": list(joints),
+           "rootTranslation": root_translation}
+    if scalars:
+        out["scalars"] = list(scalars)
+    out["frames"] = frames
+    return out
+
+
+IDLE_JOINTS = ["humanoid_root", "sacroiliac", "l_hip", "l_knee", "r_hip", "r_knee", "vl1", "vt6",
+               "vc4", "skullbase", "l_shoulder", "l_elbow", "r_shoulder", "r_elbow"]
+
+
+def idle_clip(name, period, sway, breaths, head_tilt, arm_bend):
+    """Standing idle: the weight shifts from foot to foot once per period (the pelvis slides
+    sideways and rolls, the legs stay under it, the loaded knee straightens), the chest breathes
+    `breaths` times per period, the spine and head counter the roll so the gaze stays level."""
+    hip_height = 0.98
+    leg = 0.88
+
+    def sample(t):
+        phase = 2.0 * math.pi * t / period
+        shift = sway * math.sin(phase)                      # + = weight on the left foot
+        roll = 1.6 * math.sin(phase)                         # pelvis roll, degrees
+        breath = math.sin(breaths * phase)
+        leg_angle = -math.degrees(math.asin(shift / leg))    # keeps the feet in place
+        dip = 0.004 * (1.0 - math.cos(2.0 * phase)) / 2.0    # hips lowest between the feet
+        left_load = (1.0 + math.sin(phase)) / 2.0
+        rotations = [
+            rz(roll),                                        # humanoid_root
+            rx(0.8 * breath),                                # sacroiliac
+            rz(leg_angle - roll),                            # l_hip
+            rx(6.0 * (1.0 - left_load)),                     # l_knee: bends when unloaded
+            rz(leg_angle - roll),                            # r_hip
+            rx(6.0 * left_load),                             # r_knee
+            rz(-0.6 * roll),                                 # vl1
+            rx(-1.2 * breath),                               # vt6: the chest rises
+            rz(-0.3 * roll),                                 # vc4
+            mul(rz(head_tilt - 0.1 * roll), rx(0.6 * breath)),  # skullbase
+            rz(3.0 + 0.6 * breath),                          # l_shoulder: slightly away from the body
+            rx(-arm_bend),                                   # l_elbow
+            rz(-3.0 - 0.6 * breath),                         # r_shoulder
+            rx(-arm_bend - 2.0 * breath),                    # r_elbow
+        ]
+        values = [c for q in rotations for c in q]
+        values += [shift, hip_height - dip, 0.0]
+        return values
+
+    return clip(name, 15, IDLE_JOINTS, sample, period, root_translation=True)
+
+
+WAVE_JOINTS = ["r_sternoclavicular", "r_shoulder", "r_elbow", "r_radiocarpal"]
+
+
+def wave_clip(name, waves, wave_period):
+    """The right arm rises sideways until the forearm points up, the hand waves `waves` times,
+    and the arm comes down again."""
+    rise = 0.6
+    duration = rise + waves * wave_period + rise
+
+    def sample(t):
+        up = smooth(t / rise) * smooth((duration - t) / rise)
+        waving = min(max(t - rise, 0.0), waves * wave_period)
+        swing = math.sin(2.0 * math.pi * waving / wave_period) * smooth(min(t, duration - t) / rise)
+        rotations = [
+            rz(-8.0 * up),                                   # the clavicle lifts
+            mul(rx(-15.0 * up), rz(-100.0 * up)),            # upper arm out and a little forward
+            rz(-80.0 * up - 20.0 * swing),                   # forearm up, waving in the frontal plane
+            rz(-10.0 * swing),                               # the hand follows
+        ]
+        return [c for q in rotations for c in q]
+
+    return clip(name, 30, WAVE_JOINTS, sample, duration)
+
+
+NOD_JOINTS = ["vc4", "skullbase"]
+
+
+def nod_clip(name, nods, nod_period, degrees):
+    def sample(t):
+        angle = degrees * math.sin(math.pi * t / nod_period) ** 2
+        return [c for q in (rx(0.4 * angle), rx(angle)) for c in q]
+
+    return clip(name, 30, NOD_JOINTS, sample, nods * nod_period)
+
+
+def blink_clip(name, period, at):
+    """Both eyelids close and open once per period (FAP 19-22, eyelid closing, in IRISD units)."""
+    def sample(t):
+        u = (t - at) / 0.15
+        closed = math.sin(math.pi * u) ** 2 if 0.0 <= u <= 1.0 else 0.0
+        return [800.0 * closed, 800.0 * closed, 200.0 * closed, 200.0 * closed]
+
+    return clip(name, 30, [], sample, period, scalars=["fap19", "fap20", "fap21", "fap22"])
+
+
+# --- curves, modifiers, actions ---------------------------------------------------------------
+
+def constant(value):
+    return {"schema": "Curve.1", "kind": "constant", "value": float(value)}
+
+
+def fade(kind, fade_in, fade_out, peak=1.0):
+    return {"schema": "Curve.1", "kind": kind, "fadeIn": float(fade_in), "fadeOut": float(fade_out),
+            "peak": float(peak)}
+
+
+def adsr(kind, attack, decay, sustain, release, peak=1.0):
+    return {"schema": "Curve.1", "kind": kind, "attack": float(attack), "decay": float(decay),
+            "sustain": float(sustain), "release": float(release), "peak": float(peak)}
+
+
+def keyframed(keys):
+    return {"schema": "Curve.1", "kind": "keyframed",
+            "keys": [{"time": float(t), "value": float(v), "tangent": mode} for t, v, mode in keys]}
+
+
+def modifier(kind, **params):
+    out = {"schema": "Modifier.1", "kind": kind}
+    out.update(params)
+    return out
+
+
+def action(name, clip_name, start, weight, scale=None, mask=None, mode="normalized", modifiers=()):
+    out = {"schema": "Action.1", "name": name, "clip": clip_name, "start": ticks(start)}
+    if modifiers:
+        out["modifiers"] = list(modifiers)
+    out["weight"] = weight
+    out["scale"] = scale or constant(1.0)
+    if mask:
+        out["mask"] = mask
+    out["mode"] = mode
+    out["renderOutsideDomain"] = False
+    return out
+
+
+def layer(name, kind, actions):
+    return {"schema": "Layer.1", "name": name, "kind": kind, "mode": "normalized", "actions": actions}
+
+
+def mask(name, weights, default=0.0):
+    return {"schema": "Mask.1", "name": name, "defaultWeight": float(default),
+            "weights": dict(sorted((k, float(v)) for k, v in weights.items()))}
+
+
+def scenario():
+    creon = {
+        "schema": "Character.1", "name": "Creon", "skeleton": "hanim-25",
+        "clips": [
+            idle_clip("creon_idle", period=4.0, sway=0.025, breaths=2, head_tilt=0.0, arm_bend=8.0),
+            wave_clip("wave", waves=3, wave_period=0.6),
+            nod_clip("nod", nods=2, nod_period=0.8, degrees=12.0),
+            blink_clip("blink", period=3.2, at=0.4),
+        ],
+        "layers": [
+            layer("body", "body", [
+                action("creon_idle", "creon_idle", 0.0, fade("cubicFade", 1.0, 0.0),
+                       modifiers=[modifier("loop", count=0)]),
+                action("creon_wave", "wave", 1.5, adsr("cubicAdsr", 0.4, 0.3, 0.85, 0.5),
+                       mask="rightArm", mode="override"),
+                action("creon_nod", "nod", 5.0, fade("linearFade", 0.25, 0.25), mask="head",
+                       mode="additive", modifiers=[modifier("timeStretch", factor=1.25)]),
+                action("creon_small_wave", "wave", 8.0,
+                       keyframed([(0.0, 0.0, "autoClamped"), (0.5, 0.7, "autoClamped"),
+                                  (2.0, 0.7, "linear"), (2.4, 0.0, "autoClamped")]),
+                       scale=constant(0.6), mask="rightArm", mode="override"),
+            ]),
+            layer("face", "face", [
+                action("creon_blinks", "blink", 0.0, constant(1.0), modifiers=[modifier("loop", count=0)]),
+            ]),
+        ],
+    }
+    antigone = {
+        "schema": "Character.1", "name": "Antigone", "skeleton": "hanim-25",
+        "clips": [
+            idle_clip("antigone_idle", period=5.0, sway=0.03, breaths=3, head_tilt=3.0, arm_bend=12.0),
+            wave_clip("wave", waves=2, wave_period=0.8),
+            nod_clip("nod", nods=2, nod_period=1.2, degrees=10.0),
+        ],
+        "layers": [
+            layer("body", "body", [
+                action("antigone_idle", "antigone_idle", 0.0, fade("cubicFade", 1.5, 0.0),
+                       modifiers=[modifier("loop", count=0)]),
+                action("antigone_nod", "nod", 3.0, fade("cubicFade", 0.2, 0.3), mask="head",
+                       mode="additive", modifiers=[modifier("trim", start=0.0, end=1.2)]),
+                # Her wave is Creon's motion played on the left arm: the mirror modifier swaps sides.
+                action("antigone_wave", "wave", 6.0, adsr("linearAdsr", 0.5, 0.3, 0.9, 0.6),
+                       mask="leftArm", mode="override", modifiers=[modifier("mirror", axis=0)]),
+            ]),
+        ],
+    }
+    return {
+        "format": "thespis-scenario",
+        "version": 1,
+        "schema": "Scenario.1",
+        "name": "Antigone, act 1 (demo)",
+        "duration": ticks(12.0),
+        "masks": [
+            mask("head", {"vc4": 0.5, "skullbase": 1.0}),
+            mask("leftArm", {"l_sternoclavicular": 1.0}),
+            mask("rightArm", {"r_sternoclavicular": 1.0}),
+        ],
+        "characters": [creon, antigone],
+    }
+
+
+# --- writing, in the form Thespis writes ------------------------------------------------------
+
+def scalar(value):
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return repr(value)
+    return json.dumps(value, ensure_ascii=False)
+
+
+def dump(value, indent=0):
+    inner = " " * (indent + 2)
+    if isinstance(value, dict):
+        if not value:
+            return "{}"
+        items = [inner + json.dumps(k, ensure_ascii=False) + ": " + dump(v, indent + 2) for k, v in value.items()]
+        return "{\n" + ",\n".join(items) + "\n" + " " * indent + "}"
+    if isinstance(value, list):
+        if not value:
+            return "[]"
+        if not any(isinstance(v, (dict, list)) for v in value):
+            return "[" + ", ".join(scalar(v) for v in value) + "]"
+        return "[\n" + ",\n".join(inner + dump(v, indent + 2) for v in value) + "\n" + " " * indent + "]"
+    return scalar(value)
+
+
+def main():
+    root = Path(__file__).resolve().parent.parent
+    out = Path(sys.argv[1]) if len(sys.argv) > 1 else root / "resources" / "demo.thespis"
+    out.write_text(dump(scenario()) + "\n", encoding="utf-8")
+    print(f"wrote {out}")
+
+
+if __name__ == "__main__":
+    main()
