@@ -1,0 +1,83 @@
+// thespis-cli info SCENARIO: what a scenario holds — characters, clips, layers and actions,
+// masks — read from the document alone (clips are not loaded), so it works on scenarios whose
+// BVH files are missing too.
+
+#include <cstdio>
+
+#include "commands.h"
+#include "exit_codes.h"
+#include "util/tick.h"
+
+namespace thespis::cli {
+namespace {
+
+namespace scenario = core::scenario;
+
+const char* modeName(core::anim::BlendMode mode)
+{
+    switch (mode) {
+    case core::anim::BlendMode::Normalized: return "normalized";
+    case core::anim::BlendMode::Additive: return "additive";
+    case core::anim::BlendMode::Override: return "override";
+    }
+    return "?";
+}
+
+std::string clipSummary(const scenario::ClipAsset& clip)
+{
+    if (!clip.file.empty())
+        return "file " + clip.file;
+    const std::size_t perFrame = 4 * clip.joints.size() + (clip.rootTranslation ? 3 : 0) + clip.scalars.size();
+    const std::size_t frames = perFrame ? clip.frames.size() / perFrame : 0;
+    char text[160];
+    std::snprintf(text, sizeof text, "inline, %zu joints, %zu scalars, %zu frames at %g fps", clip.joints.size(),
+                  clip.scalars.size(), frames, clip.frameRate);
+    return text;
+}
+
+} // namespace
+
+CommandSpec infoSpec()
+{
+    CommandSpec spec;
+    spec.name = "info";
+    spec.summary = "List a scenario's characters, clips, layers, actions and masks.";
+    spec.positionals = {"SCENARIO"};
+    spec.description = "Reads only the scenario file (clips are not loaded).\n"
+                       "Exit status: 0 read, 3 unreadable or malformed, 2 bad command line.";
+    return spec;
+}
+
+int runInfo(const CommandSpec& spec, const ParsedArguments& arguments)
+{
+    const std::filesystem::path path = arguments.positionals[0];
+    const auto document = loadScenarioReporting(spec.name, path);
+    if (!document)
+        return ExitInvalidInput;
+
+    std::printf("Scenario '%s' (%s)\n", document->name.c_str(), path.string().c_str());
+    if (document->duration > 0)
+        std::printf("  duration: %.3f s\n", core::ticksToSeconds(document->duration));
+    else
+        std::printf("  duration: up to the last action's end\n");
+    for (const scenario::Character& character : document->characters) {
+        std::printf("Character '%s' (skeleton %s)\n", character.name.c_str(), character.skeleton.c_str());
+        for (const scenario::ClipAsset& clip : character.clips)
+            std::printf("  clip '%s': %s\n", clip.name.c_str(), clipSummary(clip).c_str());
+        for (const scenario::Layer& layer : character.layers) {
+            std::printf("  layer '%s' (%s, %s): %zu action%s\n", layer.name.c_str(),
+                        layer.kind == scenario::LayerKind::Body ? "body" : "face", modeName(layer.mode),
+                        layer.actions.size(), layer.actions.size() == 1 ? "" : "s");
+            for (const scenario::ActionSpec& action : layer.actions)
+                std::printf("    action '%s': clip '%s' at %.3f s, %s%s%s%s\n", action.name.c_str(),
+                            action.clip.c_str(), core::ticksToSeconds(action.start), modeName(action.mode),
+                            action.mask.empty() ? "" : ", mask '", action.mask.c_str(), action.mask.empty() ? "" : "'");
+        }
+    }
+    for (const scenario::NamedMask& mask : document->masks)
+        std::printf("Mask '%s': %zu joints, default weight %g\n", mask.name.c_str(), mask.mask.weights().size(),
+                    double(mask.mask.defaultWeight()));
+    return ExitOk;
+}
+
+} // namespace thespis::cli

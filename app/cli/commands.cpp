@@ -1,0 +1,58 @@
+#include "commands.h"
+
+#include <cstdio>
+
+#include "exit_codes.h"
+#include "scenario/scenario_io.h"
+
+namespace thespis::cli {
+
+const std::vector<Command>& commands()
+{
+    static const std::vector<Command> all = {
+        {validateSpec(), &runValidate},
+        {bakeMotionSpec(), &runBakeMotion},
+        {infoSpec(), &runInfo},
+    };
+    return all;
+}
+
+void printError(const std::string& command, const std::string& what)
+{
+    std::fprintf(stderr, "thespis-cli %s: error: %s\n", command.c_str(), what.c_str());
+}
+
+void printError(const std::string& command, const core::Error& error)
+{
+    printError(command, core::describe(error));
+}
+
+int usageError(const CommandSpec& spec, const std::string& problem)
+{
+    std::fprintf(stderr, "thespis-cli %s: %s\n%s\nRun 'thespis-cli %s --help' for more.\n", spec.name.c_str(),
+                 problem.c_str(), usageLine(spec).c_str(), spec.name.c_str());
+    return ExitUsage;
+}
+
+std::optional<core::scenario::Scenario> loadScenarioReporting(const std::string& command,
+                                                              const std::filesystem::path& path)
+{
+    auto scenario = core::scenario::loadScenario(path);
+    if (!scenario) {
+        printError(command, scenario.error());
+        return std::nullopt;
+    }
+    return std::move(scenario).value();
+}
+
+std::string joinNames(const std::vector<std::string>& names)
+{
+    if (names.empty())
+        return "none";
+    std::string text;
+    for (const std::string& name : names)
+        text += (text.empty() ? "" : ", ") + name;
+    return text;
+}
+
+} // namespace thespis::cli

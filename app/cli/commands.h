@@ -1,0 +1,45 @@
+#pragma once
+// The subcommands of thespis-cli. Each one describes its arguments (CommandSpec) and runs on
+// parsed arguments, returning an exit code (exit_codes.h). Messages go to stderr, results and
+// reports to stdout.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "arguments.h"
+#include "scenario/scenario.h"
+#include "util/error.h"
+
+namespace thespis::cli {
+
+struct Command {
+    CommandSpec spec;
+    int (*run)(const CommandSpec& spec, const ParsedArguments& arguments);
+};
+
+/// Every subcommand, in the order `thespis-cli --help` lists them.
+const std::vector<Command>& commands();
+
+CommandSpec validateSpec();
+int runValidate(const CommandSpec& spec, const ParsedArguments& arguments);
+CommandSpec bakeMotionSpec();
+int runBakeMotion(const CommandSpec& spec, const ParsedArguments& arguments);
+CommandSpec infoSpec();
+int runInfo(const CommandSpec& spec, const ParsedArguments& arguments);
+
+// Shared helpers.
+
+/// Prints "thespis-cli COMMAND: error: <what>" on stderr.
+void printError(const std::string& command, const std::string& what);
+void printError(const std::string& command, const core::Error& error);
+/// Prints the problem, the usage line and a hint to --help on stderr; returns ExitUsage.
+int usageError(const CommandSpec& spec, const std::string& problem);
+/// Loads a scenario file, printing the error when it cannot be read.
+std::optional<core::scenario::Scenario> loadScenarioReporting(const std::string& command,
+                                                              const std::filesystem::path& path);
+/// "a, b, c", or "none".
+std::string joinNames(const std::vector<std::string>& names);
+
+} // namespace thespis::cli

@@ -1,0 +1,335 @@
+// Bindings of the scenario document (core/scenario): the plain-data model, reading and writing
+// .thespis files, validation and building runnable schedules. Document objects are values:
+// reading a list field (`scenario.characters`) gives a copy, edited and assigned back. (Views
+// into the C++ lists would dangle as soon as the list grows, crashing a script that kept one.)
+
+#include <optional>
+#include <string>
+
+#include "bind_common.h"
+#include "errors.h"
+#include "scenario/scenario.h"
+#include "scenario/scenario_io.h"
+#include "scenario/scenario_runtime.h"
+#include "util/tick.h"
+
+namespace thespis::python {
+
+using namespace pybind11::literals;
+using namespace core::scenario;
+namespace anim = core::anim;
+
+namespace {
+
+// Unknown fields (`extra`) cross as plain Python objects through the json module, so they keep
+// exactly the JSON they will be written back as.
+py::object jsonToPython(const nlohmann::json& value)
+{
+    return py::module_::import("json").attr("loads")(value.dump());
+}
+
+nlohmann::json jsonFromPython(const py::object& value, const char* what)
+{
+    const std::string text = py::module_::import("json").attr("dumps")(value).cast<std::string>();
+    nlohmann::json parsed = nlohmann::json::parse(text, nullptr, false);
+    if (parsed.is_discarded() || !parsed.is_object())
+        throw py::value_error(std::string(what) + " must be a dict of JSON values.");
+    return parsed;
+}
+
+// A list field as a property that reads a copy and assigns a whole new list. (def_readwrite
+// would hand out references into the C++ vector, which dangle once the vector grows.)
+template <class T, class Item>
+void defList(py::class_<T>& cls, const char* name, std::vector<Item> T::*member, const char* doc = "")
+{
+    cls.def_property(
+        name, [member](const T& value) { return value.*member; },
+        [member](T& value, std::vector<Item> items) { value.*member = std::move(items); }, doc);
+}
+
+template <class T>
+void defExtra(py::class_<T>& cls)
+{
+    cls.def_property(
+        "extra", [](const T& value) { return jsonToPython(value.extra); },
+        [](T& value, const py::object& extra) { value.extra = jsonFromPython(extra, "extra"); },
+        "Fields this format version does not know, kept and written back unchanged (a copy).");
+}
+
+void bindDocument(py::module_& m)
+{
+    py::enum_<LayerKind>(m, "LayerKind", "What a layer animates.")
+        .value("body", LayerKind::Body)
+        .value("face", LayerKind::Face);
+
+    py::enum_<ModifierKind>(m, "ModifierKind", "Kind of a modifier in an action's chain.")
+        .value("time_stretch", ModifierKind::TimeStretch)
+        .value("time_warp", ModifierKind::TimeWarp)
+        .value("loop", ModifierKind::Loop)
+        .value("mirror", ModifierKind::Mirror)
+        .value("global_transform", ModifierKind::GlobalTransform)
+        .value("time_offset", ModifierKind::TimeOffset)
+        .value("trim", ModifierKind::Trim);
+
+    py::class_<ClipAsset> clip(m, "ClipAsset",
+                               "A clip a character can play: a BVH file beside the scenario, or inline keyframes.");
+    clip.def(py::init([](std::string name, std::string file) {
+                 ClipAsset asset;
+                 asset.name = std::move(name);
+                 asset.file = std::move(file);
+                 return asset;
+             }),
+             "name"_a = "", "file"_a = "")
+        .def_readwrite("name", &ClipAsset::name)
+        .def_readwrite("file", &ClipAsset::file, "Path relative to the scenario file; empty for inline clips.")
+        .def_readwrite("frame_rate_override", &ClipAsset::frameRateOverride, "> 0: replaces the BVH frame rate.")
+        .def_readwrite("frame_rate", &ClipAsset::frameRate, "Inline clips: frames per second.")
+        .def_readwrite("root_translation", &ClipAsset::rootTranslation,
+                       "Inline clips: frames hold the translation of joints[0].")
+        .def_property(
+            "frames", [](const ClipAsset& a) { return toArray<float>(a.frames); },
+            [](ClipAsset& a, const py::array_t<float, py::array::c_style | py::array::forcecast>& frames) {
+                a.frames.assign(frames.data(), frames.data() + frames.size());
+            },
+            "Inline clips: per frame the joints' rotations (x y z w), the root translation, the scalars; flat (a copy).")
+        .def("__eq__", [](const ClipAsset& a, const ClipAsset& b) { return a == b; })
+        .def("__repr__", [](const ClipAsset& a) {
+            return "<thespis.ClipAsset '" + a.name + "' " + (a.file.empty() ? std::string("inline") : a.file) + ">";
+        });
+    defExtra(clip);
+    defList(clip, "joints", &ClipAsset::joints, "Inline clips: the joints rotated, in frame order.");
+    defList(clip, "scalars", &ClipAsset::scalars, "Inline clips: scalar elements (e.g. MPEG-4 FAPs 'fap3').");
+
+    py::class_<ModifierSpec> modifier(m, "ModifierSpec", "One modifier in an action's chain; the fields its kind uses are set.");
+    modifier
+        .def(py::init([](ModifierKind kind) {
+                 ModifierSpec spec;
+                 spec.kind = kind;
+                 return spec;
+             }),
+             "kind"_a = ModifierKind::Loop)
+        .def_readwrite("kind", &ModifierSpec::kind)
+        .def_readwrite("factor", &ModifierSpec::factor, "time_stretch")
+        .def_readwrite("warp", &ModifierSpec::warp, "time_warp: local time → source time")
+        .def_readwrite("duration", &ModifierSpec::duration, "time_warp")
+        .def_readwrite("count", &ModifierSpec::count, "loop: 0 = forever")
+        .def_readwrite("axis", &ModifierSpec::axis, "mirror")
+        .def_readwrite("rotation", &ModifierSpec::rotation, "global_transform (x, y, z, w)")
+        .def_readwrite("translation", &ModifierSpec::translation, "global_transform")
+        .def_readwrite("offset", &ModifierSpec::offset, "time_offset (seconds)")
+        .def_readwrite("start", &ModifierSpec::start, "trim (source seconds)")
+        .def_readwrite("end", &ModifierSpec::end, "trim (source seconds)")
+        .def("__eq__", [](const ModifierSpec& a, const ModifierSpec& b) { return a == b; });
+    defExtra(modifier);
+
+    py::class_<ActionSpec> action(m, "ActionSpec", "An action of a layer: which clip, when (ticks), how it blends.");
+    action
+        .def(py::init([](std::string name, std::string clipName, core::Tick start) {
+                 ActionSpec spec;
+                 spec.name = std::move(name);
+                 spec.clip = std::move(clipName);
+                 spec.start = start;
+                 return spec;
+             }),
+             "name"_a = "", "clip"_a = "", "start"_a = core::Tick(0))
+        .def_readwrite("name", &ActionSpec::name)
+        .def_readwrite("clip", &ActionSpec::clip, "Name of a ClipAsset of the character.")
+        .def_readwrite("start", &ActionSpec::start, "Start time in ticks (thespis.TICKS_PER_SECOND per second).")
+        .def_property(
+            "start_seconds", [](const ActionSpec& a) { return core::ticksToSeconds(a.start); },
+            [](ActionSpec& a, double seconds) { a.start = core::secondsToTicks(seconds); },
+            "Start time in seconds (rounded to the nearest tick when set).")
+        .def_readwrite("weight", &ActionSpec::weight)
+        .def_readwrite("scale", &ActionSpec::scale)
+        .def_readwrite("mask", &ActionSpec::mask, "Name of a scenario mask; empty = whole body.")
+        .def_readwrite("mode", &ActionSpec::mode)
+        .def_readwrite("render_outside_domain", &ActionSpec::renderOutsideDomain)
+        .def("__eq__", [](const ActionSpec& a, const ActionSpec& b) { return a == b; })
+        .def("__repr__", [](const ActionSpec& a) {
+            return "<thespis.ActionSpec '" + a.name + "' clip '" + a.clip + "'>";
+        });
+    defExtra(action);
+    defList(action, "modifiers", &ActionSpec::modifiers, "The modifier chain, first wrapping the clip (a copy).");
+
+    py::class_<Layer> layer(m, "Layer", "A track of actions blended into one schedule.");
+    layer
+        .def(py::init([](std::string name, LayerKind kind, anim::BlendMode mode) {
+                 Layer l;
+                 l.name = std::move(name);
+                 l.kind = kind;
+                 l.mode = mode;
+                 return l;
+             }),
+             "name"_a = "", "kind"_a = LayerKind::Body, "mode"_a = anim::BlendMode::Normalized)
+        .def_readwrite("name", &Layer::name)
+        .def_readwrite("kind", &Layer::kind)
+        .def_readwrite("mode", &Layer::mode, "How the layer combines with the layers before it.")
+        .def("__eq__", [](const Layer& a, const Layer& b) { return a == b; })
+        .def("__repr__", [](const Layer& l) {
+            return "<thespis.Layer '" + l.name + "' " + std::to_string(l.actions.size()) + " actions>";
+        });
+    defExtra(layer);
+    defList(layer, "actions", &Layer::actions, "The layer's actions (a copy).");
+
+    py::class_<Character> character(m, "Character", "A character: its skeleton, clips and layers of actions.");
+    character
+        .def(py::init([](std::string name, std::string skeleton) {
+                 Character c;
+                 c.name = std::move(name);
+                 c.skeleton = std::move(skeleton);
+                 return c;
+             }),
+             "name"_a = "", "skeleton"_a = "hanim-loa1")
+        .def_readwrite("name", &Character::name)
+        .def_readwrite("skeleton", &Character::skeleton,
+                       "'hanim-loa1', 'hanim-loa2', 'hanim-25', or 'clip:NAME' for a BVH clip's own skeleton.")
+        .def("__eq__", [](const Character& a, const Character& b) { return a == b; })
+        .def("__repr__", [](const Character& c) {
+            return "<thespis.Character '" + c.name + "' " + std::to_string(c.clips.size()) + " clips, "
+                   + std::to_string(c.layers.size()) + " layers>";
+        });
+    defExtra(character);
+    defList(character, "clips", &Character::clips, "The character's clips (a copy).");
+    defList(character, "layers", &Character::layers, "The character's layers (a copy).");
+
+    py::class_<NamedMask> namedMask(m, "NamedMask", "A joint mask shared by actions, by name.");
+    namedMask.def(py::init([](std::string name, anim::JointMask mask) {
+                 NamedMask named;
+                 named.name = std::move(name);
+                 named.mask = std::move(mask);
+                 return named;
+             }),
+             "name"_a = "", "mask"_a = anim::JointMask())
+        .def_readwrite("name", &NamedMask::name)
+        .def_readwrite("mask", &NamedMask::mask)
+        .def("__eq__", [](const NamedMask& a, const NamedMask& b) { return a == b; });
+    defExtra(namedMask);
+
+    py::class_<Scenario> scenario(m, "Scenario",
+                                  "The scenario document (format 'thespis-scenario'): characters, masks and the "
+                                  "timeline's duration in ticks. Plain data with value semantics: list fields are "
+                                  "copies, so edit them and assign them back "
+                                  "(`chars = s.characters; chars[0].name = 'Ada'; s.characters = chars`).");
+    scenario.def(py::init([](std::string name) {
+                     Scenario s;
+                     s.name = std::move(name);
+                     return s;
+                 }),
+                 "name"_a = "")
+        .def_readwrite("name", &Scenario::name)
+        .def_readwrite("duration", &Scenario::duration, "Timeline length in ticks (0: up to the last action's end).")
+        .def_property(
+            "duration_seconds", [](const Scenario& s) { return core::ticksToSeconds(s.duration); },
+            [](Scenario& s, double seconds) { s.duration = core::secondsToTicks(seconds); })
+        .def(
+            "find_character",
+            [](const Scenario& s, const std::string& name) -> std::optional<Character> {
+                const Character* found = s.findCharacter(name);
+                return found ? std::optional<Character>(*found) : std::nullopt;
+            },
+            "name"_a, "A copy of the character called `name`, or None.")
+        .def(
+            "find_mask",
+            [](const Scenario& s, const std::string& name) -> std::optional<NamedMask> {
+                const NamedMask* found = s.findMask(name);
+                return found ? std::optional<NamedMask>(*found) : std::nullopt;
+            },
+            "name"_a, "A copy of the mask called `name`, or None.")
+        .def("__eq__", [](const Scenario& a, const Scenario& b) { return a == b; })
+        .def("__repr__", [](const Scenario& s) {
+            return "<thespis.Scenario '" + s.name + "' " + std::to_string(s.characters.size()) + " characters>";
+        });
+    defExtra(scenario);
+    defList(scenario, "characters", &Scenario::characters, "The characters (a copy).");
+    defList(scenario, "masks", &Scenario::masks, "The named joint masks (a copy).");
+}
+
+void bindRuntime(py::module_& m)
+{
+    py::class_<CharacterRuntime>(m, "CharacterRuntime",
+                                 "A character ready to play: skeleton, loaded clips and its nested schedules.")
+        .def_readonly("name", &CharacterRuntime::name)
+        .def_readonly("skeleton", &CharacterRuntime::skeleton)
+        .def_readonly("clips", &CharacterRuntime::clips, "Clip name → KeyframeClip on the skeleton's layout.")
+        .def_readonly("body", &CharacterRuntime::body, "Every body layer, nested in one schedule.")
+        .def_readonly("face", &CharacterRuntime::face, "Every face layer (MPEG-4 FAPs), nested in one schedule.")
+        .def_readonly("layers", &CharacterRuntime::layers, "One schedule per Layer, in document order.")
+        .def_readonly("action_ids", &CharacterRuntime::actionIds, "Per layer, the schedule's id of each ActionSpec.")
+        .def_readonly("warnings", &CharacterRuntime::warnings)
+        .def("__repr__", [](const CharacterRuntime& c) {
+            return "<thespis.CharacterRuntime '" + c.name + "' " + std::to_string(c.layers.size()) + " layers>";
+        });
+
+    py::class_<ScenarioRuntime>(m, "ScenarioRuntime", "Runnable schedules for every character of a scenario.")
+        .def_readonly("characters", &ScenarioRuntime::characters)
+        .def_readonly("duration", &ScenarioRuntime::duration,
+                      "Seconds: the scenario's duration, or the latest end of a finite action.")
+        .def("find_character", &ScenarioRuntime::findCharacter, "name"_a, py::return_value_policy::reference_internal);
+}
+
+// Runs `work` with the GIL released (file reading and clip loading may take a while) and
+// returns its value; Results are unwrapped afterwards, with the GIL held again.
+template <class Work>
+auto withoutGil(Work&& work)
+{
+    py::gil_scoped_release release;
+    return work();
+}
+
+} // namespace
+
+void bindScenario(py::module_& m)
+{
+    m.attr("TICKS_PER_SECOND") = core::TicksPerSecond;
+    m.def("ticks_to_seconds", &core::ticksToSeconds, "ticks"_a);
+    m.def("seconds_to_ticks", &core::secondsToTicks, "seconds"_a, "Nearest whole tick.");
+    m.def(
+        "ticks_per_frame",
+        [](int fps) {
+            if (fps <= 0)
+                throw py::value_error("frames_per_second must be positive, not " + std::to_string(fps) + ".");
+            return core::ticksPerFrame(fps);
+        },
+        "frames_per_second"_a, "Ticks of one frame at a whole-number frame rate.");
+    m.attr("SCENARIO_FORMAT") = std::string(FormatName);
+    m.attr("SCENARIO_VERSION") = int(format::Current);
+    m.attr("SCENARIO_EXTENSION") = std::string(FileExtension);
+
+    bindDocument(m);
+    bindRuntime(m);
+
+    m.def(
+        "parse_scenario", [](const std::string& text) { return unwrap(withoutGil([&] { return parseScenario(text); })); },
+        "text"_a,
+        "Reads a scenario from JSON text. thespis.FormatError names the field of malformed input, or says when "
+        "the text is from a newer Thespis.");
+    m.def(
+        "load_scenario",
+        [](const std::filesystem::path& path) { return unwrap(withoutGil([&] { return loadScenario(path); })); },
+        "path"_a, "Reads a .thespis file (FileNotFoundError, thespis.FormatError naming the field).");
+    m.def("serialize_scenario", &serializeScenario, "scenario"_a, "The scenario as JSON text (current version).");
+    m.def(
+        "save_scenario",
+        [](const std::filesystem::path& path, const Scenario& scenario) { unwrap(saveScenario(path, scenario)); },
+        "path"_a, "scenario"_a, "Writes a .thespis file atomically (temporary file, then rename).");
+    m.def(
+        "build_runtime",
+        [](const Scenario& scenario, const std::filesystem::path& baseDir) {
+            // A copy, so that other Python threads may touch the document while clips load.
+            const Scenario snapshot = scenario;
+            return unwrap(withoutGil([&] { return buildRuntime(snapshot, baseDir); }));
+        },
+        "scenario"_a, "base_dir"_a = std::filesystem::path("."),
+        "Loads every clip (BVH files relative to base_dir, the scenario file's folder) and builds the schedules. "
+        "Errors name the character, action and field.");
+    m.def(
+        "validate_scenario",
+        [](const Scenario& scenario, const std::filesystem::path& baseDir) {
+            const Scenario snapshot = scenario;
+            return withoutGil([&] { return validateScenario(snapshot, baseDir); });
+        },
+        "scenario"_a, "base_dir"_a = std::filesystem::path("."),
+        "Every problem of the scenario as a list of thespis.Error; empty when it is valid.");
+}
+
+} // namespace thespis::python

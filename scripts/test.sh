@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds everything and runs every test: core (GoogleTest), Python
+# (pytest), command line, studio GUI (Qt Test under Xvfb), then the core tests again under
+# AddressSanitizer + UndefinedBehaviorSanitizer. This is the README's test command; .ci/run
+# calls it. Builds go to build/ and build-asan/ (ccache makes rebuilds cheap).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+jobs=${THESPIS_JOBS:-$(nproc)}
+./scripts/install-deps.sh
+
+export CCACHE_DIR=${CCACHE_DIR:-$HOME/.cache/ccache}
+export CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-5G}
+
+echo "== build (Release) =="
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE=/usr/bin/python3
+cmake --build build -j "$jobs"
+
+echo "== tests =="
+# GUI tests need a display: the tests run the studio under Xvfb (xvfb-run is used by ctest).
+(cd build && ctest -j "$jobs" --output-on-failure --timeout 600)
+
+echo "== core tests under AddressSanitizer + UndefinedBehaviorSanitizer =="
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTHESPIS_SANITIZE=address,undefined \
+  -DTHESPIS_BUILD_GUI=OFF -DTHESPIS_BUILD_PYTHON=OFF -DTHESPIS_BUILD_BENCH=OFF \
+  -DPython_EXECUTABLE=/usr/bin/python3
+cmake --build build-asan -j "$jobs"
+(cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest -j "$jobs" -L core --output-on-failure --timeout 600)
+
+echo "== all tests passed =="
