@@ -195,6 +195,13 @@ def modifier(kind, **params):
     return out
 
 
+def placement(x, yaw_degrees):
+    """A globalTransform that stands the character at x on the floor, turned by yaw about +Y."""
+    half = math.radians(yaw_degrees) / 2
+    return modifier("globalTransform", rotation=[0.0, round(math.sin(half), 4), 0.0, round(math.cos(half), 4)],
+                    translation=[x, 0.0, 0.0])
+
+
 def action(name, clip_name, start, weight, scale=None, mask=None, mode="normalized", modifiers=()):
     out = {"schema": "Action.1", "name": name, "clip": clip_name, "start": ticks(start)}
     if modifiers:
@@ -228,8 +235,11 @@ def scenario():
         ],
         "layers": [
             layer("body", "body", [
-                action("creon_idle", "creon_idle", 0.0, fade("cubicFade", 1.0, 0.0),
-                       modifiers=[modifier("loop", count=0)]),
+                # The base idle plays at full weight from the start (a fade-in from the rest pose
+                # would slide the root in from the origin) and places Creon on the left, turned
+                # towards Antigone.
+                action("creon_idle", "creon_idle", 0.0, constant(1.0),
+                       modifiers=[modifier("loop", count=0), placement(-0.55, 25.0)]),
                 action("creon_wave", "wave", 1.5, adsr("cubicAdsr", 0.4, 0.3, 0.85, 0.5),
                        mask="rightArm", mode="override"),
                 action("creon_nod", "nod", 5.0, fade("linearFade", 0.25, 0.25), mask="head",
@@ -253,8 +263,8 @@ def scenario():
         ],
         "layers": [
             layer("body", "body", [
-                action("antigone_idle", "antigone_idle", 0.0, fade("cubicFade", 1.5, 0.0),
-                       modifiers=[modifier("loop", count=0)]),
+                action("antigone_idle", "antigone_idle", 0.0, constant(1.0),
+                       modifiers=[modifier("loop", count=0), placement(0.55, -25.0)]),
                 action("antigone_nod", "nod", 3.0, fade("cubicFade", 0.2, 0.3), mask="head",
                        mode="additive", modifiers=[modifier("trim", start=0.0, end=1.2)]),
                 # Her wave is Creon's motion played on the left arm: the mirror modifier swaps sides.

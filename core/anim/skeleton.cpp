@@ -79,6 +79,13 @@ std::vector<Vec3d> Skeleton::worldPositions(std::span<const float> frame) const
 {
     std::vector<Vec3d> positions(m_joints.size());
     std::vector<Quatd> orientations(m_joints.size());
+    worldTransforms(frame, positions, orientations);
+    return positions;
+}
+
+void Skeleton::worldTransforms(std::span<const float> frame, std::span<Vec3d> positions,
+                               std::span<Quatd> orientations) const
+{
     for (std::size_t i = 0; i < m_joints.size(); ++i) {
         const Quat& q = rotationAt(frame, int(i));
         const Quatd local{q.x, q.y, q.z, q.w};
@@ -96,7 +103,6 @@ std::vector<Vec3d> Skeleton::worldPositions(std::span<const float> frame) const
             orientations[i] = orientations[p] * local;
         }
     }
-    return positions;
 }
 
 } // namespace thespis::core::anim

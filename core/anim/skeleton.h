@@ -49,6 +49,10 @@ public:
 
     /// World position of each joint for a frame of this skeleton's layout.
     std::vector<Vec3d> worldPositions(std::span<const float> frame) const;
+    /// The same into caller buffers of jointCount() entries (`orientations` receives each
+    /// joint's world rotation), for per-frame use without allocation.
+    void worldTransforms(std::span<const float> frame, std::span<Vec3d> positions,
+                         std::span<Quatd> orientations) const;
 
 private:
     std::vector<Joint> m_joints;

@@ -1,0 +1,387 @@
+#include "main_window.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFrame>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScreen>
+#include <QStatusBar>
+#include <QTimer>
+#include <QTreeView>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+#include "editor/error_dialog.h"
+#include "editor/scenario_tree_model.h"
+#include "widgets/pose_view.h"
+#include "widgets/transport_bar.h"
+
+namespace thespis::studio {
+
+namespace {
+// Framing samples the whole timeline this often (seconds); 10 Hz catches every pose extreme
+// a person could see without costing noticeable time at load.
+constexpr double kBoundsSampleStep = 0.1;
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
+{
+    setObjectName(QStringLiteral("mainWindow"));
+    m_clock = new editor::PlaybackClock(this);
+    m_model = new editor::ScenarioTreeModel(this);
+
+    auto* central = new QWidget(this);
+    auto* layout = new QVBoxLayout(central);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    m_poseView = new widgets::PoseView(central);
+    m_poseView->setObjectName(QStringLiteral("poseView"));
+    m_poseView->setPlaceholderText(tr("No scenario is open.\nUse File ▸ Open… (Ctrl+O) to open a .thespis file."));
+    auto* line = new QFrame(central);
+    line->setFrameShape(QFrame::HLine);
+    line->setFrameShadow(QFrame::Sunken);
+    m_transport = new widgets::TransportBar(central);
+    m_transport->setObjectName(QStringLiteral("transportBar"));
+    layout->addWidget(m_poseView, 1);
+    layout->addWidget(line);
+    layout->addWidget(m_transport);
+    setCentralWidget(central);
+
+    // The transport asks; the clock decides; everything shown follows the clock.
+    connect(m_transport, &widgets::TransportBar::playRequested, m_clock, &editor::PlaybackClock::play);
+    connect(m_transport, &widgets::TransportBar::pauseRequested, m_clock, &editor::PlaybackClock::pause);
+    connect(m_transport, &widgets::TransportBar::seekRequested, m_clock, &editor::PlaybackClock::seek);
+    connect(m_transport, &widgets::TransportBar::loopRequested, m_clock, &editor::PlaybackClock::setLooping);
+    connect(m_clock, &editor::PlaybackClock::timeChanged, this, &MainWindow::onTimeChanged);
+    connect(m_clock, &editor::PlaybackClock::playingChanged, this, &MainWindow::onPlayingChanged);
+    connect(m_clock, &editor::PlaybackClock::loopingChanged, this, [this](bool looping) {
+        m_transport->setLooping(looping);
+        m_loopAction->setChecked(looping);
+    });
+    connect(m_clock, &editor::PlaybackClock::durationChanged, m_transport, &widgets::TransportBar::setDuration);
+
+    createActions();
+    createOutlineDock();
+    createMenus();
+    createStatusBar();
+
+    m_fpsTimer = new QTimer(this);
+    m_fpsTimer->setInterval(500);
+    connect(m_fpsTimer, &QTimer::timeout, this, &MainWindow::updateFps);
+
+    // Most of the screen, and enough for the outline's columns beside a usable preview.
+    const QRect screen = this->screen() ? this->screen()->availableGeometry() : QRect(0, 0, 1600, 1000);
+    resize(std::min(1500, screen.width() * 9 / 10), std::min(900, screen.height() * 9 / 10));
+    resizeDocks({m_outlineDock}, {std::min(690, width() / 2)}, Qt::Horizontal);
+    setDocument(nullptr);
+}
+
+MainWindow::~MainWindow()
+{
+    // The model and samplers read the document: detach them before it goes.
+    m_model->setDocument(nullptr);
+    m_samplers.clear();
+}
+
+void MainWindow::createActions()
+{
+    m_openAction = new QAction(tr("&Open…"), this);
+    m_openAction->setShortcut(QKeySequence::Open);
+    m_openAction->setStatusTip(tr("Open a scenario file (.thespis)"));
+    connect(m_openAction, &QAction::triggered, this, &MainWindow::onOpen);
+
+    m_reloadAction = new QAction(tr("&Reload"), this);
+    m_reloadAction->setShortcut(QKeySequence::Refresh);
+    m_reloadAction->setStatusTip(tr("Read the scenario file again, e.g. after editing it elsewhere"));
+    connect(m_reloadAction, &QAction::triggered, this, &MainWindow::onReload);
+
+    m_quitAction = new QAction(tr("&Quit"), this);
+    m_quitAction->setShortcut(QKeySequence::Quit);
+    m_quitAction->setMenuRole(QAction::QuitRole);
+    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
+
+    // Window-wide shortcuts, so that Space plays whichever panel has the focus.
+    m_playPauseAction = new QAction(tr("&Play/Pause"), this);
+    m_playPauseAction->setShortcut(Qt::Key_Space);
+    m_playPauseAction->setShortcutContext(Qt::WindowShortcut);
+    connect(m_playPauseAction, &QAction::triggered, m_clock, &editor::PlaybackClock::togglePlayPause);
+    addAction(m_playPauseAction);
+
+    m_toStartAction = new QAction(tr("Go to &Start"), this);
+    m_toStartAction->setShortcut(Qt::Key_Home);
+    connect(m_toStartAction, &QAction::triggered, m_clock, [this] { m_clock->seek(0.0); });
+    addAction(m_toStartAction);
+
+    m_loopAction = new QAction(tr("&Loop"), this);
+    m_loopAction->setCheckable(true);
+    m_loopAction->setShortcut(Qt::Key_L);
+    connect(m_loopAction, &QAction::toggled, m_clock, &editor::PlaybackClock::setLooping);
+    addAction(m_loopAction);
+
+    m_projectionGroup = new QActionGroup(this);
+    const std::pair<QString, widgets::PoseView::Projection> projections[] = {
+        {tr("&Front and Side"), widgets::PoseView::Projection::FrontAndSide},
+        {tr("F&ront"), widgets::PoseView::Projection::Front},
+        {tr("&Side"), widgets::PoseView::Projection::Side},
+    };
+    for (const auto& [text, projection] : projections) {
+        QAction* action = m_projectionGroup->addAction(text);
+        action->setCheckable(true);
+        action->setChecked(projection == m_poseView->projection());
+        connect(action, &QAction::triggered, m_poseView, [this, projection = projection] { m_poseView->setProjection(projection); });
+    }
+
+    m_aboutAction = new QAction(tr("&About Thespis Studio"), this);
+    m_aboutAction->setMenuRole(QAction::AboutRole);
+    connect(m_aboutAction, &QAction::triggered, this, &MainWindow::onAbout);
+    m_aboutQtAction = new QAction(tr("About &Qt"), this);
+    m_aboutQtAction->setMenuRole(QAction::AboutQtRole);
+    connect(m_aboutQtAction, &QAction::triggered, qApp, &QApplication::aboutQt);
+}
+
+void MainWindow::createMenus()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(m_openAction);
+    file->addAction(m_reloadAction);
+    file->addSeparator();
+    file->addAction(m_quitAction);
+
+    QMenu* playback = menuBar()->addMenu(tr("&Playback"));
+    playback->addAction(m_playPauseAction);
+    playback->addAction(m_toStartAction);
+    playback->addAction(m_loopAction);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addSection(tr("Stick figures"));
+    view->addActions(m_projectionGroup->actions());
+    view->addSeparator();
+    view->addAction(m_outlineDock->toggleViewAction());
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(m_aboutAction);
+    help->addAction(m_aboutQtAction);
+}
+
+void MainWindow::createOutlineDock()
+{
+    m_outlineDock = new QDockWidget(tr("Scenario"), this);
+    m_outlineDock->setObjectName(QStringLiteral("outlineDock"));
+    m_outlineDock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
+    m_outline = new QTreeView(m_outlineDock);
+    m_outline->setObjectName(QStringLiteral("outlineView"));
+    m_outline->setModel(m_model);
+    m_outline->setAlternatingRowColors(true);
+    m_outline->setUniformRowHeights(true);
+    m_outline->setAllColumnsShowFocus(true);
+    m_outline->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_outline->header()->setStretchLastSection(false);
+    m_outline->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_outlineDock->toggleViewAction()->setText(tr("Scenario &Outline"));
+    m_outlineDock->setWidget(m_outline);
+    addDockWidget(Qt::LeftDockWidgetArea, m_outlineDock);
+}
+
+void MainWindow::createStatusBar()
+{
+    m_fileLabel = new QLabel(this);
+    m_fileLabel->setObjectName(QStringLiteral("fileLabel"));
+    m_fpsLabel = new QLabel(this);
+    m_fpsLabel->setObjectName(QStringLiteral("fpsLabel"));
+    m_fpsLabel->setToolTip(tr("How often the preview is redrawn"));
+    m_fpsLabel->setMinimumWidth(m_fpsLabel->fontMetrics().horizontalAdvance(tr("Preview: 000 fps")) + 8);
+    statusBar()->addPermanentWidget(m_fileLabel);
+    statusBar()->addPermanentWidget(m_fpsLabel);
+}
+
+bool MainWindow::openScenario(const QString& path)
+{
+    core::Result<std::unique_ptr<editor::Document>> document = editor::Document::open(path);
+    if (!document) {
+        editor::showError(this, document.error(),
+                          tr("Could not open “%1”.").arg(QFileInfo(path).fileName()));
+        statusBar()->showMessage(tr("Could not open %1").arg(QDir::toNativeSeparators(path)), 10000);
+        return false;
+    }
+    setDocument(std::move(*document));
+    return true;
+}
+
+void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
+{
+    m_clock->pause();
+    m_model->setDocument(nullptr);
+    m_samplers.clear();
+    m_document = std::move(document);
+
+    std::vector<widgets::PoseFigure> figures;
+    bool haveBounds = false;
+    QVector3D low, high;
+    if (m_document) {
+        const double duration = m_document->previewDuration();
+        m_samplers.reserve(m_document->runtime().characters.size());
+        for (const core::scenario::CharacterRuntime& character : m_document->runtime().characters) {
+            editor::PoseSampler& sampler = m_samplers.emplace_back(character);
+            figures.push_back(sampler.figure(widgets::figureColor(int(figures.size()))));
+            const auto [characterLow, characterHigh] = sampler.sweepBounds(duration, kBoundsSampleStep);
+            low = haveBounds ? QVector3D(std::min(low.x(), characterLow.x()), std::min(low.y(), characterLow.y()),
+                                         std::min(low.z(), characterLow.z()))
+                             : characterLow;
+            high = haveBounds ? QVector3D(std::max(high.x(), characterHigh.x()), std::max(high.y(), characterHigh.y()),
+                                          std::max(high.z(), characterHigh.z()))
+                              : characterHigh;
+            haveBounds = true;
+        }
+    }
+    m_poseView->setFigures(std::move(figures));
+    // H-Anim skeletons are in metres; a skeleton taken from a BVH file keeps the file's unit,
+    // which BVH does not name.
+    bool metres = true;
+    if (m_document)
+        for (const core::scenario::Character& character : m_document->scenario().characters)
+            metres = metres && !character.skeleton.starts_with("clip:");
+    m_poseView->setLengthUnit(metres ? tr("m", "metres") : tr("units", "length unit of a BVH file"));
+    if (haveBounds)
+        m_poseView->setSceneBounds(low, high);
+    else
+        m_poseView->clearSceneBounds();
+    if (m_document && m_document->runtime().characters.empty())
+        m_poseView->setPlaceholderText(tr("This scenario has no characters yet."));
+    else
+        m_poseView->setPlaceholderText(tr("No scenario is open.\nUse File ▸ Open… (Ctrl+O) to open a .thespis file."));
+
+    m_model->setDocument(m_document.get());
+    m_outline->expandAll();
+
+    const bool open = m_document != nullptr;
+    m_transport->setEnabled(open);
+    m_reloadAction->setEnabled(open && !m_document->filePath().isEmpty());
+    m_playPauseAction->setEnabled(open);
+    m_toStartAction->setEnabled(open);
+    m_loopAction->setEnabled(open);
+    m_clock->setDuration(open ? m_document->previewDuration() : 0.0);
+    m_transport->setDuration(m_clock->duration());
+    m_clock->seek(0.0);
+    onTimeChanged(m_clock->time()); // pose everything even when the time did not change
+
+    if (open) {
+        m_fileLabel->setText(m_document->fileName());
+        m_fileLabel->setToolTip(QDir::toNativeSeparators(m_document->filePath()));
+        int actions = 0;
+        for (const core::scenario::Character& character : m_document->scenario().characters)
+            for (const core::scenario::Layer& layer : character.layers)
+                actions += int(layer.actions.size());
+        QString summary = tr("Opened %1: %n character(s)", nullptr, int(m_document->scenario().characters.size()))
+                              .arg(m_document->fileName()) +
+                          tr(", %n action(s)", nullptr, actions) +
+                          tr(", %1 s long. Press Space to play.").arg(m_document->previewDuration(), 0, 'f', 1);
+        const QStringList warnings = m_document->warnings();
+        for (const QString& warning : warnings)
+            qWarning("%s", qPrintable(warning));
+        if (!warnings.isEmpty())
+            summary += QLatin1Char(' ') + tr("%n warning(s), see the terminal.", nullptr, int(warnings.size()));
+        statusBar()->showMessage(summary);
+    } else {
+        m_fileLabel->clear();
+        m_fileLabel->setToolTip({});
+        statusBar()->clearMessage();
+    }
+    onPlayingChanged(m_clock->isPlaying());
+    updateTitle();
+}
+
+void MainWindow::onOpen()
+{
+    const QString start = m_document && !m_document->filePath().isEmpty()
+                              ? QFileInfo(m_document->filePath()).absolutePath()
+                              : QString();
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Scenario"), start,
+                                                      tr("Thespis scenarios (*.thespis);;All files (*)"));
+    if (!path.isEmpty())
+        openScenario(path);
+}
+
+void MainWindow::onReload()
+{
+    if (!m_document || m_document->filePath().isEmpty())
+        return;
+    // A copy: opening replaces the document that owns the path.
+    const QString path = m_document->filePath();
+    const double time = m_clock->time();
+    if (openScenario(path))
+        m_clock->seek(time);
+}
+
+void MainWindow::onAbout()
+{
+    QMessageBox::about(this, tr("About Thespis Studio"),
+                       tr("<h3>Thespis Studio %1</h3>"
+                          "<p>An authoring studio for interactive virtual humans in mixed reality: "
+                          "blending schedules, speech and gestures, precomputed lighting, and AR preview.</p>"
+                          "<p>Built on the MIRAnim blending engine described by Egges, Papagiannakis and "
+                          "Magnenat-Thalmann, <i>Presence and interaction in mixed reality environments</i>, "
+                          "The Visual Computer, 2007.</p>")
+                           .arg(QStringLiteral(THESPIS_VERSION)));
+}
+
+void MainWindow::onTimeChanged(double seconds)
+{
+    for (std::size_t i = 0; i < m_samplers.size(); ++i) {
+        m_samplers[i].sample(seconds);
+        m_poseView->setFigurePositions(int(i), m_samplers[i].positions());
+    }
+    m_transport->setTime(seconds);
+    m_model->setTime(seconds);
+    ++m_framesSinceFps;
+}
+
+void MainWindow::onPlayingChanged(bool playing)
+{
+    m_transport->setPlaying(playing);
+    m_playPauseAction->setText(playing ? tr("&Pause") : tr("&Play"));
+    m_framesSinceFps = 0;
+    m_fpsClock.start();
+    if (playing)
+        m_fpsTimer->start();
+    else
+        m_fpsTimer->stop();
+    updateFps();
+}
+
+void MainWindow::updateFps()
+{
+    if (!m_document) {
+        m_fpsLabel->clear();
+        return;
+    }
+    if (!m_clock->isPlaying()) {
+        m_fpsLabel->setText(tr("Paused"));
+        return;
+    }
+    const qint64 elapsed = m_fpsClock.restart();
+    if (elapsed > 0 && m_framesSinceFps > 0)
+        m_fpsLabel->setText(tr("Preview: %1 fps").arg(qRound(1000.0 * m_framesSinceFps / double(elapsed))));
+    else
+        m_fpsLabel->setText(tr("Playing"));
+    m_framesSinceFps = 0;
+}
+
+void MainWindow::updateTitle()
+{
+    if (!m_document) {
+        setWindowTitle(tr("Thespis Studio"));
+        return;
+    }
+    setWindowTitle(tr("%1 — Thespis Studio").arg(m_document->scenarioName()));
+}
+
+} // namespace thespis::studio

@@ -1,0 +1,56 @@
+#pragma once
+// PlaybackClock: the preview's current time. Plays in real time (a ~60 Hz QTimer for ticks, a
+// QElapsedTimer for the time itself, so that late ticks never slow playback down), pauses,
+// seeks, and at the end either stops or loops over [0, duration]. Emits timeChanged for every
+// new time; views follow it, nothing else moves the playhead.
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+namespace thespis::editor {
+
+class PlaybackClock : public QObject {
+    Q_OBJECT
+public:
+    explicit PlaybackClock(QObject* parent = nullptr);
+
+    double time() const { return m_time; }
+    double duration() const { return m_duration; }
+    bool isPlaying() const { return m_timer.isActive(); }
+    bool isLooping() const { return m_looping; }
+
+    /// Length in seconds (negative or non-finite count as 0); the time is clamped into it.
+    void setDuration(double seconds);
+    /// Milliseconds between ticks while playing (default 16, ~60 Hz).
+    void setTickInterval(int milliseconds);
+
+public slots:
+    /// Starts from the current time; at the end of a non-looping clock, starts over from 0.
+    /// Does nothing when the duration is 0.
+    void play();
+    void pause();
+    void togglePlayPause();
+    /// Moves the playhead (clamped into [0, duration]); playing continues from there.
+    void seek(double seconds);
+    void setLooping(bool looping);
+
+signals:
+    void timeChanged(double seconds);
+    void playingChanged(bool playing);
+    void loopingChanged(bool looping);
+    void durationChanged(double seconds);
+
+private:
+    void onTick();
+    void setTimeInternal(double seconds);
+
+    QTimer m_timer;
+    QElapsedTimer m_sinceAnchor; // real time since m_anchorTime was the current time
+    double m_anchorTime = 0;
+    double m_time = 0;
+    double m_duration = 0;
+    bool m_looping = false;
+};
+
+} // namespace thespis::editor
