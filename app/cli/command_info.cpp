@@ -27,7 +27,7 @@ std::string clipSummary(const scenario::ClipAsset& clip)
 {
     if (!clip.file.empty())
         return "file " + clip.file;
-    const std::size_t perFrame = 4 * clip.joints.size() + (clip.rootTranslation ? 3 : 0) + clip.scalars.size();
+    const std::size_t perFrame = clip.valuesPerFrame();
     const std::size_t frames = perFrame ? clip.frames.size() / perFrame : 0;
     char text[160];
     std::snprintf(text, sizeof text, "inline, %zu joints, %zu scalars, %zu frames at %g fps", clip.joints.size(),

@@ -33,6 +33,9 @@ struct ClipAsset {
     std::vector<float> frames;
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const ClipAsset&) const = default;
+
+    /// Floats per inline frame: a quaternion per joint, the root translation, the scalars.
+    std::size_t valuesPerFrame() const { return 4 * joints.size() + (rootTranslation ? 3 : 0) + scalars.size(); }
 };
 
 enum class ModifierKind { TimeStretch, TimeWarp, Loop, Mirror, GlobalTransform, TimeOffset, Trim };

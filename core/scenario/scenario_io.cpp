@@ -576,7 +576,7 @@ ClipAsset readClip(const json& value, const std::string& path)
             fail(r.fieldPath("rootTranslation"), "a root translation needs a root joint (the first of joints)");
         if (clip.joints.empty() && clip.scalars.empty())
             fail(r.fieldPath("joints"), "an inline clip needs at least one joint or scalar");
-        const std::size_t width = 4 * clip.joints.size() + (clip.rootTranslation ? 3 : 0) + clip.scalars.size();
+        const std::size_t width = clip.valuesPerFrame();
         const json& frames = r.array("frames", true);
         if (frames.empty())
             fail(r.fieldPath("frames"), "an inline clip needs at least one frame");
@@ -901,7 +901,7 @@ ojson writeClip(const ClipAsset& clip)
         out["rootTranslation"] = clip.rootTranslation;
         if (!clip.scalars.empty())
             out["scalars"] = clip.scalars;
-        const std::size_t width = 4 * clip.joints.size() + (clip.rootTranslation ? 3 : 0) + clip.scalars.size();
+        const std::size_t width = clip.valuesPerFrame();
         ojson frames = ojson::array();
         if (width > 0) {
             for (std::size_t start = 0; start + width <= clip.frames.size(); start += width) {
