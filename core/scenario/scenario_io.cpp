@@ -753,12 +753,14 @@ ojson toOrdered(const json& value)
 }
 
 // Known fields first, in the writer's order; unknown ones after, never replacing a known one.
+// `skip` names a member written separately (empty: none; an unknown member may itself be
+// named "", so the empty name must not mean "skip").
 void appendExtra(ojson& out, const json& extra, std::string_view skip = {})
 {
     if (!extra.is_object())
         return;
     for (const auto& [key, value] : extra.items())
-        if (key != skip && !out.contains(key))
+        if ((skip.empty() || key != skip) && !out.contains(key))
             out[key] = toOrdered(value);
 }
 

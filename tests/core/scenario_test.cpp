@@ -338,6 +338,25 @@ TEST(ScenarioIo, UnknownFieldsSurviveAtEveryLevel)
     EXPECT_EQ(a["scale"]["keys"][1]["tangent"], "autoClamped");
 }
 
+TEST(ScenarioIo, UnknownFieldWithAnEmptyNameSurvives)
+{
+    // Found by fuzz_scenario: a member named "" was taken for "nothing to skip" and dropped.
+    json doc = minimalDocument();
+    doc[""] = 1;
+    doc["characters"][0]["layers"][0][""] = "body";
+    doc["characters"][0]["layers"][0]["actions"][0]["scale"] = json::parse(R"({"schema": "Curve.1", "kind": "keyframed",
+        "keys": [{"time": 0.0, "value": 1.0, "": 7}]})");
+    auto first = parseJson(doc);
+    ASSERT_TRUE(first.ok()) << describe(first.error());
+    const json out = json::parse(serializeScenario(*first));
+    EXPECT_EQ(out[""], 1);
+    EXPECT_EQ(out["characters"][0]["layers"][0][""], "body");
+    EXPECT_EQ(out["characters"][0]["layers"][0]["actions"][0]["scale"]["keys"][0][""], 7);
+    auto second = parseScenario(out.dump());
+    ASSERT_TRUE(second.ok());
+    EXPECT_EQ(*second, *first);
+}
+
 TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 {
     const std::string text = serializeScenario(Scenario{});
