@@ -46,6 +46,17 @@ bool isInlineSpace(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '
 bool isBreak(char c) { return c == '\n' || c == '\r'; }
 bool isSpace(char c) { return isInlineSpace(c) || isBreak(c); }
 
+/// The next whitespace-separated word of `line` from `pos` (moved past it); empty at the end.
+std::string_view nextWord(std::string_view line, std::size_t& pos)
+{
+    while (pos < line.size() && isInlineSpace(line[pos]))
+        ++pos;
+    const std::size_t start = pos;
+    while (pos < line.size() && !isInlineSpace(line[pos]))
+        ++pos;
+    return line.substr(start, pos - start);
+}
+
 bool equalsNoCase(std::string_view a, std::string_view b)
 {
     return a.size() == b.size()
@@ -566,15 +577,7 @@ Result<Motion> parseMotion(Scanner& scanner, const Hierarchy& h, int motionLine,
         // Split the line into values.
         std::size_t count = 0, pos = 0;
         bool any = false;
-        while (true) {
-            while (pos < lineText.size() && isInlineSpace(lineText[pos]))
-                ++pos;
-            if (pos >= lineText.size())
-                break;
-            const std::size_t start = pos;
-            while (pos < lineText.size() && !isInlineSpace(lineText[pos]))
-                ++pos;
-            const std::string_view token = lineText.substr(start, pos - start);
+        for (std::string_view token = nextWord(lineText, pos); !token.empty(); token = nextWord(lineText, pos)) {
             any = true;
             if (count >= channels)
                 return corrupt(lineNumber, "frame " + std::to_string(frame + 1) + " has more than the "
@@ -1086,16 +1089,8 @@ Result<JointMapping> parseMapping(std::string_view text)
             line = line.substr(0, hash);
         std::vector<std::string_view> words;
         std::size_t pos = 0;
-        while (true) {
-            while (pos < line.size() && isInlineSpace(line[pos]))
-                ++pos;
-            if (pos >= line.size())
-                break;
-            const std::size_t start = pos;
-            while (pos < line.size() && !isInlineSpace(line[pos]))
-                ++pos;
-            words.push_back(line.substr(start, pos - start));
-        }
+        for (std::string_view word = nextWord(line, pos); !word.empty(); word = nextWord(line, pos))
+            words.push_back(word);
         if (words.empty())
             continue;
         // "file_joint hanim_joint", also written "file_joint = hanim_joint" or "… -> …".
