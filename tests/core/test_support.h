@@ -4,6 +4,16 @@
 #include <filesystem>
 #include <string>
 
+// THESPIS_SANITIZED: set in AddressSanitizer builds, where the heaviest checks run with less
+// work (g++ defines __SANITIZE_ADDRESS__, clang answers __has_feature).
+#if defined(__SANITIZE_ADDRESS__)
+#define THESPIS_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define THESPIS_SANITIZED 1
+#endif
+#endif
+
 namespace thespis::test {
 
 /// ../shared/data: the real third-party data (motion capture, characters, probes).

@@ -1,0 +1,893 @@
+#include "scene/gltf_mesh.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <tiny_gltf.h>
+
+namespace thespis::core::scene {
+namespace {
+
+// ---- 4×4 affine matrices, column-major as glTF stores them ----------------------------------
+
+using Mat4 = std::array<double, 16>;
+
+constexpr Mat4 kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+double at(const Mat4& m, int row, int column) { return m[column * 4 + row]; }
+
+Mat4 multiply(const Mat4& a, const Mat4& b)
+{
+    Mat4 c{};
+    for (int column = 0; column < 4; ++column)
+        for (int row = 0; row < 4; ++row) {
+            double sum = 0;
+            for (int k = 0; k < 4; ++k)
+                sum += at(a, row, k) * at(b, k, column);
+            c[column * 4 + row] = sum;
+        }
+    return c;
+}
+
+Vec3d transformPoint(const Mat4& m, Vec3d p)
+{
+    return {m[0] * p.x + m[4] * p.y + m[8] * p.z + m[12], m[1] * p.x + m[5] * p.y + m[9] * p.z + m[13],
+            m[2] * p.x + m[6] * p.y + m[10] * p.z + m[14]};
+}
+
+double determinant3(const Mat4& m)
+{
+    return at(m, 0, 0) * (at(m, 1, 1) * at(m, 2, 2) - at(m, 1, 2) * at(m, 2, 1)) -
+           at(m, 0, 1) * (at(m, 1, 0) * at(m, 2, 2) - at(m, 1, 2) * at(m, 2, 0)) +
+           at(m, 0, 2) * (at(m, 1, 0) * at(m, 2, 1) - at(m, 1, 1) * at(m, 2, 0));
+}
+
+/// Cofactor matrix of the 3×3 part: transforms normals (the inverse transpose up to a positive
+/// factor times the determinant's sign, which the caller normalizes away and handles).
+std::array<double, 9> normalMatrix(const Mat4& m)
+{
+    auto a = [&](int r, int c) { return at(m, r, c); };
+    std::array<double, 9> n{}; // row-major
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+            const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+            n[r * 3 + c] = a(r1, c1) * a(r2, c2) - a(r1, c2) * a(r2, c1);
+        }
+    return n;
+}
+
+/// Inverse of an affine matrix (last row 0 0 0 1); nullopt when singular.
+std::optional<Mat4> invertAffine(const Mat4& m)
+{
+    const double det = determinant3(m);
+    if (!(std::abs(det) > 1e-300) || !std::isfinite(det))
+        return std::nullopt;
+    const std::array<double, 9> cof = normalMatrix(m); // cofactors; inverse = cofᵀ / det
+    Mat4 inv = kIdentity;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            inv[c * 4 + r] = cof[c * 3 + r] / det;
+    const Vec3d t = transformPoint(inv, {m[12], m[13], m[14]});
+    inv[12] = -t.x;
+    inv[13] = -t.y;
+    inv[14] = -t.z;
+    return inv;
+}
+
+Mat4 localMatrix(const tinygltf::Node& node)
+{
+    if (node.matrix.size() == 16) {
+        Mat4 m;
+        std::copy(node.matrix.begin(), node.matrix.end(), m.begin());
+        return m;
+    }
+    const Vec3d t = node.translation.size() == 3 ? Vec3d{node.translation[0], node.translation[1], node.translation[2]}
+                                                 : Vec3d{};
+    const Vec3d s = node.scale.size() == 3 ? Vec3d{node.scale[0], node.scale[1], node.scale[2]} : Vec3d{1, 1, 1};
+    Quatd q;
+    if (node.rotation.size() == 4)
+        q = anim::normalize(Quatd{node.rotation[0], node.rotation[1], node.rotation[2], node.rotation[3]});
+    const Vec3d x = anim::rotate(q, Vec3d{s.x, 0, 0});
+    const Vec3d y = anim::rotate(q, Vec3d{0, s.y, 0});
+    const Vec3d z = anim::rotate(q, Vec3d{0, 0, s.z});
+    return {x.x, x.y, x.z, 0, y.x, y.y, y.z, 0, z.x, z.y, z.z, 0, t.x, t.y, t.z, 1};
+}
+
+/// The rotation of an affine matrix with scale removed (columns made orthonormal by
+/// Gram–Schmidt); a mirroring matrix gives the rotation of its negation.
+Quatd rotationOf(const Mat4& m)
+{
+    auto normalized = [](Vec3d v) {
+        const double n = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+        return n > 0 ? v * (1 / n) : v;
+    };
+    auto dot3 = [](Vec3d a, Vec3d b) { return a.x * b.x + a.y * b.y + a.z * b.z; };
+    const double sign = determinant3(m) < 0 ? -1.0 : 1.0;
+    Vec3d x = normalized(Vec3d{m[0], m[1], m[2]} * sign);
+    Vec3d y = Vec3d{m[4], m[5], m[6]} * sign;
+    y = normalized(y - x * dot3(x, y));
+    const Vec3d z{x.y * y.z - x.z * y.y, x.z * y.x - x.x * y.z, x.x * y.y - x.y * y.x};
+    // Shepperd's method on the orthonormal basis (columns x, y, z).
+    const double trace = x.x + y.y + z.z;
+    Quatd q;
+    if (trace > 0) {
+        const double s = std::sqrt(trace + 1) * 2;
+        q = {(y.z - z.y) / s, (z.x - x.z) / s, (x.y - y.x) / s, s / 4};
+    } else if (x.x > y.y && x.x > z.z) {
+        const double s = std::sqrt(1 + x.x - y.y - z.z) * 2;
+        q = {s / 4, (y.x + x.y) / s, (z.x + x.z) / s, (y.z - z.y) / s};
+    } else if (y.y > z.z) {
+        const double s = std::sqrt(1 + y.y - x.x - z.z) * 2;
+        q = {(y.x + x.y) / s, s / 4, (z.y + y.z) / s, (z.x - x.z) / s};
+    } else {
+        const double s = std::sqrt(1 + z.z - x.x - y.y) * 2;
+        q = {(z.x + x.z) / s, (z.y + y.z) / s, s / 4, (x.y - y.x) / s};
+    }
+    return anim::normalize(q);
+}
+
+// ---- reading accessors ------------------------------------------------------------------------
+
+/// An accessor's elements as doubles (normalized integers mapped to [0, 1] or [-1, 1]).
+struct AccessorData {
+    std::vector<double> values;
+    int components = 0;
+    std::size_t count = 0;
+    double operator()(std::size_t element, int component) const { return values[element * components + component]; }
+};
+
+// Upper bound on one accessor's element count: keeps a lying file from asking for gigabytes.
+constexpr std::size_t kMaxAccessorCount = std::size_t(1) << 26;
+
+double readComponent(const unsigned char* bytes, int componentType, bool normalized)
+{
+    auto load = [bytes]<class T>(T) {
+        T value;
+        std::memcpy(&value, bytes, sizeof value);
+        return value;
+    };
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+        const double v = load(std::int8_t{});
+        return normalized ? std::max(v / 127.0, -1.0) : v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+        const double v = load(std::uint8_t{});
+        return normalized ? v / 255.0 : v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+        const double v = load(std::int16_t{});
+        return normalized ? std::max(v / 32767.0, -1.0) : v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        const double v = load(std::uint16_t{});
+        return normalized ? v / 65535.0 : v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_INT: return load(std::int32_t{});
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return load(std::uint32_t{});
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return load(float{});
+    default: return 0; // refused before reading
+    }
+}
+
+class GltfReader {
+public:
+    GltfReader(const tinygltf::Model& model, std::string file) : m_model(model), m_file(std::move(file)) {}
+
+    const std::string& file() const { return m_file; }
+
+    Error broken(const std::string& what) const
+    {
+        return makeError(ErrorCode::CorruptData, "The glTF file " + m_file + " is broken: " + what + ".");
+    }
+
+    /// Reads accessor `index`, which `use` names for messages ("mesh \"Body\" POSITION").
+    Result<AccessorData> read(int index, const std::string& use) const
+    {
+        if (index < 0 || std::size_t(index) >= m_model.accessors.size())
+            return broken(use + " names accessor " + std::to_string(index) + ", which does not exist");
+        const tinygltf::Accessor& accessor = m_model.accessors[std::size_t(index)];
+        const std::string where = "accessor " + std::to_string(index) + " (" + use + ")";
+        const int componentSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(accessor.componentType));
+        const int components = tinygltf::GetNumComponentsInType(std::uint32_t(accessor.type));
+        if (componentSize <= 0 || componentSize > 4 || components <= 0)
+            return broken(where + " has an unknown component or element type");
+        if (accessor.count > kMaxAccessorCount)
+            return broken(where + " claims " + std::to_string(accessor.count) + " elements");
+
+        // Matrix columns of 1- and 2-byte components are padded to 4 bytes.
+        const int columns = accessor.type == TINYGLTF_TYPE_MAT2   ? 2
+                            : accessor.type == TINYGLTF_TYPE_MAT3 ? 3
+                            : accessor.type == TINYGLTF_TYPE_MAT4 ? 4
+                                                                  : 1;
+        const int rows = components / columns;
+        const std::size_t columnBytes = std::size_t(rows * componentSize);
+        const std::size_t columnStride = columns > 1 ? (columnBytes + 3) / 4 * 4 : columnBytes;
+        const std::size_t elementSize = columnStride * std::size_t(columns);
+
+        AccessorData data;
+        data.components = components;
+        data.count = accessor.count;
+        data.values.assign(accessor.count * std::size_t(components), 0.0); // no buffer view: zeros
+
+        auto readElement = [&](const unsigned char* element, std::size_t to) {
+            for (int c = 0; c < columns; ++c)
+                for (int r = 0; r < rows; ++r)
+                    data.values[to * std::size_t(components) + std::size_t(c * rows + r)] =
+                        readComponent(element + std::size_t(c) * columnStride + std::size_t(r * componentSize),
+                                      accessor.componentType, accessor.normalized);
+        };
+
+        if (accessor.bufferView >= 0 && accessor.count > 0) {
+            Result<std::span<const unsigned char>> view = viewBytes(accessor.bufferView, where);
+            if (!view)
+                return view.error();
+            const std::size_t byteStride = m_model.bufferViews[std::size_t(accessor.bufferView)].byteStride;
+            const std::size_t stride = byteStride != 0 ? byteStride : elementSize;
+            if (stride < elementSize)
+                return broken(where + " has a byte stride smaller than its elements");
+            if (accessor.byteOffset > view->size() ||
+                (accessor.count - 1) > (view->size() - accessor.byteOffset) / stride ||
+                accessor.byteOffset + (accessor.count - 1) * stride + elementSize > view->size())
+                return broken(where + " reads past the end of its buffer view");
+            for (std::size_t i = 0; i < accessor.count; ++i)
+                readElement(view->data() + accessor.byteOffset + i * stride, i);
+        }
+
+        if (accessor.sparse.isSparse) {
+            const auto& sparse = accessor.sparse;
+            const std::string sparseWhere = "the sparse part of " + where;
+            if (sparse.count < 0 || std::size_t(sparse.count) > accessor.count)
+                return broken(sparseWhere + " has more elements than the accessor");
+            const std::size_t count = std::size_t(sparse.count);
+            const int indexSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(sparse.indices.componentType));
+            if (sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+                return broken(sparseWhere + " has indices that are not unsigned integers");
+            Result<std::span<const unsigned char>> indices =
+                viewRange(sparse.indices.bufferView, sparse.indices.byteOffset, count * std::size_t(indexSize), sparseWhere);
+            if (!indices)
+                return indices.error();
+            Result<std::span<const unsigned char>> values =
+                viewRange(sparse.values.bufferView, sparse.values.byteOffset, count * elementSize, sparseWhere);
+            if (!values)
+                return values.error();
+            for (std::size_t i = 0; i < count; ++i) {
+                const double target = readComponent(indices->data() + i * std::size_t(indexSize),
+                                                    sparse.indices.componentType, false);
+                if (target >= double(accessor.count))
+                    return broken(sparseWhere + " replaces element " + std::to_string(std::uint64_t(target)) +
+                                  " of " + std::to_string(accessor.count));
+                readElement(values->data() + i * elementSize, std::size_t(target));
+            }
+        }
+        return data;
+    }
+
+private:
+    Result<std::span<const unsigned char>> viewBytes(int viewIndex, const std::string& where) const
+    {
+        if (viewIndex < 0 || std::size_t(viewIndex) >= m_model.bufferViews.size())
+            return broken(where + " names buffer view " + std::to_string(viewIndex) + ", which does not exist");
+        const tinygltf::BufferView& view = m_model.bufferViews[std::size_t(viewIndex)];
+        if (view.buffer < 0 || std::size_t(view.buffer) >= m_model.buffers.size())
+            return broken("buffer view " + std::to_string(viewIndex) + " names a buffer that does not exist");
+        const std::vector<unsigned char>& buffer = m_model.buffers[std::size_t(view.buffer)].data;
+        if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset)
+            return broken("buffer view " + std::to_string(viewIndex) + " reaches past the end of its buffer (" +
+                          std::to_string(buffer.size()) + " bytes)");
+        return std::span<const unsigned char>(buffer.data() + view.byteOffset, view.byteLength);
+    }
+
+    Result<std::span<const unsigned char>> viewRange(int viewIndex, int offset, std::size_t length,
+                                                     const std::string& where) const
+    {
+        Result<std::span<const unsigned char>> view = viewBytes(viewIndex, where);
+        if (!view)
+            return view.error();
+        if (offset < 0 || std::size_t(offset) > view->size() || length > view->size() - std::size_t(offset))
+            return broken(where + " reads past the end of its buffer view");
+        return view->subspan(std::size_t(offset), length);
+    }
+
+    const tinygltf::Model& m_model;
+    std::string m_file;
+};
+
+// ---- building the mesh ------------------------------------------------------------------------
+
+/// Extensions that may be required without changing the geometry we read. Anything else that a
+/// file requires (Draco, meshopt, GPU instancing, …) is refused.
+bool extensionKeepsGeometry(const std::string& name)
+{
+    return name == "KHR_mesh_quantization" || name == "KHR_texture_transform" || name == "KHR_lights_punctual" ||
+           name == "KHR_texture_basisu" || name == "EXT_texture_webp" || name.starts_with("KHR_materials_");
+}
+
+/// One primitive in world space, triangles as a list.
+struct PrimitiveGeometry {
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;
+    std::vector<std::uint32_t> indices;
+    std::vector<std::array<int, 8>> joints; ///< skin joint slots per vertex (skinned meshes only)
+    std::vector<std::array<float, 8>> weights;
+};
+
+constexpr std::uint32_t kUnmapped = 0xffffffffu;
+
+struct SegmentBuilder {
+    Segment segment;
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;
+    std::vector<std::uint32_t> indices; ///< local to the builder
+};
+
+struct SkinBind {
+    Mat4 placement = kIdentity;  ///< the root joint's skinning matrix: frame of an unsplit mesh
+    std::vector<int> jointNodes; ///< skin joint slot → node index
+    std::vector<Mat4> skinning;  ///< per joint slot: joint world · inverse bind matrix
+};
+
+Vec3 normalizedOr(Vec3d v, Vec3 fallback)
+{
+    const double length = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    if (!(length > 1e-20) || !std::isfinite(length))
+        return fallback;
+    return {float(v.x / length), float(v.y / length), float(v.z / length)};
+}
+
+class MeshBuilder {
+public:
+    MeshBuilder(const tinygltf::Model& model, const GltfReader& reader, const GltfMeshOptions& options)
+        : m_model(model), m_reader(reader), m_options(options)
+    {
+    }
+
+    Result<void> computeWorldMatrices();
+    Result<std::vector<int>> meshNodesOfScene() const;
+    Result<void> addMeshNode(int nodeIndex);
+    CharacterMesh finish();
+
+private:
+    std::string nodeName(int index) const;
+    Result<SkinBind> skinBind(int skinIndex) const;
+    Result<PrimitiveGeometry> readPrimitive(const tinygltf::Primitive& primitive, const std::string& use, const std::vector<double>& morphWeights,
+                                            const SkinBind* skin, const Mat4& nodeWorld) const;
+    Result<std::vector<std::uint32_t>> readTriangles(const tinygltf::Primitive& primitive, std::size_t vertexCount,
+                                                     const std::string& use) const;
+    std::size_t builderFor(std::pair<int, int> key, const std::string& baseName, const std::string& joint,
+                           const Mat4& frame);
+    void append(std::size_t builder, const PrimitiveGeometry& geometry, std::span<const std::uint32_t> triangles);
+
+    const tinygltf::Model& m_model;
+    const GltfReader& m_reader;
+    const GltfMeshOptions& m_options;
+    std::vector<Mat4> m_world;
+    std::vector<int> m_parent;
+    std::vector<SegmentBuilder> m_builders;
+    std::map<std::pair<int, int>, std::size_t> m_builderByKey; ///< (0, mesh node) or (1, joint node)
+};
+
+std::string MeshBuilder::nodeName(int index) const
+{
+    const tinygltf::Node& node = m_model.nodes[std::size_t(index)];
+    if (!node.name.empty())
+        return node.name;
+    if (node.mesh >= 0 && std::size_t(node.mesh) < m_model.meshes.size() && !m_model.meshes[std::size_t(node.mesh)].name.empty())
+        return m_model.meshes[std::size_t(node.mesh)].name;
+    return "node" + std::to_string(index);
+}
+
+Result<void> MeshBuilder::computeWorldMatrices()
+{
+    const std::size_t count = m_model.nodes.size();
+    m_parent.assign(count, -1);
+    for (std::size_t n = 0; n < count; ++n)
+        for (int child : m_model.nodes[n].children) {
+            if (child < 0 || std::size_t(child) >= count)
+                return m_reader.broken("node " + std::to_string(n) + " has a child " + std::to_string(child) +
+                                       " that does not exist");
+            if (m_parent[std::size_t(child)] >= 0 || std::size_t(child) == n)
+                return m_reader.broken("node " + std::to_string(child) + " has more than one parent");
+            m_parent[std::size_t(child)] = int(n);
+        }
+    m_world.assign(count, kIdentity);
+    std::vector<int> stack;
+    for (std::size_t n = 0; n < count; ++n)
+        if (m_parent[n] < 0)
+            stack.push_back(int(n));
+    std::size_t reached = 0;
+    while (!stack.empty()) {
+        const int n = stack.back();
+        stack.pop_back();
+        const Mat4 local = localMatrix(m_model.nodes[std::size_t(n)]);
+        m_world[std::size_t(n)] = m_parent[std::size_t(n)] < 0 ? local : multiply(m_world[std::size_t(m_parent[std::size_t(n)])], local);
+        ++reached;
+        for (int child : m_model.nodes[std::size_t(n)].children)
+            stack.push_back(child);
+    }
+    if (reached != count)
+        return m_reader.broken("its node hierarchy has a cycle");
+    return {};
+}
+
+Result<std::vector<int>> MeshBuilder::meshNodesOfScene() const
+{
+    std::vector<int> roots;
+    if (m_model.scenes.empty()) {
+        for (std::size_t n = 0; n < m_model.nodes.size(); ++n)
+            if (m_parent[n] < 0)
+                roots.push_back(int(n));
+    } else {
+        const int scene = m_model.defaultScene >= 0 ? m_model.defaultScene : 0;
+        if (std::size_t(scene) >= m_model.scenes.size())
+            return m_reader.broken("the default scene " + std::to_string(scene) + " does not exist");
+        roots = m_model.scenes[std::size_t(scene)].nodes;
+        for (int root : roots)
+            if (root < 0 || std::size_t(root) >= m_model.nodes.size())
+                return m_reader.broken("the scene names node " + std::to_string(root) + ", which does not exist");
+    }
+    // Depth first, children in file order: segments come out in the file's hierarchy order.
+    std::vector<int> meshNodes;
+    std::vector<int> stack(roots.rbegin(), roots.rend());
+    while (!stack.empty()) {
+        const int n = stack.back();
+        stack.pop_back();
+        const tinygltf::Node& node = m_model.nodes[std::size_t(n)];
+        if (node.mesh >= 0)
+            meshNodes.push_back(n);
+        stack.insert(stack.end(), node.children.rbegin(), node.children.rend());
+    }
+    return meshNodes;
+}
+
+Result<SkinBind> MeshBuilder::skinBind(int skinIndex) const
+{
+    if (std::size_t(skinIndex) >= m_model.skins.size())
+        return m_reader.broken("a node names skin " + std::to_string(skinIndex) + ", which does not exist");
+    const tinygltf::Skin& skin = m_model.skins[std::size_t(skinIndex)];
+    const std::string use = "skin " + std::to_string(skinIndex);
+    if (skin.joints.empty())
+        return m_reader.broken(use + " has no joints");
+    for (int joint : skin.joints)
+        if (joint < 0 || std::size_t(joint) >= m_model.nodes.size())
+            return m_reader.broken(use + " names joint node " + std::to_string(joint) + ", which does not exist");
+    std::vector<Mat4> inverseBind(skin.joints.size(), kIdentity);
+    if (skin.inverseBindMatrices >= 0) {
+        Result<AccessorData> matrices = m_reader.read(skin.inverseBindMatrices, use + " inverse bind matrices");
+        if (!matrices)
+            return matrices.error();
+        if (matrices->components != 16 || matrices->count < skin.joints.size())
+            return m_reader.broken(use + " needs one 4×4 inverse bind matrix per joint");
+        for (std::size_t j = 0; j < skin.joints.size(); ++j)
+            std::copy_n(matrices->values.begin() + std::ptrdiff_t(j * 16), 16, inverseBind[j].begin());
+    }
+    // Skinning matrices at the nodes' rest pose (the pose every unskinned mesh node is placed
+    // in): joint world · inverse bind. When the rest pose is the bind pose they all equal the
+    // transform B that places the mesh as modelled; when it is not (RobotExpressive's hands are
+    // bound in a T-pose, its arms rest down) skinning puts the mesh where the skeleton is.
+    std::size_t root = 0;
+    for (std::size_t j = 0; j < skin.joints.size(); ++j) {
+        const int parent = m_parent[std::size_t(skin.joints[j])];
+        if (std::find(skin.joints.begin(), skin.joints.end(), parent) == skin.joints.end()) {
+            root = j;
+            break;
+        }
+    }
+    SkinBind bind;
+    bind.jointNodes = skin.joints;
+    for (std::size_t j = 0; j < skin.joints.size(); ++j) {
+        bind.skinning.push_back(multiply(m_world[std::size_t(skin.joints[j])], inverseBind[j]));
+        if (!invertAffine(bind.skinning.back()))
+            return m_reader.broken(use + " has a singular skinning matrix for joint " + nodeName(skin.joints[j]));
+    }
+    bind.placement = bind.skinning[root];
+    return bind;
+}
+
+Result<std::vector<std::uint32_t>> MeshBuilder::readTriangles(const tinygltf::Primitive& primitive,
+                                                              std::size_t vertexCount, const std::string& use) const
+{
+    std::vector<std::uint32_t> elements;
+    if (primitive.indices >= 0) {
+        Result<AccessorData> indices = m_reader.read(primitive.indices, use + " indices");
+        if (!indices)
+            return indices.error();
+        const tinygltf::Accessor& accessor = m_model.accessors[std::size_t(primitive.indices)];
+        if (indices->components != 1 || accessor.normalized ||
+            (accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+             accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+             accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+            return m_reader.broken(use + " indices are not unsigned integer scalars");
+        elements.reserve(indices->count);
+        for (double index : indices->values) {
+            if (index >= double(vertexCount))
+                return m_reader.broken(use + " uses vertex " + std::to_string(std::uint64_t(index)) + " of " +
+                                       std::to_string(vertexCount));
+            elements.push_back(std::uint32_t(index));
+        }
+    } else {
+        elements.resize(vertexCount);
+        for (std::size_t i = 0; i < vertexCount; ++i)
+            elements[i] = std::uint32_t(i);
+    }
+
+    std::vector<std::uint32_t> triangles;
+    switch (primitive.mode) {
+    case TINYGLTF_MODE_TRIANGLES:
+        if (elements.size() % 3 != 0)
+            return m_reader.broken(use + " has " + std::to_string(elements.size()) +
+                                   " triangle indices, not a multiple of 3");
+        return elements;
+    case TINYGLTF_MODE_TRIANGLE_STRIP:
+        // Every other triangle of a strip is flipped to keep the winding; degenerate ones (strip
+        // restarts) carry no surface and are dropped.
+        for (std::size_t i = 2; i < elements.size(); ++i) {
+            const std::uint32_t a = elements[i - 2], b = elements[i - 1], c = elements[i];
+            if (a == b || b == c || a == c)
+                continue;
+            if (i % 2 == 0)
+                triangles.insert(triangles.end(), {a, b, c});
+            else
+                triangles.insert(triangles.end(), {b, a, c});
+        }
+        return triangles;
+    case TINYGLTF_MODE_TRIANGLE_FAN:
+        for (std::size_t i = 2; i < elements.size(); ++i)
+            triangles.insert(triangles.end(), {elements[i - 1], elements[i], elements[0]});
+        return triangles;
+    default:
+        return makeError(ErrorCode::NotOurFormat,
+                         "The glTF file " + m_reader.file() + " has " + use +
+                             " made of points or lines; only triangle meshes can be used as characters.",
+                         "primitive mode " + std::to_string(primitive.mode));
+    }
+}
+
+Result<PrimitiveGeometry> MeshBuilder::readPrimitive(const tinygltf::Primitive& primitive, const std::string& use,
+                                                     const std::vector<double>& morphWeights,
+                                                     const SkinBind* skin, const Mat4& nodeWorld) const
+{
+    const auto attribute = [&](const std::string& name) {
+        const auto found = primitive.attributes.find(name);
+        return found == primitive.attributes.end() ? -1 : found->second;
+    };
+    if (attribute("POSITION") < 0)
+        return makeError(ErrorCode::CorruptData,
+                         "The glTF file " + m_reader.file() + " has " + use + " without vertex positions (POSITION).");
+    Result<AccessorData> positions = m_reader.read(attribute("POSITION"), use + " POSITION");
+    if (!positions)
+        return positions.error();
+    if (positions->components != 3)
+        return m_reader.broken(use + " POSITION is not made of 3D vectors");
+    const std::size_t vertexCount = positions->count;
+
+    std::optional<AccessorData> normals;
+    if (attribute("NORMAL") >= 0) {
+        Result<AccessorData> read = m_reader.read(attribute("NORMAL"), use + " NORMAL");
+        if (!read)
+            return read.error();
+        if (read->components != 3 || read->count != vertexCount)
+            return m_reader.broken(use + " NORMAL does not hold one 3D vector per vertex");
+        normals = std::move(*read);
+    }
+
+    // Morph targets at the default weights are part of the rest shape.
+    for (std::size_t t = 0; t < primitive.targets.size() && t < morphWeights.size(); ++t) {
+        if (morphWeights[t] == 0)
+            continue;
+        for (const char* name : {"POSITION", "NORMAL"}) {
+            const auto found = primitive.targets[t].find(name);
+            AccessorData* base = std::string_view(name) == "POSITION" ? &*positions : (normals ? &*normals : nullptr);
+            if (found == primitive.targets[t].end() || !base)
+                continue;
+            const std::string targetUse = use + " morph target " + std::to_string(t) + " " + name;
+            Result<AccessorData> delta = m_reader.read(found->second, targetUse);
+            if (!delta)
+                return delta.error();
+            if (delta->components != 3 || delta->count != vertexCount)
+                return m_reader.broken(targetUse + " does not hold one 3D vector per vertex");
+            for (std::size_t i = 0; i < base->values.size(); ++i)
+                base->values[i] += morphWeights[t] * delta->values[i];
+        }
+    }
+
+    Result<std::vector<std::uint32_t>> triangles = readTriangles(primitive, vertexCount, use);
+    if (!triangles)
+        return triangles.error();
+    PrimitiveGeometry geometry;
+    geometry.indices = std::move(*triangles);
+
+    if (skin) {
+        geometry.joints.assign(vertexCount, {});
+        geometry.weights.assign(vertexCount, {});
+        for (int set = 0; set < 2; ++set) {
+            const int jointsIndex = attribute("JOINTS_" + std::to_string(set));
+            const int weightsIndex = attribute("WEIGHTS_" + std::to_string(set));
+            if (jointsIndex < 0 || weightsIndex < 0)
+                continue;
+            Result<AccessorData> joints = m_reader.read(jointsIndex, use + " JOINTS_" + std::to_string(set));
+            if (!joints)
+                return joints.error();
+            Result<AccessorData> weights = m_reader.read(weightsIndex, use + " WEIGHTS_" + std::to_string(set));
+            if (!weights)
+                return weights.error();
+            if (joints->components != 4 || weights->components != 4 || joints->count != vertexCount ||
+                weights->count != vertexCount)
+                return m_reader.broken(use + " skin weights do not hold 4 joints and 4 weights per vertex");
+            for (std::size_t v = 0; v < vertexCount; ++v)
+                for (int k = 0; k < 4; ++k) {
+                    const double joint = (*joints)(v, k);
+                    const float weight = float((*weights)(v, k));
+                    const bool known = joint >= 0 && joint < double(skin->jointNodes.size());
+                    if (!known && weight != 0)
+                        return m_reader.broken(use + " weights joint " + std::to_string(std::int64_t(joint)) + " of a skin with " +
+                                               std::to_string(skin->jointNodes.size()) + " joints");
+                    geometry.joints[v][std::size_t(set * 4 + k)] = known ? int(joint) : 0;
+                    geometry.weights[v][std::size_t(set * 4 + k)] = known ? weight : 0.0f;
+                }
+        }
+    }
+    // The transform of vertex v: the node's world matrix, or for a skinned mesh the weighted
+    // blend of its joints' skinning matrices (linear blend skinning at the rest pose).
+    auto vertexTransform = [&](std::size_t v) {
+        if (!skin)
+            return nodeWorld;
+        Mat4 blend{};
+        double total = 0;
+        for (std::size_t k = 0; k < 8; ++k) {
+            const double w = geometry.weights[v][k];
+            if (w == 0)
+                continue;
+            const Mat4& m = skin->skinning[std::size_t(geometry.joints[v][k])];
+            for (std::size_t i = 0; i < 16; ++i)
+                blend[i] += w * m[i];
+            total += w;
+        }
+        if (!(total > 0))
+            return skin->placement; // unweighted vertices stay with the skeleton's root
+        for (double& entry : blend)
+            entry /= total;
+        return blend;
+    };
+
+    // A mirroring transform turns the faces inside out: swap two corners to keep them outward.
+    if (determinant3(skin ? skin->placement : nodeWorld) < 0)
+        for (std::size_t t = 0; t < geometry.indices.size(); t += 3)
+            std::swap(geometry.indices[t + 1], geometry.indices[t + 2]);
+
+    geometry.positions.resize(vertexCount);
+    std::vector<Vec3d> fileNormals(normals ? vertexCount : 0);
+    for (std::size_t v = 0; v < vertexCount; ++v) {
+        const Mat4 transform = vertexTransform(v);
+        const Vec3d p = transformPoint(transform, {(*positions)(v, 0), (*positions)(v, 1), (*positions)(v, 2)});
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            return m_reader.broken(use + " has a vertex position that is not finite");
+        geometry.positions[v] = {float(p.x), float(p.y), float(p.z)};
+        if (normals) {
+            const std::array<double, 9> m = normalMatrix(transform);
+            const double sign = determinant3(transform) < 0 ? -1.0 : 1.0;
+            const double n[3] = {(*normals)(v, 0), (*normals)(v, 1), (*normals)(v, 2)};
+            fileNormals[v] = Vec3d{m[0] * n[0] + m[1] * n[1] + m[2] * n[2], m[3] * n[0] + m[4] * n[1] + m[5] * n[2],
+                                   m[6] * n[0] + m[7] * n[1] + m[8] * n[2]} *
+                             sign;
+        }
+    }
+
+    // Area-weighted face normals: used where the file has none (or a zero one).
+    std::vector<Vec3d> faceSum(vertexCount);
+    for (std::size_t t = 0; t < geometry.indices.size(); t += 3) {
+        const std::uint32_t i0 = geometry.indices[t], i1 = geometry.indices[t + 1], i2 = geometry.indices[t + 2];
+        const Vec3 a = geometry.positions[i0], b = geometry.positions[i1], c = geometry.positions[i2];
+        const Vec3d e1{double(b.x) - a.x, double(b.y) - a.y, double(b.z) - a.z};
+        const Vec3d e2{double(c.x) - a.x, double(c.y) - a.y, double(c.z) - a.z};
+        const Vec3d cross{e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x};
+        for (std::uint32_t i : {i0, i1, i2})
+            faceSum[i] = faceSum[i] + cross; // |cross| = twice the area: area weighting
+    }
+    geometry.normals.resize(vertexCount);
+    for (std::size_t v = 0; v < vertexCount; ++v) {
+        const Vec3 fromFaces = normalizedOr(faceSum[v], Vec3{0, 1, 0});
+        geometry.normals[v] = normals ? normalizedOr(fileNormals[v], fromFaces) : fromFaces;
+    }
+    return geometry;
+}
+
+std::size_t MeshBuilder::builderFor(std::pair<int, int> key, const std::string& baseName, const std::string& joint,
+                                    const Mat4& frame)
+{
+    if (const auto found = m_builderByKey.find(key); found != m_builderByKey.end())
+        return found->second;
+    // Names stay unique: a second "Torso" (a mesh node and a joint of that name) gets "Torso#2".
+    std::string name = baseName;
+    for (int suffix = 2; std::any_of(m_builders.begin(), m_builders.end(),
+                                     [&](const SegmentBuilder& b) { return b.segment.name == name; });
+         ++suffix)
+        name = baseName + "#" + std::to_string(suffix);
+    SegmentBuilder builder;
+    builder.segment.name = name;
+    builder.segment.joint = joint;
+    builder.segment.bindRotation = rotationOf(frame);
+    builder.segment.bindTranslation = {frame[12], frame[13], frame[14]};
+    builder.segment.posture = defaultPosture(joint);
+    m_builders.push_back(std::move(builder));
+    m_builderByKey.emplace(key, m_builders.size() - 1);
+    return m_builders.size() - 1;
+}
+
+void MeshBuilder::append(std::size_t builderIndex, const PrimitiveGeometry& geometry,
+                         std::span<const std::uint32_t> triangles)
+{
+    SegmentBuilder& builder = m_builders[builderIndex];
+    // Only the vertices these triangles use (all of them when the primitive is not split).
+    const bool whole = triangles.size() == geometry.indices.size();
+    std::vector<std::uint32_t> remap(geometry.positions.size(), kUnmapped);
+    const std::uint32_t base = std::uint32_t(builder.positions.size());
+    auto take = [&](std::uint32_t v) {
+        if (remap[v] == kUnmapped) {
+            remap[v] = std::uint32_t(builder.positions.size()) - base;
+            builder.positions.push_back(geometry.positions[v]);
+            builder.normals.push_back(geometry.normals[v]);
+        }
+        return base + remap[v];
+    };
+    if (whole) // keep unused vertices and the file's vertex order
+        for (std::uint32_t v = 0; v < geometry.positions.size(); ++v)
+            take(v);
+    for (std::uint32_t v : triangles)
+        builder.indices.push_back(take(v));
+}
+
+Result<void> MeshBuilder::addMeshNode(int nodeIndex)
+{
+    const tinygltf::Node& node = m_model.nodes[std::size_t(nodeIndex)];
+    if (std::size_t(node.mesh) >= m_model.meshes.size())
+        return m_reader.broken("node " + nodeName(nodeIndex) + " names mesh " + std::to_string(node.mesh) +
+                               ", which does not exist");
+    const tinygltf::Mesh& mesh = m_model.meshes[std::size_t(node.mesh)];
+    const std::vector<double>& morphWeights = node.weights.empty() ? mesh.weights : node.weights;
+
+    std::optional<SkinBind> skin;
+    if (node.skin >= 0) {
+        Result<SkinBind> bind = skinBind(node.skin);
+        if (!bind)
+            return bind.error();
+        skin = std::move(*bind);
+    }
+    const bool split = skin && m_options.splitSkinnedByJoint;
+    const Mat4& frame = skin ? skin->placement : m_world[std::size_t(nodeIndex)];
+
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+        const std::string use = "mesh \"" + (mesh.name.empty() ? nodeName(nodeIndex) : mesh.name) + "\" primitive " +
+                                std::to_string(p);
+        Result<PrimitiveGeometry> geometry =
+            readPrimitive(mesh.primitives[p], use, morphWeights, skin ? &*skin : nullptr, m_world[std::size_t(nodeIndex)]);
+        if (!geometry)
+            return geometry.error();
+        if (!split) {
+            const std::size_t builder =
+                builderFor({0, nodeIndex}, nodeName(nodeIndex), skin ? std::string() : nodeName(nodeIndex), frame);
+            append(builder, *geometry, geometry->indices);
+            continue;
+        }
+        // Split: each triangle goes to the joint with the largest weight summed over its corners.
+        const std::size_t jointCount = skin->jointNodes.size();
+        std::vector<std::vector<std::uint32_t>> trianglesOfJoint(jointCount);
+        std::vector<double> sum(jointCount);
+        for (std::size_t t = 0; t < geometry->indices.size(); t += 3) {
+            std::fill(sum.begin(), sum.end(), 0.0);
+            for (std::size_t corner = 0; corner < 3; ++corner) {
+                const std::uint32_t v = geometry->indices[t + corner];
+                for (std::size_t k = 0; k < 8; ++k) // slots were checked against the skin when read
+                    sum[std::size_t(geometry->joints[v][k])] += geometry->weights[v][k];
+            }
+            const std::size_t dominant = std::size_t(std::max_element(sum.begin(), sum.end()) - sum.begin());
+            trianglesOfJoint[dominant].insert(trianglesOfJoint[dominant].end(), geometry->indices.begin() + std::ptrdiff_t(t),
+                                              geometry->indices.begin() + std::ptrdiff_t(t + 3));
+        }
+        for (std::size_t j = 0; j < jointCount; ++j) {
+            if (trianglesOfJoint[j].empty())
+                continue;
+            const int jointNode = skin->jointNodes[j];
+            const std::size_t builder =
+                builderFor({1, jointNode}, nodeName(jointNode), nodeName(jointNode), m_world[std::size_t(jointNode)]);
+            append(builder, *geometry, trianglesOfJoint[j]);
+        }
+    }
+    // A mesh node with no primitives still names its segment.
+    if (!split && mesh.primitives.empty())
+        builderFor({0, nodeIndex}, nodeName(nodeIndex), skin ? std::string() : nodeName(nodeIndex), frame);
+    return {};
+}
+
+CharacterMesh MeshBuilder::finish()
+{
+    CharacterMesh mesh;
+    for (SegmentBuilder& builder : m_builders) {
+        Segment segment = builder.segment;
+        segment.firstVertex = std::uint32_t(mesh.positions.size());
+        segment.vertexCount = std::uint32_t(builder.positions.size());
+        segment.firstTriangle = std::uint32_t(mesh.triangleCount());
+        segment.triangleCount = std::uint32_t(builder.indices.size() / 3);
+        mesh.positions.insert(mesh.positions.end(), builder.positions.begin(), builder.positions.end());
+        mesh.normals.insert(mesh.normals.end(), builder.normals.begin(), builder.normals.end());
+        for (std::uint32_t index : builder.indices)
+            mesh.indices.push_back(segment.firstVertex + index);
+        mesh.segments.push_back(std::move(segment));
+    }
+    return mesh;
+}
+
+bool startsWithGlbMagic(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    char magic[4] = {};
+    in.read(magic, 4);
+    return in.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
+}
+
+} // namespace
+
+Result<CharacterMesh> loadGltfMesh(const std::filesystem::path& path, const GltfMeshOptions& options)
+{
+    const std::string file = path.string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        return makeError(ErrorCode::FileNotFound, "The glTF file " + file + " does not exist.");
+
+    tinygltf::Model model;
+    std::string error;
+    std::string warning;
+    tinygltf::TinyGLTF loader;
+    // Geometry only: images are not decoded (the renderer loads textures itself).
+    loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*,
+                             int, void*) { return true; },
+                          nullptr);
+    bool loaded = false;
+    try {
+        loaded = startsWithGlbMagic(path) ? loader.LoadBinaryFromFile(&model, &error, &warning, file)
+                                          : loader.LoadASCIIFromFile(&model, &error, &warning, file);
+    } catch (const std::exception& e) {
+        error = e.what();
+    }
+    if (!loaded)
+        return makeError(ErrorCode::CorruptData, "The glTF file " + file + " cannot be read.", error);
+
+    for (const std::string& extension : model.extensionsRequired)
+        if (!extensionKeepsGeometry(extension))
+            return makeError(ErrorCode::NotOurFormat,
+                             "The glTF file " + file + " requires the extension " + extension +
+                                 ", which Thespis does not support; export it without " + extension + ".");
+
+    GltfReader reader(model, file);
+    MeshBuilder builder(model, reader, options);
+    if (Result<void> ok = builder.computeWorldMatrices(); !ok)
+        return ok.error();
+    Result<std::vector<int>> meshNodes = builder.meshNodesOfScene();
+    if (!meshNodes)
+        return meshNodes.error();
+    if (meshNodes->empty())
+        return makeError(ErrorCode::CorruptData, "The glTF file " + file + " has no mesh in its scene.");
+    for (int node : *meshNodes)
+        if (Result<void> ok = builder.addMeshNode(node); !ok)
+            return ok.error();
+
+    CharacterMesh mesh = builder.finish();
+    if (mesh.vertexCount() >= std::size_t(UINT32_MAX))
+        return makeError(ErrorCode::CorruptData, "The glTF file " + file + " has too many vertices.");
+    if (Result<void> ok = mesh.validate(); !ok)
+        return makeError(ErrorCode::Internal, "The mesh read from " + file + " is inconsistent.", ok.error().message);
+    return mesh;
+}
+
+} // namespace thespis::core::scene
