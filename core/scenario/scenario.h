@@ -14,6 +14,7 @@
 #include "anim/blending_params.h"
 #include "anim/curve.h"
 #include "anim/joint_mask.h"
+#include "scene/character_mesh.h"
 #include "util/tick.h"
 
 namespace thespis::core::scenario {
@@ -91,6 +92,11 @@ struct Character {
     std::string name;
     /// "hanim-loa1", "hanim-loa2", "hanim-25", or "clip:NAME" to use a BVH clip's own skeleton.
     std::string skeleton = "hanim-loa1";
+    /// glTF file of the character's body (path relative to the scenario); empty = the built-in
+    /// procedural humanoid.
+    std::string model;
+    /// Receiver / occluder and PI / PD tags of the model's segments (paper §6.1.3), by segment name.
+    std::vector<scene::SegmentTag> segmentTags;
     std::vector<ClipAsset> clips;
     std::vector<Layer> layers;
     nlohmann::json extra = nlohmann::json::object();
@@ -104,11 +110,21 @@ struct NamedMask {
     bool operator==(const NamedMask&) const = default;
 };
 
+/// The distant light (paper §6): an HDR probe file (path relative to the scenario) and its layout
+/// ("angular", "latlong", "mirrorball", "cross"). No probe: the studio's default light.
+struct LightingSpec {
+    std::string probe;
+    std::string layout = "latlong";
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const LightingSpec&) const = default;
+};
+
 struct Scenario {
     std::string name;
     Tick duration = 0; ///< length of the scenario's timeline (0: up to the last action's end)
     std::vector<Character> characters;
     std::vector<NamedMask> masks;
+    LightingSpec lighting;
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const Scenario&) const = default;
 

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "lighting/probe.h"
 #include "scenario/scenario_upgrade.h"
 #include "util/file_io.h"
 
@@ -604,6 +605,42 @@ bool isSkeletonSpec(const std::string& spec)
            || (spec.starts_with("clip:") && spec.size() > 5);
 }
 
+// {"name": "hair", "role": "receiver", "posture": "pi"}; role and posture are optional.
+scene::SegmentTag readSegmentTag(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "");
+    scene::SegmentTag tag;
+    tag.segment = r.name();
+    if (const std::string role = r.string("role", false); !role.empty()) {
+        auto parsed = scene::parseSegmentRole(role);
+        if (!parsed)
+            fail(r.fieldPath("role"), parsed.error().message);
+        tag.role = *parsed;
+    }
+    if (const std::string posture = r.string("posture", false); !posture.empty()) {
+        auto parsed = scene::parsePosture(posture);
+        if (!parsed)
+            fail(r.fieldPath("posture"), parsed.error().message);
+        tag.posture = *parsed;
+    }
+    // Unknown members of a tag are not kept: a tag is a small closed record.
+    if (!r.extra().empty())
+        fail(path + "." + r.extra().begin().key(), "unknown member of a segment tag (known: name, role, posture)");
+    return tag;
+}
+
+LightingSpec readLighting(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "Lighting.1");
+    LightingSpec lighting;
+    lighting.probe = r.string("probe", false);
+    lighting.layout = r.string("layout", false, lighting.layout);
+    if (auto layout = lighting::parseProbeLayout(lighting.layout); !layout)
+        fail(r.fieldPath("layout"), layout.error().message);
+    lighting.extra = r.extra();
+    return lighting;
+}
+
 Character readCharacter(const json& value, const std::string& path)
 {
     ObjectReader r(value, path, "Character.1");
@@ -613,7 +650,16 @@ Character readCharacter(const json& value, const std::string& path)
     if (!isSkeletonSpec(character.skeleton))
         fail(r.fieldPath("skeleton"), "expected \"hanim-loa1\", \"hanim-loa2\", \"hanim-25\" or \"clip:NAME\", found "
                                           + quote(character.skeleton));
+    character.model = r.string("model", false);
     std::set<std::string> names;
+    const json& segments = r.array("segments", false);
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        character.segmentTags.push_back(readSegmentTag(segments[i], indexed(r.fieldPath("segments"), i)));
+        if (!names.insert(character.segmentTags.back().segment).second)
+            fail(indexed(r.fieldPath("segments"), i) + ".name",
+                 "segment " + quote(character.segmentTags.back().segment) + " is tagged twice");
+    }
+    names.clear();
     const json& clips = r.array("clips", false);
     for (std::size_t i = 0; i < clips.size(); ++i) {
         character.clips.push_back(readClip(clips[i], indexed(r.fieldPath("clips"), i)));
@@ -678,6 +724,8 @@ Scenario readScenario(const json& document)
             fail(indexed("characters", i) + ".name",
                  "another character is already named " + quote(scenario.characters.back().name));
     }
+    if (const json* lighting = r.find("lighting"))
+        scenario.lighting = readLighting(*lighting, "lighting");
     scenario.extra = r.extra();
     return scenario;
 }
@@ -925,6 +973,21 @@ ojson writeCharacter(const Character& character)
     out["schema"] = "Character.1";
     out["name"] = character.name;
     out["skeleton"] = character.skeleton;
+    // Written only when set, so that scenarios without models stay as they were.
+    if (!character.model.empty())
+        out["model"] = character.model;
+    if (!character.segmentTags.empty()) {
+        ojson segments = ojson::array();
+        for (const scene::SegmentTag& tag : character.segmentTags) {
+            ojson entry = ojson::object();
+            entry["name"] = tag.segment;
+            entry["role"] = scene::segmentRoleName(tag.role);
+            if (tag.posture)
+                entry["posture"] = scene::postureName(*tag.posture);
+            segments.push_back(std::move(entry));
+        }
+        out["segments"] = std::move(segments);
+    }
     ojson clips = ojson::array();
     for (const ClipAsset& clip : character.clips)
         clips.push_back(writeClip(clip));
@@ -1112,6 +1175,14 @@ std::string serializeScenario(const Scenario& scenario)
     for (const Character& character : scenario.characters)
         characters.push_back(writeCharacter(character));
     out["characters"] = std::move(characters);
+    if (scenario.lighting != LightingSpec{}) {
+        ojson lighting = ojson::object();
+        lighting["schema"] = "Lighting.1";
+        lighting["probe"] = scenario.lighting.probe;
+        lighting["layout"] = scenario.lighting.layout;
+        appendExtra(lighting, scenario.lighting.extra);
+        out["lighting"] = std::move(lighting);
+    }
     appendExtra(out, scenario.extra);
     std::string text;
     print(out, 0, text);

@@ -11,6 +11,8 @@
 #include "anim/bvh.h"
 #include "anim/hanim.h"
 #include "anim/modifiers.h"
+#include "lighting/probe.h"
+#include "scene/gltf_mesh.h"
 
 namespace thespis::core::scenario {
 
@@ -482,10 +484,49 @@ Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const std::filesy
     return first;
 }
 
+namespace {
+
+// An error of a file the scenario names, prefixed with the field that names it.
+Error fieldError(const std::string& field, const Error& error)
+{
+    return makeError(error.code, field + ": " + error.message, error.detail);
+}
+
+// The lighting side of a scenario (models and their segment tags, the probe): loaded only to
+// validate, since the runtime plays animation and the renderer loads meshes itself.
+void validateLightingFiles(const Scenario& scenario, const std::filesystem::path& baseDir, std::vector<Error>& errors)
+{
+    for (std::size_t i = 0; i < scenario.characters.size(); ++i) {
+        const Character& character = scenario.characters[i];
+        const std::string field = "characters[" + std::to_string(i) + "]";
+        if (character.model.empty())
+            continue; // the built-in humanoid (rendering issue) checks its own tags when it is built
+        auto mesh = scene::loadGltfMesh(baseDir / character.model);
+        if (!mesh) {
+            errors.push_back(fieldError(field + ".model", mesh.error()));
+            continue;
+        }
+        if (auto tagged = scene::applySegmentTags(*mesh, character.segmentTags); !tagged)
+            errors.push_back(fieldError(field + ".segments", tagged.error()));
+    }
+    if (!scenario.lighting.probe.empty()) {
+        auto layout = lighting::parseProbeLayout(scenario.lighting.layout);
+        auto image = lighting::readHdrImage(baseDir / scenario.lighting.probe);
+        if (!image)
+            errors.push_back(fieldError("lighting.probe", image.error()));
+        else if (layout)
+            if (auto fits = lighting::checkProbeSize(*image, *layout); !fits)
+                errors.push_back(fieldError("lighting.probe", fits.error()));
+    }
+}
+
+} // namespace
+
 std::vector<Error> validateScenario(const Scenario& scenario, const std::filesystem::path& baseDir)
 {
     RuntimeBuilder builder(scenario, baseDir);
     (void)builder.build();
+    validateLightingFiles(scenario, baseDir, builder.errors);
     return std::move(builder.errors);
 }
 

@@ -300,6 +300,32 @@ TEST(ScenarioIo, RoundTripKeepsExactTicksAndFloats)
     EXPECT_NE(serializeScenario(s).find("[0.1, 0.2, 0.3, 0.9]"), std::string::npos);
 }
 
+TEST(ScenarioIo, ModelSegmentTagsAndLightingRoundTrip)
+{
+    Scenario s;
+    s.name = "lit";
+    Character c;
+    c.name = "Robot";
+    c.model = "robot.glb";
+    c.segmentTags = {{"hair", scene::SegmentRole::Receiver, scene::Posture::Independent},
+                     {"coat", scene::SegmentRole::Occluder, std::nullopt}};
+    s.characters.push_back(c);
+    s.lighting.probe = "probes/sunset.hdr";
+    s.lighting.layout = "angular";
+    const std::string text = serializeScenario(s);
+    EXPECT_NE(text.find("\"role\": \"receiver\""), std::string::npos) << text;
+    auto again = parseScenario(text);
+    ASSERT_TRUE(again.ok()) << describe(again.error());
+    EXPECT_EQ(*again, s);
+
+    // Without a model, tags or probe nothing new is written: older scenarios stay byte-identical.
+    Scenario plain;
+    plain.characters.push_back(Character{.name = "Plain"});
+    const std::string plainText = serializeScenario(plain);
+    for (const char* member : {"\"model\"", "\"segments\"", "\"lighting\""})
+        EXPECT_EQ(plainText.find(member), std::string::npos) << member;
+}
+
 TEST(ScenarioIo, UnknownFieldsSurviveAtEveryLevel)
 {
     json doc = minimalDocument();
@@ -497,6 +523,14 @@ TEST(ScenarioIo, MalformedFieldsAreNamed)
         {"duplicate character", [&](json& d) { d["characters"].push_back(d["characters"][0]); },
          "characters[1].name: another character is already named \"A\""},
         {"characters not a list", [&](json& d) { d["characters"] = json::object(); }, "characters: expected a list"},
+        {"unknown segment role", [&](json& d) { d["characters"][0]["segments"] = json::parse(R"([{"name": "hair", "role": "shiny"}])"); },
+         "characters[0].segments[0].role: "},
+        {"segment tagged twice", [&](json& d) { d["characters"][0]["segments"] = json::parse(R"([{"name": "hair"}, {"name": "hair"}])"); },
+         "characters[0].segments[1].name: segment \"hair\" is tagged twice"},
+        {"unknown member of a tag", [&](json& d) { d["characters"][0]["segments"] = json::parse(R"([{"name": "hair", "colour": 1}])"); },
+         "characters[0].segments[0].colour: unknown member of a segment tag"},
+        {"unknown probe layout", [&](json& d) { d["lighting"] = json::parse(R"({"probe": "p.hdr", "layout": "fisheye"})"); },
+         "lighting.layout: "},
         {"layer not an object", [&](json& d) { d["characters"][0]["layers"][0] = 7; },
          "characters[0].layers[0]: expected an object"},
         {"wrong schema", [&](json& d) { action(d)["schema"] = "Action.2"; },
@@ -976,6 +1010,32 @@ TEST(ScenarioRuntime, CatchesWhatTheParserCannotSee)
     EXPECT_NE(all.find("skeleton \"clip:c\": the clip is stored inline"), std::string::npos) << all;
     EXPECT_NE(all.find("Character \"A\", clip \"c\": "), std::string::npos) << all;
     EXPECT_NE(all.find("action \"a\", weight: a weight must not be negative"), std::string::npos) << all;
+}
+
+TEST(ScenarioRuntime, ValidatesModelsSegmentTagsAndTheProbe)
+{
+    const fs::path characters = thespis::test::sharedData("characters");
+    if (!fs::exists(characters / "RobotExpressive/RobotExpressive.glb"))
+        GTEST_SKIP() << "the real characters are not in " << characters;
+    Scenario s = parseJson(minimalDocument()).value();
+    s.characters[0].model = "RobotExpressive/RobotExpressive.glb";
+    s.characters[0].segmentTags = {{"Head", scene::SegmentRole::Receiver, std::nullopt}};
+    EXPECT_TRUE(validateScenario(s, characters).empty());
+
+    s.characters[0].segmentTags.push_back({"Tail", scene::SegmentRole::Occluder, std::nullopt});
+    s.lighting.probe = "no_such_probe.hdr";
+    auto problems = validateScenario(s, characters);
+    ASSERT_EQ(problems.size(), 2u);
+    EXPECT_NE(problems[0].message.find("characters[0].segments: "), std::string::npos) << problems[0].message;
+    EXPECT_NE(problems[0].message.find("Tail"), std::string::npos) << problems[0].message;
+    EXPECT_EQ(problems[1].code, ErrorCode::FileNotFound);
+    EXPECT_EQ(problems[1].message.rfind("lighting.probe: ", 0), 0u) << problems[1].message;
+
+    s.characters[0].model = "missing.glb";
+    s.lighting = {};
+    problems = validateScenario(s, characters);
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems[0].message.rfind("characters[0].model: ", 0), 0u) << problems[0].message;
 }
 
 TEST(ScenarioRuntime, FaceLayersNeedFapClipsAndBodyLayersJoints)
