@@ -12,6 +12,7 @@ const std::vector<Command>& commands()
     static const std::vector<Command> all = {
         {validateSpec(), &runValidate},
         {bakeMotionSpec(), &runBakeMotion},
+        {bakeSpec(), &runBake},
         {infoSpec(), &runInfo},
     };
     return all;

@@ -26,6 +26,8 @@ CommandSpec validateSpec();
 int runValidate(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec bakeMotionSpec();
 int runBakeMotion(const CommandSpec& spec, const ParsedArguments& arguments);
+CommandSpec bakeSpec();
+int runBake(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec infoSpec();
 int runInfo(const CommandSpec& spec, const ParsedArguments& arguments);
 

@@ -112,11 +112,22 @@ py::array_t<T> toArray(std::span<const T> values, std::vector<py::ssize_t> shape
     return array;
 }
 
+/// Runs `work` with the GIL released (file reading, clip loading, projection may take a while)
+/// and returns its value; Results are unwrapped afterwards, with the GIL held again.
+template <class Work>
+auto withoutGil(Work&& work)
+{
+    py::gil_scoped_release release;
+    return work();
+}
+
 void bindErrors(py::module_& m);
 void bindFrames(py::module_& m); // FrameLayout, TimeDomain, Blendable (bind_anim.cpp)
 void bindAnim(py::module_& m);   // curves, masks, clips, modifiers, schedules
 void bindSkeleton(py::module_& m);
 void bindBvh(py::module_& m);
 void bindScenario(py::module_& m);
+void bindScene(py::module_& m);    // thespis.scene: character meshes, segments, tags, glTF
+void bindLighting(py::module_& m); // thespis.lighting: SH, probes, the transfer bake
 
 } // namespace thespis::python

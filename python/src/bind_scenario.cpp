@@ -189,6 +189,10 @@ void bindDocument(py::module_& m)
                    + std::to_string(c.layers.size()) + " layers>";
         });
     defExtra(character);
+    character.def_readwrite("model", &Character::model,
+                            "glTF file of the body, relative to the scenario; '' = the built-in humanoid.");
+    defList(character, "segment_tags", &Character::segmentTags,
+            "Receiver / occluder and PI / PD tags of the model's segments (thespis.scene.SegmentTag, a copy).");
     defList(character, "clips", &Character::clips, "The character's clips (a copy).");
     defList(character, "layers", &Character::layers, "The character's layers (a copy).");
 
@@ -204,6 +208,14 @@ void bindDocument(py::module_& m)
         .def_readwrite("mask", &NamedMask::mask)
         .def("__eq__", [](const NamedMask& a, const NamedMask& b) { return a == b; });
     defExtra(namedMask);
+
+    py::class_<LightingSpec> lighting(m, "LightingSpec", "The scene's distant light: an HDR probe file and its layout.");
+    lighting.def(py::init([](std::string probe, std::string layout) { return LightingSpec{std::move(probe), std::move(layout)}; }),
+                 "probe"_a = "", "layout"_a = "latlong")
+        .def_readwrite("probe", &LightingSpec::probe, "Probe file relative to the scenario; '' = the default light.")
+        .def_readwrite("layout", &LightingSpec::layout, "'angular', 'latlong', 'mirrorball' or 'cross'.")
+        .def("__eq__", [](const LightingSpec& a, const LightingSpec& b) { return a == b; });
+    defExtra(lighting);
 
     py::class_<Scenario> scenario(m, "Scenario",
                                   "The scenario document (format 'thespis-scenario'): characters, masks and the "
@@ -242,6 +254,7 @@ void bindDocument(py::module_& m)
     defExtra(scenario);
     defList(scenario, "characters", &Scenario::characters, "The characters (a copy).");
     defList(scenario, "masks", &Scenario::masks, "The named joint masks (a copy).");
+    scenario.def_readwrite("lighting", &Scenario::lighting, "The light probe (a LightingSpec).");
 }
 
 void bindRuntime(py::module_& m)
@@ -265,15 +278,6 @@ void bindRuntime(py::module_& m)
         .def_readonly("duration", &ScenarioRuntime::duration,
                       "Seconds: the scenario's duration, or the latest end of a finite action.")
         .def("find_character", &ScenarioRuntime::findCharacter, "name"_a, py::return_value_policy::reference_internal);
-}
-
-// Runs `work` with the GIL released (file reading and clip loading may take a while) and
-// returns its value; Results are unwrapped afterwards, with the GIL held again.
-template <class Work>
-auto withoutGil(Work&& work)
-{
-    py::gil_scoped_release release;
-    return work();
 }
 
 } // namespace

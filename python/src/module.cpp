@@ -12,5 +12,7 @@ PYBIND11_MODULE(_thespis, m)
     thespis::python::bindSkeleton(m);
     thespis::python::bindAnim(m);
     thespis::python::bindBvh(m);
+    thespis::python::bindScene(m);
     thespis::python::bindScenario(m);
+    thespis::python::bindLighting(m);
 }
