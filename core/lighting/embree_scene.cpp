@@ -59,8 +59,16 @@ const SharedDevice& sharedDevice()
 /// through the context it is given and the ray's id (its index in the chunk).
 struct OcclusionContext {
     RTCIntersectContext base;
-    const std::uint32_t* originVertex = nullptr; ///< per ray of the chunk, or null
+    const std::uint32_t* originVertex = nullptr; ///< per ray of the chunk (by ray id)
 };
+
+/// A ray that leaves its origin vertex at least this steeply (|cos| to every triangle around the
+/// vertex) can meet those triangles only at t ≈ 0: rounding puts such a hit within about
+/// 1e-7 · edge / |cos| ≤ 1e-5 · edge of the origin, far below any ε ≥ kUnfilteredMinEpsilon.
+/// Such rays skip the exclusion filter, which costs Embree about a third of its speed; the
+/// others (near-tangent rays, or ε too small) go through it.
+constexpr float kUnfilteredMinCos = 1e-2f;
+constexpr float kUnfilteredMinEpsilon = 1e-5f;
 
 /// Rejects hits on triangles that contain the ray's origin vertex (its one-ring).
 void rejectOriginTriangles(const RTCFilterFunctionNArguments* args)
@@ -102,9 +110,46 @@ public:
     void occluded(const RayBatch& rays, std::span<std::uint8_t> occluded) const override;
 
 private:
+    /// Whether the origin-triangle filter can be skipped for this ray (see kUnfilteredMinCos).
+    bool needsFilter(std::uint32_t vertex, const anim::Vec3& origin, float dx, float dy, float dz, float tnear) const;
+    void trace(std::span<RTCRay> rays, const std::uint32_t* originVertex, bool filtered) const;
+
     std::vector<std::uint32_t> m_indices; ///< global vertex indices, read by the filter
-    RTCScene m_scene = nullptr;           ///< null for an empty proxy
+    /// Unit normals of the triangles around each vertex (compressed rows: m_ringStart[v] …
+    /// m_ringStart[v + 1]), for needsFilter.
+    std::vector<std::uint32_t> m_ringStart;
+    std::vector<anim::Vec3> m_ringNormals;
+    std::vector<anim::Vec3> m_positions; ///< the argument rests on the ray starting at its vertex
+    RTCScene m_scene = nullptr; ///< null for an empty proxy
 };
+
+bool EmbreeScene::needsFilter(std::uint32_t vertex, const anim::Vec3& origin, float dx, float dy, float dz,
+                              float tnear) const
+{
+    if (vertex == kNoVertex || vertex + 1 >= m_ringStart.size())
+        return false;
+    if (m_ringStart[vertex] == m_ringStart[vertex + 1])
+        return false; // no proxy triangle touches the vertex: nothing to exclude
+    if (!(tnear >= kUnfilteredMinEpsilon) || !(origin == m_positions[vertex]))
+        return true;
+    for (std::uint32_t k = m_ringStart[vertex]; k < m_ringStart[vertex + 1]; ++k) {
+        const anim::Vec3& n = m_ringNormals[k];
+        if (std::abs(n.x * dx + n.y * dy + n.z * dz) < kUnfilteredMinCos)
+            return true;
+    }
+    return false;
+}
+
+void EmbreeScene::trace(std::span<RTCRay> rays, const std::uint32_t* originVertex, bool filtered) const
+{
+    if (rays.empty())
+        return;
+    OcclusionContext context;
+    rtcInitIntersectContext(&context.base);
+    context.base.filter = filtered ? rejectOriginTriangles : nullptr;
+    context.originVertex = originVertex;
+    rtcOccluded1M(m_scene, &context.base, rays.data(), unsigned(rays.size()), sizeof(RTCRay));
+}
 
 Result<void> EmbreeScene::build(RTCDevice device, std::span<const anim::Vec3> positions)
 {
@@ -136,7 +181,29 @@ Result<void> EmbreeScene::build(RTCDevice device, std::span<const anim::Vec3> po
     }
     std::copy(m_indices.begin(), m_indices.end(), triangles);
     rtcSetGeometryUserData(geometry, m_indices.data());
-    rtcSetGeometryOccludedFilterFunction(geometry, rejectOriginTriangles);
+    // The exclusion filter is passed per query in the context, so rays that cannot need it
+    // trace without it.
+    rtcSetSceneFlags(m_scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+
+    m_positions.assign(positions.begin(), positions.end());
+    m_ringStart.assign(positions.size() + 1, 0);
+    for (std::uint32_t v : m_indices)
+        ++m_ringStart[v + 1];
+    for (std::size_t v = 0; v < positions.size(); ++v)
+        m_ringStart[v + 1] += m_ringStart[v];
+    m_ringNormals.resize(m_indices.size());
+    std::vector<std::uint32_t> filled(m_ringStart.begin(), m_ringStart.end() - 1);
+    for (std::size_t t = 0; t < m_indices.size(); t += 3) {
+        const anim::Vec3 a = positions[m_indices[t]], b = positions[m_indices[t + 1]], c = positions[m_indices[t + 2]];
+        const anim::Vec3 e1 = b - a, e2 = c - a;
+        anim::Vec3 n{e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x};
+        const float length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+        // A degenerate triangle has no plane to graze: keep a zero normal, which always
+        // asks for the filter.
+        n = length > 0 ? n * (1.0f / length) : anim::Vec3{};
+        for (int k = 0; k < 3; ++k)
+            m_ringNormals[filled[m_indices[t + k]]++] = n;
+    }
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(m_scene, geometry);
     rtcReleaseGeometry(geometry);
@@ -156,36 +223,47 @@ void EmbreeScene::occluded(const RayBatch& rays, std::span<std::uint8_t> occlude
     // Embree's traversal expects denormals flushed (speed, and its documented requirement).
     _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
     _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
-    thread_local std::vector<RTCRay> scratch; // RTCRay is 16-byte aligned: aligned operator new
-    if (scratch.size() < kChunk)
+    // Per thread: the chunk's rays, unfiltered ones from the front and filtered ones from the
+    // back, and for each slot the batch index it answers (RTCRay is 16-byte aligned).
+    thread_local std::vector<RTCRay> scratch;
+    thread_local std::vector<std::uint32_t> slotOrigin, slotRay;
+    if (scratch.size() < kChunk) {
         scratch.resize(kChunk);
+        slotOrigin.resize(kChunk);
+        slotRay.resize(kChunk);
+    }
 
-    OcclusionContext context;
-    rtcInitIntersectContext(&context.base);
     for (std::size_t start = 0; start < rays.count; start += kChunk) {
         const std::size_t count = std::min(kChunk, rays.count - start);
-        context.originVertex = rays.originVertex ? rays.originVertex + start : nullptr;
+        std::size_t plain = 0, filtered = count;
         for (std::size_t i = 0; i < count; ++i) {
-            RTCRay& ray = scratch[i];
             const std::size_t r = start + i;
-            assert(std::isfinite(rays.directionX[r]) && std::isfinite(rays.directionY[r]) &&
-                   std::isfinite(rays.directionZ[r]));
-            ray.org_x = rays.originX[r];
-            ray.org_y = rays.originY[r];
-            ray.org_z = rays.originZ[r];
+            const float dx = rays.directionX[r], dy = rays.directionY[r], dz = rays.directionZ[r];
+            assert(std::isfinite(dx) && std::isfinite(dy) && std::isfinite(dz));
+            const std::uint32_t vertex = rays.originVertex ? rays.originVertex[r] : kNoVertex;
+            const anim::Vec3 origin{rays.originX[r], rays.originY[r], rays.originZ[r]};
+            const std::size_t slot = needsFilter(vertex, origin, dx, dy, dz, rays.tnear) ? --filtered : plain++;
+            RTCRay& ray = scratch[slot];
+            ray.org_x = origin.x;
+            ray.org_y = origin.y;
+            ray.org_z = origin.z;
             ray.tnear = rays.tnear;
-            ray.dir_x = rays.directionX[r];
-            ray.dir_y = rays.directionY[r];
-            ray.dir_z = rays.directionZ[r];
+            ray.dir_x = dx;
+            ray.dir_y = dy;
+            ray.dir_z = dz;
             ray.time = 0;
             ray.tfar = rays.tfar;
             ray.mask = 0xffffffffu;
-            ray.id = unsigned(i);
             ray.flags = 0;
+            slotOrigin[slot] = vertex;
+            slotRay[slot] = std::uint32_t(r);
         }
-        rtcOccluded1M(m_scene, &context.base, scratch.data(), unsigned(count), sizeof(RTCRay));
-        for (std::size_t i = 0; i < count; ++i)
-            occluded[start + i] = scratch[i].tfar < 0 ? 1 : 0; // Embree sets tfar = -inf on a hit
+        for (std::size_t slot = filtered; slot < count; ++slot)
+            scratch[slot].id = unsigned(slot - filtered); // the filter's index into slotOrigin
+        trace({scratch.data(), plain}, nullptr, false);
+        trace({scratch.data() + filtered, count - filtered}, slotOrigin.data() + filtered, true);
+        for (std::size_t slot = 0; slot < count; ++slot)
+            occluded[slotRay[slot]] = scratch[slot].tfar < 0 ? 1 : 0; // Embree sets tfar = -inf on a hit
     }
 }
 
