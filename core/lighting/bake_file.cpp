@@ -19,7 +19,9 @@
 // corrupt header cannot make it reserve gigabytes; truncation and inconsistent counts are
 // reported naming the field, then the checksum catches any other change.
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
 
 #include "lighting/transfer_bake.h"
 #include "util/crc32.h"
@@ -28,6 +30,12 @@
 namespace thespis::core::lighting {
 
 namespace {
+
+std::size_t firstNonFinite(const std::vector<float>& values)
+{
+    return std::size_t(std::find_if(values.begin(), values.end(), [](float v) { return !std::isfinite(v); }) -
+                       values.begin());
+}
 
 constexpr char kMagic[8] = {'T', 'H', 'S', 'P', 'P', 'R', 'T', '\0'};
 constexpr std::uint32_t kFormatVersion = 1;
@@ -224,6 +232,12 @@ Result<TransferBake> parseBakeBytes(std::string_view data, const std::filesystem
                          "The bake file " + path.string() + " is damaged: its checksum does not match "
                          "(the file was changed after it was written).",
                          "CRC-32 stored " + std::to_string(stored) + ", computed " + std::to_string(computed));
+    // Values the checksum cannot vouch for: a writer that went wrong before checksumming.
+    if (!std::isfinite(bake.epsilon) || bake.epsilon < 0)
+        return in.corrupt("its epsilon " + std::to_string(bake.epsilon) + " is not a distance");
+    if (const std::size_t bad = firstNonFinite(bake.transfer); bad < bake.transfer.size())
+        return in.corrupt("transfer value " + std::to_string(bad) + " (baked vertex " + std::to_string(bad / perVertex) +
+                          ", coefficient " + std::to_string(bad % perVertex) + ") is not a finite number");
     return bake;
 }
 
@@ -239,6 +253,9 @@ Result<void> writeBakeFile(const std::filesystem::path& path, const TransferBake
                          "Cannot write " + path.string() + ": the bake is inconsistent (order " +
                              std::to_string(bake.order) + ", " + std::to_string(bake.transfer.size()) +
                              " transfer floats for " + std::to_string(expectedFloats) + " expected).");
+    if (!std::isfinite(bake.epsilon) || bake.epsilon < 0 || firstNonFinite(bake.transfer) < bake.transfer.size())
+        return makeError(ErrorCode::InvalidArgument,
+                         "Cannot write " + path.string() + ": the bake holds a value that is not a finite number.");
 
     ByteWriter out;
     out.text().reserve(64 + bake.segments.size() * 48 + bake.transfer.size() * 4);

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <unistd.h>
 
@@ -236,6 +237,30 @@ TEST(BakeFile, InconsistentBakeIsNotWritten)
     ASSERT_FALSE(written.ok());
     EXPECT_EQ(written.error().code, ErrorCode::InvalidArgument);
     EXPECT_FALSE(fs::exists(path));
+}
+
+TEST(BakeFile, NonFiniteValuesAreRefusedEvenWithAGoodChecksum)
+{
+    // Found by fuzz_bake_file: a NaN in the transfer, under a checksum that matches, was accepted.
+    TempDir dir;
+    const fs::path path = dir.path() / "robot.prt";
+    ASSERT_TRUE(writeBakeFile(path, sampleBake()).ok());
+    std::string bytes = readBytes(path);
+    const std::size_t crcOffset = bytes.size() - 4;
+    const std::size_t lastFloat = crcOffset - 4;
+    bytes.replace(lastFloat, 4, std::string("\x00\x00\xc0\x7f", 4)); // a quiet NaN, little-endian
+    putU32(bytes, crcOffset, crc32(std::string_view(bytes).substr(0, crcOffset)));
+    writeBytes(path, bytes);
+    Result<TransferBake> read = readBakeFile(path);
+    ASSERT_FALSE(read.ok());
+    EXPECT_EQ(read.error().code, ErrorCode::CorruptData);
+    EXPECT_NE(read.error().message.find("is not a finite number"), std::string::npos) << read.error().message;
+
+    TransferBake bake = sampleBake();
+    bake.transfer.back() = std::numeric_limits<float>::infinity();
+    const fs::path other = dir.path() / "other.prt";
+    EXPECT_EQ(writeBakeFile(other, bake).error().code, ErrorCode::InvalidArgument);
+    EXPECT_FALSE(fs::exists(other));
 }
 
 TEST(BakeFile, MismatchedMeshIsNamed)
