@@ -20,6 +20,7 @@
 #include <thread>
 
 #include "lighting/probe.h"
+#include "util/quadrature.h"
 
 namespace thespis::core::lighting {
 
@@ -157,34 +158,7 @@ ImagePoint imagePointOf(ProbeLayout layout, int width, int height, const Vec3d& 
 
 // ---- Quadrature over a pixel cut by the unit disc ----------------------------------------------
 
-/// Gauss–Legendre nodes and weights on [−1, 1] (Newton on the Legendre recurrence).
-struct GaussRule {
-    std::vector<double> x, w;
-};
-GaussRule gaussLegendre(int n)
-{
-    GaussRule rule{std::vector<double>(size_t(n)), std::vector<double>(size_t(n))};
-    for (int i = 0; i < n; ++i) {
-        double x = std::cos(kPi * (i + 0.75) / (n + 0.5));
-        double derivative = 1.0;
-        for (int iteration = 0; iteration < 100; ++iteration) {
-            double p0 = 1.0, p1 = x;
-            for (int k = 2; k <= n; ++k) {
-                const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            derivative = n * (x * p1 - p0) / (x * x - 1.0);
-            const double step = p1 / derivative;
-            x -= step;
-            if (std::abs(step) < 1e-16)
-                break;
-        }
-        rule.x[size_t(i)] = x;
-        rule.w[size_t(i)] = 2.0 / ((1.0 - x * x) * derivative * derivative);
-    }
-    return rule;
-}
+using GaussRule = GaussLegendreRule;
 
 /// ∫∫ f over [u0,u1]×[v0,v1] ∩ unit disc, and the f-weighted centroid.
 struct DiscIntegral {

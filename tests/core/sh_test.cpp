@@ -10,6 +10,7 @@
 #include "allocation_counter.h"
 #include "lighting/sh.h"
 #include "lighting/sh_rotation.h"
+#include "util/quadrature.h"
 
 using namespace thespis::core::lighting;
 using thespis::core::anim::Quatd;
@@ -47,22 +48,9 @@ std::vector<QuadratureNode> sphereQuadrature(int order)
 {
     const int zCount = order + 1, phiCount = 2 * order + 2;
     std::vector<QuadratureNode> nodes;
+    const auto rule = thespis::core::gaussLegendre(zCount);
     for (int i = 0; i < zCount; ++i) {
-        double z = std::cos(kPi * (i + 0.75) / (zCount + 0.5)), derivative = 0;
-        for (int iteration = 0; iteration < 100; ++iteration) { // Newton on P_zCount
-            double p0 = 1, p1 = z;
-            for (int k = 2; k <= zCount; ++k) {
-                const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            derivative = zCount * (z * p1 - p0) / (z * z - 1);
-            const double step = p1 / derivative;
-            z -= step;
-            if (std::abs(step) < 1e-16)
-                break;
-        }
-        const double zWeight = 2 / ((1 - z * z) * derivative * derivative);
+        const double z = rule.x[size_t(i)], zWeight = rule.w[size_t(i)];
         const double s = std::sqrt(1 - z * z);
         for (int j = 0; j < phiCount; ++j) {
             const double phi = 2 * kPi * (j + 0.5) / phiCount;
