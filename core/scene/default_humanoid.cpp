@@ -1,0 +1,816 @@
+#include "scene/default_humanoid.h"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace thespis::core::scene {
+namespace {
+
+namespace hanim = anim::hanim;
+using anim::Skeleton;
+
+// ---------------------------------------------------------------------------------------------
+// Small vector helpers (double precision while modelling; the mesh stores floats).
+
+double dot(Vec3d a, Vec3d b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Vec3d cross(Vec3d a, Vec3d b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+Vec3d normalized(Vec3d v)
+{
+    const double length = std::sqrt(dot(v, v));
+    return length > 0 ? v * (1 / length) : v;
+}
+Vec3d lerp(Vec3d a, Vec3d b, double t) { return a + (b - a) * t; }
+double smoothstep(double x)
+{
+    x = std::clamp(x, 0.0, 1.0);
+    return x * x * (3 - 2 * x);
+}
+
+constexpr double kPi = std::numbers::pi;
+/// Target edge length of the tessellation at detail 1, metres (gives about 20k triangles).
+constexpr double kSpacing = 0.02;
+/// The face needs a finer tessellation than the body to show its features.
+constexpr double kHeadSpacingScale = 0.65;
+/// Half-width of the band over which the skin blends between two joints, metres (narrower where
+/// the bones are short: at most 40 % of the shorter neighbouring band).
+constexpr double kBlendHalfWidth = 0.035;
+
+// ---------------------------------------------------------------------------------------------
+// Pieces: surfaces bound to one segment, built in the rest pose.
+
+/// Skin influences per vertex (Skin::influences). A vertex blends at most two joints, the ones on
+/// either side of the nearest joint; unused slots have weight 0.
+constexpr int kInfluences = 4;
+
+struct Influences {
+    std::array<int, kInfluences> joints{};
+    std::array<float, kInfluences> weights{};
+};
+
+Influences rigid(int joint) { return {{joint, 0, 0, 0}, {1.0f, 0, 0, 0}}; }
+
+struct SurfacePoint {
+    Vec3d position;
+    Vec3d normal; ///< unit, outward
+};
+
+/// A surface of the body that belongs to one segment; its triangles index its own vertices.
+struct Piece {
+    int joint = 0; ///< skeleton joint of the segment
+    bool hair = false;
+    std::vector<Vec3d> positions;
+    std::vector<Vec3d> normals;
+    std::vector<Influences> influences;
+    std::vector<std::uint32_t> triangles;
+};
+
+/// Appends to `piece` a grid of rings of `around` vertices at parameters `rings` (the angle runs
+/// over [0, 2π) around each ring); a tip ring is a single vertex (a pole). `pointAt(u, angle)`
+/// gives each vertex; the surface faces outward where cross(∂/∂angle, ∂/∂u) points out, and
+/// `flip` reverses the winding for surfaces parameterised the other way. Triangles are
+/// counter-clockwise seen from outside.
+template <class PointAt, class InfluencesAt>
+void addRings(Piece& piece, std::span<const double> rings, int around, bool startTip, bool endTip, bool flip,
+              const PointAt& pointAt, const InfluencesAt& influencesAt)
+{
+    std::vector<std::uint32_t> ringStart;
+    for (std::size_t i = 0; i < rings.size(); ++i) {
+        ringStart.push_back(std::uint32_t(piece.positions.size()));
+        const bool tip = (i == 0 && startTip) || (i + 1 == rings.size() && endTip);
+        const Influences influences = influencesAt(rings[i]);
+        for (int k = 0; k < (tip ? 1 : around); ++k) {
+            const SurfacePoint point = pointAt(rings[i], 2 * kPi * k / around);
+            piece.positions.push_back(point.position);
+            piece.normals.push_back(point.normal);
+            piece.influences.push_back(influences);
+        }
+    }
+    auto vertex = [&](std::size_t ring, int k) {
+        const bool tip = (ring == 0 && startTip) || (ring + 1 == rings.size() && endTip);
+        return ringStart[ring] + (tip ? 0 : std::uint32_t(k % around));
+    };
+    auto triangle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        piece.triangles.insert(piece.triangles.end(), {a, flip ? c : b, flip ? b : c});
+    };
+    for (std::size_t i = 0; i + 1 < rings.size(); ++i) {
+        for (int k = 0; k < around; ++k) {
+            const std::uint32_t a = vertex(i, k), b = vertex(i, k + 1), c = vertex(i + 1, k + 1), d = vertex(i + 1, k);
+            if (a != b)
+                triangle(a, b, c);
+            if (c != d)
+                triangle(a, c, d);
+        }
+    }
+}
+
+/// `count` + 1 parameters evenly spaced from `from` to `to`, both ends exact (so that a ring
+/// shared by two neighbouring pieces is computed from the same parameter).
+std::vector<double> evenRings(double from, double to, int count)
+{
+    std::vector<double> rings;
+    for (int i = 0; i <= count; ++i)
+        rings.push_back(i == count ? to : from + (to - from) * i / count);
+    return rings;
+}
+
+int stepsFor(double length, double spacing) { return std::max(1, int(std::ceil(length / spacing - 1e-9))); }
+/// Vertices around a ring of this perimeter: a multiple of 4 so that sections stay symmetric.
+int aroundFor(double perimeter, double spacing, int minimum)
+{
+    return std::max(minimum, 4 * int(std::lround(perimeter / spacing / 4)));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sweeps: generalised cylinders along a centre line through keys placed on the rest skeleton,
+// with superelliptic sections and rounded (half-ellipsoid) ends.
+
+/// A cross-section around the centre line: half-widths to the side and to the front and back (in
+/// the sweep's frame, see SweepSpec), and a superellipse exponent (2: an ellipse; more: boxier).
+struct Section {
+    double side, front, back, squareness;
+};
+
+/// A key of a sweep: its centre lies `along` the way from joint `from` to joint `to` (beyond 0…1
+/// it extrapolates; no `to` means at `from`), moved by `offset`. When `joint` is set, that
+/// joint's segment starts at this key.
+struct SweepKey {
+    std::string_view from;
+    std::string_view to;
+    double along = 0;
+    Vec3d offset;
+    Section section;
+    std::string_view joint = {};
+};
+
+/// A swept body part. The section's front points along `front` made perpendicular to the
+/// centre line, its side along tangent × front. The part before the first key with a joint
+/// belongs to that joint's segment; the skin there blends into `parent` (the body part it hangs
+/// from) across the first joint.
+struct SweepSpec {
+    std::span<const SweepKey> keys;
+    Vec3d front;
+    double startCap = 0; ///< length of the rounded end before the first key
+    double endCap = 0;   ///< … and after the last key
+    std::string_view parent = {};
+};
+
+/// World rest positions of every LOA 2 joint.
+Vec3d restPosition(std::string_view joint)
+{
+    static const std::vector<Vec3d> positions = [] {
+        const Skeleton& loa2 = hanim::skeleton(hanim::Level::Loa2);
+        return loa2.worldPositions(loa2.restFrame());
+    }();
+    const int index = hanim::skeleton(hanim::Level::Loa2).find(joint);
+    assert(index >= 0);
+    return positions[std::size_t(index)];
+}
+
+double meanRadius(const Section& s) { return (s.side + (s.front + s.back) / 2) / 2; }
+
+class Sweep {
+public:
+    explicit Sweep(const SweepSpec& spec) : m_front(spec.front), m_startCap(spec.startCap), m_endCap(spec.endCap)
+    {
+        assert(spec.keys.size() >= 2);
+        for (const SweepKey& key : spec.keys) {
+            const Vec3d from = restPosition(key.from);
+            const Vec3d centre = (key.to.empty() ? from : lerp(from, restPosition(key.to), key.along)) + key.offset;
+            const Section& s = key.section;
+            m_values.push_back({centre.x, centre.y, centre.z, s.side, s.front, s.back, s.squareness});
+            const Values& previous = m_values.size() > 1 ? m_values[m_values.size() - 2] : m_values.back();
+            const double chord = std::hypot(centre.x - previous[0], centre.y - previous[1], centre.z - previous[2]);
+            m_knots.push_back(m_knots.empty() ? 0.0 : m_knots.back() + chord);
+        }
+        // Hermite slopes: the derivative of the parabola through each key and its neighbours
+        // (one-sided at the ends), which follows unevenly spaced keys without overshooting much.
+        const std::size_t n = m_values.size();
+        for (std::size_t k = 0; k < n; ++k) {
+            Values slope{};
+            for (std::size_t c = 0; c < slope.size(); ++c) {
+                if (k == 0 || k + 1 == n) {
+                    const std::size_t a = k == 0 ? 0 : k - 1;
+                    slope[c] = (m_values[a + 1][c] - m_values[a][c]) / (m_knots[a + 1] - m_knots[a]);
+                } else {
+                    const double h0 = m_knots[k] - m_knots[k - 1], h1 = m_knots[k + 1] - m_knots[k];
+                    const double d0 = (m_values[k][c] - m_values[k - 1][c]) / h0;
+                    const double d1 = (m_values[k + 1][c] - m_values[k][c]) / h1;
+                    slope[c] = (d0 * h1 + d1 * h0) / (h0 + h1);
+                }
+            }
+            m_slopes.push_back(slope);
+        }
+        // Rounded ends: their parameter runs over about their arc length (a quarter ellipse).
+        m_startCapArc = kPi / 4 * (m_startCap + meanRadius(sliceAt(0).section));
+        m_endCapArc = kPi / 4 * (m_endCap + meanRadius(sliceAt(m_knots.back()).section));
+    }
+
+    /// The parameter runs about along the arc length: from the tip of the start cap (negative)
+    /// through the keys (key k at knot(k)) to the tip of the end cap.
+    double startParameter() const { return -m_startCapArc; }
+    double endParameter() const { return m_knots.back() + m_endCapArc; }
+    double knot(std::size_t key) const { return m_knots[key]; }
+    double largestPerimeter() const
+    {
+        double largest = 0;
+        for (const Values& v : m_values)
+            largest = std::max(largest, 2 * kPi * std::sqrt((v[3] * v[3] + std::pow((v[4] + v[5]) / 2, 2)) / 2));
+        return largest;
+    }
+
+    SurfacePoint pointAt(double u, double angle) const
+    {
+        if (u <= startParameter())
+            return {positionAt(u, 0), sliceAt(0).tangent * -1.0};
+        if (u >= endParameter())
+            return {positionAt(u, 0), sliceAt(m_knots.back()).tangent};
+        constexpr double du = 1e-5, dAngle = 1e-5;
+        const Vec3d alongU = positionAt(u + du, angle) - positionAt(u - du, angle);
+        const Vec3d alongAngle = positionAt(u, angle + dAngle) - positionAt(u, angle - dAngle);
+        return {positionAt(u, angle), normalized(cross(alongAngle, alongU))};
+    }
+
+private:
+    using Values = std::array<double, 7>; // centre x y z, side, front, back, squareness
+
+    struct Slice {
+        Vec3d centre;
+        Vec3d tangent;
+        Section section;
+    };
+
+    Slice sliceAt(double u) const
+    {
+        if (u < 0 || u > m_knots.back()) {
+            // Half-ellipsoid cap: the centre moves on along the end tangent while the section shrinks.
+            const bool start = u < 0;
+            const Slice end = sliceAt(start ? 0 : m_knots.back());
+            const double phi = std::min(1.0, start ? -u / m_startCapArc : (u - m_knots.back()) / m_endCapArc) * kPi / 2;
+            const double scale = std::cos(phi);
+            const double direction = start ? -1 : 1;
+            return {end.centre + end.tangent * (direction * (start ? m_startCap : m_endCap) * std::sin(phi)), end.tangent,
+                    {end.section.side * scale, end.section.front * scale, end.section.back * scale,
+                     end.section.squareness}};
+        }
+        const std::size_t k = std::min<std::size_t>(
+            std::size_t(std::upper_bound(m_knots.begin(), m_knots.end(), u) - m_knots.begin()) - 1, m_knots.size() - 2);
+        const double h = m_knots[k + 1] - m_knots[k];
+        const double s = (u - m_knots[k]) / h;
+        const double s2 = s * s, s3 = s2 * s;
+        const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+        const double d00 = 6 * s2 - 6 * s, d10 = 3 * s2 - 4 * s + 1, d01 = -6 * s2 + 6 * s, d11 = 3 * s2 - 2 * s;
+        Values v{}, dv{};
+        for (std::size_t c = 0; c < v.size(); ++c) {
+            const double p0 = m_values[k][c], p1 = m_values[k + 1][c];
+            const double m0 = m_slopes[k][c] * h, m1 = m_slopes[k + 1][c] * h;
+            v[c] = h00 * p0 + h10 * m0 + h01 * p1 + h11 * m1;
+            dv[c] = (d00 * p0 + d10 * m0 + d01 * p1 + d11 * m1) / h;
+        }
+        return {{v[0], v[1], v[2]}, normalized(Vec3d{dv[0], dv[1], dv[2]}), {v[3], v[4], v[5], v[6]}};
+    }
+
+    Vec3d positionAt(double u, double angle) const
+    {
+        const Slice slice = sliceAt(u);
+        const Vec3d front = normalized(m_front - slice.tangent * dot(m_front, slice.tangent));
+        const Vec3d side = cross(slice.tangent, front);
+        // Superellipse: |x/side|^p + |z/depth|^p = 1, with a different depth to the front and back.
+        const double exponent = 2 / slice.section.squareness;
+        const double c = std::cos(angle), s = std::sin(angle);
+        const double x = slice.section.side * std::copysign(std::pow(std::abs(s), exponent), s);
+        const double z = (c >= 0 ? slice.section.front : slice.section.back) * std::copysign(std::pow(std::abs(c), exponent), c);
+        return slice.centre + side * x + front * z;
+    }
+
+    Vec3d m_front;
+    double m_startCap, m_endCap;
+    double m_startCapArc = 0, m_endCapArc = 0;
+    std::vector<Values> m_values, m_slopes;
+    std::vector<double> m_knots;
+};
+
+// ---------------------------------------------------------------------------------------------
+// The head: a soft union of two ellipsoids (cranium, face and jaw) shaped by smooth bumps (nose,
+// chin, brow, ears …). It is star-shaped around kHeadCentre, so a surface point is
+// kHeadCentre + radius(direction)·direction.
+
+struct Ellipsoid {
+    Vec3d centre, radii;
+};
+
+/// Distance from `origin` (inside the ellipsoid) along a unit direction to its surface.
+double distanceToEllipsoid(const Ellipsoid& ellipsoid, Vec3d origin, Vec3d direction)
+{
+    const Vec3d& r = ellipsoid.radii;
+    const Vec3d q{(origin.x - ellipsoid.centre.x) / r.x, (origin.y - ellipsoid.centre.y) / r.y, (origin.z - ellipsoid.centre.z) / r.z};
+    const Vec3d e{direction.x / r.x, direction.y / r.y, direction.z / r.z};
+    const double a = dot(e, e), b = dot(q, e), c = dot(q, q) - 1;
+    return (-b + std::sqrt(b * b - a * c)) / a;
+}
+
+/// A bump in the head's radius around a direction; `width` across and `height` up and down are
+/// angular spreads (radians), `amount` metres (negative: a hollow).
+struct Bump {
+    Vec3d direction;
+    double width, height, amount;
+};
+
+const Vec3d kHeadCentre{0.0, 1.665, 0.02};
+const Ellipsoid kCranium{{0.0, 1.685, -0.008}, {0.079, 0.108, 0.101}};
+const Ellipsoid kFace{{0.0, 1.628, 0.028}, {0.056, 0.068, 0.070}};
+/// Mid-line and left-side bumps; those off the mid-line are mirrored to the right side.
+const Bump kHeadBumps[] = {
+    {{0.0, -0.28, 0.96}, 0.09, 0.08, 0.018},    // nose tip
+    {{0.0, 0.02, 1.0}, 0.07, 0.18, 0.010},      // nose bridge
+    {{0.0, 0.33, 0.94}, 0.40, 0.09, 0.004},     // brow
+    {{0.34, 0.20, 0.92}, 0.12, 0.08, -0.008},   // eye socket
+    {{0.50, -0.15, 0.85}, 0.18, 0.14, 0.004},   // cheek
+    {{0.0, -0.60, 0.80}, 0.16, 0.07, 0.004},    // lips
+    {{0.0, -0.84, 0.54}, 0.16, 0.12, 0.008},    // chin
+    {{1.0, 0.05, -0.12}, 0.10, 0.17, 0.013},    // ear
+};
+
+double headRadius(Vec3d d)
+{
+    const double cranium = distanceToEllipsoid(kCranium, kHeadCentre, d);
+    const double face = distanceToEllipsoid(kFace, kHeadCentre, d);
+    double r = std::pow(std::pow(cranium, 10) + std::pow(face, 10), 0.1); // soft maximum
+    for (const Bump& bump : kHeadBumps) {
+        for (const double side : {1.0, -1.0}) {
+            if (side < 0 && bump.direction.x == 0)
+                continue;
+            const Vec3d centre = normalized({bump.direction.x * side, bump.direction.y, bump.direction.z});
+            const Vec3d delta = d - centre;
+            const double across = dot(delta, delta) - delta.y * delta.y;
+            r += bump.amount * std::exp(-0.5 * (across / (bump.width * bump.width) + delta.y * delta.y / (bump.height * bump.height)));
+        }
+    }
+    return r;
+}
+
+Vec3d headPoint(Vec3d direction) { return kHeadCentre + direction * headRadius(direction); }
+
+SurfacePoint headSurface(Vec3d direction, double lift)
+{
+    // Normal from two small steps across the surface, which works at the poles too.
+    const Vec3d helper = std::abs(direction.y) < 0.9 ? Vec3d{0, 1, 0} : Vec3d{1, 0, 0};
+    const Vec3d e1 = normalized(cross(direction, helper));
+    const Vec3d e2 = cross(direction, e1);
+    constexpr double step = 1e-5;
+    const Vec3d d1 = headPoint(normalized(direction + e1 * step)) - headPoint(normalized(direction - e1 * step));
+    const Vec3d d2 = headPoint(normalized(direction + e2 * step)) - headPoint(normalized(direction - e2 * step));
+    Vec3d normal = normalized(cross(d1, d2));
+    if (dot(normal, direction) < 0)
+        normal = normal * -1.0;
+    return {headPoint(direction) + normal * lift, normal};
+}
+
+/// Direction at polar angle `polar` from `pole` (±Y) and azimuth `angle` from +Z towards +X.
+Vec3d sphereDirection(double polar, double angle, double pole)
+{
+    return {std::sin(polar) * std::sin(angle), pole * std::cos(polar), std::sin(polar) * std::cos(angle)};
+}
+
+// Hair: a shell 3 to 9 mm above the skull (thinning towards its edge) over the top and back of the head, down
+// to a hairline at the forehead, above the ears and at the nape.
+constexpr double kHairInner = 0.003;
+/// Outer surface height above the skull at the crown (t = 0) tapering to the hairline (t = 1).
+double hairOuter(double t) { return 0.0045 + 0.0045 * (1 - t * t); }
+/// Polar angle (from the crown) of the hairline at an azimuth (0 = forehead, π = nape).
+double hairline(double angle) { return std::acos(0.045 + 0.5 * std::cos(angle) - 0.045 * std::cos(2 * angle)); }
+
+// ---------------------------------------------------------------------------------------------
+// The body, left side and mid-line; right-side parts mirror the left ones.
+
+constexpr Vec3d kForward{0, 0, 1};
+constexpr Vec3d kUp{0, 1, 0};
+
+/// Torso from the crotch to inside the head; its centre lies in front of the spine.
+const SweepKey kTorso[] = {
+    {"sacroiliac", "", 0, {0, -0.09, 0.0}, {0.100, 0.060, 0.075, 2.2}, "sacroiliac"},
+    {"sacroiliac", "", 0, {0, -0.04, 0.005}, {0.158, 0.080, 0.104, 2.3}},
+    {"humanoid_root", "", 0, {0, -0.03, 0.005}, {0.163, 0.088, 0.102, 2.3}, "humanoid_root"},
+    {"vl5", "", 0, {0, 0, 0.025}, {0.152, 0.085, 0.086, 2.2}, "vl5"},
+    {"vl3", "", 0, {0, 0, 0.035}, {0.141, 0.085, 0.080, 2.2}, "vl3"},
+    {"vl1", "", 0, {0, 0, 0.040}, {0.142, 0.090, 0.084, 2.2}, "vl1"},
+    {"vt10", "", 0, {0, 0, 0.055}, {0.149, 0.100, 0.094, 2.2}, "vt10"},
+    {"vt6", "", 0, {0, 0, 0.070}, {0.156, 0.112, 0.100, 2.3}, "vt6"},
+    {"vt6", "vt1", 0.64, {0, 0, 0.065}, {0.160, 0.105, 0.100, 2.4}},
+    {"vt1", "", 0, {0, 0, 0.055}, {0.148, 0.090, 0.090, 2.4}, "vt1"},
+    {"vt1", "vc4", 0.6, {0, 0, 0.035}, {0.100, 0.066, 0.070, 2.2}},
+    {"vc4", "", 0, {0, 0, 0.030}, {0.066, 0.060, 0.064, 2.0}, "vc4"},
+    {"vc2", "", 0, {0, 0, 0.025}, {0.060, 0.056, 0.060, 2.0}, "vc2"},
+    {"skullbase", "", 0, {0, 0, 0.018}, {0.057, 0.054, 0.058, 2.0}, "skullbase"},
+    {"skullbase", "", 0, {0, 0.04, 0.02}, {0.050, 0.048, 0.050, 2.0}},
+};
+
+/// Shoulder line (clavicle and trapezius) from the neck to the shoulder; sections: side = front
+/// and back, front = up.
+const SweepKey kClavicle[] = {
+    {"l_sternoclavicular", "", 0, {0.02, 0.065, -0.065}, {0.045, 0.030, 0.035, 2.2}, "l_sternoclavicular"},
+    {"l_acromioclavicular", "", 0, {0.01, 0.005, 0.0}, {0.042, 0.030, 0.035, 2.2}, "l_acromioclavicular"},
+};
+
+/// Arm from the deltoid to the knuckles; the hand's palm is flat towards the thigh.
+const SweepKey kArm[] = {
+    {"l_shoulder", "", 0, {-0.004, 0.02, 0}, {0.044, 0.046, 0.046, 2.0}},
+    {"l_shoulder", "", 0, {-0.002, 0, 0}, {0.046, 0.048, 0.047, 2.0}, "l_shoulder"},
+    {"l_shoulder", "l_elbow", 0.35, {0, 0, 0}, {0.046, 0.046, 0.046, 2.0}},
+    {"l_shoulder", "l_elbow", 0.7, {0, 0, 0}, {0.040, 0.040, 0.043, 2.0}},
+    {"l_elbow", "", 0, {0, 0, 0}, {0.036, 0.035, 0.037, 2.0}, "l_elbow"},
+    {"l_elbow", "l_radiocarpal", 0.22, {0, 0, 0.003}, {0.039, 0.041, 0.039, 2.0}},
+    {"l_elbow", "l_radiocarpal", 0.6, {0, 0, 0}, {0.031, 0.034, 0.032, 2.0}},
+    {"l_radiocarpal", "", 0, {0, 0, 0}, {0.021, 0.029, 0.027, 2.2}, "l_radiocarpal"},
+    {"l_radiocarpal", "", 0, {0.004, -0.03, 0.002}, {0.016, 0.041, 0.040, 2.6}},
+    {"l_radiocarpal", "", 0, {0.007, -0.075, 0.002}, {0.015, 0.044, 0.043, 2.8}},
+};
+
+/// Leg from the top of the thigh (inside the pelvis) to the ankle (inside the shoe).
+const SweepKey kLeg[] = {
+    {"l_hip", "", 0, {0.0, 0.03, 0}, {0.072, 0.072, 0.080, 2.0}},
+    {"l_hip", "", 0, {0.002, 0, -0.005}, {0.080, 0.080, 0.092, 2.0}, "l_hip"},
+    {"l_hip", "l_knee", 0.3, {0, 0, 0.003}, {0.078, 0.080, 0.080, 2.0}},
+    {"l_hip", "l_knee", 0.65, {0, 0, 0.003}, {0.065, 0.066, 0.064, 2.0}},
+    {"l_knee", "", 0, {0, 0, 0}, {0.050, 0.052, 0.048, 2.0}, "l_knee"},
+    {"l_knee", "l_talocrural", 0.22, {0, 0, -0.005}, {0.050, 0.046, 0.062, 2.0}},
+    {"l_knee", "l_talocrural", 0.55, {0, 0, -0.003}, {0.042, 0.040, 0.048, 2.0}},
+    {"l_knee", "l_talocrural", 0.85, {0, 0, 0}, {0.032, 0.031, 0.034, 2.0}},
+    {"l_talocrural", "", 0, {0, 0, 0}, {0.030, 0.031, 0.032, 2.0}, "l_talocrural"},
+    {"l_talocrural", "", 0, {0, -0.025, 0.005}, {0.030, 0.032, 0.032, 2.0}},
+};
+
+/// Shoe from heel to toe along +Z; sections: front = up, back = down to the sole at y = 0.
+const SweepKey kFoot[] = {
+    {"l_talocrural", "", 0, {0, -0.045, -0.035}, {0.032, 0.035, 0.035, 2.6}, "l_talocrural"},
+    {"l_talocrural", "", 0, {0, -0.035, 0.0}, {0.035, 0.045, 0.045, 2.6}},
+    {"l_tarsometatarsal", "", 0, {0, -0.01, 0}, {0.042, 0.032, 0.030, 2.6}, "l_tarsometatarsal"},
+    {"l_metatarsophalangeal", "", 0, {0.004, 0, 0}, {0.047, 0.020, 0.020, 2.6}, "l_metatarsophalangeal"},
+    {"l_tarsal_interphalangeal", "", 0, {0.004, 0, 0}, {0.042, 0.016, 0.015, 2.6}, "l_tarsal_interphalangeal"},
+};
+
+/// A finger or the thumb: its joints from the base (inside the palm) out, and its radius.
+struct Digit {
+    std::string_view parent;              ///< the joint the digit hangs from
+    std::array<std::string_view, 3> joints; ///< joints starting its three bones
+    double radius;
+    bool thumb = false;
+};
+
+const Digit kDigits[] = {
+    {"l_radiocarpal", {"l_carpometacarpal_1", "l_metacarpophalangeal_1", "l_carpal_interphalangeal_1"}, 0.011, true},
+    {"l_carpometacarpal_2", {"l_metacarpophalangeal_2", "l_carpal_proximal_interphalangeal_2", "l_carpal_distal_interphalangeal_2"}, 0.0092},
+    {"l_carpometacarpal_3", {"l_metacarpophalangeal_3", "l_carpal_proximal_interphalangeal_3", "l_carpal_distal_interphalangeal_3"}, 0.0095},
+    {"l_carpometacarpal_4", {"l_metacarpophalangeal_4", "l_carpal_proximal_interphalangeal_4", "l_carpal_distal_interphalangeal_4"}, 0.009},
+    {"l_carpometacarpal_5", {"l_metacarpophalangeal_5", "l_carpal_proximal_interphalangeal_5", "l_carpal_distal_interphalangeal_5"}, 0.008},
+};
+
+/// Keys of a digit: from a little before its first joint (inside the palm) to past its last
+/// joint by about one bone, tapering; the thumb's first bone is the fleshy metacarpal.
+std::vector<SweepKey> digitKeys(const Digit& digit)
+{
+    const auto [first, second, third] = digit.joints;
+    auto section = [&](double scale) { return Section{digit.radius * scale, digit.radius * scale, digit.radius * scale, 2.0}; };
+    if (digit.thumb)
+        return {{first, "", 0, {}, section(1.3), first},
+                {first, second, 0.5, {}, section(1.2)},
+                {second, "", 0, {}, section(1.0), second},
+                {third, "", 0, {}, section(0.9), third},
+                {third, second, -0.7, {}, section(0.8)}};
+    return {{first, second, -0.35, {}, section(1.0)},
+            {first, "", 0, {}, section(1.0), first},
+            {second, "", 0, {}, section(0.93), second},
+            {third, "", 0, {}, section(0.86), third},
+            {third, second, -0.55, {}, section(0.8)}};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Segment names, materials.
+
+/// H-Anim 2.0 segment of each joint, by the joint name without its side prefix; a trailing
+/// "_N" (finger number) carries over.
+constexpr std::pair<std::string_view, std::string_view> kSegmentOfJoint[] = {
+    {"humanoid_root", "sacrum"},
+    {"sacroiliac", "pelvis"},
+    {"hip", "thigh"},
+    {"knee", "calf"},
+    {"talocrural", "talus"},
+    {"tarsometatarsal", "metatarsal"},
+    {"metatarsophalangeal", "tarsal_proximal_phalanx"},
+    {"tarsal_interphalangeal", "tarsal_distal_phalanx"},
+    {"skullbase", "skull"},
+    {"sternoclavicular", "clavicle"},
+    {"acromioclavicular", "scapula"},
+    {"shoulder", "upperarm"},
+    {"elbow", "forearm"},
+    {"radiocarpal", "carpal"},
+    {"carpometacarpal", "metacarpal"},
+    {"metacarpophalangeal", "carpal_proximal_phalanx"},
+    {"carpal_proximal_interphalangeal", "carpal_middle_phalanx"},
+    {"carpal_distal_interphalangeal", "carpal_distal_phalanx"},
+    {"carpal_interphalangeal", "carpal_distal_phalanx"},
+};
+
+std::string segmentName(std::string_view joint)
+{
+    // Vertebrae: the joint above vertebra X is "vX" (vl5 → l5, vt1 → t1, vc4 → c4).
+    if (joint.size() > 2 && joint[0] == 'v' && (joint[1] == 'l' || joint[1] == 't' || joint[1] == 'c'))
+        return std::string(joint.substr(1));
+    const bool sided = joint.starts_with("l_") || joint.starts_with("r_");
+    const std::string_view side = sided ? joint.substr(0, 2) : std::string_view{};
+    std::string_view stem = sided ? joint.substr(2) : joint;
+    std::string_view number;
+    if (const std::size_t underscore = stem.rfind('_');
+        underscore != std::string_view::npos && underscore + 2 == stem.size() && std::isdigit(static_cast<unsigned char>(stem.back()))) {
+        number = stem.substr(underscore);
+        stem = stem.substr(0, underscore);
+    }
+    for (const auto& [jointStem, segmentStem] : kSegmentOfJoint)
+        if (stem == jointStem)
+            return std::string(side) + std::string(segmentStem) + std::string(number);
+    return std::string(joint);
+}
+
+/// Indices into humanoidMaterials().
+enum MaterialIndex { SkinMaterial, HairMaterial, ShirtMaterial, TrousersMaterial, ShoesMaterial };
+
+std::vector<Material> humanoidMaterials()
+{
+    // Linear base colours: light skin, dark brown hair, a blue shirt, grey-blue trousers, brown shoes.
+    return {{"skin", {0.72f, 0.42f, 0.31f, 1.0f}},
+            {"hair", {0.10f, 0.05f, 0.025f, 1.0f}},
+            {"shirt", {0.07f, 0.17f, 0.45f, 1.0f}},
+            {"trousers", {0.10f, 0.11f, 0.15f, 1.0f}},
+            {"shoes", {0.05f, 0.03f, 0.02f, 1.0f}}};
+}
+
+int materialOfJoint(std::string_view joint)
+{
+    const std::string_view stem = joint.starts_with("l_") || joint.starts_with("r_") ? joint.substr(2) : joint;
+    for (std::string_view name : {"humanoid_root", "sacroiliac", "hip", "knee"})
+        if (stem == name)
+            return TrousersMaterial;
+    for (std::string_view name : {"talocrural", "tarsometatarsal", "metatarsophalangeal", "tarsal_interphalangeal"})
+        if (stem == name)
+            return ShoesMaterial;
+    for (std::string_view name : {"vl5", "vl3", "vl1", "vt10", "vt6", "vt1", "sternoclavicular", "acromioclavicular", "shoulder"})
+        if (stem == name)
+            return ShirtMaterial;
+    return SkinMaterial; // neck, head, forearms (short sleeves), hands
+}
+
+// ---------------------------------------------------------------------------------------------
+// Building the pieces on a skeleton of some level.
+
+class BodyBuilder {
+public:
+    BodyBuilder(const Skeleton& skeleton, double spacing) : m_skeleton(skeleton), m_spacing(spacing) {}
+
+    /// Skeleton index of an LOA 2 joint, or of its nearest ancestor the level has.
+    int jointOf(std::string_view name) const
+    {
+        while (m_skeleton.find(name) < 0) {
+            assert(!name.empty());
+            name = hanim::parentName(name);
+        }
+        return m_skeleton.find(name);
+    }
+
+    /// One piece per segment the sweep crosses (neighbouring keys on joints the level merges
+    /// share a piece), split at rings shared by both neighbours.
+    void addSweep(const SweepSpec& spec, std::vector<Piece>& pieces) const
+    {
+        const Sweep sweep(spec);
+        struct Station {
+            double u;
+            int joint;
+        };
+        std::vector<Station> stations;
+        for (std::size_t k = 0; k < spec.keys.size(); ++k)
+            if (!spec.keys[k].joint.empty()) {
+                const int joint = jointOf(spec.keys[k].joint);
+                if (stations.empty() || stations.back().joint != joint)
+                    stations.push_back({sweep.knot(k), joint});
+            }
+        assert(!stations.empty());
+        const int parent = spec.parent.empty() ? -1 : jointOf(spec.parent);
+        const bool blendParent = parent >= 0 && parent != stations.front().joint;
+
+        // Blend half-widths at each station (the first one blends into the parent, if any).
+        const double start = sweep.startParameter(), end = sweep.endParameter();
+        std::vector<double> halfWidth;
+        for (std::size_t j = 0; j < stations.size(); ++j) {
+            const double before = stations[j].u - (j == 0 ? start : stations[j - 1].u);
+            const double after = (j + 1 < stations.size() ? stations[j + 1].u : end) - stations[j].u;
+            halfWidth.push_back(std::min(kBlendHalfWidth, 0.4 * std::min(before, after)));
+        }
+        auto rampAt = [&](std::size_t j, double u) { // 0 before station j's blend, 1 after it
+            if (j >= stations.size())
+                return 0.0;
+            if (j == 0 && !blendParent)
+                return 1.0;
+            return smoothstep((u - stations[j].u + halfWidth[j]) / (2 * halfWidth[j]));
+        };
+        auto influencesAt = [&](double u) {
+            Influences influences{};
+            int used = 0;
+            auto add = [&](int joint, double weight) {
+                if (weight > 0 && used < kInfluences) {
+                    influences.joints[std::size_t(used)] = joint;
+                    influences.weights[std::size_t(used++)] = float(weight);
+                }
+            };
+            if (blendParent)
+                add(parent, 1 - rampAt(0, u));
+            for (std::size_t j = 0; j < stations.size(); ++j)
+                add(stations[j].joint, rampAt(j, u) - rampAt(j + 1, u));
+            float sum = 0;
+            for (float w : influences.weights)
+                sum += w;
+            for (float& w : influences.weights)
+                w /= sum;
+            return influences;
+        };
+
+        const int around = aroundFor(sweep.largestPerimeter(), m_spacing, 8);
+        // Thin parts (fingers) keep their rings about as close as their vertices around.
+        const double ringSpacing = std::min(m_spacing, 1.5 * sweep.largestPerimeter() / around);
+        for (std::size_t j = 0; j < stations.size(); ++j) {
+            const double from = j == 0 ? start : stations[j].u;
+            const double to = j + 1 < stations.size() ? stations[j + 1].u : end;
+            // Rings evenly spaced along the tube and along each rounded end, which gets at least
+            // three so that it stays round.
+            std::vector<double> rings{from};
+            for (const double stop : {0.0, sweep.knot(spec.keys.size() - 1), to}) {
+                const double last = rings.back();
+                if (stop <= last || stop > to)
+                    continue;
+                const bool cap = stop <= 0 || last >= sweep.knot(spec.keys.size() - 1);
+                const std::vector<double> part = evenRings(last, stop, std::max(cap ? 3 : 1, stepsFor(stop - last, ringSpacing)));
+                rings.insert(rings.end(), part.begin() + 1, part.end());
+            }
+            Piece piece;
+            piece.joint = stations[j].joint;
+            addRings(piece, rings, around, j == 0, j + 1 == stations.size(), false,
+                     [&](double u, double angle) { return sweep.pointAt(u, angle); }, influencesAt);
+            pieces.push_back(std::move(piece));
+        }
+    }
+
+    void addHead(std::vector<Piece>& pieces) const
+    {
+        Piece head;
+        head.joint = jointOf("skullbase");
+        const double spacing = m_spacing * kHeadSpacingScale;
+        const int around = aroundFor(2 * kPi * kCranium.radii.z, spacing, 16);
+        const std::vector<double> rings = evenRings(0, kPi, stepsFor(kPi * kCranium.radii.y, spacing));
+        addRings(head, rings, around, true, true, false,
+                 [](double polar, double angle) { return headSurface(sphereDirection(polar, angle, -1), 0); },
+                 [&](double) { return rigid(head.joint); });
+        pieces.push_back(std::move(head));
+    }
+
+    /// The hair shell: outer and inner surfaces over the same skull directions, closed by a rim
+    /// strip along the hairline (its own vertices, so the edge stays crisp).
+    void addHair(std::vector<Piece>& pieces) const
+    {
+        Piece hair;
+        hair.joint = jointOf("skullbase");
+        hair.hair = true;
+        const double spacing = m_spacing * kHeadSpacingScale;
+        const int around = aroundFor(2 * kPi * kCranium.radii.z, spacing, 16);
+        const std::vector<double> rings = evenRings(0, 1, stepsFor(hairline(kPi) * kCranium.radii.y, spacing));
+        auto direction = [](double t, double angle) { return sphereDirection(t * hairline(angle), angle, 1); };
+        auto influences = [&](double) { return rigid(hair.joint); };
+        // Rings run from the crown down, so cross(∂angle, ∂t) points into the head: the outer
+        // surface flips its winding, the inner one (facing the skull) keeps it.
+        addRings(hair, rings, around, true, false, true,
+                 [&](double t, double angle) { return headSurface(direction(t, angle), hairOuter(t)); }, influences);
+        addRings(hair, rings, around, true, false, false,
+                 [&](double t, double angle) {
+                     const SurfacePoint p = headSurface(direction(t, angle), kHairInner);
+                     return SurfacePoint{p.position, p.normal * -1.0};
+                 },
+                 influences);
+        const double rim[] = {hairOuter(1), kHairInner};
+        addRings(hair, rim, around, false, false, true,
+                 [&](double lift, double angle) {
+                     const SurfacePoint edge = headSurface(direction(1, angle), lift);
+                     const Vec3d away = headPoint(direction(1, angle)) - headPoint(direction(0.99, angle));
+                     return SurfacePoint{edge.position, normalized(away - edge.normal * dot(away, edge.normal))};
+                 },
+                 influences);
+        pieces.push_back(std::move(hair));
+    }
+
+    /// The right-side copy of a left-side piece: x mirrored, winding reversed, joints swapped.
+    Piece mirrored(const Piece& left) const
+    {
+        Piece right = left;
+        right.joint = mirroredJoint(left.joint);
+        for (Vec3d& p : right.positions)
+            p.x = -p.x;
+        for (Vec3d& n : right.normals)
+            n.x = -n.x;
+        for (std::size_t t = 0; t < right.triangles.size(); t += 3)
+            std::swap(right.triangles[t + 1], right.triangles[t + 2]);
+        for (Influences& influences : right.influences)
+            for (std::size_t i = 0; i < influences.joints.size(); ++i)
+                if (influences.weights[i] > 0)
+                    influences.joints[i] = mirroredJoint(influences.joints[i]);
+        return right;
+    }
+
+private:
+    int mirroredJoint(int joint) const { return m_skeleton.find(hanim::mirrorName(m_skeleton.joint(joint).name)); }
+
+    const Skeleton& m_skeleton;
+    double m_spacing;
+};
+
+} // namespace
+
+Result<Character> makeDefaultHumanoid(const DefaultHumanoidOptions& options)
+{
+    if (!(options.detail >= 0.1 && options.detail <= 4))
+        return makeError(ErrorCode::InvalidArgument,
+                         "The default humanoid's detail must be between 0.1 and 4 (it is " +
+                             std::to_string(options.detail) + ").");
+    Character character;
+    character.name = "Default humanoid";
+    character.skeleton = hanim::skeleton(options.level);
+    const BodyBuilder builder(character.skeleton, kSpacing / options.detail);
+
+    std::vector<Piece> pieces;
+    builder.addSweep({kTorso, kForward, 0.05, 0.03}, pieces);
+    builder.addHead(pieces);
+    std::vector<Piece> left;
+    builder.addSweep({kClavicle, kUp, 0.03, 0.04, "vt1"}, left);
+    builder.addSweep({kArm, kForward, 0.03, 0.015, "l_acromioclavicular"}, left);
+    builder.addSweep({kLeg, kForward, 0.04, 0.02, "sacroiliac"}, left);
+    builder.addSweep({kFoot, kUp, 0.025, 0.028}, left);
+    for (const Digit& digit : kDigits) {
+        const std::vector<SweepKey> keys = digitKeys(digit);
+        builder.addSweep({keys, kForward, digit.radius, digit.radius, digit.parent}, left);
+    }
+    for (Piece& piece : left) {
+        Piece right = builder.mirrored(piece);
+        pieces.push_back(std::move(piece));
+        pieces.push_back(std::move(right));
+    }
+    builder.addHair(pieces);
+
+    // Segments in skeleton order, one per joint that has pieces, then the hair.
+    CharacterMesh& mesh = character.mesh;
+    Skin& skin = character.skin;
+    skin.influences = kInfluences;
+    character.materials = humanoidMaterials();
+    auto appendSegment = [&](std::string name, int joint, bool hair) {
+        Segment segment;
+        segment.name = std::move(name);
+        segment.joint = character.skeleton.joint(joint).name;
+        segment.firstVertex = std::uint32_t(mesh.positions.size());
+        segment.firstTriangle = std::uint32_t(mesh.triangleCount());
+        segment.bindTranslation = restPosition(segment.joint);
+        // The hair is rigid and rides on the skull, so like the skull its shape does not
+        // depend on the posture: posture-independent.
+        segment.posture = hair ? Posture::Independent : defaultPosture(segment.joint);
+        for (const Piece& piece : pieces) {
+            if (piece.joint != joint || piece.hair != hair)
+                continue;
+            const std::uint32_t base = std::uint32_t(mesh.positions.size());
+            for (std::size_t v = 0; v < piece.positions.size(); ++v) {
+                const Vec3d& p = piece.positions[v];
+                const Vec3d n = normalized(piece.normals[v]);
+                mesh.positions.push_back({float(p.x), float(p.y), float(p.z)});
+                mesh.normals.push_back({float(n.x), float(n.y), float(n.z)});
+                for (std::size_t i = 0; i < kInfluences; ++i) {
+                    skin.joints.push_back(std::uint16_t(piece.influences[v].joints[i]));
+                    skin.weights.push_back(piece.influences[v].weights[i]);
+                }
+            }
+            for (std::uint32_t index : piece.triangles)
+                mesh.indices.push_back(base + index);
+        }
+        segment.vertexCount = std::uint32_t(mesh.positions.size()) - segment.firstVertex;
+        segment.triangleCount = std::uint32_t(mesh.triangleCount()) - segment.firstTriangle;
+        if (segment.vertexCount == 0)
+            return;
+        mesh.segments.push_back(std::move(segment));
+        character.segmentMaterials.push_back(hair ? HairMaterial : materialOfJoint(mesh.segments.back().joint));
+    };
+    for (int joint = 0; joint < character.skeleton.jointCount(); ++joint)
+        appendSegment(segmentName(character.skeleton.joint(joint).name), joint, false);
+    appendSegment("hair", builder.jointOf("skullbase"), true);
+    return character;
+}
+
+} // namespace thespis::core::scene
