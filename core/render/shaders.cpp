@@ -1,0 +1,205 @@
+#include "render/shaders.h"
+
+#include <cassert>
+#include <string>
+
+#include <osg/Shader>
+
+namespace thespis::core::render::shaders {
+
+namespace {
+
+// Linear radiance → display value: exposure, clamp, sRGB encoding. The power segment of the sRGB
+// curve, 1.055·c^(1/2.4) − 0.055 on [0.0031308, 1], is a least-squares fit in c^(1/2), c^(1/4),
+// c^(1/8) and c (largest error 0.011/255): square roots are single instructions where llvmpipe's
+// pow() took a third of the frame.
+constexpr const char* kDisplayFunctions = R"(
+uniform float exposure;
+vec3 encodeSrgb(vec3 linear)
+{
+    vec3 c = clamp(linear, 0.0, 1.0);
+    vec3 s1 = sqrt(c);
+    vec3 s2 = sqrt(s1);
+    vec3 s3 = sqrt(s2);
+    vec3 curve = 0.642385812 * s1 + 0.712090535 * s2 - 0.336862394 * s3 - 0.017570844 * c;
+    return mix(12.92 * c, curve, step(vec3(0.0031308), c));
+}
+vec3 toDisplay(vec3 radiance) { return encodeSrgb(exposure * radiance); }
+)";
+
+constexpr const char* kAlbedoFunction = R"(
+uniform vec4 baseColor;
+uniform sampler2D baseColorTexture;
+uniform float textureWeight;
+varying vec2 v_texcoord;
+vec3 albedo()
+{
+    vec3 texel = texture2D(baseColorTexture, v_texcoord).rgb;
+    return baseColor.rgb * mix(vec3(1.0), texel, textureWeight);
+}
+)";
+
+std::string transferName(int attribute) { return "a_transfer" + std::to_string(attribute); }
+
+// PRT per vertex, as the paper evaluates it: the dot product is unrolled over the vec4 lanes.
+std::string prtVertexSource(int order)
+{
+    const int coefficients = order * order;
+    std::string source = "#version 120\n";
+    source += "uniform vec3 shLight[" + std::to_string(coefficients) + "];\n";
+    source += "attribute vec2 a_texcoord;\n";
+    for (int a = 0; a < transferAttributeCount(order); ++a)
+        source += "attribute vec4 " + transferName(a) + ";\n";
+    source += "varying vec2 v_texcoord;\nvarying vec3 v_radiance;\n";
+    source += "void main()\n{\n    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n";
+    source += "    v_texcoord = a_texcoord;\n    vec3 radiance = vec3(0.0);\n";
+    static constexpr const char* lanes = "xyzw";
+    for (int i = 0; i < coefficients; ++i)
+        source += "    radiance += " + transferName(i / 4) + "." + lanes[i % 4] + " * shLight[" + std::to_string(i) + "];\n";
+    source += "    v_radiance = radiance;\n}\n";
+    return source;
+}
+
+constexpr const char* kPrtFragment = R"(
+varying vec3 v_radiance;
+void main()
+{
+    gl_FragColor = vec4(toDisplay(albedo() * max(v_radiance, vec3(0.0))), 1.0);
+}
+)";
+
+constexpr const char* kWorldVertex = R"(#version 120
+attribute vec2 a_texcoord;
+varying vec2 v_texcoord;
+varying vec3 v_position;
+varying vec3 v_normal;
+void main()
+{
+    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;
+    v_texcoord = a_texcoord;
+    v_position = gl_Vertex.xyz;
+    v_normal = gl_Normal;
+}
+)";
+
+// Normalised Blinn-Phong: f = albedo/π + ks·(s+8)/(8π)·(n·h)^s, lit by the directional light and
+// the ambient irradiance (which only the diffuse part receives).
+constexpr const char* kPhongFragment = R"(
+uniform vec3 lightDirection;
+uniform vec3 lightColor;
+uniform vec3 ambientIrradiance;
+uniform mat4 osg_ViewMatrixInverse;
+varying vec3 v_position;
+varying vec3 v_normal;
+const float pi = 3.14159265;
+const float shininess = 32.0;
+const float specularAlbedo = 0.04;
+void main()
+{
+    vec3 n = normalize(v_normal);
+    vec3 toEye = normalize(osg_ViewMatrixInverse[3].xyz - v_position);
+    vec3 h = normalize(lightDirection + toEye);
+    float cosine = max(dot(n, lightDirection), 0.0);
+    float specular = cosine > 0.0
+        ? specularAlbedo * (shininess + 8.0) / (8.0 * pi) * pow(max(dot(n, h), 0.0), shininess) : 0.0;
+    vec3 radiance = albedo() / pi * (ambientIrradiance + lightColor * cosine) + lightColor * (specular * cosine);
+    gl_FragColor = vec4(toDisplay(radiance), 1.0);
+}
+)";
+
+constexpr const char* kUnlitFragment = R"(
+void main()
+{
+    gl_FragColor = vec4(encodeSrgb(albedo()), 1.0);
+}
+)";
+
+constexpr const char* kGroundFragment = R"(
+uniform vec3 groundColor;
+varying vec3 v_position;
+float gridLine(float coordinate)
+{
+    float distance = abs(fract(coordinate + 0.5) - 0.5) / max(fwidth(coordinate), 1e-6);
+    return clamp(1.0 - distance, 0.0, 1.0);
+}
+void main()
+{
+    float line = max(gridLine(v_position.x), gridLine(v_position.z));
+    gl_FragColor = vec4(toDisplay(groundColor * (1.0 - 0.3 * line)), 1.0);
+}
+)";
+
+// The quad covers the screen at the far plane (z = w), so it shows only where nothing was drawn.
+constexpr const char* kBackgroundVertex = R"(#version 120
+varying vec2 v_ndc;
+void main()
+{
+    v_ndc = gl_Vertex.xy;
+    gl_Position = vec4(gl_Vertex.xy, 1.0, 1.0);
+}
+)";
+
+// Lat-long lookup as in lighting/probe.h: top row +y, centre column −z, right turns to +x.
+constexpr const char* kBackgroundFragment = R"(
+uniform sampler2D probeTexture;
+uniform mat4 osg_ViewMatrixInverse;
+varying vec2 v_ndc;
+const float pi = 3.14159265;
+void main()
+{
+    vec4 eyePoint = gl_ProjectionMatrixInverse * vec4(v_ndc, 1.0, 1.0);
+    vec3 d = normalize(mat3(osg_ViewMatrixInverse) * (eyePoint.xyz / eyePoint.w));
+    vec2 uv = vec2(0.5 + atan(d.x, -d.z) / (2.0 * pi), acos(clamp(d.y, -1.0, 1.0)) / pi);
+    gl_FragColor = vec4(toDisplay(texture2D(probeTexture, uv).rgb), 1.0);
+}
+)";
+
+osg::ref_ptr<osg::Program> makeProgram(const std::string& name, const std::string& vertex, const std::string& fragment)
+{
+    osg::ref_ptr<osg::Program> program = new osg::Program;
+    program->setName(name);
+    program->addShader(new osg::Shader(osg::Shader::VERTEX, vertex));
+    program->addShader(new osg::Shader(osg::Shader::FRAGMENT, fragment));
+    return program;
+}
+
+std::string fragmentSource(const char* body, bool withAlbedo)
+{
+    return std::string("#version 120\n") + kDisplayFunctions + (withAlbedo ? kAlbedoFunction : "") + body;
+}
+
+} // namespace
+
+osg::ref_ptr<osg::Program> characterProgram(Shading shading, int order)
+{
+    assert(order >= 1 && order <= kMaxTransferOrder);
+    osg::ref_ptr<osg::Program> program;
+    switch (shading) {
+    case Shading::Prt:
+        program = makeProgram("thespis-prt-" + std::to_string(order), prtVertexSource(order),
+                              fragmentSource(kPrtFragment, true));
+        break;
+    case Shading::Phong:
+        program = makeProgram("thespis-phong", kWorldVertex, fragmentSource(kPhongFragment, true));
+        break;
+    case Shading::Unlit:
+        program = makeProgram("thespis-unlit", kWorldVertex, fragmentSource(kUnlitFragment, true));
+        break;
+    }
+    program->addBindAttribLocation("a_texcoord", kTexcoordLocation);
+    for (int a = 0; a < transferAttributeCount(order); ++a)
+        program->addBindAttribLocation(transferName(a), kFirstTransferLocation + unsigned(a));
+    return program;
+}
+
+osg::ref_ptr<osg::Program> groundProgram()
+{
+    return makeProgram("thespis-ground", kWorldVertex, fragmentSource(kGroundFragment, false));
+}
+
+osg::ref_ptr<osg::Program> backgroundProgram()
+{
+    return makeProgram("thespis-background", kBackgroundVertex, fragmentSource(kBackgroundFragment, false));
+}
+
+} // namespace thespis::core::render::shaders
