@@ -1,9 +1,10 @@
 #pragma once
-// Private to the BVH reader: the built-in joint naming conventions of motion capture files and
-// their tables onto H-Anim 2.0 joint names. Each table lists every joint name the convention
-// uses; names with no sensible H-Anim counterpart (pelvis side bones, twist helpers, end bones)
-// are listed with an empty H-Anim name, so that they count when the convention is detected but
-// keep their own name on import.
+// Private to core's importers (the BVH reader; the glTF character import reuses these tables):
+// the built-in joint naming conventions of motion capture files and their tables onto H-Anim 2.0
+// joint names. Each table lists every joint name the convention uses; names with no sensible
+// H-Anim counterpart (pelvis side bones, twist helpers, end bones) are listed with an empty
+// H-Anim name, so that they count when the convention is detected but keep their own name on
+// import.
 
 #include <span>
 #include <string>

@@ -8,48 +8,22 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
+#include <tuple>
 #include <vector>
 
-#include <tiny_gltf.h>
+#include "scene/gltf_reader.h"
 
 namespace thespis::core::scene {
+namespace gltf {
+
+// ---- 4×4 affine matrices ---------------------------------------------------------------------
+
 namespace {
 
-// ---- 4×4 affine matrices, column-major as glTF stores them ----------------------------------
-
-using Mat4 = std::array<double, 16>;
-
-constexpr Mat4 kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-
-double at(const Mat4& m, int row, int column) { return m[column * 4 + row]; }
-
-Mat4 multiply(const Mat4& a, const Mat4& b)
-{
-    Mat4 c{};
-    for (int column = 0; column < 4; ++column)
-        for (int row = 0; row < 4; ++row) {
-            double sum = 0;
-            for (int k = 0; k < 4; ++k)
-                sum += at(a, row, k) * at(b, k, column);
-            c[column * 4 + row] = sum;
-        }
-    return c;
-}
-
-Vec3d transformPoint(const Mat4& m, Vec3d p)
-{
-    return {m[0] * p.x + m[4] * p.y + m[8] * p.z + m[12], m[1] * p.x + m[5] * p.y + m[9] * p.z + m[13],
-            m[2] * p.x + m[6] * p.y + m[10] * p.z + m[14]};
-}
-
-double determinant3(const Mat4& m)
-{
-    return at(m, 0, 0) * (at(m, 1, 1) * at(m, 2, 2) - at(m, 1, 2) * at(m, 2, 1)) -
-           at(m, 0, 1) * (at(m, 1, 0) * at(m, 2, 2) - at(m, 1, 2) * at(m, 2, 0)) +
-           at(m, 0, 2) * (at(m, 1, 0) * at(m, 2, 1) - at(m, 1, 1) * at(m, 2, 0));
-}
+double at(const Mat4& m, int row, int column) { return m[std::size_t(column * 4 + row)]; }
 
 /// Cofactor matrix of the 3×3 part: transforms normals (the inverse transpose up to a positive
 /// factor times the determinant's sign, which the caller normalizes away and handles).
@@ -60,12 +34,44 @@ std::array<double, 9> normalMatrix(const Mat4& m)
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) {
             const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-            n[r * 3 + c] = a(r1, c1) * a(r2, c2) - a(r1, c2) * a(r2, c1);
+            n[std::size_t(r * 3 + c)] = a(r1, c1) * a(r2, c2) - a(r1, c2) * a(r2, c1);
         }
     return n;
 }
 
-/// Inverse of an affine matrix (last row 0 0 0 1); nullopt when singular.
+} // namespace
+
+Mat4 multiply(const Mat4& a, const Mat4& b)
+{
+    Mat4 c{};
+    for (int column = 0; column < 4; ++column)
+        for (int row = 0; row < 4; ++row) {
+            double sum = 0;
+            for (int k = 0; k < 4; ++k)
+                sum += at(a, row, k) * at(b, k, column);
+            c[std::size_t(column * 4 + row)] = sum;
+        }
+    return c;
+}
+
+Vec3d transformPoint(const Mat4& m, Vec3d p)
+{
+    return transformVector(m, p) + Vec3d{m[12], m[13], m[14]};
+}
+
+Vec3d transformVector(const Mat4& m, Vec3d v)
+{
+    return {m[0] * v.x + m[4] * v.y + m[8] * v.z, m[1] * v.x + m[5] * v.y + m[9] * v.z,
+            m[2] * v.x + m[6] * v.y + m[10] * v.z};
+}
+
+double determinant3(const Mat4& m)
+{
+    return at(m, 0, 0) * (at(m, 1, 1) * at(m, 2, 2) - at(m, 1, 2) * at(m, 2, 1)) -
+           at(m, 0, 1) * (at(m, 1, 0) * at(m, 2, 2) - at(m, 1, 2) * at(m, 2, 0)) +
+           at(m, 0, 2) * (at(m, 1, 0) * at(m, 2, 1) - at(m, 1, 1) * at(m, 2, 0));
+}
+
 std::optional<Mat4> invertAffine(const Mat4& m)
 {
     const double det = determinant3(m);
@@ -73,8 +79,8 @@ std::optional<Mat4> invertAffine(const Mat4& m)
         return std::nullopt;
     const std::array<double, 9> cof = normalMatrix(m); // cofactors; inverse = cofᵀ / det
     Mat4 inv = kIdentity;
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
+    for (std::size_t r = 0; r < 3; ++r)
+        for (std::size_t c = 0; c < 3; ++c)
             inv[c * 4 + r] = cof[c * 3 + r] / det;
     const Vec3d t = transformPoint(inv, {m[12], m[13], m[14]});
     inv[12] = -t.x;
@@ -102,8 +108,6 @@ Mat4 localMatrix(const tinygltf::Node& node)
     return {x.x, x.y, x.z, 0, y.x, y.y, y.z, 0, z.x, z.y, z.z, 0, t.x, t.y, t.z, 1};
 }
 
-/// The rotation of an affine matrix with scale removed (columns made orthonormal by
-/// Gram–Schmidt); a mirroring matrix gives the rotation of its negation.
 Quatd rotationOf(const Mat4& m)
 {
     auto normalized = [](Vec3d v) {
@@ -135,15 +139,84 @@ Quatd rotationOf(const Mat4& m)
     return anim::normalize(q);
 }
 
+// ---- the file ----------------------------------------------------------------------------------
+
+namespace {
+
+/// Extensions that may be required without changing the geometry we read. Anything else that a
+/// file requires (Draco, meshopt, GPU instancing, …) is refused.
+bool extensionKeepsGeometry(const std::string& name)
+{
+    return name == "KHR_mesh_quantization" || name == "KHR_texture_transform" || name == "KHR_lights_punctual" ||
+           name == "KHR_texture_basisu" || name == "EXT_texture_webp" || name.starts_with("KHR_materials_");
+}
+
+bool startsWithGlbMagic(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    char magic[4] = {};
+    in.read(magic, 4);
+    return in.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
+}
+
+// Image loaders for tinygltf. The decoding one keeps the file loading when an image cannot be
+// decoded (an unknown format, a broken JPEG): the character then goes without that texture.
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*)
+{
+    return true;
+}
+
+bool decodeImage(tinygltf::Image* image, const int index, std::string*, std::string* warning, int width, int height,
+                 const unsigned char* bytes, int size, void* imageWarnings)
+{
+    std::string why;
+    if (!tinygltf::LoadImageData(image, index, &why, warning, width, height, bytes, size, nullptr)) {
+        image->image.clear();
+        static_cast<std::vector<std::string>*>(imageWarnings)
+            ->push_back("Image " + std::to_string(index) + (image->name.empty() ? "" : " (\"" + image->name + "\")") +
+                        " cannot be decoded and is left out: " + (why.empty() ? "unknown format" : why));
+    }
+    return true;
+}
+
+} // namespace
+
+Result<File> readFile(const std::filesystem::path& path, bool decodeImages)
+{
+    File file;
+    file.name = path.string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        return makeError(ErrorCode::FileNotFound, "The glTF file " + file.name + " does not exist.");
+
+    std::string error;
+    std::string warning;
+    tinygltf::TinyGLTF loader;
+    if (decodeImages)
+        loader.SetImageLoader(decodeImage, &file.imageWarnings);
+    else
+        loader.SetImageLoader(skipImage, nullptr);
+    bool loaded = false;
+    try {
+        loaded = startsWithGlbMagic(path) ? loader.LoadBinaryFromFile(&file.model, &error, &warning, file.name)
+                                          : loader.LoadASCIIFromFile(&file.model, &error, &warning, file.name);
+    } catch (const std::exception& e) {
+        error = e.what();
+    }
+    if (!loaded)
+        return makeError(ErrorCode::CorruptData, "The glTF file " + file.name + " cannot be read.", error);
+
+    for (const std::string& extension : file.model.extensionsRequired)
+        if (!extensionKeepsGeometry(extension))
+            return makeError(ErrorCode::NotOurFormat,
+                             "The glTF file " + file.name + " requires the extension " + extension +
+                                 ", which Thespis does not support; export it without " + extension + ".");
+    return file;
+}
+
 // ---- reading accessors ------------------------------------------------------------------------
 
-/// An accessor's elements as doubles (normalized integers mapped to [0, 1] or [-1, 1]).
-struct AccessorData {
-    std::vector<double> values;
-    int components = 0;
-    std::size_t count = 0;
-    double operator()(std::size_t element, int component) const { return values[element * components + component]; }
-};
+namespace {
 
 // Upper bound on one accessor's element count: keeps a lying file from asking for gigabytes.
 constexpr std::size_t kMaxAccessorCount = std::size_t(1) << 26;
@@ -179,145 +252,176 @@ double readComponent(const unsigned char* bytes, int componentType, bool normali
     }
 }
 
-class GltfReader {
-public:
-    GltfReader(const tinygltf::Model& model, std::string file) : m_model(model), m_file(std::move(file)) {}
+} // namespace
 
-    const std::string& file() const { return m_file; }
+Error AccessorReader::broken(const std::string& what) const
+{
+    return makeError(ErrorCode::CorruptData, "The glTF file " + m_file + " is broken: " + what + ".");
+}
 
-    Error broken(const std::string& what) const
-    {
-        return makeError(ErrorCode::CorruptData, "The glTF file " + m_file + " is broken: " + what + ".");
-    }
+Result<AccessorData> AccessorReader::read(int index, const std::string& use) const
+{
+    if (index < 0 || std::size_t(index) >= m_model.accessors.size())
+        return broken(use + " names accessor " + std::to_string(index) + ", which does not exist");
+    const tinygltf::Accessor& accessor = m_model.accessors[std::size_t(index)];
+    const std::string where = "accessor " + std::to_string(index) + " (" + use + ")";
+    const int componentSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(accessor.componentType));
+    const int components = tinygltf::GetNumComponentsInType(std::uint32_t(accessor.type));
+    if (componentSize <= 0 || componentSize > 4 || components <= 0)
+        return broken(where + " has an unknown component or element type");
+    if (accessor.count > kMaxAccessorCount)
+        return broken(where + " claims " + std::to_string(accessor.count) + " elements");
 
-    /// Reads accessor `index`, which `use` names for messages ("mesh \"Body\" POSITION").
-    Result<AccessorData> read(int index, const std::string& use) const
-    {
-        if (index < 0 || std::size_t(index) >= m_model.accessors.size())
-            return broken(use + " names accessor " + std::to_string(index) + ", which does not exist");
-        const tinygltf::Accessor& accessor = m_model.accessors[std::size_t(index)];
-        const std::string where = "accessor " + std::to_string(index) + " (" + use + ")";
-        const int componentSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(accessor.componentType));
-        const int components = tinygltf::GetNumComponentsInType(std::uint32_t(accessor.type));
-        if (componentSize <= 0 || componentSize > 4 || components <= 0)
-            return broken(where + " has an unknown component or element type");
-        if (accessor.count > kMaxAccessorCount)
-            return broken(where + " claims " + std::to_string(accessor.count) + " elements");
+    // Matrix columns of 1- and 2-byte components are padded to 4 bytes.
+    const int columns = accessor.type == TINYGLTF_TYPE_MAT2   ? 2
+                        : accessor.type == TINYGLTF_TYPE_MAT3 ? 3
+                        : accessor.type == TINYGLTF_TYPE_MAT4 ? 4
+                                                              : 1;
+    const int rows = components / columns;
+    const std::size_t columnBytes = std::size_t(rows * componentSize);
+    const std::size_t columnStride = columns > 1 ? (columnBytes + 3) / 4 * 4 : columnBytes;
+    const std::size_t elementSize = columnStride * std::size_t(columns);
 
-        // Matrix columns of 1- and 2-byte components are padded to 4 bytes.
-        const int columns = accessor.type == TINYGLTF_TYPE_MAT2   ? 2
-                            : accessor.type == TINYGLTF_TYPE_MAT3 ? 3
-                            : accessor.type == TINYGLTF_TYPE_MAT4 ? 4
-                                                                  : 1;
-        const int rows = components / columns;
-        const std::size_t columnBytes = std::size_t(rows * componentSize);
-        const std::size_t columnStride = columns > 1 ? (columnBytes + 3) / 4 * 4 : columnBytes;
-        const std::size_t elementSize = columnStride * std::size_t(columns);
+    AccessorData data;
+    data.components = components;
+    data.count = accessor.count;
+    data.values.assign(accessor.count * std::size_t(components), 0.0); // no buffer view: zeros
 
-        AccessorData data;
-        data.components = components;
-        data.count = accessor.count;
-        data.values.assign(accessor.count * std::size_t(components), 0.0); // no buffer view: zeros
+    auto readElement = [&](const unsigned char* element, std::size_t to) {
+        for (int c = 0; c < columns; ++c)
+            for (int r = 0; r < rows; ++r)
+                data.values[to * std::size_t(components) + std::size_t(c * rows + r)] =
+                    readComponent(element + std::size_t(c) * columnStride + std::size_t(r * componentSize),
+                                  accessor.componentType, accessor.normalized);
+    };
 
-        auto readElement = [&](const unsigned char* element, std::size_t to) {
-            for (int c = 0; c < columns; ++c)
-                for (int r = 0; r < rows; ++r)
-                    data.values[to * std::size_t(components) + std::size_t(c * rows + r)] =
-                        readComponent(element + std::size_t(c) * columnStride + std::size_t(r * componentSize),
-                                      accessor.componentType, accessor.normalized);
-        };
-
-        if (accessor.bufferView >= 0 && accessor.count > 0) {
-            Result<std::span<const unsigned char>> view = viewBytes(accessor.bufferView, where);
-            if (!view)
-                return view.error();
-            const std::size_t byteStride = m_model.bufferViews[std::size_t(accessor.bufferView)].byteStride;
-            const std::size_t stride = byteStride != 0 ? byteStride : elementSize;
-            if (stride < elementSize)
-                return broken(where + " has a byte stride smaller than its elements");
-            if (accessor.byteOffset > view->size() ||
-                (accessor.count - 1) > (view->size() - accessor.byteOffset) / stride ||
-                accessor.byteOffset + (accessor.count - 1) * stride + elementSize > view->size())
-                return broken(where + " reads past the end of its buffer view");
-            for (std::size_t i = 0; i < accessor.count; ++i)
-                readElement(view->data() + accessor.byteOffset + i * stride, i);
-        }
-
-        if (accessor.sparse.isSparse) {
-            const auto& sparse = accessor.sparse;
-            const std::string sparseWhere = "the sparse part of " + where;
-            if (sparse.count < 0 || std::size_t(sparse.count) > accessor.count)
-                return broken(sparseWhere + " has more elements than the accessor");
-            const std::size_t count = std::size_t(sparse.count);
-            const int indexSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(sparse.indices.componentType));
-            if (sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-                sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-                sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-                return broken(sparseWhere + " has indices that are not unsigned integers");
-            Result<std::span<const unsigned char>> indices =
-                viewRange(sparse.indices.bufferView, sparse.indices.byteOffset, count * std::size_t(indexSize), sparseWhere);
-            if (!indices)
-                return indices.error();
-            Result<std::span<const unsigned char>> values =
-                viewRange(sparse.values.bufferView, sparse.values.byteOffset, count * elementSize, sparseWhere);
-            if (!values)
-                return values.error();
-            for (std::size_t i = 0; i < count; ++i) {
-                const double target = readComponent(indices->data() + i * std::size_t(indexSize),
-                                                    sparse.indices.componentType, false);
-                if (target >= double(accessor.count))
-                    return broken(sparseWhere + " replaces element " + std::to_string(std::uint64_t(target)) +
-                                  " of " + std::to_string(accessor.count));
-                readElement(values->data() + i * elementSize, std::size_t(target));
-            }
-        }
-        return data;
-    }
-
-private:
-    Result<std::span<const unsigned char>> viewBytes(int viewIndex, const std::string& where) const
-    {
-        if (viewIndex < 0 || std::size_t(viewIndex) >= m_model.bufferViews.size())
-            return broken(where + " names buffer view " + std::to_string(viewIndex) + ", which does not exist");
-        const tinygltf::BufferView& view = m_model.bufferViews[std::size_t(viewIndex)];
-        if (view.buffer < 0 || std::size_t(view.buffer) >= m_model.buffers.size())
-            return broken("buffer view " + std::to_string(viewIndex) + " names a buffer that does not exist");
-        const std::vector<unsigned char>& buffer = m_model.buffers[std::size_t(view.buffer)].data;
-        if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset)
-            return broken("buffer view " + std::to_string(viewIndex) + " reaches past the end of its buffer (" +
-                          std::to_string(buffer.size()) + " bytes)");
-        return std::span<const unsigned char>(buffer.data() + view.byteOffset, view.byteLength);
-    }
-
-    Result<std::span<const unsigned char>> viewRange(int viewIndex, int offset, std::size_t length,
-                                                     const std::string& where) const
-    {
-        Result<std::span<const unsigned char>> view = viewBytes(viewIndex, where);
+    if (accessor.bufferView >= 0 && accessor.count > 0) {
+        Result<std::span<const unsigned char>> view = viewBytes(accessor.bufferView, where);
         if (!view)
             return view.error();
-        if (offset < 0 || std::size_t(offset) > view->size() || length > view->size() - std::size_t(offset))
+        const std::size_t byteStride = m_model.bufferViews[std::size_t(accessor.bufferView)].byteStride;
+        const std::size_t stride = byteStride != 0 ? byteStride : elementSize;
+        if (stride < elementSize)
+            return broken(where + " has a byte stride smaller than its elements");
+        if (accessor.byteOffset > view->size() || (accessor.count - 1) > (view->size() - accessor.byteOffset) / stride ||
+            accessor.byteOffset + (accessor.count - 1) * stride + elementSize > view->size())
             return broken(where + " reads past the end of its buffer view");
-        return view->subspan(std::size_t(offset), length);
+        for (std::size_t i = 0; i < accessor.count; ++i)
+            readElement(view->data() + accessor.byteOffset + i * stride, i);
     }
 
-    const tinygltf::Model& m_model;
-    std::string m_file;
-};
+    if (accessor.sparse.isSparse) {
+        const auto& sparse = accessor.sparse;
+        const std::string sparseWhere = "the sparse part of " + where;
+        if (sparse.count < 0 || std::size_t(sparse.count) > accessor.count)
+            return broken(sparseWhere + " has more elements than the accessor");
+        const std::size_t count = std::size_t(sparse.count);
+        const int indexSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(sparse.indices.componentType));
+        if (sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+            sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+            sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+            return broken(sparseWhere + " has indices that are not unsigned integers");
+        Result<std::span<const unsigned char>> indices =
+            viewRange(sparse.indices.bufferView, sparse.indices.byteOffset, count * std::size_t(indexSize), sparseWhere);
+        if (!indices)
+            return indices.error();
+        Result<std::span<const unsigned char>> values =
+            viewRange(sparse.values.bufferView, sparse.values.byteOffset, count * elementSize, sparseWhere);
+        if (!values)
+            return values.error();
+        for (std::size_t i = 0; i < count; ++i) {
+            const double target =
+                readComponent(indices->data() + i * std::size_t(indexSize), sparse.indices.componentType, false);
+            if (target >= double(accessor.count))
+                return broken(sparseWhere + " replaces element " + std::to_string(std::uint64_t(target)) + " of " +
+                              std::to_string(accessor.count));
+            readElement(values->data() + i * elementSize, std::size_t(target));
+        }
+    }
+    return data;
+}
+
+Result<std::span<const unsigned char>> AccessorReader::viewBytes(int viewIndex, const std::string& where) const
+{
+    if (viewIndex < 0 || std::size_t(viewIndex) >= m_model.bufferViews.size())
+        return broken(where + " names buffer view " + std::to_string(viewIndex) + ", which does not exist");
+    const tinygltf::BufferView& view = m_model.bufferViews[std::size_t(viewIndex)];
+    if (view.buffer < 0 || std::size_t(view.buffer) >= m_model.buffers.size())
+        return broken("buffer view " + std::to_string(viewIndex) + " names a buffer that does not exist");
+    const std::vector<unsigned char>& buffer = m_model.buffers[std::size_t(view.buffer)].data;
+    if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset)
+        return broken("buffer view " + std::to_string(viewIndex) + " reaches past the end of its buffer (" +
+                      std::to_string(buffer.size()) + " bytes)");
+    return std::span<const unsigned char>(buffer.data() + view.byteOffset, view.byteLength);
+}
+
+Result<std::span<const unsigned char>> AccessorReader::viewRange(int viewIndex, int offset, std::size_t length,
+                                                                 const std::string& where) const
+{
+    Result<std::span<const unsigned char>> view = viewBytes(viewIndex, where);
+    if (!view)
+        return view.error();
+    if (offset < 0 || std::size_t(offset) > view->size() || length > view->size() - std::size_t(offset))
+        return broken(where + " reads past the end of its buffer view");
+    return view->subspan(std::size_t(offset), length);
+}
+
+// ---- the node hierarchy -------------------------------------------------------------------------
+
+Result<NodeTree> nodeTree(const tinygltf::Model& model, const AccessorReader& reader)
+{
+    const std::size_t count = model.nodes.size();
+    NodeTree tree;
+    tree.parent.assign(count, -1);
+    for (std::size_t n = 0; n < count; ++n)
+        for (int child : model.nodes[n].children) {
+            if (child < 0 || std::size_t(child) >= count)
+                return reader.broken("node " + std::to_string(n) + " has a child " + std::to_string(child) +
+                                     " that does not exist");
+            if (tree.parent[std::size_t(child)] >= 0 || std::size_t(child) == n)
+                return reader.broken("node " + std::to_string(child) + " has more than one parent");
+            tree.parent[std::size_t(child)] = int(n);
+        }
+    tree.world.assign(count, kIdentity);
+    std::vector<int> stack;
+    for (std::size_t n = 0; n < count; ++n)
+        if (tree.parent[n] < 0)
+            stack.push_back(int(n));
+    std::size_t reached = 0;
+    while (!stack.empty()) {
+        const auto n = std::size_t(stack.back());
+        stack.pop_back();
+        const Mat4 local = localMatrix(model.nodes[n]);
+        tree.world[n] = tree.parent[n] < 0 ? local : multiply(tree.world[std::size_t(tree.parent[n])], local);
+        ++reached;
+        for (int child : model.nodes[n].children)
+            stack.push_back(child);
+    }
+    if (reached != count)
+        return reader.broken("its node hierarchy has a cycle");
+    return tree;
+}
+
+std::string nodeName(const tinygltf::Model& model, int index)
+{
+    const tinygltf::Node& node = model.nodes[std::size_t(index)];
+    if (!node.name.empty())
+        return node.name;
+    if (node.mesh >= 0 && std::size_t(node.mesh) < model.meshes.size() &&
+        !model.meshes[std::size_t(node.mesh)].name.empty())
+        return model.meshes[std::size_t(node.mesh)].name;
+    return "node" + std::to_string(index);
+}
 
 // ---- building the mesh ------------------------------------------------------------------------
 
-/// Extensions that may be required without changing the geometry we read. Anything else that a
-/// file requires (Draco, meshopt, GPU instancing, …) is refused.
-bool extensionKeepsGeometry(const std::string& name)
-{
-    return name == "KHR_mesh_quantization" || name == "KHR_texture_transform" || name == "KHR_lights_punctual" ||
-           name == "KHR_texture_basisu" || name == "EXT_texture_webp" || name.starts_with("KHR_materials_");
-}
+namespace {
 
 /// One primitive in world space, triangles as a list.
 struct PrimitiveGeometry {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;
+    std::vector<std::array<float, 2>> texcoords; ///< empty when the primitive has none
     std::vector<std::uint32_t> indices;
     std::vector<std::array<int, 8>> joints; ///< skin joint slots per vertex (skinned meshes only)
     std::vector<std::array<float, 8>> weights;
@@ -327,13 +431,18 @@ constexpr std::uint32_t kUnmapped = 0xffffffffu;
 
 struct SegmentBuilder {
     Segment segment;
+    SegmentSource source;
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;
+    std::vector<std::array<float, 2>> texcoords;
+    std::vector<std::array<int, 8>> jointNodes;
+    std::vector<std::array<float, 8>> weights;
     std::vector<std::uint32_t> indices; ///< local to the builder
 };
 
 struct SkinBind {
     Mat4 placement = kIdentity;  ///< the root joint's skinning matrix: frame of an unsplit mesh
+    int rootNode = -1;           ///< the skin's root joint
     std::vector<int> jointNodes; ///< skin joint slot → node index
     std::vector<Mat4> skinning;  ///< per joint slot: joint world · inverse bind matrix
 };
@@ -348,85 +457,50 @@ Vec3 normalizedOr(Vec3d v, Vec3 fallback)
 
 class MeshBuilder {
 public:
-    MeshBuilder(const tinygltf::Model& model, const GltfReader& reader, const GltfMeshOptions& options)
-        : m_model(model), m_reader(reader), m_options(options)
+    MeshBuilder(const File& file, const AccessorReader& reader, const NodeTree& tree, const GltfMeshOptions& options,
+                std::span<const std::string> names)
+        : m_model(file.model), m_reader(reader), m_tree(tree), m_options(options), m_names(names)
     {
     }
 
-    Result<void> computeWorldMatrices();
     Result<std::vector<int>> meshNodesOfScene() const;
     Result<void> addMeshNode(int nodeIndex);
-    CharacterMesh finish();
+    MeshData finish();
 
 private:
-    std::string nodeName(int index) const;
+    /// Segments are keyed by what they gather: a mesh node or a joint, and the material when
+    /// splitting by material.
+    enum class Kind { MeshNode, Joint };
+    using Key = std::tuple<Kind, int, int>;
+
     Result<SkinBind> skinBind(int skinIndex) const;
-    Result<PrimitiveGeometry> readPrimitive(const tinygltf::Primitive& primitive, const std::string& use, const std::vector<double>& morphWeights,
-                                            const SkinBind* skin, const Mat4& nodeWorld) const;
+    Result<PrimitiveGeometry> readPrimitive(const tinygltf::Primitive& primitive, const std::string& use,
+                                            const std::vector<double>& morphWeights, const SkinBind* skin,
+                                            const Mat4& nodeWorld) const;
     Result<std::vector<std::uint32_t>> readTriangles(const tinygltf::Primitive& primitive, std::size_t vertexCount,
                                                      const std::string& use) const;
-    std::size_t builderFor(std::pair<int, int> key, const std::string& baseName, const std::string& joint,
-                           const Mat4& frame);
-    void append(std::size_t builder, const PrimitiveGeometry& geometry, std::span<const std::uint32_t> triangles);
+    std::string materialName(int material) const;
+    std::size_t builderFor(Key key, const std::string& baseName, const std::string& joint, const Mat4& frame,
+                           const SegmentSource& source);
+    void append(std::size_t builder, const PrimitiveGeometry& geometry, std::span<const std::uint32_t> triangles,
+                const SkinBind* skin, int material);
 
     const tinygltf::Model& m_model;
-    const GltfReader& m_reader;
+    const AccessorReader& m_reader;
+    const NodeTree& m_tree;
     const GltfMeshOptions& m_options;
-    std::vector<Mat4> m_world;
-    std::vector<int> m_parent;
+    std::span<const std::string> m_names;
     std::vector<SegmentBuilder> m_builders;
-    std::map<std::pair<int, int>, std::size_t> m_builderByKey; ///< (0, mesh node) or (1, joint node)
+    std::map<Key, std::size_t> m_builderByKey;
+    bool m_hasTexcoords = false;
 };
-
-std::string MeshBuilder::nodeName(int index) const
-{
-    const tinygltf::Node& node = m_model.nodes[std::size_t(index)];
-    if (!node.name.empty())
-        return node.name;
-    if (node.mesh >= 0 && std::size_t(node.mesh) < m_model.meshes.size() && !m_model.meshes[std::size_t(node.mesh)].name.empty())
-        return m_model.meshes[std::size_t(node.mesh)].name;
-    return "node" + std::to_string(index);
-}
-
-Result<void> MeshBuilder::computeWorldMatrices()
-{
-    const std::size_t count = m_model.nodes.size();
-    m_parent.assign(count, -1);
-    for (std::size_t n = 0; n < count; ++n)
-        for (int child : m_model.nodes[n].children) {
-            if (child < 0 || std::size_t(child) >= count)
-                return m_reader.broken("node " + std::to_string(n) + " has a child " + std::to_string(child) +
-                                       " that does not exist");
-            if (m_parent[std::size_t(child)] >= 0 || std::size_t(child) == n)
-                return m_reader.broken("node " + std::to_string(child) + " has more than one parent");
-            m_parent[std::size_t(child)] = int(n);
-        }
-    m_world.assign(count, kIdentity);
-    std::vector<int> stack;
-    for (std::size_t n = 0; n < count; ++n)
-        if (m_parent[n] < 0)
-            stack.push_back(int(n));
-    std::size_t reached = 0;
-    while (!stack.empty()) {
-        const int n = stack.back();
-        stack.pop_back();
-        const Mat4 local = localMatrix(m_model.nodes[std::size_t(n)]);
-        m_world[std::size_t(n)] = m_parent[std::size_t(n)] < 0 ? local : multiply(m_world[std::size_t(m_parent[std::size_t(n)])], local);
-        ++reached;
-        for (int child : m_model.nodes[std::size_t(n)].children)
-            stack.push_back(child);
-    }
-    if (reached != count)
-        return m_reader.broken("its node hierarchy has a cycle");
-    return {};
-}
 
 Result<std::vector<int>> MeshBuilder::meshNodesOfScene() const
 {
     std::vector<int> roots;
     if (m_model.scenes.empty()) {
         for (std::size_t n = 0; n < m_model.nodes.size(); ++n)
-            if (m_parent[n] < 0)
+            if (m_tree.parent[n] < 0)
                 roots.push_back(int(n));
     } else {
         const int scene = m_model.defaultScene >= 0 ? m_model.defaultScene : 0;
@@ -478,7 +552,7 @@ Result<SkinBind> MeshBuilder::skinBind(int skinIndex) const
     // bound in a T-pose, its arms rest down) skinning puts the mesh where the skeleton is.
     std::size_t root = 0;
     for (std::size_t j = 0; j < skin.joints.size(); ++j) {
-        const int parent = m_parent[std::size_t(skin.joints[j])];
+        const int parent = m_tree.parent[std::size_t(skin.joints[j])];
         if (std::find(skin.joints.begin(), skin.joints.end(), parent) == skin.joints.end()) {
             root = j;
             break;
@@ -487,11 +561,13 @@ Result<SkinBind> MeshBuilder::skinBind(int skinIndex) const
     SkinBind bind;
     bind.jointNodes = skin.joints;
     for (std::size_t j = 0; j < skin.joints.size(); ++j) {
-        bind.skinning.push_back(multiply(m_world[std::size_t(skin.joints[j])], inverseBind[j]));
+        bind.skinning.push_back(multiply(m_tree.world[std::size_t(skin.joints[j])], inverseBind[j]));
         if (!invertAffine(bind.skinning.back()))
-            return m_reader.broken(use + " has a singular skinning matrix for joint " + nodeName(skin.joints[j]));
+            return m_reader.broken(use + " has a singular skinning matrix for joint " +
+                                   nodeName(m_model, skin.joints[j]));
     }
     bind.placement = bind.skinning[root];
+    bind.rootNode = skin.joints[root];
     return bind;
 }
 
@@ -555,8 +631,8 @@ Result<std::vector<std::uint32_t>> MeshBuilder::readTriangles(const tinygltf::Pr
 }
 
 Result<PrimitiveGeometry> MeshBuilder::readPrimitive(const tinygltf::Primitive& primitive, const std::string& use,
-                                                     const std::vector<double>& morphWeights,
-                                                     const SkinBind* skin, const Mat4& nodeWorld) const
+                                                     const std::vector<double>& morphWeights, const SkinBind* skin,
+                                                     const Mat4& nodeWorld) const
 {
     const auto attribute = [&](const std::string& name) {
         const auto found = primitive.attributes.find(name);
@@ -608,6 +684,29 @@ Result<PrimitiveGeometry> MeshBuilder::readPrimitive(const tinygltf::Primitive& 
     PrimitiveGeometry geometry;
     geometry.indices = std::move(*triangles);
 
+    // The texture coordinates the base colour texture reads (TEXCOORD_0 unless it says otherwise).
+    int texcoordSet = 0;
+    if (primitive.material >= 0 && std::size_t(primitive.material) < m_model.materials.size()) {
+        const tinygltf::TextureInfo& base =
+            m_model.materials[std::size_t(primitive.material)].pbrMetallicRoughness.baseColorTexture;
+        if (base.index >= 0)
+            texcoordSet = base.texCoord;
+    }
+    if (const int texcoords = attribute("TEXCOORD_" + std::to_string(texcoordSet)); texcoords >= 0) {
+        const std::string texcoordUse = use + " TEXCOORD_" + std::to_string(texcoordSet);
+        Result<AccessorData> read = m_reader.read(texcoords, texcoordUse);
+        if (!read)
+            return read.error();
+        if (read->components != 2 || read->count != vertexCount)
+            return m_reader.broken(texcoordUse + " does not hold one 2D vector per vertex");
+        geometry.texcoords.resize(vertexCount);
+        for (std::size_t v = 0; v < vertexCount; ++v) {
+            geometry.texcoords[v] = {float((*read)(v, 0)), float((*read)(v, 1))};
+            if (!std::isfinite(geometry.texcoords[v][0]) || !std::isfinite(geometry.texcoords[v][1]))
+                return m_reader.broken(texcoordUse + " has a value that is not finite");
+        }
+    }
+
     if (skin) {
         geometry.joints.assign(vertexCount, {});
         geometry.weights.assign(vertexCount, {});
@@ -631,8 +730,9 @@ Result<PrimitiveGeometry> MeshBuilder::readPrimitive(const tinygltf::Primitive& 
                     const float weight = float((*weights)(v, k));
                     const bool known = joint >= 0 && joint < double(skin->jointNodes.size());
                     if (!known && weight != 0)
-                        return m_reader.broken(use + " weights joint " + std::to_string(std::int64_t(joint)) + " of a skin with " +
-                                               std::to_string(skin->jointNodes.size()) + " joints");
+                        return m_reader.broken(use + " weights joint " + std::to_string(std::int64_t(joint)) +
+                                               " of a skin with " + std::to_string(skin->jointNodes.size()) +
+                                               " joints");
                     geometry.joints[v][std::size_t(set * 4 + k)] = known ? int(joint) : 0;
                     geometry.weights[v][std::size_t(set * 4 + k)] = known ? weight : 0.0f;
                 }
@@ -671,9 +771,10 @@ Result<PrimitiveGeometry> MeshBuilder::readPrimitive(const tinygltf::Primitive& 
     for (std::size_t v = 0; v < vertexCount; ++v) {
         const Mat4 transform = vertexTransform(v);
         const Vec3d p = transformPoint(transform, {(*positions)(v, 0), (*positions)(v, 1), (*positions)(v, 2)});
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        geometry.positions[v] = {float(p.x), float(p.y), float(p.z)}; // checked as floats: a huge double overflows
+        if (!std::isfinite(geometry.positions[v].x) || !std::isfinite(geometry.positions[v].y) ||
+            !std::isfinite(geometry.positions[v].z))
             return m_reader.broken(use + " has a vertex position that is not finite");
-        geometry.positions[v] = {float(p.x), float(p.y), float(p.z)};
         if (normals) {
             const std::array<double, 9> m = normalMatrix(transform);
             const double sign = determinant3(transform) < 0 ? -1.0 : 1.0;
@@ -703,8 +804,16 @@ Result<PrimitiveGeometry> MeshBuilder::readPrimitive(const tinygltf::Primitive& 
     return geometry;
 }
 
-std::size_t MeshBuilder::builderFor(std::pair<int, int> key, const std::string& baseName, const std::string& joint,
-                                    const Mat4& frame)
+std::string MeshBuilder::materialName(int material) const
+{
+    if (material < 0 || std::size_t(material) >= m_model.materials.size())
+        return "default";
+    const std::string& name = m_model.materials[std::size_t(material)].name;
+    return name.empty() ? "material" + std::to_string(material) : name;
+}
+
+std::size_t MeshBuilder::builderFor(Key key, const std::string& baseName, const std::string& joint, const Mat4& frame,
+                                    const SegmentSource& source)
 {
     if (const auto found = m_builderByKey.find(key); found != m_builderByKey.end())
         return found->second;
@@ -720,25 +829,51 @@ std::size_t MeshBuilder::builderFor(std::pair<int, int> key, const std::string& 
     builder.segment.bindRotation = rotationOf(frame);
     builder.segment.bindTranslation = {frame[12], frame[13], frame[14]};
     builder.segment.posture = defaultPosture(joint);
+    builder.source = source;
     m_builders.push_back(std::move(builder));
     m_builderByKey.emplace(key, m_builders.size() - 1);
     return m_builders.size() - 1;
 }
 
 void MeshBuilder::append(std::size_t builderIndex, const PrimitiveGeometry& geometry,
-                         std::span<const std::uint32_t> triangles)
+                         std::span<const std::uint32_t> triangles, const SkinBind* skin, int material)
 {
     SegmentBuilder& builder = m_builders[builderIndex];
+    if (builder.positions.empty() && builder.indices.empty())
+        builder.source.material = material;
+    else if (builder.source.material != material)
+        builder.source.mixedMaterials = true;
+    m_hasTexcoords = m_hasTexcoords || !geometry.texcoords.empty();
+
     // Only the vertices these triangles use (all of them when the primitive is not split).
     const bool whole = triangles.size() == geometry.indices.size();
     std::vector<std::uint32_t> remap(geometry.positions.size(), kUnmapped);
     const std::uint32_t base = std::uint32_t(builder.positions.size());
     auto take = [&](std::uint32_t v) {
-        if (remap[v] == kUnmapped) {
-            remap[v] = std::uint32_t(builder.positions.size()) - base;
-            builder.positions.push_back(geometry.positions[v]);
-            builder.normals.push_back(geometry.normals[v]);
+        if (remap[v] != kUnmapped)
+            return base + remap[v];
+        remap[v] = std::uint32_t(builder.positions.size()) - base;
+        builder.positions.push_back(geometry.positions[v]);
+        builder.normals.push_back(geometry.normals[v]);
+        builder.texcoords.push_back(geometry.texcoords.empty() ? std::array<float, 2>{} : geometry.texcoords[v]);
+        std::array<int, 8> nodes;
+        nodes.fill(-1);
+        std::array<float, 8> weights{};
+        if (skin) {
+            float total = 0;
+            for (std::size_t k = 0; k < 8; ++k)
+                if (geometry.weights[v][k] > 0) {
+                    nodes[k] = skin->jointNodes[std::size_t(geometry.joints[v][k])];
+                    weights[k] = geometry.weights[v][k];
+                    total += weights[k];
+                }
+            if (!(total > 0)) { // as placed: with the skeleton's root
+                nodes[0] = skin->rootNode;
+                weights[0] = 1;
+            }
         }
+        builder.jointNodes.push_back(nodes);
+        builder.weights.push_back(weights);
         return base + remap[v];
     };
     if (whole) // keep unused vertices and the file's vertex order
@@ -752,7 +887,7 @@ Result<void> MeshBuilder::addMeshNode(int nodeIndex)
 {
     const tinygltf::Node& node = m_model.nodes[std::size_t(nodeIndex)];
     if (std::size_t(node.mesh) >= m_model.meshes.size())
-        return m_reader.broken("node " + nodeName(nodeIndex) + " names mesh " + std::to_string(node.mesh) +
+        return m_reader.broken("node " + nodeName(m_model, nodeIndex) + " names mesh " + std::to_string(node.mesh) +
                                ", which does not exist");
     const tinygltf::Mesh& mesh = m_model.meshes[std::size_t(node.mesh)];
     const std::vector<double>& morphWeights = node.weights.empty() ? mesh.weights : node.weights;
@@ -765,19 +900,33 @@ Result<void> MeshBuilder::addMeshNode(int nodeIndex)
         skin = std::move(*bind);
     }
     const bool split = skin && m_options.splitSkinnedByJoint;
-    const Mat4& frame = skin ? skin->placement : m_world[std::size_t(nodeIndex)];
+    const Mat4& frame = skin ? skin->placement : m_tree.world[std::size_t(nodeIndex)];
+    const std::string& name = m_names[std::size_t(nodeIndex)];
+
+    // Splitting by material: segments of a mesh with several materials are named "<name>/<material>".
+    std::set<int> materials;
+    for (const tinygltf::Primitive& primitive : mesh.primitives)
+        materials.insert(primitive.material);
+    const bool byMaterial = m_options.splitByMaterial && materials.size() > 1;
+    auto keyMaterial = [&](int material) { return m_options.splitByMaterial ? material : -2; };
+    auto withMaterial = [&](const std::string& base, int material) {
+        return byMaterial ? base + "/" + materialName(material) : base;
+    };
 
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
-        const std::string use = "mesh \"" + (mesh.name.empty() ? nodeName(nodeIndex) : mesh.name) + "\" primitive " +
-                                std::to_string(p);
-        Result<PrimitiveGeometry> geometry =
-            readPrimitive(mesh.primitives[p], use, morphWeights, skin ? &*skin : nullptr, m_world[std::size_t(nodeIndex)]);
+        const tinygltf::Primitive& primitive = mesh.primitives[p];
+        const std::string use = "mesh \"" + (mesh.name.empty() ? nodeName(m_model, nodeIndex) : mesh.name) +
+                                "\" primitive " + std::to_string(p);
+        Result<PrimitiveGeometry> geometry = readPrimitive(primitive, use, morphWeights, skin ? &*skin : nullptr,
+                                                           m_tree.world[std::size_t(nodeIndex)]);
         if (!geometry)
             return geometry.error();
         if (!split) {
-            const std::size_t builder =
-                builderFor({0, nodeIndex}, nodeName(nodeIndex), skin ? std::string() : nodeName(nodeIndex), frame);
-            append(builder, *geometry, geometry->indices);
+            const SegmentSource source{nodeIndex, skin ? skin->rootNode : nodeIndex, false, primitive.material, false};
+            const std::size_t builder = builderFor({Kind::MeshNode, nodeIndex, keyMaterial(primitive.material)},
+                                                   withMaterial(name, primitive.material), skin ? std::string() : name,
+                                                   frame, source);
+            append(builder, *geometry, geometry->indices, skin ? &*skin : nullptr, primitive.material);
             continue;
         }
         // Split: each triangle goes to the joint with the largest weight summed over its corners.
@@ -792,27 +941,34 @@ Result<void> MeshBuilder::addMeshNode(int nodeIndex)
                     sum[std::size_t(geometry->joints[v][k])] += geometry->weights[v][k];
             }
             const std::size_t dominant = std::size_t(std::max_element(sum.begin(), sum.end()) - sum.begin());
-            trianglesOfJoint[dominant].insert(trianglesOfJoint[dominant].end(), geometry->indices.begin() + std::ptrdiff_t(t),
+            trianglesOfJoint[dominant].insert(trianglesOfJoint[dominant].end(),
+                                              geometry->indices.begin() + std::ptrdiff_t(t),
                                               geometry->indices.begin() + std::ptrdiff_t(t + 3));
         }
         for (std::size_t j = 0; j < jointCount; ++j) {
             if (trianglesOfJoint[j].empty())
                 continue;
             const int jointNode = skin->jointNodes[j];
-            const std::size_t builder =
-                builderFor({1, jointNode}, nodeName(jointNode), nodeName(jointNode), m_world[std::size_t(jointNode)]);
-            append(builder, *geometry, trianglesOfJoint[j]);
+            const std::string& jointName = m_names[std::size_t(jointNode)];
+            const SegmentSource source{nodeIndex, jointNode, true, primitive.material, false};
+            const std::size_t builder = builderFor({Kind::Joint, jointNode, keyMaterial(primitive.material)},
+                                                   withMaterial(jointName, primitive.material), jointName,
+                                                   m_tree.world[std::size_t(jointNode)], source);
+            append(builder, *geometry, trianglesOfJoint[j], &*skin, primitive.material);
         }
     }
     // A mesh node with no primitives still names its segment.
     if (!split && mesh.primitives.empty())
-        builderFor({0, nodeIndex}, nodeName(nodeIndex), skin ? std::string() : nodeName(nodeIndex), frame);
+        builderFor({Kind::MeshNode, nodeIndex, keyMaterial(-1)}, name, skin ? std::string() : name, frame,
+                   SegmentSource{nodeIndex, skin ? skin->rootNode : nodeIndex, false, -1, false});
     return {};
 }
 
-CharacterMesh MeshBuilder::finish()
+MeshData MeshBuilder::finish()
 {
-    CharacterMesh mesh;
+    MeshData data;
+    data.hasTexcoords = m_hasTexcoords;
+    CharacterMesh& mesh = data.mesh;
     for (SegmentBuilder& builder : m_builders) {
         Segment segment = builder.segment;
         segment.firstVertex = std::uint32_t(mesh.positions.size());
@@ -821,73 +977,60 @@ CharacterMesh MeshBuilder::finish()
         segment.triangleCount = std::uint32_t(builder.indices.size() / 3);
         mesh.positions.insert(mesh.positions.end(), builder.positions.begin(), builder.positions.end());
         mesh.normals.insert(mesh.normals.end(), builder.normals.begin(), builder.normals.end());
+        data.texcoords.insert(data.texcoords.end(), builder.texcoords.begin(), builder.texcoords.end());
+        data.jointNodes.insert(data.jointNodes.end(), builder.jointNodes.begin(), builder.jointNodes.end());
+        data.weights.insert(data.weights.end(), builder.weights.begin(), builder.weights.end());
         for (std::uint32_t index : builder.indices)
             mesh.indices.push_back(segment.firstVertex + index);
         mesh.segments.push_back(std::move(segment));
+        data.sources.push_back(builder.source);
     }
-    return mesh;
-}
-
-bool startsWithGlbMagic(const std::filesystem::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    char magic[4] = {};
-    in.read(magic, 4);
-    return in.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
+    return data;
 }
 
 } // namespace
 
-Result<CharacterMesh> loadGltfMesh(const std::filesystem::path& path, const GltfMeshOptions& options)
+Result<MeshData> readMesh(const File& file, const NodeTree& tree, const GltfMeshOptions& options,
+                          std::span<const std::string> names)
 {
-    const std::string file = path.string();
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        return makeError(ErrorCode::FileNotFound, "The glTF file " + file + " does not exist.");
-
-    tinygltf::Model model;
-    std::string error;
-    std::string warning;
-    tinygltf::TinyGLTF loader;
-    // Geometry only: images are not decoded (the renderer loads textures itself).
-    loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*,
-                             int, void*) { return true; },
-                          nullptr);
-    bool loaded = false;
-    try {
-        loaded = startsWithGlbMagic(path) ? loader.LoadBinaryFromFile(&model, &error, &warning, file)
-                                          : loader.LoadASCIIFromFile(&model, &error, &warning, file);
-    } catch (const std::exception& e) {
-        error = e.what();
-    }
-    if (!loaded)
-        return makeError(ErrorCode::CorruptData, "The glTF file " + file + " cannot be read.", error);
-
-    for (const std::string& extension : model.extensionsRequired)
-        if (!extensionKeepsGeometry(extension))
-            return makeError(ErrorCode::NotOurFormat,
-                             "The glTF file " + file + " requires the extension " + extension +
-                                 ", which Thespis does not support; export it without " + extension + ".");
-
-    GltfReader reader(model, file);
-    MeshBuilder builder(model, reader, options);
-    if (Result<void> ok = builder.computeWorldMatrices(); !ok)
-        return ok.error();
+    const AccessorReader reader(file);
+    MeshBuilder builder(file, reader, tree, options, names);
     Result<std::vector<int>> meshNodes = builder.meshNodesOfScene();
     if (!meshNodes)
         return meshNodes.error();
     if (meshNodes->empty())
-        return makeError(ErrorCode::CorruptData, "The glTF file " + file + " has no mesh in its scene.");
+        return makeError(ErrorCode::CorruptData, "The glTF file " + file.name + " has no mesh in its scene.");
     for (int node : *meshNodes)
         if (Result<void> ok = builder.addMeshNode(node); !ok)
             return ok.error();
 
-    CharacterMesh mesh = builder.finish();
-    if (mesh.vertexCount() >= std::size_t(UINT32_MAX))
-        return makeError(ErrorCode::CorruptData, "The glTF file " + file + " has too many vertices.");
-    if (Result<void> ok = mesh.validate(); !ok)
-        return makeError(ErrorCode::Internal, "The mesh read from " + file + " is inconsistent.", ok.error().message);
-    return mesh;
+    MeshData data = builder.finish();
+    if (data.mesh.vertexCount() >= std::size_t(UINT32_MAX))
+        return makeError(ErrorCode::CorruptData, "The glTF file " + file.name + " has too many vertices.");
+    if (Result<void> ok = data.mesh.validate(); !ok)
+        return makeError(ErrorCode::Internal, "The mesh read from " + file.name + " is inconsistent.",
+                         ok.error().message);
+    return data;
+}
+
+} // namespace gltf
+
+Result<CharacterMesh> loadGltfMesh(const std::filesystem::path& path, const GltfMeshOptions& options)
+{
+    // Geometry only: images are not decoded (the renderer loads textures itself).
+    Result<gltf::File> file = gltf::readFile(path, false);
+    if (!file)
+        return file.error();
+    Result<gltf::NodeTree> tree = gltf::nodeTree(file->model, gltf::AccessorReader(*file));
+    if (!tree)
+        return tree.error();
+    std::vector<std::string> names;
+    for (std::size_t n = 0; n < file->model.nodes.size(); ++n)
+        names.push_back(gltf::nodeName(file->model, int(n)));
+    Result<gltf::MeshData> data = gltf::readMesh(*file, *tree, options, names);
+    if (!data)
+        return data.error();
+    return std::move(data->mesh);
 }
 
 } // namespace thespis::core::scene

@@ -1,7 +1,7 @@
 #pragma once
 // glTF 2.0 (.gltf / .glb) → CharacterMesh in bind pose, through tinygltf (Debian's compiled
-// library). The full character import (skins, clips, materials, H-Anim joint mapping) belongs to
-// the rendering issue and will grow from this file.
+// library). The full character import (skins, clips, materials, H-Anim joint mapping) is
+// gltf_character.h, which builds the same mesh.
 //
 // The pose is the scene's rest pose: every node at its own TRS/matrix. Positions and normals are
 // in world space (node world transforms). A skinned mesh ignores its node's transform and is
@@ -19,6 +19,9 @@
 // per joint node named after it, merged across the skinned meshes that share that joint. Names are
 // kept unique with a "#2", "#3" suffix. Segment.joint is the raw glTF node name (mesh node or
 // joint; "" for an unsplit skinned mesh); mapping to H-Anim comes with the character import.
+// With `splitByMaterial`, a segment holds the primitives of one material only: a mesh with several
+// materials gives segments named "<name>/<material name>" (the character import uses this so that
+// every segment has one material).
 // Segment bind frames (rotation with scale removed, and translation): the mesh node's world
 // transform, the root joint's skinning matrix for an unsplit skinned mesh, the joint's world
 // transform for a split segment.
@@ -35,6 +38,7 @@ namespace thespis::core::scene {
 
 struct GltfMeshOptions {
     bool splitSkinnedByJoint = true;
+    bool splitByMaterial = false;
 };
 
 Result<CharacterMesh> loadGltfMesh(const std::filesystem::path& path, const GltfMeshOptions& options = {});
