@@ -23,38 +23,6 @@ namespace {
 namespace lighting = core::lighting;
 namespace scene = core::scene;
 
-/// Reads an integer option within [min, max]; sets exitCode on a bad value.
-std::optional<long> integerOption(const CommandSpec& spec, const ParsedArguments& arguments, const std::string& name,
-                                  long min, long max, int& exitCode)
-{
-    const auto text = arguments.value(name);
-    if (!text)
-        return std::nullopt;
-    const auto value = parseNumber(*text);
-    if (!value || *value != std::floor(*value) || *value < double(min) || *value > double(max)) {
-        exitCode = usageError(spec, "--" + name + " must be a whole number from " + std::to_string(min) + " to "
-                                        + std::to_string(max) + ", not '" + *text + "'");
-        return std::nullopt;
-    }
-    return long(*value);
-}
-
-/// Parses an enumeration option with the core's parser, whose message lists the choices.
-template <class T, class Parse>
-std::optional<T> choiceOption(const CommandSpec& spec, const ParsedArguments& arguments, const std::string& name,
-                              T fallback, Parse parse, int& exitCode)
-{
-    const auto text = arguments.value(name);
-    if (!text)
-        return fallback;
-    auto parsed = parse(*text);
-    if (!parsed) {
-        exitCode = usageError(spec, "--" + name + ": " + parsed.error().message);
-        return std::nullopt;
-    }
-    return *parsed;
-}
-
 /// Tags from --tags FILE, or from the scenario character's segment tags.
 std::optional<std::vector<scene::SegmentTag>> loadTags(const CommandSpec& spec, const ParsedArguments& arguments,
                                                        int& exitCode)

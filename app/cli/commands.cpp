@@ -1,5 +1,6 @@
 #include "commands.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "exit_codes.h"
@@ -13,6 +14,7 @@ const std::vector<Command>& commands()
         {validateSpec(), &runValidate},
         {bakeMotionSpec(), &runBakeMotion},
         {bakeSpec(), &runBake},
+        {renderSpec(), &runRender},
         {infoSpec(), &runInfo},
     };
     return all;
@@ -44,6 +46,21 @@ std::optional<core::scenario::Scenario> loadScenarioReporting(const std::string&
         return std::nullopt;
     }
     return std::move(scenario).value();
+}
+
+std::optional<long> integerOption(const CommandSpec& spec, const ParsedArguments& arguments, const std::string& name,
+                                  long min, long max, int& exitCode)
+{
+    const auto text = arguments.value(name);
+    if (!text)
+        return std::nullopt;
+    const auto value = parseNumber(*text);
+    if (!value || *value != std::floor(*value) || *value < double(min) || *value > double(max)) {
+        exitCode = usageError(spec, "--" + name + " must be a whole number from " + std::to_string(min) + " to "
+                                        + std::to_string(max) + ", not '" + *text + "'");
+        return std::nullopt;
+    }
+    return long(*value);
 }
 
 std::string joinNames(const std::vector<std::string>& names)

@@ -28,6 +28,8 @@ CommandSpec bakeMotionSpec();
 int runBakeMotion(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec bakeSpec();
 int runBake(const CommandSpec& spec, const ParsedArguments& arguments);
+CommandSpec renderSpec();
+int runRender(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec infoSpec();
 int runInfo(const CommandSpec& spec, const ParsedArguments& arguments);
 
@@ -41,6 +43,25 @@ int usageError(const CommandSpec& spec, const std::string& problem);
 /// Loads a scenario file, printing the error when it cannot be read.
 std::optional<core::scenario::Scenario> loadScenarioReporting(const std::string& command,
                                                               const std::filesystem::path& path);
+/// Reads an integer option within [min, max]; on a bad value prints the usage error and sets
+/// exitCode (to ExitUsage).
+std::optional<long> integerOption(const CommandSpec& spec, const ParsedArguments& arguments, const std::string& name,
+                                  long min, long max, int& exitCode);
+/// Parses an enumeration option with the core's parser, whose message lists the choices.
+template <class T, class Parse>
+std::optional<T> choiceOption(const CommandSpec& spec, const ParsedArguments& arguments, const std::string& name,
+                              T fallback, Parse parse, int& exitCode)
+{
+    const auto text = arguments.value(name);
+    if (!text)
+        return fallback;
+    auto parsed = parse(*text);
+    if (!parsed) {
+        exitCode = usageError(spec, "--" + name + ": " + parsed.error().message);
+        return std::nullopt;
+    }
+    return *parsed;
+}
 /// "a, b, c", or "none".
 std::string joinNames(const std::vector<std::string>& names);
 

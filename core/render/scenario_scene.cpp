@@ -1,0 +1,96 @@
+#include "render/scenario_scene.h"
+
+#include <cmath>
+
+#include "lighting/probe.h"
+#include "scenario/scenario_character.h"
+
+namespace thespis::core::render {
+
+Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Scenario& scenario,
+                                                             const std::filesystem::path& baseDir,
+                                                             const ScenarioSceneOptions& options)
+{
+    auto runtime = scenario::buildRuntime(scenario, baseDir);
+    if (!runtime)
+        return runtime.error();
+    std::unique_ptr<ScenarioScene> self(new ScenarioScene);
+    self->m_runtime = std::move(runtime).value();
+    self->m_scene = std::make_unique<RenderScene>(options.skinningThreads);
+
+    if (!scenario.lighting.probe.empty()) {
+        auto layout = lighting::parseProbeLayout(scenario.lighting.layout);
+        if (!layout)
+            return makeError(layout.error().code, "lighting.layout: " + layout.error().message);
+        auto probe = lighting::LightProbe::load(baseDir / scenario.lighting.probe, *layout);
+        if (!probe)
+            return makeError(probe.error().code, "lighting.probe: " + probe.error().message, probe.error().detail);
+        auto light = lighting::ProbeProjector::create(*layout, probe->image().width, probe->image().height,
+                                                      options.lightOrder);
+        if (!light)
+            return makeError(light.error().code, "lighting.probe: " + light.error().message, light.error().detail);
+        auto projected = light->project(probe->image());
+        if (!projected)
+            return makeError(projected.error().code, "lighting.probe: " + projected.error().message);
+        self->m_scene->setLight(*projected);
+        if (options.probeBackground)
+            self->m_scene->setBackgroundProbe(*probe);
+    }
+
+    for (std::size_t i = 0; i < scenario.characters.size(); ++i) {
+        auto body = scenario::loadCharacterBody(scenario, i, baseDir);
+        if (!body)
+            return body.error();
+        const scenario::CharacterRuntime* characterRuntime = self->m_runtime.findCharacter(scenario.characters[i].name);
+        if (!characterRuntime)
+            return makeError(ErrorCode::Internal, "The runtime lost character \"" + scenario.characters[i].name + "\".");
+        for (const std::string& warning : body->warnings)
+            self->m_warnings.push_back(scenario.characters[i].name + ": " + warning);
+        const auto bake = options.bakes.find(scenario.characters[i].name);
+        auto shared = std::make_shared<const scene::Character>(std::move(body).value());
+        auto node = self->m_scene->addCharacter(shared, bake == options.bakes.end() ? nullptr : bake->second.get(),
+                                                options.skinning);
+        if (!node)
+            return makeError(node.error().code, scenario.characters[i].name + ": " + node.error().message,
+                             node.error().detail);
+        Performer performer;
+        performer.runtime = characterRuntime;
+        performer.node = *node;
+        performer.retarget = anim::FrameRetarget(characterRuntime->skeleton, shared->skeleton);
+        if (performer.retarget.mappedJointCount() < std::min(characterRuntime->skeleton.jointCount(), 4))
+            self->m_warnings.push_back(scenario.characters[i].name + ": its body shares only " +
+                                       std::to_string(performer.retarget.mappedJointCount()) +
+                                       " joint names with its animation skeleton, so it will hardly move.");
+        performer.scheduleFrame = characterRuntime->skeleton.restFrame();
+        performer.bodyFrame = shared->skeleton.restFrame();
+        self->m_performers.push_back(std::move(performer));
+    }
+    self->setTime(0.0);
+    return self;
+}
+
+void ScenarioScene::setTime(double seconds)
+{
+    m_time = seconds;
+    for (Performer& performer : m_performers) {
+        if (performer.runtime->body)
+            performer.runtime->body->evaluate(seconds, performer.scheduleFrame);
+        performer.retarget.apply(performer.scheduleFrame, performer.bodyFrame);
+        performer.node->setPose(performer.bodyFrame);
+    }
+}
+
+Bounds ScenarioScene::boundsOverTimeline()
+{
+    const double now = m_time;
+    Bounds bounds;
+    const int samples = std::max(1, int(std::ceil(duration() * 10.0)));
+    for (int i = 0; i <= samples; ++i) {
+        setTime(duration() * i / samples);
+        bounds.add(m_scene->characterBounds());
+    }
+    setTime(now);
+    return bounds;
+}
+
+} // namespace thespis::core::render

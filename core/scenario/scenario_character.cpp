@@ -1,0 +1,42 @@
+#include "scenario/scenario_character.h"
+
+#include "scene/default_humanoid.h"
+#include "scene/gltf_character.h"
+
+namespace thespis::core::scenario {
+
+namespace {
+
+// The humanoid's level follows the animation skeleton, so every animated joint has its
+// segment; a BVH skeleton ("clip:NAME") drives LOA 1 by its H-Anim names.
+anim::hanim::Level humanoidLevel(const std::string& skeleton)
+{
+    if (skeleton == "hanim-loa2")
+        return anim::hanim::Level::Loa2;
+    if (skeleton == "hanim-25")
+        return anim::hanim::Level::Subset25;
+    return anim::hanim::Level::Loa1;
+}
+
+} // namespace
+
+Result<scene::Character> loadCharacterBody(const Scenario& scenario, std::size_t characterIndex,
+                                           const std::filesystem::path& baseDir)
+{
+    const Character& spec = scenario.characters.at(characterIndex);
+    const std::string field = "characters[" + std::to_string(characterIndex) + "]";
+    auto fail = [&](const std::string& member, const Error& error) {
+        return makeError(error.code, field + "." + member + " (" + spec.name + "): " + error.message, error.detail);
+    };
+    Result<scene::Character> body = spec.model.empty()
+                                        ? scene::makeDefaultHumanoid({.level = humanoidLevel(spec.skeleton)})
+                                        : scene::loadGltfCharacter(baseDir / spec.model);
+    if (!body)
+        return fail(spec.model.empty() ? "skeleton" : "model", body.error());
+    body->name = spec.name;
+    if (auto tagged = scene::applySegmentTags(body->mesh, spec.segmentTags); !tagged)
+        return fail("segments", tagged.error());
+    return body;
+}
+
+} // namespace thespis::core::scenario
