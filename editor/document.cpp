@@ -13,9 +13,10 @@ namespace {
 constexpr double kOpenEndedPreviewSeconds = 10.0;
 } // namespace
 
-Document::Document(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime, QString filePath)
+Document::Document(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime, QString filePath,
+                   QString baseDir)
     : m_scenario(std::move(scenario)), m_runtime(std::move(runtime)), m_filePath(std::move(filePath)),
-      m_undoStack(new QUndoStack(this))
+      m_baseDir(std::move(baseDir)), m_undoStack(new QUndoStack(this))
 {
     connect(m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
 }
@@ -36,7 +37,7 @@ core::Result<std::unique_ptr<Document>> Document::open(const QString& path)
         return error;
     }
     return std::unique_ptr<Document>(
-        new Document(std::move(*scenario), std::move(*runtime), info.absoluteFilePath()));
+        new Document(std::move(*scenario), std::move(*runtime), info.absoluteFilePath(), info.absolutePath()));
 }
 
 core::Result<std::unique_ptr<Document>> Document::fromScenario(core::scenario::Scenario scenario, const QString& baseDir)
@@ -44,7 +45,7 @@ core::Result<std::unique_ptr<Document>> Document::fromScenario(core::scenario::S
     core::Result<core::scenario::ScenarioRuntime> runtime = core::scenario::buildRuntime(scenario, toFsPath(baseDir));
     if (!runtime)
         return runtime.error();
-    return std::unique_ptr<Document>(new Document(std::move(scenario), std::move(*runtime), QString()));
+    return std::unique_ptr<Document>(new Document(std::move(scenario), std::move(*runtime), QString(), baseDir));
 }
 
 QString Document::fileName() const

@@ -35,6 +35,8 @@ public:
 
     /// Absolute path of the file, empty when the document was never saved.
     QString filePath() const { return m_filePath; }
+    /// The folder the scenario's relative paths (clips, models, probe) resolve in.
+    QString baseDir() const { return m_baseDir; }
     /// The file's name ("demo.thespis"), or "Untitled".
     QString fileName() const;
     /// The scenario's own name, else the file's base name, else "Untitled".
@@ -55,11 +57,13 @@ signals:
     void modifiedChanged(bool modified);
 
 private:
-    Document(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime, QString filePath);
+    Document(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime, QString filePath,
+             QString baseDir);
 
     core::scenario::Scenario m_scenario;
     core::scenario::ScenarioRuntime m_runtime;
     QString m_filePath;
+    QString m_baseDir;
     QUndoStack* m_undoStack = nullptr; // child QObject
 };
 

@@ -14,6 +14,7 @@
 #include <QMessageBox>
 #include <QScreen>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTimer>
 #include <QTreeView>
 #include <QVBoxLayout>
@@ -22,6 +23,7 @@
 
 #include "editor/error_dialog.h"
 #include "editor/scenario_tree_model.h"
+#include "widgets/osg_viewport.h"
 #include "widgets/pose_view.h"
 #include "widgets/transport_bar.h"
 
@@ -43,15 +45,38 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     auto* layout = new QVBoxLayout(central);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
-    m_poseView = new widgets::PoseView(central);
+    m_views = new QTabWidget(central);
+    m_views->setObjectName(QStringLiteral("views"));
+    m_views->setDocumentMode(true);
+    QWidget* scene = nullptr;
+    if (widgets::OsgViewport::isSupported()) {
+        m_viewport = new widgets::OsgViewport(m_views);
+        m_viewport->setObjectName(QStringLiteral("viewport"));
+        m_viewport->setToolTip(tr("Drag to orbit, right-drag or wheel to zoom, middle-drag to pan, double-click for the home view"));
+        m_preview = new editor::ScenePreview(m_viewport, this);
+        connect(m_viewport, &widgets::OsgViewport::glError, this,
+                [this](const QString& message) { statusBar()->showMessage(message); });
+        scene = m_viewport;
+    } else {
+        auto* unavailable = new QLabel(tr("No 3D view: this display offers no OpenGL.\n"
+                                          "The Skeletons tab shows the animation; thespis-cli render draws the scene headless."),
+                                       m_views);
+        unavailable->setObjectName(QStringLiteral("viewportUnavailable"));
+        unavailable->setAlignment(Qt::AlignCenter);
+        unavailable->setWordWrap(true);
+        scene = unavailable;
+    }
+    m_poseView = new widgets::PoseView(m_views);
     m_poseView->setObjectName(QStringLiteral("poseView"));
+    m_views->addTab(scene, tr("Scene"));
+    m_views->addTab(m_poseView, tr("Skeletons"));
     m_poseView->setPlaceholderText(tr("No scenario is open.\nUse File ▸ Open… (Ctrl+O) to open a .thespis file."));
     auto* line = new QFrame(central);
     line->setFrameShape(QFrame::HLine);
     line->setFrameShadow(QFrame::Sunken);
     m_transport = new widgets::TransportBar(central);
     m_transport->setObjectName(QStringLiteral("transportBar"));
-    layout->addWidget(m_poseView, 1);
+    layout->addWidget(m_views, 1);
     layout->addWidget(line);
     layout->addWidget(m_transport);
     setCentralWidget(central);
@@ -70,6 +95,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(m_clock, &editor::PlaybackClock::durationChanged, m_transport, &widgets::TransportBar::setDuration);
 
     createActions();
+    createShadingActions();
     createOutlineDock();
     createMenus();
     createStatusBar();
@@ -90,6 +116,8 @@ MainWindow::~MainWindow()
     // The model and samplers read the document: detach them before it goes.
     m_model->setDocument(nullptr);
     m_samplers.clear();
+    if (m_preview)
+        (void)m_preview->setDocument(nullptr);
 }
 
 void MainWindow::createActions()
@@ -162,6 +190,10 @@ void MainWindow::createMenus()
     playback->addAction(m_loopAction);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addSection(tr("Scene"));
+    view->addActions(m_shadingGroup->actions());
+    view->addAction(m_groundAction);
+    view->addAction(m_homeViewAction);
     view->addSection(tr("Stick figures"));
     view->addActions(m_projectionGroup->actions());
     view->addSeparator();
@@ -170,6 +202,41 @@ void MainWindow::createMenus()
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_aboutAction);
     help->addAction(m_aboutQtAction);
+}
+
+void MainWindow::createShadingActions()
+{
+    // Without a 3D view the actions exist (menus stay the same) but are disabled.
+    const bool haveScene = m_preview != nullptr;
+    m_shadingGroup = new QActionGroup(this);
+    const std::pair<QString, core::render::Shading> shadings[] = {
+        {tr("&PRT Lighting"), core::render::Shading::Prt},
+        {tr("P&hong Lighting"), core::render::Shading::Phong},
+        {tr("&Unlit"), core::render::Shading::Unlit},
+    };
+    for (const auto& [text, shading] : shadings) {
+        QAction* action = m_shadingGroup->addAction(text);
+        action->setCheckable(true);
+        action->setChecked(shading == core::render::Shading::Prt);
+        action->setObjectName(QStringLiteral("shading_") + QLatin1String(core::render::shadingName(shading)));
+        if (haveScene)
+            connect(action, &QAction::triggered, m_preview, [this, shading = shading] { m_preview->setShading(shading); });
+    }
+    m_shadingGroup->setEnabled(haveScene);
+    m_shadingGroup->actions().at(0)->setStatusTip(tr("Precomputed radiance transfer: soft light and self-shadowing from the light probe"));
+    m_shadingGroup->actions().at(1)->setStatusTip(tr("One directional light and ambient, for comparison with PRT"));
+    m_groundAction = new QAction(tr("&Ground"), this);
+    m_groundAction->setCheckable(true);
+    m_groundAction->setChecked(true);
+    m_groundAction->setEnabled(haveScene);
+    m_homeViewAction = new QAction(tr("&Home View"), this);
+    m_homeViewAction->setShortcut(Qt::Key_H);
+    m_homeViewAction->setEnabled(haveScene);
+    if (haveScene) {
+        connect(m_groundAction, &QAction::toggled, m_preview, &editor::ScenePreview::setGroundVisible);
+        connect(m_homeViewAction, &QAction::triggered, m_viewport, &widgets::OsgViewport::home);
+    }
+    addAction(m_homeViewAction);
 }
 
 void MainWindow::createOutlineDock()
@@ -261,6 +328,10 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
 
     m_model->setDocument(m_document.get());
     m_outline->expandAll();
+    QString sceneProblem;
+    if (m_preview)
+        if (auto built = m_preview->setDocument(m_document.get()); !built)
+            sceneProblem = tr("The 3D view is empty: %1").arg(QString::fromStdString(built.error().message));
 
     const bool open = m_document != nullptr;
     m_transport->setEnabled(open);
@@ -284,12 +355,12 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
                               .arg(m_document->fileName()) +
                           tr(", %n action(s)", nullptr, actions) +
                           tr(", %1 s long. Press Space to play.").arg(m_document->previewDuration(), 0, 'f', 1);
-        const QStringList warnings = m_document->warnings();
+        const QStringList warnings = m_document->warnings() + (m_preview ? m_preview->warnings() : QStringList());
         for (const QString& warning : warnings)
             qWarning("%s", qPrintable(warning));
         if (!warnings.isEmpty())
             summary += QLatin1Char(' ') + tr("%n warning(s), see the terminal.", nullptr, int(warnings.size()));
-        statusBar()->showMessage(summary);
+        statusBar()->showMessage(sceneProblem.isEmpty() ? summary : sceneProblem);
     } else {
         m_fileLabel->clear();
         m_fileLabel->setToolTip({});
@@ -339,6 +410,8 @@ void MainWindow::onTimeChanged(double seconds)
         m_samplers[i].sample(seconds);
         m_poseView->setFigurePositions(int(i), m_samplers[i].positions());
     }
+    if (m_preview)
+        m_preview->setTime(seconds);
     m_transport->setTime(seconds);
     m_model->setTime(seconds);
     ++m_framesSinceFps;

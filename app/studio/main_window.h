@@ -1,8 +1,9 @@
 #pragma once
-// MainWindow: the studio's first window. Shows one scenario: every character as a stick figure
-// posed at the playback clock's time (centre), the characters / layers / actions outline (a
-// dock), the transport bar, and the file and preview rate in the status bar. Owns the open
-// Document, the clock, and one PoseSampler per character.
+// MainWindow: the studio's window. Shows one scenario posed at the playback clock's time: the
+// characters' bodies lit with PRT in a 3D viewport (first tab) and their skeletons as stick
+// figures (second tab), the characters / layers / actions outline (a dock), the transport bar,
+// and the file and preview rate in the status bar. Owns the open Document, the clock, the 3D
+// preview and one PoseSampler per character.
 
 #include <QElapsedTimer>
 #include <QMainWindow>
@@ -13,11 +14,13 @@
 #include "editor/document.h"
 #include "editor/playback_clock.h"
 #include "editor/pose_sampler.h"
+#include "editor/scene_preview.h"
 
 class QAction;
 class QActionGroup;
 class QDockWidget;
 class QLabel;
+class QTabWidget;
 class QTimer;
 class QTreeView;
 
@@ -25,6 +28,7 @@ namespace thespis::editor {
 class ScenarioTreeModel;
 }
 namespace thespis::widgets {
+class OsgViewport;
 class PoseView;
 class TransportBar;
 }
@@ -46,6 +50,9 @@ public:
     editor::Document* document() const { return m_document.get(); }
     editor::PlaybackClock* clock() const { return m_clock; }
     widgets::PoseView* poseView() const { return m_poseView; }
+    widgets::OsgViewport* viewport() const { return m_viewport; }
+    editor::ScenePreview* scenePreview() const { return m_preview; }
+    QTabWidget* views() const { return m_views; }
     widgets::TransportBar* transportBar() const { return m_transport; }
     QTreeView* outlineView() const { return m_outline; }
     editor::ScenarioTreeModel* outlineModel() const { return m_model; }
@@ -55,6 +62,7 @@ private:
     void createMenus();
     void createOutlineDock();
     void createStatusBar();
+    void createShadingActions();
     void onOpen();
     void onReload();
     void onAbout();
@@ -69,6 +77,9 @@ private:
 
     editor::PlaybackClock* m_clock = nullptr;
     editor::ScenarioTreeModel* m_model = nullptr;
+    editor::ScenePreview* m_preview = nullptr;
+    QTabWidget* m_views = nullptr;
+    widgets::OsgViewport* m_viewport = nullptr;
     widgets::PoseView* m_poseView = nullptr;
     widgets::TransportBar* m_transport = nullptr;
     QTreeView* m_outline = nullptr;
@@ -83,6 +94,9 @@ private:
     QAction* m_toStartAction = nullptr;
     QAction* m_loopAction = nullptr;
     QActionGroup* m_projectionGroup = nullptr;
+    QActionGroup* m_shadingGroup = nullptr;
+    QAction* m_groundAction = nullptr;
+    QAction* m_homeViewAction = nullptr;
     QAction* m_aboutAction = nullptr;
     QAction* m_aboutQtAction = nullptr;
 

@@ -10,6 +10,7 @@
 #include <QSlider>
 #include <QStyle>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTreeView>
@@ -19,6 +20,7 @@
 #include "fixture_scenario.h"
 #include "main_window.h"
 #include "scenario/scenario_io.h"
+#include "widgets/osg_viewport.h"
 #include "widgets/pose_view.h"
 #include "widgets/transport_bar.h"
 
@@ -57,6 +59,7 @@ private slots:
     void sliderSeeks();
     void malformedScenarioReportsAnError();
     void missingScenarioReportsAnError();
+    void viewportShowsTheCharactersLit();
     void savesAScreenshot();
     void cleanupTestCase();
 
@@ -257,6 +260,44 @@ void MainWindowTest::missingScenarioReportsAnError()
     QCOMPARE(box->windowTitle(), QStringLiteral("File not found"));
     box->close();
     QTRY_VERIFY(!m_window->findChild<QMessageBox*>(QStringLiteral("errorMessageBox")));
+}
+
+// Pixels of the viewport that are not the clear colour: the characters and the ground.
+int drawnPixels(const QImage& image, QRgb clear)
+{
+    int count = 0;
+    for (int y = 0; y < image.height(); y += 2)
+        for (int x = 0; x < image.width(); x += 2)
+            count += image.pixel(x, y) != clear ? 1 : 0;
+    return count;
+}
+
+void MainWindowTest::viewportShowsTheCharactersLit()
+{
+    QVERIFY(m_window->openScenario(m_scenarioPath));
+    QCOMPARE(m_window->views()->currentWidget(), m_window->viewport());
+    thespis::widgets::OsgViewport* viewport = m_window->viewport();
+    QVERIFY2(viewport->glErrorText().isEmpty(), qPrintable(viewport->glErrorText()));
+    QVERIFY(m_window->scenePreview()->scene());
+    QCOMPARE(m_window->scenePreview()->scene()->scene().characterCount(), m_window->document()->scenario().characters.size());
+    m_window->clock()->seek(1.0);
+    const QImage prt = viewport->grabFramebuffer();
+    const QRgb clear = prt.pixel(2, 2);
+    const int samples = (prt.width() / 2) * (prt.height() / 2);
+    const int drawn = drawnPixels(prt, clear);
+    QVERIFY2(drawn > samples / 50 && drawn < samples * 9 / 10, qPrintable(QStringLiteral("%1 of %2").arg(drawn).arg(samples)));
+
+    auto* unlit = m_window->findChild<QAction*>(QStringLiteral("shading_unlit"));
+    auto* prtAction = m_window->findChild<QAction*>(QStringLiteral("shading_prt"));
+    QVERIFY(unlit && prtAction);
+    unlit->trigger();
+    QVERIFY(viewport->grabFramebuffer() != prt);
+    prtAction->trigger();
+    QCOMPARE(viewport->grabFramebuffer(), prt);
+
+    // Playing moves the characters in the viewport too.
+    m_window->clock()->seek(3.0);
+    QVERIFY(viewport->grabFramebuffer() != prt);
 }
 
 void MainWindowTest::savesAScreenshot()
