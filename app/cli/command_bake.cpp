@@ -1,5 +1,6 @@
-// thespis-cli bake: the PRT transfer bake of a glTF character (paper §6), written as a bake file.
-// Segment tags come from a tags file or from a scenario's character. The bake runs on worker
+// thespis-cli bake: the PRT transfer bake of a glTF character or of a scenario's character (its
+// model or the built-in humanoid; paper §6), written as a bake file. Segment tags come from a
+// tags file or from a scenario's character. The bake runs on worker
 // threads while this thread draws the progress bar and watches for Ctrl-C, which cancels the
 // bake: nothing is written then (the bake file is written atomically at the very end).
 
@@ -15,6 +16,7 @@
 #include "lighting/probe.h"
 #include "lighting/transfer_bake.h"
 #include "progress.h"
+#include "scenario/scenario_character.h"
 #include "scene/gltf_mesh.h"
 
 namespace thespis::cli {
@@ -22,6 +24,29 @@ namespace {
 
 namespace lighting = core::lighting;
 namespace scene = core::scene;
+
+/// The scenario's character named by --character, or its only one; prints the problem and
+/// returns nothing when there is no such character.
+const core::scenario::Character* chooseCharacter(const CommandSpec& spec, const ParsedArguments& arguments,
+                                                 const core::scenario::Scenario& document)
+{
+    const auto characterName = arguments.value("character");
+    const core::scenario::Character* character = nullptr;
+    if (characterName) {
+        character = document.findCharacter(*characterName);
+    } else if (document.characters.size() == 1) {
+        character = &document.characters.front();
+    }
+    if (!character) {
+        std::vector<std::string> names;
+        for (const auto& c : document.characters)
+            names.push_back(c.name);
+        printError(spec.name, (characterName ? "the scenario has no character named '" + *characterName + "'"
+                                             : std::string("the scenario has several characters; name one with --character"))
+                                  + " (its characters: " + joinNames(names) + ").");
+    }
+    return character;
+}
 
 /// Tags from --tags FILE, or from the scenario character's segment tags.
 std::optional<std::vector<scene::SegmentTag>> loadTags(const CommandSpec& spec, const ParsedArguments& arguments,
@@ -40,28 +65,41 @@ std::optional<std::vector<scene::SegmentTag>> loadTags(const CommandSpec& spec, 
     if (!scenarioFile)
         return std::vector<scene::SegmentTag>{};
     const auto document = loadScenarioReporting(spec.name, *scenarioFile);
-    if (!document) {
-        exitCode = ExitInvalidInput;
-        return std::nullopt;
-    }
-    const auto characterName = arguments.value("character");
-    const core::scenario::Character* character = nullptr;
-    if (characterName) {
-        character = document->findCharacter(*characterName);
-    } else if (document->characters.size() == 1) {
-        character = &document->characters.front();
-    }
+    const core::scenario::Character* character = document ? chooseCharacter(spec, arguments, *document) : nullptr;
     if (!character) {
-        std::vector<std::string> names;
-        for (const auto& c : document->characters)
-            names.push_back(c.name);
-        printError(spec.name, (characterName ? "the scenario has no character named '" + *characterName + "'"
-                                             : std::string("the scenario has several characters; name one with --character"))
-                                  + " (its characters: " + joinNames(names) + ").");
         exitCode = ExitInvalidInput;
         return std::nullopt;
     }
     return character->segmentTags;
+}
+
+/// The mesh to bake, or nothing (the problem printed): a glTF file's mesh, or the body of a
+/// scenario's character (its glTF model or the built-in humanoid, with the scenario's tags) —
+/// the very mesh `thespis-cli render` and the studio draw, so the bake fits them.
+std::optional<scene::CharacterMesh> loadCharacterMesh(const CommandSpec& spec, const ParsedArguments& arguments,
+                                                      const std::filesystem::path& path)
+{
+    if (path.extension() != ".thespis") {
+        scene::GltfMeshOptions meshOptions;
+        meshOptions.splitSkinnedByJoint = !arguments.has("no-split");
+        auto mesh = scene::loadGltfMesh(path, meshOptions);
+        if (!mesh) {
+            printError(spec.name, mesh.error());
+            return std::nullopt;
+        }
+        return std::move(mesh).value();
+    }
+    const auto document = loadScenarioReporting(spec.name, path);
+    const core::scenario::Character* character = document ? chooseCharacter(spec, arguments, *document) : nullptr;
+    if (!character)
+        return std::nullopt;
+    const std::filesystem::path baseDir = path.parent_path().empty() ? "." : path.parent_path();
+    auto body = core::scenario::loadCharacterBody(*document, std::size_t(character - document->characters.data()), baseDir);
+    if (!body) {
+        printError(spec.name, body.error());
+        return std::nullopt;
+    }
+    return std::move(body->mesh);
 }
 
 } // namespace
@@ -70,7 +108,7 @@ CommandSpec bakeSpec()
 {
     CommandSpec spec;
     spec.name = "bake";
-    spec.summary = "Bake per-vertex PRT transfer (DU, DS or DSM) of a glTF character.";
+    spec.summary = "Bake per-vertex PRT transfer (DU, DS or DSM) of a glTF character or a scenario's character.";
     spec.positionals = {"CHARACTER"};
     spec.options = {
         {"out", "FILE", "the bake file to write; an existing file is replaced atomically", true},
@@ -90,6 +128,8 @@ CommandSpec bakeSpec()
         {"quiet", "", "no progress and no summary"},
     };
     spec.description =
+        "CHARACTER is a .gltf/.glb file or a .thespis scenario: then its character's body (its model, or the\n"
+        "built-in humanoid) is baked with the scenario's tags, ready for 'thespis-cli render --bake'.\n"
         "Segments are the glTF's mesh nodes, and a skinned mesh is split by dominant joint. With DSM a\n"
         "segment tagged receiver is transparent to rays and an occluder is not baked (paper §6.1.3).\n"
         "The summary gives vertices, rays, seconds and Mrays/s. Ctrl-C stops the bake without writing.\n"
@@ -125,8 +165,8 @@ int runBake(const CommandSpec& spec, const ParsedArguments& arguments)
     settings.backend = *backend;
     if (arguments.has("tags") && arguments.has("scenario"))
         return usageError(spec, "give the segment tags either with --tags or with --scenario, not both");
-    if (arguments.has("character") && !arguments.has("scenario"))
-        return usageError(spec, "--character needs --scenario");
+    if (arguments.has("character") && !arguments.has("scenario") && characterPath.extension() != ".thespis")
+        return usageError(spec, "--character needs --scenario or a scenario CHARACTER");
     if (arguments.has("layout") && !arguments.has("probe"))
         return usageError(spec, "--layout needs --probe");
     if (auto valid = lighting::validateBakeSettings(settings); !valid)
@@ -137,13 +177,12 @@ int runBake(const CommandSpec& spec, const ParsedArguments& arguments)
         return ExitInvalidInput;
     }
 
-    scene::GltfMeshOptions meshOptions;
-    meshOptions.splitSkinnedByJoint = !arguments.has("no-split");
-    auto mesh = scene::loadGltfMesh(characterPath, meshOptions);
-    if (!mesh) {
-        printError(spec.name, mesh.error());
+    const bool fromScenario = characterPath.extension() == ".thespis";
+    if (fromScenario && (arguments.has("scenario") || arguments.has("no-split")))
+        return usageError(spec, "a scenario CHARACTER brings its own tags and segments: leave out --scenario and --no-split");
+    auto mesh = loadCharacterMesh(spec, arguments, characterPath);
+    if (!mesh)
         return ExitInvalidInput;
-    }
     const auto tags = loadTags(spec, arguments, exitCode);
     if (!tags)
         return exitCode;
