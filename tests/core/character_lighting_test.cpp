@@ -6,9 +6,17 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
+#include <tuple>
 
+#include <algorithm>
+
+#include "anim/keyframe_clip.h"
+#include "lighting/sh.h"
 #include "lighting/transfer_bake.h"
+#include "render/character_node.h"
+#include "render/offscreen_renderer.h"
 #include "scene/default_humanoid.h"
 #include "test_support.h"
 
@@ -144,6 +152,7 @@ TEST(CharacterLighting, HairOverTheSkullDarkensItUnlessTaggedReceiver) // paper 
     scene::Character body = humanoid();
     const auto du = bake(body.mesh, lighting::TransferKind::DiffuseUnshadowed);
     const auto untagged = bake(body.mesh, lighting::TransferKind::DiffuseShadowedMerged);
+    auto untaggedBody = std::make_shared<const scene::Character>(body);
     ASSERT_TRUE(scene::applySegmentTags(body.mesh, {{"hair", scene::SegmentRole::Receiver, std::nullopt}}).ok());
     const auto tagged = bake(body.mesh, lighting::TransferKind::DiffuseShadowedMerged);
 
@@ -154,6 +163,129 @@ TEST(CharacterLighting, HairOverTheSkullDarkensItUnlessTaggedReceiver) // paper 
                 band.size(), darkUntagged, darkTagged);
     EXPECT_GT(darkUntagged, band.size() / 2);
     EXPECT_LT(darkTagged, darkUntagged / 10);
+
+    // The two heads side by side as pictures (the paper's figure), for people to look at.
+    auto renderer = render::OffscreenRenderer::create(480, 480, 4);
+    if (!renderer) {
+        if (std::getenv("THESPIS_REQUIRE_GL"))
+            FAIL() << describe(renderer.error());
+        GTEST_SKIP() << "No OpenGL context for the Fig. 14 pictures: " << describe(renderer.error());
+    }
+    auto taggedBody = std::make_shared<const scene::Character>(std::move(body));
+    const scene::Segment& skull = segment(taggedBody->mesh, "skull");
+    render::Bounds head;
+    for (std::uint32_t v = skull.firstVertex; v < skull.firstVertex + skull.vertexCount; ++v)
+        head.add(anim::Vec3d{taggedBody->mesh.positions[v].x, taggedBody->mesh.positions[v].y, taggedBody->mesh.positions[v].z});
+    const std::size_t hairIndex = std::size_t(taggedBody->mesh.findSegment("hair") - taggedBody->mesh.segments.data());
+    for (const auto& [name, character, baked] :
+         {std::tuple{"fig14_hair_untagged", untaggedBody, &untagged}, std::tuple{"fig14_hair_receiver", taggedBody, &tagged}}) {
+        render::RenderScene scene(1);
+        auto added = scene.addCharacter(character, baked);
+        ASSERT_TRUE(added.ok()) << added.error().message;
+        // From the side and a little above, with the hair and then without it: what the hair does
+        // to the skull shows once the hair is lifted off.
+        const render::CameraView view = render::frameBounds(head, 100, 15, 1.0);
+        for (const bool showHair : {true, false}) {
+            (*added)->segmentGeometry(hairIndex)->setNodeMask(showHair ? ~0u : 0u);
+            auto picture = (*renderer)->render(scene, view);
+            ASSERT_TRUE(picture.ok()) << picture.error().message;
+            ASSERT_TRUE(render::writePng(thespis::test::artifact(std::string(name) + (showHair ? ".png" : "_lifted.png")),
+                                         *picture).ok());
+        }
+    }
+}
+
+// One segment alone as a mesh (its vertices, triangles re-indexed), posed or not: DS sees only
+// the vertex's own segment, so baking the skull alone is baking it in the whole body.
+scene::CharacterMesh segmentMesh(const scene::CharacterMesh& mesh, const scene::Segment& s,
+                                 std::span<const anim::Vec3> positions, std::span<const anim::Vec3> normals)
+{
+    scene::CharacterMesh part;
+    part.positions.assign(positions.begin() + s.firstVertex, positions.begin() + s.firstVertex + s.vertexCount);
+    part.normals.assign(normals.begin() + s.firstVertex, normals.begin() + s.firstVertex + s.vertexCount);
+    for (std::size_t i = std::size_t(s.firstTriangle) * 3; i < (std::size_t(s.firstTriangle) + s.triangleCount) * 3; ++i)
+        part.indices.push_back(mesh.indices[i] - s.firstVertex);
+    scene::Segment only = s;
+    only.firstVertex = only.firstTriangle = 0;
+    only.bindRotation = {};
+    part.segments = {only};
+    return part;
+}
+
+// Paper §6.1.1: a posture-independent segment keeps its transfer whatever the pose; turning it
+// is lighting it with the world light rotated into its frame. So the skull turned by a clip and
+// shaded with the renderer's rotated light matches a fresh bake of the turned skull.
+TEST(CharacterLighting, TurningThePiSkullRotatesItsLightingLikeABakeOfThePose)
+{
+    auto body = std::make_shared<const scene::Character>(humanoid());
+    const scene::CharacterMesh& mesh = body->mesh;
+    const std::size_t skullIndex = std::size_t(mesh.findSegment("skull") - mesh.segments.data());
+    const scene::Segment& skull = mesh.segments[skullIndex];
+    ASSERT_EQ(skull.posture, scene::Posture::Independent);
+
+    // A clip from rest to the head turned 50° to its left and tilted 25° down, evaluated at its end.
+    const anim::Skeleton& skeleton = body->skeleton;
+    std::vector<float> keys = skeleton.restFrame();
+    std::vector<float> turned = keys;
+    const anim::Quat turn = anim::Quat::fromAxisAngle(anim::Vec3{0, 1, 0}, 0.87f) *
+                            anim::Quat::fromAxisAngle(anim::Vec3{1, 0, 0}, 0.44f);
+    anim::rotationAt(std::span<float>(turned), skeleton.find("skullbase")) = turn;
+    keys.insert(keys.end(), turned.begin(), turned.end());
+    auto clip = anim::KeyframeClip::create(skeleton.frameLayout(), 1.0, keys, "turn head");
+    ASSERT_TRUE(clip.ok());
+    std::vector<float> frame(skeleton.frameLayout()->floatCount());
+    (*clip)->evaluate(1.0, frame);
+
+    auto node = render::CharacterNode::create(body, nullptr, {.unbakedOrder = 4});
+    ASSERT_TRUE(node.ok()) << node.error().message;
+    // A light with a bright key from the front left, so that turning the head changes its shading.
+    lighting::ShRgb light;
+    light.order = 4;
+    std::vector<double> basis(16);
+    lighting::evaluateSh(4, anim::Vec3d{0.6, 0.5, 0.62}, basis);
+    for (int c = 0; c < 3; ++c)
+        for (int i = 0; i < 16; ++i)
+            light[c][std::size_t(i)] = (c == 0 ? 3.0 : 2.4) * basis[std::size_t(i)] + (i == 0 ? 0.5 : 0.0);
+    (*node)->setLight(light);
+    (*node)->setPose(frame);
+    const auto segmentLight = (*node)->segmentLight(skullIndex); // RGB triplets
+
+    lighting::BakeSettings settings;
+    settings.order = 4;
+    settings.transfer = lighting::TransferKind::DiffuseShadowed;
+#ifdef THESPIS_SANITIZED
+    settings.raysPerVertex = 256;
+#else
+    settings.raysPerVertex = 1024;
+#endif
+    auto atRest = lighting::bakeTransfer(segmentMesh(mesh, skull, mesh.positions, mesh.normals), settings);
+    auto posed = lighting::bakeTransfer(segmentMesh(mesh, skull, (*node)->posedPositions(), (*node)->posedNormals()), settings);
+    ASSERT_TRUE(atRest.ok() && posed.ok());
+
+    std::vector<double> rotatedError, unrotatedError;
+    for (std::uint32_t v = 0; v < skull.vertexCount; ++v) {
+        const auto rest = atRest->vertexTransfer(v), pose = posed->vertexTransfer(v);
+        double withRotatedLight = 0, withWorldLight = 0, reference = 0;
+        for (std::size_t i = 0; i < 16; ++i) {
+            withRotatedLight += rest[i] * segmentLight[3 * i];
+            withWorldLight += rest[i] * light[0][i];
+            reference += pose[i] * light[0][i];
+        }
+        if (reference < 0.05)
+            continue; // facing away from the key: relative errors of nothing
+        rotatedError.push_back(std::abs(withRotatedLight - reference) / reference);
+        unrotatedError.push_back(std::abs(withWorldLight - reference) / reference);
+    }
+    ASSERT_GT(rotatedError.size(), skull.vertexCount / 3);
+    auto quantile = [](std::vector<double> values, double q) {
+        std::sort(values.begin(), values.end());
+        return values[std::size_t(q * double(values.size() - 1))];
+    };
+    std::printf("skull under a turned head: relative radiance error median %.4f, 90%% %.4f (light not rotated: median %.3f)\n",
+                quantile(rotatedError, 0.5), quantile(rotatedError, 0.9), quantile(unrotatedError, 0.5));
+    EXPECT_LT(quantile(rotatedError, 0.5), 0.02);
+    EXPECT_LT(quantile(rotatedError, 0.9), 0.06);
+    EXPECT_GT(quantile(unrotatedError, 0.5), 0.15) << "the pose must matter, or this test proves nothing";
 }
 
 } // namespace

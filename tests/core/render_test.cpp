@@ -47,14 +47,7 @@ constexpr int kWidth = 320;
 constexpr int kHeight = 240;
 constexpr double kPi = std::numbers::pi;
 
-std::filesystem::path artifact(const std::string& name)
-{
-    // The test executables live in <build>/tests.
-    const std::filesystem::path directory =
-        std::filesystem::read_symlink("/proc/self/exe").parent_path().parent_path() / "test-artifacts";
-    std::filesystem::create_directories(directory);
-    return directory / name;
-}
+using thespis::test::artifact;
 
 /// The picture tests share one renderer, made once for the suite and closed before exit.
 class Render : public ::testing::Test {

@@ -26,6 +26,14 @@ inline std::filesystem::path testData(const std::string& relative = {})
 {
     return std::filesystem::path(THESPIS_TEST_DATA) / relative;
 }
+/// <build>/test-artifacts/NAME (the folder is made): pictures and files tests leave for people
+/// to look at.
+inline std::filesystem::path artifact(const std::string& name)
+{
+    const std::filesystem::path directory(THESPIS_TEST_ARTIFACTS);
+    std::filesystem::create_directories(directory);
+    return directory / name;
+}
 inline std::filesystem::path resources(const std::string& relative = {})
 {
     return std::filesystem::path(THESPIS_RESOURCES) / relative;
