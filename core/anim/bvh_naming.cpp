@@ -19,10 +19,6 @@
 namespace thespis::core::anim::bvh::naming {
 namespace {
 
-// A left/right pair: the file names of both sides and the H-Anim name without its side prefix.
-#define THESPIS_LR(left, right, hanim) {left, "l_" hanim}, {right, "r_" hanim}
-#define THESPIS_LR_NONE(left, right) {left, ""}, {right, ""}
-
 // CMU as converted by cgspeed for MotionBuilder (most CMU BVH files in circulation).
 constexpr NameEntry kCmu[] = {
     {"Hips", "humanoid_root"},
@@ -271,9 +267,6 @@ constexpr NameEntry kMixamo[] = {
     THESPIS_LR("LeftToeBase", "RightToeBase", "metatarsophalangeal"),
     THESPIS_LR_NONE("LeftToe_End", "RightToe_End"),
 };
-
-#undef THESPIS_LR
-#undef THESPIS_LR_NONE
 
 constexpr Convention kConventions[] = {
     {"cmu", kCmu},

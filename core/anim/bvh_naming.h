@@ -20,6 +20,12 @@ struct NameEntry {
     std::string_view hanim; ///< H-Anim 2.0 name, or empty when there is none
 };
 
+// Table rows for a left/right pair: the file names of both sides and the H-Anim name without its
+// side prefix (THESPIS_LR_NONE: a pair with no H-Anim joint). For the naming tables of the BVH
+// and glTF readers.
+#define THESPIS_LR(left, right, hanim) {left, "l_" hanim}, {right, "r_" hanim}
+#define THESPIS_LR_NONE(left, right) {left, ""}, {right, ""}
+
 struct Convention {
     std::string_view id; ///< reported as ImportReport::convention
     std::span<const NameEntry> entries;

@@ -29,8 +29,6 @@ using NameEntry = anim::bvh::naming::NameEntry;
 // Naming conventions of glTF rigs, beside the motion capture ones of anim/bvh_naming.h (whose
 // Mixamo table serves glTF files too). As there, a joint is named after what it moves, and names
 // with no H-Anim counterpart are listed with an empty name so that they count for detection.
-#define THESPIS_LR(left, right, hanim) {left, "l_" hanim}, {right, "r_" hanim}
-#define THESPIS_LR_NONE(left, right) {left, ""}, {right, ""}
 
 // Unity's humanoid avatar (also VRM's humanoid bone names).
 constexpr NameEntry kUnity[] = {
@@ -172,9 +170,6 @@ constexpr NameEntry kQuaternius[] = {
     THESPIS_LR("Foot.L", "Foot.R", "talocrural"),
     THESPIS_LR_NONE("PoleTarget.L", "PoleTarget.R"),
 };
-
-#undef THESPIS_LR
-#undef THESPIS_LR_NONE
 
 /// The comparison key of a name: lower case, with '.', '-', ' ' and '|' read as '_'.
 std::string nameKey(std::string_view name)
