@@ -29,7 +29,9 @@
 #include "render/character_node.h"
 #include "render/offscreen_renderer.h"
 #include "render/render_scene.h"
+#include "render/scenario_scene.h"
 #include "render/shading.h"
+#include "scenario/scenario_io.h"
 #include "scene/character.h"
 #include "scene/default_humanoid.h"
 #include "test_support.h"
@@ -359,10 +361,10 @@ Mask foreground(const RgbaImage& image, const std::array<int, 3>& background)
     return mask;
 }
 
-void expectMaskMatchesProjection(const RgbaImage& image, const CharacterNode& node, const CameraView& view,
+void expectMaskMatchesProjection(const RgbaImage& image, std::span<const Vec3> points, const CameraView& view,
                                  const std::array<int, 3>& background)
 {
-    const PixelRect projected = projectToPixels(node.posedPositions(), view, kWidth, kHeight);
+    const PixelRect projected = projectToPixels(points, view, kWidth, kHeight);
     ASSERT_GT(projected.left, 2);
     ASSERT_GT(projected.top, 2);
     ASSERT_LT(projected.right, kWidth - 2);
@@ -377,6 +379,12 @@ void expectMaskMatchesProjection(const RgbaImage& image, const CharacterNode& no
     // And the character fills a good part of them (it is not a scatter of stray pixels).
     const double area = (projected.right - projected.left) * (projected.bottom - projected.top);
     EXPECT_GT(mask.pixels, 0.15 * area);
+}
+
+void expectMaskMatchesProjection(const RgbaImage& image, const CharacterNode& node, const CameraView& view,
+                                 const std::array<int, 3>& background)
+{
+    expectMaskMatchesProjection(image, node.posedPositions(), view, background);
 }
 
 TEST_F(Render, CreatesAHeadlessContext)
@@ -594,6 +602,35 @@ TEST_F(Render, DefaultHumanoidMaskMatchesItsProjectedBounds)
         ASSERT_TRUE(image.ok()) << describe(image.error());
         ASSERT_TRUE(writePng(artifact(std::string("render_humanoid_") + shadingName(shading) + ".png"), *image).ok());
         expectMaskMatchesProjection(*image, *node, view, background);
+    }
+}
+
+// The built-in demo as the CLI and the studio draw it (ScenarioScene): both characters, posed by
+// their schedules mid-wave, cover exactly the projection of their posed meshes.
+TEST_F(Render, DemoScenarioMaskMatchesItsCharactersProjectedBounds)
+{
+    auto demo = scenario::loadScenario(thespis::test::resources("demo.thespis"));
+    ASSERT_TRUE(demo.ok()) << describe(demo.error());
+    auto built = ScenarioScene::create(*demo, thespis::test::resources());
+    ASSERT_TRUE(built.ok()) << describe(built.error());
+    ScenarioScene& demoScene = **built;
+    ASSERT_EQ(demoScene.scene().characterCount(), demo->characters.size());
+    const std::array<int, 3> background{40, 44, 52};
+    demoScene.scene().setBackgroundColor({40 / 255.0f, 44 / 255.0f, 52 / 255.0f});
+    demoScene.setTime(2.0);
+    std::vector<Vec3> posed;
+    for (std::size_t c = 0; c < demoScene.scene().characterCount(); ++c) {
+        const auto points = demoScene.scene().character(c).posedPositions();
+        posed.insert(posed.end(), points.begin(), points.end());
+    }
+    const CameraView view = frameBounds(demoScene.scene().characterBounds(), 20, 8, double(kWidth) / kHeight);
+    for (Shading shading : {Shading::Prt, Shading::Phong, Shading::Unlit}) {
+        SCOPED_TRACE(shadingName(shading));
+        demoScene.scene().setShading(shading);
+        auto image = s_renderer->render(demoScene.scene(), view);
+        ASSERT_TRUE(image.ok()) << describe(image.error());
+        ASSERT_TRUE(writePng(artifact(std::string("render_demo_") + shadingName(shading) + ".png"), *image).ok());
+        expectMaskMatchesProjection(*image, posed, view, background);
     }
 }
 
