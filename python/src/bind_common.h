@@ -129,5 +129,6 @@ void bindBvh(py::module_& m);
 void bindScenario(py::module_& m);
 void bindScene(py::module_& m);    // thespis.scene: character meshes, segments, tags, glTF
 void bindLighting(py::module_& m); // thespis.lighting: SH, probes, the transfer bake
+void bindRender(py::module_& m);   // thespis.render: headless pictures of scenarios
 
 } // namespace thespis::python

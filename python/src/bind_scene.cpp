@@ -1,20 +1,29 @@
-// Bindings of character meshes (core/scene) as the submodule thespis.scene: loading a glTF
-// character in bind pose, its segments, and the receiver / occluder and PI / PD tags the
-// lighting bake reads. Arrays cross as NumPy copies; segments are values (edit tags with
-// apply_tags, which checks the names).
+// Bindings of characters (core/scene) as the submodule thespis.scene: meshes split into segments
+// with the receiver / occluder and PI / PD tags the lighting bake reads, whole characters
+// (skeleton, skin, clips) from glTF or the built-in humanoid, and skinning them into a pose.
+// Arrays cross as NumPy copies; segments are values (edit tags with apply_tags, which checks the
+// names).
 
+#include <map>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "bind_common.h"
 #include "errors.h"
+#include "anim/hanim.h"
+#include "scene/character.h"
 #include "scene/character_mesh.h"
+#include "scene/default_humanoid.h"
+#include "scene/gltf_character.h"
 #include "scene/gltf_mesh.h"
+#include "scene/skinning.h"
 
 namespace thespis::python {
 
 using namespace pybind11::literals;
 using namespace core::scene;
+namespace anim = core::anim;
 
 namespace {
 
@@ -124,6 +133,85 @@ void bindScene(py::module_& m)
         [](const std::filesystem::path& path) { return unwrap(withoutGil([&] { return readSegmentTagsFile(path); })); },
         "path"_a,
         "Reads a tags JSON file: {\"hair\": \"receiver\", …} or {\"hair\": {\"role\": \"receiver\", \"posture\": \"pi\"}}.");
+    py::enum_<SkinningMethod>(s, "SkinningMethod", "How skin weights blend the joints' motions.")
+        .value("LBS", SkinningMethod::Linear, "linear blend skinning")
+        .value("DQS", SkinningMethod::DualQuaternion, "dual-quaternion skinning (keeps volume at twists)");
+
+    py::class_<Character>(s, "Character",
+                          "A skeleton, a skinned mesh split into segments, materials and clips, all in the "
+                          "world-aligned rest pose (identity rotations = rest, as H-Anim and BVH).")
+        .def_readonly("name", &Character::name)
+        .def_readonly("skeleton", &Character::skeleton)
+        .def_property_readonly("mesh", [](const Character& c) { return c.mesh; }, "The rest-pose mesh (a copy).")
+        .def_readonly("clips", &Character::clips, "The file's animations, on the character's skeleton.")
+        .def_readonly("warnings", &Character::warnings, "What the importer could not map or dropped.")
+        .def_property_readonly("influences", [](const Character& c) { return c.skin.influences; },
+                               "Joint influences per vertex (0: segments follow their joints rigidly).")
+        .def_property_readonly(
+            "skin_joints",
+            [](const Character& c) {
+                return toArray<std::uint16_t>(c.skin.joints, {py::ssize_t(c.mesh.vertexCount()), py::ssize_t(c.skin.influences)});
+            },
+            "vertices × influences skeleton joint indices")
+        .def_property_readonly(
+            "skin_weights",
+            [](const Character& c) {
+                return toArray<float>(c.skin.weights, {py::ssize_t(c.mesh.vertexCount()), py::ssize_t(c.skin.influences)});
+            },
+            "vertices × influences weights, summing to 1 per vertex")
+        .def("apply_tags",
+             [](Character& c, const std::vector<SegmentTag>& tags) { unwrap(applySegmentTags(c.mesh, tags)); }, "tags"_a,
+             "Sets roles and postures of the mesh's segments by name (ValueError on an unknown name).")
+        .def(
+            "skin",
+            [](const Character& c, const py::array_t<float, py::array::c_style | py::array::forcecast>& frame,
+               SkinningMethod method) {
+                const std::size_t floats = c.skeleton.frameLayout()->floatCount();
+                if (std::size_t(frame.size()) != floats)
+                    throw py::value_error("The frame has " + std::to_string(frame.size()) + " values; the skeleton needs " +
+                                          std::to_string(floats) + ".");
+                const std::size_t joints = std::size_t(c.skeleton.jointCount());
+                std::vector<anim::Vec3d> rest = c.skeleton.worldPositions(c.skeleton.restFrame());
+                std::vector<anim::Vec3d> positions(joints);
+                std::vector<anim::Quatd> orientations(joints);
+                std::vector<RigidTransform> transforms(joints);
+                computeSkinningTransforms(c.skeleton, std::span<const float>(frame.data(), floats), rest, positions,
+                                          orientations, transforms);
+                std::vector<Vec3> posed(c.mesh.vertexCount()), normals(c.mesh.vertexCount());
+                SkinningWorkers(1).skin(c, transforms, method, posed, normals);
+                return py::make_tuple(rowsOf(floatsOf(posed), 3), rowsOf(floatsOf(normals), 3));
+            },
+            "frame"_a, "method"_a = SkinningMethod::Linear,
+            "(positions, normals) of the mesh posed by a frame of the skeleton's layout, as vertices × 3 arrays.")
+        .def("validate", [](const Character& c) { unwrap(c.validate()); })
+        .def("__repr__", [](const Character& c) {
+            return "<thespis.scene.Character '" + c.name + "': " + std::to_string(c.skeleton.jointCount()) + " joints, " +
+                   std::to_string(c.mesh.vertexCount()) + " vertices, " + std::to_string(c.mesh.segments.size()) +
+                   " segments, " + std::to_string(c.clips.size()) + " clips>";
+        });
+
+    s.def(
+        "default_humanoid",
+        [](anim::hanim::Level level, double detail) { return unwrap(makeDefaultHumanoid({.level = level, .detail = detail})); },
+        "level"_a = anim::hanim::Level::Subset25, "detail"_a = 1.0,
+        "The built-in procedural humanoid (about 23k triangles at detail 1, a hair segment over the skull) on the "
+        "H-Anim skeleton of `level`.");
+    s.def(
+        "load_gltf_character",
+        [](const std::filesystem::path& path, const std::map<std::string, std::string>& jointMapping,
+           bool automaticMapping, double clipFrameRate) {
+            GltfCharacterOptions options;
+            options.jointMapping = jointMapping;
+            options.automaticMapping = automaticMapping;
+            options.clipFrameRate = clipFrameRate;
+            return unwrap(withoutGil([&] { return loadGltfCharacter(path, options); }));
+        },
+        "path"_a, "joint_mapping"_a = std::map<std::string, std::string>{}, "automatic_mapping"_a = true,
+        "clip_frame_rate"_a = 30.0,
+        "Reads a .gltf/.glb character: skeleton (joints mapped onto H-Anim names where known, or by joint_mapping "
+        "{source name: H-Anim name}), skin, segments, materials and animations as clips.");
+    s.def("automatic_hanim_name", &automaticHAnimName, "source_name"_a,
+          "The H-Anim name the automatic mapping gives a joint name ('' when it knows none).");
     s.def("default_posture", &defaultPosture, "hanim_joint"_a,
           "The paper's posture-independent set: INDEPENDENT for skull, T1, clavicles, sacrum, pelvis, thighs, hands.");
 }

@@ -15,4 +15,5 @@ PYBIND11_MODULE(_thespis, m)
     thespis::python::bindScene(m);
     thespis::python::bindScenario(m);
     thespis::python::bindLighting(m);
+    thespis::python::bindRender(m);
 }

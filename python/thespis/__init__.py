@@ -5,8 +5,10 @@ Everything here comes from the compiled core (``thespis._thespis``); the pure-Py
 floats in the engine, integer ticks in documents. Frames are NumPy float32 arrays laid out as
 ``FrameLayout`` says: every rotation (x, y, z, w), then translations (x, y, z), then scalars.
 
-``thespis.scene`` loads characters (glTF, in bind pose, split into segments with receiver /
-occluder tags); ``thespis.lighting`` has spherical harmonics, HDR probes and the transfer bake.
+``thespis.scene`` loads characters (glTF meshes and whole characters with skeleton, skin and
+clips, or the built-in humanoid; segments with receiver / occluder tags; skinning);
+``thespis.lighting`` has spherical harmonics, HDR probes and the transfer bake;
+``thespis.render`` draws scenarios headless into NumPy images.
 
 Errors from the core raise ``FileNotFoundError``, ``thespis.FormatError`` (a ``ValueError``:
 not our format, malformed data naming the line or field, or a newer version), ``ValueError``
@@ -16,7 +18,7 @@ not our format, malformed data naming the line or field, or a newer version), ``
 
 from . import _thespis
 from ._thespis import *  # noqa: F401,F403  (the public API is the compiled module's)
-from ._thespis import __version__, bvh, hanim, lighting, scene  # noqa: F401
+from ._thespis import __version__, bvh, hanim, lighting, render, scene  # noqa: F401
 from ._thespis import Cancelled, FormatError  # noqa: F401
 from .animation_service import AnimationService, ManualClock, RealTimeClock  # noqa: F401
 
