@@ -1,5 +1,8 @@
 #include "scenario/scenario_character.h"
 
+#include <array>
+#include <iterator>
+
 #include "scene/default_humanoid.h"
 #include "scene/gltf_character.h"
 
@@ -18,6 +21,11 @@ anim::hanim::Level humanoidLevel(const std::string& skeleton)
     return anim::hanim::Level::Loa1;
 }
 
+// Shirts of the built-in humanoid by character, so that a scene's characters can be told apart
+// (linear RGB: blue, terracotta, green, plum, ochre).
+constexpr std::array<float, 3> kShirts[] = {
+    {0.07f, 0.17f, 0.45f}, {0.45f, 0.12f, 0.06f}, {0.09f, 0.30f, 0.12f}, {0.28f, 0.08f, 0.30f}, {0.50f, 0.33f, 0.05f}};
+
 } // namespace
 
 Result<scene::Character> loadCharacterBody(const Scenario& scenario, std::size_t characterIndex,
@@ -29,7 +37,8 @@ Result<scene::Character> loadCharacterBody(const Scenario& scenario, std::size_t
         return makeError(error.code, field + "." + member + " (" + spec.name + "): " + error.message, error.detail);
     };
     Result<scene::Character> body = spec.model.empty()
-                                        ? scene::makeDefaultHumanoid({.level = humanoidLevel(spec.skeleton)})
+                                        ? scene::makeDefaultHumanoid({.level = humanoidLevel(spec.skeleton),
+                                                                      .shirtColor = kShirts[characterIndex % std::size(kShirts)]})
                                         : scene::loadGltfCharacter(baseDir / spec.model);
     if (!body)
         return fail(spec.model.empty() ? "skeleton" : "model", body.error());

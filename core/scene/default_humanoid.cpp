@@ -542,12 +542,12 @@ std::string segmentName(std::string_view joint)
 /// Indices into humanoidMaterials().
 enum MaterialIndex { SkinMaterial, HairMaterial, ShirtMaterial, TrousersMaterial, ShoesMaterial };
 
-std::vector<Material> humanoidMaterials()
+std::vector<Material> humanoidMaterials(const std::array<float, 3>& shirt)
 {
-    // Linear base colours: light skin, dark brown hair, a blue shirt, grey-blue trousers, brown shoes.
+    // Linear base colours: light skin, dark brown hair, the shirt, grey-blue trousers, brown shoes.
     return {{"skin", {0.72f, 0.42f, 0.31f, 1.0f}},
             {"hair", {0.10f, 0.05f, 0.025f, 1.0f}},
-            {"shirt", {0.07f, 0.17f, 0.45f, 1.0f}},
+            {"shirt", {shirt[0], shirt[1], shirt[2], 1.0f}},
             {"trousers", {0.10f, 0.11f, 0.15f, 1.0f}},
             {"shoes", {0.05f, 0.03f, 0.02f, 1.0f}}};
 }
@@ -772,7 +772,7 @@ Result<Character> makeDefaultHumanoid(const DefaultHumanoidOptions& options)
     CharacterMesh& mesh = character.mesh;
     Skin& skin = character.skin;
     skin.influences = kInfluences;
-    character.materials = humanoidMaterials();
+    character.materials = humanoidMaterials(options.shirtColor);
     auto appendSegment = [&](std::string name, int joint, bool hair) {
         Segment segment;
         segment.name = std::move(name);

@@ -15,6 +15,8 @@
 // weights blend the two joints on either side of a joint over a few centimetres.
 // Deterministic: the same call gives the same mesh.
 
+#include <array>
+
 #include "anim/hanim.h"
 #include "scene/character.h"
 #include "util/error.h"
@@ -27,6 +29,8 @@ struct DefaultHumanoidOptions {
     anim::hanim::Level level = anim::hanim::Level::Subset25;
     /// Tessellation scale, 0.1 to 4: 1 gives about 20k triangles; 0.5 about a quarter of that.
     double detail = 1.0;
+    /// Linear RGB of the shirt, so that several humanoids in one scene can be told apart.
+    std::array<float, 3> shirtColor{0.07f, 0.17f, 0.45f};
 };
 
 /// Segment tags follow the paper's defaults: PI for skull, T1/clavicles, sacrum, pelvis, thighs
