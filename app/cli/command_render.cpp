@@ -193,6 +193,9 @@ int runRender(const CommandSpec& spec, const ParsedArguments& arguments)
     auto scenarioScene = render::ScenarioScene::create(*document, baseDir, options);
     if (!scenarioScene) {
         printError(spec.name, scenarioScene.error());
+        if (arguments.has("bake"))
+            std::fprintf(stderr, "thespis-cli render: a bake fits a character's body when it was made with "
+                                 "'thespis-cli bake %s --character NAME'.\n", scenarioPath.string().c_str());
         return ExitInvalidInput;
     }
     render::ScenarioScene& scene = **scenarioScene;
