@@ -253,11 +253,7 @@ TEST(CharacterLighting, TurningThePiSkullRotatesItsLightingLikeABakeOfThePose)
     lighting::BakeSettings settings;
     settings.order = 4;
     settings.transfer = lighting::TransferKind::DiffuseShadowed;
-#ifdef THESPIS_SANITIZED
-    settings.raysPerVertex = 256;
-#else
-    settings.raysPerVertex = 1024;
-#endif
+    settings.raysPerVertex = 1024; // the skull alone: quick even under sanitizers, and noise well below the tolerance
     auto atRest = lighting::bakeTransfer(segmentMesh(mesh, skull, mesh.positions, mesh.normals), settings);
     auto posed = lighting::bakeTransfer(segmentMesh(mesh, skull, (*node)->posedPositions(), (*node)->posedNormals()), settings);
     ASSERT_TRUE(atRest.ok() && posed.ok());
