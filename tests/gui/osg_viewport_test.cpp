@@ -43,6 +43,16 @@ int redPixels(const QImage& image)
     return count;
 }
 
+// 320 × 240, the box 5 m in front of the home view.
+void showBoxFromTheFront(OsgViewport& viewport)
+{
+    viewport.resize(320, 240);
+    viewport.setClearColor(kClear);
+    viewport.setSceneData(redBox());
+    viewport.setHomeView(QVector3D(0, 0, 5), QVector3D(0, 0, 0), QVector3D(0, 1, 0));
+    viewport.show();
+}
+
 } // namespace
 
 class OsgViewportTest : public QObject {
@@ -56,11 +66,7 @@ private slots:
 void OsgViewportTest::drawsTheSceneInFrontOfTheCamera()
 {
     OsgViewport viewport;
-    viewport.resize(320, 240);
-    viewport.setClearColor(kClear);
-    viewport.setSceneData(redBox());
-    viewport.setHomeView(QVector3D(0, 0, 5), QVector3D(0, 0, 0), QVector3D(0, 1, 0));
-    viewport.show();
+    showBoxFromTheFront(viewport);
     QVERIFY(QTest::qWaitForWindowExposed(&viewport));
     QVERIFY2(viewport.glErrorText().isEmpty(), qPrintable(viewport.glErrorText()));
     const QImage image = viewport.grabFramebuffer();
@@ -76,11 +82,7 @@ void OsgViewportTest::drawsTheSceneInFrontOfTheCamera()
 void OsgViewportTest::dragOrbitsAndDoubleClickGoesHome()
 {
     OsgViewport viewport;
-    viewport.resize(320, 240);
-    viewport.setClearColor(kClear);
-    viewport.setSceneData(redBox());
-    viewport.setHomeView(QVector3D(0, 0, 5), QVector3D(0, 0, 0), QVector3D(0, 1, 0));
-    viewport.show();
+    showBoxFromTheFront(viewport);
     QVERIFY(QTest::qWaitForWindowExposed(&viewport));
     const QImage home = viewport.grabFramebuffer();
 
