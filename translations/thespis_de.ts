@@ -469,6 +469,71 @@ Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
         <comment>length unit of a BVH file</comment>
         <translation>Einheiten</translation>
     </message>
+    <message>
+        <source>Drag to orbit, right-drag or wheel to zoom, middle-drag to pan, double-click for the home view</source>
+        <translation>Ziehen zum Umkreisen, rechts ziehen oder Mausrad zum Zoomen, mittig ziehen zum Verschieben, Doppelklick für die Ausgangsansicht</translation>
+    </message>
+    <message>
+        <source>No 3D view: this display offers no OpenGL.
+The Skeletons tab shows the animation; thespis-cli render draws the scene headless.</source>
+        <translation>Keine 3D-Ansicht: Diese Anzeige bietet kein OpenGL.
+Der Reiter Skelette zeigt die Animation; thespis-cli render zeichnet die Szene ohne Anzeige.</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Szene</translation>
+    </message>
+    <message>
+        <source>Skeletons</source>
+        <translation>Skelette</translation>
+    </message>
+    <message>
+        <source>&amp;PRT Lighting</source>
+        <translation>&amp;PRT-Beleuchtung</translation>
+    </message>
+    <message>
+        <source>P&amp;hong Lighting</source>
+        <translation>P&amp;hong-Beleuchtung</translation>
+    </message>
+    <message>
+        <source>&amp;Unlit</source>
+        <translation>&amp;Unbeleuchtet</translation>
+    </message>
+    <message>
+        <source>Precomputed radiance transfer: soft light and self-shadowing from the light probe</source>
+        <translation>Vorberechneter Strahlungstransfer: weiches Licht und Eigenschatten aus der Lichtsonde</translation>
+    </message>
+    <message>
+        <source>One directional light and ambient, for comparison with PRT</source>
+        <translation>Ein gerichtetes Licht und Umgebungslicht, zum Vergleich mit PRT</translation>
+    </message>
+    <message>
+        <source>&amp;Ground</source>
+        <translation>&amp;Boden</translation>
+    </message>
+    <message>
+        <source>&amp;Home View</source>
+        <translation>&amp;Ausgangsansicht</translation>
+    </message>
+    <message>
+        <source>The 3D view is empty: %1</source>
+        <translation>Die 3D-Ansicht ist leer: %1</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::widgets::OsgViewport</name>
+    <message>
+        <source>No OpenGL context could be created for the 3D view.</source>
+        <translation>Für die 3D-Ansicht ließ sich kein OpenGL-Kontext erzeugen.</translation>
+    </message>
+    <message>
+        <source>The 3D view got a core-profile OpenGL context; it needs a compatibility profile.</source>
+        <translation>Die 3D-Ansicht erhielt einen OpenGL-Kontext im Core-Profil; sie braucht ein Kompatibilitätsprofil.</translation>
+    </message>
+    <message>
+        <source>The 3D view needs OpenGL 2.1 or newer; this system offers %1.%2.</source>
+        <translation>Die 3D-Ansicht braucht OpenGL 2.1 oder neuer; dieses System bietet %1.%2.</translation>
+    </message>
 </context>
 <context>
     <name>thespis::widgets::PoseView</name>

@@ -469,6 +469,71 @@ Utilisez Fichier ▸ Ouvrir… (Ctrl+O) pour ouvrir un fichier .thespis.</transl
         <comment>length unit of a BVH file</comment>
         <translation>unités</translation>
     </message>
+    <message>
+        <source>Drag to orbit, right-drag or wheel to zoom, middle-drag to pan, double-click for the home view</source>
+        <translation>Glisser pour tourner autour, glisser avec le bouton droit ou la molette pour zoomer, avec le bouton du milieu pour déplacer, double-clic pour la vue initiale</translation>
+    </message>
+    <message>
+        <source>No 3D view: this display offers no OpenGL.
+The Skeletons tab shows the animation; thespis-cli render draws the scene headless.</source>
+        <translation>Pas de vue 3D : cet affichage n’offre pas OpenGL.
+L’onglet Squelettes montre l’animation ; thespis-cli render dessine la scène sans affichage.</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Scène</translation>
+    </message>
+    <message>
+        <source>Skeletons</source>
+        <translation>Squelettes</translation>
+    </message>
+    <message>
+        <source>&amp;PRT Lighting</source>
+        <translation>Éclairage &amp;PRT</translation>
+    </message>
+    <message>
+        <source>P&amp;hong Lighting</source>
+        <translation>Éclairage P&amp;hong</translation>
+    </message>
+    <message>
+        <source>&amp;Unlit</source>
+        <translation>&amp;Sans éclairage</translation>
+    </message>
+    <message>
+        <source>Precomputed radiance transfer: soft light and self-shadowing from the light probe</source>
+        <translation>Transfert de radiance précalculé : lumière douce et ombres propres d’après la sonde de lumière</translation>
+    </message>
+    <message>
+        <source>One directional light and ambient, for comparison with PRT</source>
+        <translation>Une lumière directionnelle et une ambiance, pour comparer avec le PRT</translation>
+    </message>
+    <message>
+        <source>&amp;Ground</source>
+        <translation>&amp;Sol</translation>
+    </message>
+    <message>
+        <source>&amp;Home View</source>
+        <translation>&amp;Vue initiale</translation>
+    </message>
+    <message>
+        <source>The 3D view is empty: %1</source>
+        <translation>La vue 3D est vide : %1</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::widgets::OsgViewport</name>
+    <message>
+        <source>No OpenGL context could be created for the 3D view.</source>
+        <translation>Aucun contexte OpenGL n’a pu être créé pour la vue 3D.</translation>
+    </message>
+    <message>
+        <source>The 3D view got a core-profile OpenGL context; it needs a compatibility profile.</source>
+        <translation>La vue 3D a reçu un contexte OpenGL en profil core ; il lui faut un profil de compatibilité.</translation>
+    </message>
+    <message>
+        <source>The 3D view needs OpenGL 2.1 or newer; this system offers %1.%2.</source>
+        <translation>La vue 3D demande OpenGL 2.1 ou plus récent ; ce système offre %1.%2.</translation>
+    </message>
 </context>
 <context>
     <name>thespis::widgets::PoseView</name>
