@@ -216,7 +216,17 @@ def action(name, clip_name, start, weight, scale=None, mask=None, mode="normaliz
 
 
 def layer(name, kind, actions):
-    return {"schema": "Layer.1", "name": name, "kind": kind, "mode": "normalized", "actions": actions}
+    return {"schema": "Layer.2", "name": name, "kind": kind, "mode": "normalized", "actions": actions}
+
+
+def gesture(name, clip_name, mask_name, fade_in, fade_out, dependent_joint_filter=False):
+    return {"schema": "Gesture.1", "name": name, "clip": clip_name, "mask": mask_name,
+            "fadeIn": ticks(fade_in), "fadeOut": ticks(fade_out),
+            "dependentJointFilter": dependent_joint_filter}
+
+
+def marker(name, time):
+    return {"schema": "Marker.1", "name": name, "time": ticks(time)}
 
 
 def mask(name, weights, default=0.0):
@@ -226,7 +236,7 @@ def mask(name, weights, default=0.0):
 
 def scenario():
     creon = {
-        "schema": "Character.1", "name": "Creon", "skeleton": "hanim-25",
+        "schema": "Character.2", "name": "Creon", "skeleton": "hanim-25",
         "clips": [
             idle_clip("creon_idle", period=4.0, sway=0.025, breaths=2, head_tilt=0.0, arm_bend=8.0),
             wave_clip("wave", waves=3, wave_period=0.6),
@@ -253,9 +263,14 @@ def scenario():
                 action("creon_blinks", "blink", 0.0, constant(1.0), modifiers=[modifier("loop", count=0)]),
             ]),
         ],
+        # The gestures a speech script (or the studio's gesticon panel) can trigger.
+        "gestures": [
+            gesture("greet", "wave", "rightArm", 0.4, 0.5, dependent_joint_filter=True),
+            gesture("agree", "nod", "head", 0.25, 0.25),
+        ],
     }
     antigone = {
-        "schema": "Character.1", "name": "Antigone", "skeleton": "hanim-25",
+        "schema": "Character.2", "name": "Antigone", "skeleton": "hanim-25",
         "clips": [
             idle_clip("antigone_idle", period=5.0, sway=0.03, breaths=3, head_tilt=3.0, arm_bend=12.0),
             wave_clip("wave", waves=2, wave_period=0.8),
@@ -272,11 +287,14 @@ def scenario():
                        mask="leftArm", mode="override", modifiers=[modifier("mirror", axis=0)]),
             ]),
         ],
+        "gestures": [
+            gesture("agree", "nod", "head", 0.2, 0.3),
+        ],
     }
     return {
         "format": "thespis-scenario",
-        "version": 1,
-        "schema": "Scenario.1",
+        "version": 2,
+        "schema": "Scenario.2",
         "name": "Antigone, act 1 (demo)",
         "duration": ticks(12.0),
         "masks": [
@@ -285,6 +303,7 @@ def scenario():
             mask("rightArm", {"r_sternoclavicular": 1.0}),
         ],
         "characters": [creon, antigone],
+        "markers": [marker("Creon greets", 1.5), marker("Antigone answers", 6.0)],
     }
 
 

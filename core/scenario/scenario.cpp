@@ -18,4 +18,20 @@ const NamedMask* Scenario::findMask(const std::string& maskName) const
     return nullptr;
 }
 
+const Gesture* Character::findGesture(const std::string& gestureName) const
+{
+    for (const Gesture& gesture : gestures)
+        if (gesture.name == gestureName)
+            return &gesture;
+    return nullptr;
+}
+
+const ClipAsset* Character::findClip(const std::string& clipName) const
+{
+    for (const ClipAsset& clip : clips)
+        if (clip.name == clipName)
+            return &clip;
+    return nullptr;
+}
+
 } // namespace thespis::core::scenario

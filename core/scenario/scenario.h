@@ -1,6 +1,7 @@
 #pragma once
-// The scenario document (format "thespis-scenario", version 1): characters with their skeleton
-// and clips, layers of actions (the blending schedules), named joint masks. Plain data with
+// The scenario document (format "thespis-scenario", version 2): characters with their skeleton,
+// clips and gesture database (gesticon), layers of actions (the blending schedules) with their
+// timeline state (mute / solo / lock), named joint masks, timeline markers. Plain data with
 // value semantics; io is in scenario_io.h, building runnable schedules in scenario_runtime.h.
 // Times are exact integer ticks (util/tick.h). Fields this version does not know are kept in
 // `extra` and written back unchanged.
@@ -84,8 +85,28 @@ struct Layer {
     LayerKind kind = LayerKind::Body;
     anim::BlendMode mode = anim::BlendMode::Normalized;
     std::vector<ActionSpec> actions;
+    /// Timeline state (format 2). A muted layer does not play; when any layer of a character is
+    /// solo, only its solo layers play. A locked layer is shown but not editable in the studio.
+    bool mute = false;
+    bool solo = false;
+    bool lock = false;
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const Layer&) const = default;
+};
+
+/// A gesture of the character's gesture database (gesticon, paper §5): a clip with the body part
+/// it moves and how it is faded in and out when a speech script or the studio triggers it.
+struct Gesture {
+    std::string name;
+    std::string clip;                  ///< name of a ClipAsset of the character
+    std::string mask;                  ///< name of a scenario mask (the body part); empty = whole body
+    Tick fadeIn = 0;
+    Tick fadeOut = 0;
+    /// Run the dependent-joint motion filter (paper §4.3) over the gesture, so that joints the
+    /// gesture does not drive (spine, neck) follow it.
+    bool dependentJointFilter = false;
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const Gesture&) const = default;
 };
 
 struct Character {
@@ -99,8 +120,12 @@ struct Character {
     std::vector<scene::SegmentTag> segmentTags;
     std::vector<ClipAsset> clips;
     std::vector<Layer> layers;
+    std::vector<Gesture> gestures;     ///< format 2
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const Character&) const = default;
+
+    const Gesture* findGesture(const std::string& name) const;
+    const ClipAsset* findClip(const std::string& name) const;
 };
 
 struct NamedMask {
@@ -119,12 +144,21 @@ struct LightingSpec {
     bool operator==(const LightingSpec&) const = default;
 };
 
+/// A named point on the timeline (format 2): a cue the animator snaps actions to.
+struct Marker {
+    std::string name;
+    Tick time = 0;
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const Marker&) const = default;
+};
+
 struct Scenario {
     std::string name;
     Tick duration = 0; ///< length of the scenario's timeline (0: up to the last action's end)
     std::vector<Character> characters;
     std::vector<NamedMask> masks;
     LightingSpec lighting;
+    std::vector<Marker> markers;       ///< format 2
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const Scenario&) const = default;
 

@@ -20,11 +20,39 @@ namespace thespis::core::scenario {
 
 namespace detail {
 
+// 1 → 2: layers gained mute / solo / lock, characters a gesticon, the scenario markers. All are
+// optional, so a version 1 document only needs the new schema names of the objects that changed.
+static Result<void> upgradeV1toV2(nlohmann::json& document)
+{
+    auto renameSchema = [](nlohmann::json& object, std::string_view from, std::string_view to) {
+        if (!object.is_object())
+            return; // the reader names the field that is not an object
+        const auto schema = object.find("schema");
+        if (schema != object.end() && schema->is_string() && schema->get_ref<const std::string&>() == from)
+            *schema = to;
+    };
+    renameSchema(document, "Scenario.1", "Scenario.2");
+    const auto characters = document.find("characters");
+    if (characters == document.end() || !characters->is_array())
+        return {};
+    for (nlohmann::json& character : *characters) {
+        renameSchema(character, "Character.1", "Character.2");
+        if (!character.is_object())
+            continue;
+        const auto layers = character.find("layers");
+        if (layers != character.end() && layers->is_array())
+            for (nlohmann::json& layer : *layers)
+                renameSchema(layer, "Layer.1", "Layer.2");
+    }
+    return {};
+}
+
 std::span<const UpgradeStep> upgradeSteps()
 {
-    // Version 1 is the first format: nothing to upgrade yet. A future version N + 1 adds
-    // {N, "what changed", &upgradeVNtoVN1} here.
-    return {};
+    static constexpr UpgradeStep steps[] = {
+        {format::Initial, "timeline state and gesticon", &upgradeV1toV2},
+    };
+    return steps;
 }
 
 Result<void> runUpgradeSteps(nlohmann::json& document, int fromVersion, int toVersion,
@@ -543,11 +571,14 @@ ActionSpec readAction(const json& value, const std::string& path)
 
 Layer readLayer(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Layer.1");
+    ObjectReader r(value, path, "Layer.2");
     Layer layer;
     layer.name = r.name();
     layer.kind = r.enumeration("kind", kLayerKinds, false, LayerKind::Body);
     layer.mode = r.enumeration("mode", kBlendModes, false, anim::BlendMode::Normalized);
+    layer.mute = r.boolean("mute", false);
+    layer.solo = r.boolean("solo", false);
+    layer.lock = r.boolean("lock", false);
     const json& actions = r.array("actions", false);
     for (std::size_t i = 0; i < actions.size(); ++i)
         layer.actions.push_back(readAction(actions[i], indexed(r.fieldPath("actions"), i)));
@@ -641,9 +672,33 @@ LightingSpec readLighting(const json& value, const std::string& path)
     return lighting;
 }
 
+Gesture readGesture(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "Gesture.1");
+    Gesture gesture;
+    gesture.name = r.name();
+    gesture.clip = r.name("clip");
+    gesture.mask = r.string("mask", false);
+    gesture.fadeIn = r.ticks("fadeIn", false);
+    gesture.fadeOut = r.ticks("fadeOut", false);
+    gesture.dependentJointFilter = r.boolean("dependentJointFilter", false);
+    gesture.extra = r.extra();
+    return gesture;
+}
+
+Marker readMarker(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "Marker.1");
+    Marker marker;
+    marker.name = r.string("name", false);
+    marker.time = r.ticks("time", true);
+    marker.extra = r.extra();
+    return marker;
+}
+
 Character readCharacter(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Character.1");
+    ObjectReader r(value, path, "Character.2");
     Character character;
     character.name = r.name();
     character.skeleton = r.string("skeleton", false, "hanim-loa1");
@@ -675,6 +730,14 @@ Character readCharacter(const json& value, const std::string& path)
             fail(indexed(r.fieldPath("layers"), i) + ".name",
                  "another layer of this character is already named " + quote(character.layers.back().name));
     }
+    names.clear();
+    const json& gestures = r.array("gestures", false);
+    for (std::size_t i = 0; i < gestures.size(); ++i) {
+        character.gestures.push_back(readGesture(gestures[i], indexed(r.fieldPath("gestures"), i)));
+        if (!names.insert(character.gestures.back().name).second)
+            fail(indexed(r.fieldPath("gestures"), i) + ".name",
+                 "another gesture of this character is already named " + quote(character.gestures.back().name));
+    }
     character.extra = r.extra();
     return character;
 }
@@ -703,7 +766,7 @@ NamedMask readMask(const json& value, const std::string& path)
 
 Scenario readScenario(const json& document)
 {
-    ObjectReader r(document, "", "Scenario.1");
+    ObjectReader r(document, "", "Scenario.2");
     r.find("format");  // checked before
     r.find("version");
     Scenario scenario;
@@ -726,6 +789,9 @@ Scenario readScenario(const json& document)
     }
     if (const json* lighting = r.find("lighting"))
         scenario.lighting = readLighting(*lighting, "lighting");
+    const json& markers = r.array("markers", false);
+    for (std::size_t i = 0; i < markers.size(); ++i)
+        scenario.markers.push_back(readMarker(markers[i], indexed("markers", i)));
     scenario.extra = r.extra();
     return scenario;
 }
@@ -924,10 +990,17 @@ ojson writeAction(const ActionSpec& a)
 ojson writeLayer(const Layer& layer)
 {
     ojson out = ojson::object();
-    out["schema"] = "Layer.1";
+    out["schema"] = "Layer.2";
     out["name"] = layer.name;
     out["kind"] = nameOf(kLayerKinds, layer.kind);
     out["mode"] = nameOf(kBlendModes, layer.mode);
+    // Written only when set, so that untouched layers read as before.
+    if (layer.mute)
+        out["mute"] = true;
+    if (layer.solo)
+        out["solo"] = true;
+    if (layer.lock)
+        out["lock"] = true;
     ojson actions = ojson::array();
     for (const ActionSpec& a : layer.actions)
         actions.push_back(writeAction(a));
@@ -970,7 +1043,7 @@ ojson writeClip(const ClipAsset& clip)
 ojson writeCharacter(const Character& character)
 {
     ojson out = ojson::object();
-    out["schema"] = "Character.1";
+    out["schema"] = "Character.2";
     out["name"] = character.name;
     out["skeleton"] = character.skeleton;
     // Written only when set, so that scenarios without models stay as they were.
@@ -996,6 +1069,23 @@ ojson writeCharacter(const Character& character)
     for (const Layer& layer : character.layers)
         layers.push_back(writeLayer(layer));
     out["layers"] = std::move(layers);
+    if (!character.gestures.empty()) {
+        ojson gestures = ojson::array();
+        for (const Gesture& gesture : character.gestures) {
+            ojson entry = ojson::object();
+            entry["schema"] = "Gesture.1";
+            entry["name"] = gesture.name;
+            entry["clip"] = gesture.clip;
+            if (!gesture.mask.empty())
+                entry["mask"] = gesture.mask;
+            entry["fadeIn"] = gesture.fadeIn;
+            entry["fadeOut"] = gesture.fadeOut;
+            entry["dependentJointFilter"] = gesture.dependentJointFilter;
+            appendExtra(entry, gesture.extra);
+            gestures.push_back(std::move(entry));
+        }
+        out["gestures"] = std::move(gestures);
+    }
     appendExtra(out, character.extra);
     return out;
 }
@@ -1164,7 +1254,7 @@ std::string serializeScenario(const Scenario& scenario)
     ojson out = ojson::object();
     out["format"] = FormatName;
     out["version"] = int(format::Current);
-    out["schema"] = "Scenario.1";
+    out["schema"] = "Scenario.2";
     out["name"] = scenario.name;
     out["duration"] = scenario.duration;
     ojson masks = ojson::array();
@@ -1182,6 +1272,18 @@ std::string serializeScenario(const Scenario& scenario)
         lighting["layout"] = scenario.lighting.layout;
         appendExtra(lighting, scenario.lighting.extra);
         out["lighting"] = std::move(lighting);
+    }
+    if (!scenario.markers.empty()) {
+        ojson markers = ojson::array();
+        for (const Marker& marker : scenario.markers) {
+            ojson entry = ojson::object();
+            entry["schema"] = "Marker.1";
+            entry["name"] = marker.name;
+            entry["time"] = marker.time;
+            appendExtra(entry, marker.extra);
+            markers.push_back(std::move(entry));
+        }
+        out["markers"] = std::move(markers);
     }
     appendExtra(out, scenario.extra);
     std::string text;

@@ -1,6 +1,6 @@
 #pragma once
 // Reading and writing scenario files (.thespis): JSON with
-//   {"format": "thespis-scenario", "version": N, "schema": "Scenario.1", …}
+//   {"format": "thespis-scenario", "version": N, "schema": "Scenario.2", …}
 // Readers accept every older version (upgrade steps run in order before parsing) and refuse
 // newer ones with ErrorCode::NewerVersion, never loading part of a file. Any malformed input
 // gets CorruptData naming the field path ("characters[0].layers[1].actions[2].start: expected an
@@ -22,7 +22,8 @@ inline constexpr std::string_view FileExtension = ".thespis";
 namespace format {
 enum Version : int {
     Initial = 1,
-    Current = Initial,
+    TimelineAndGesticon = 2, ///< layer mute / solo / lock, markers, the characters' gesticons
+    Current = TimelineAndGesticon,
 };
 } // namespace format
 

@@ -50,14 +50,60 @@ struct SourceClip {
     std::optional<anim::Skeleton> skeleton; // BVH clips bring their own
 };
 
+} // namespace
+
+struct ClipFileCache::Key {
+    std::filesystem::path path;
+    double frameRateOverride = 0;
+    std::filesystem::file_time_type modified;
+};
+
+struct ClipFileCache::Entry {
+    SourceClip source;
+    std::vector<std::string> unmapped;
+};
+
+ClipFileCache::ClipFileCache() = default;
+ClipFileCache::~ClipFileCache() = default;
+
+const ClipFileCache::Entry* ClipFileCache::find(const std::filesystem::path& path, double frameRateOverride) const
+{
+    std::error_code error;
+    const auto modified = std::filesystem::last_write_time(path, error);
+    for (const auto& [key, entry] : m_entries)
+        if (key->path == path && key->frameRateOverride == frameRateOverride)
+            return !error && key->modified == modified ? entry.get() : nullptr;
+    return nullptr;
+}
+
+void ClipFileCache::store(const std::filesystem::path& path, double frameRateOverride, Entry entry)
+{
+    std::error_code error;
+    auto key = std::make_unique<Key>(Key{path, frameRateOverride, std::filesystem::last_write_time(path, error)});
+    for (auto& [k, e] : m_entries)
+        if (k->path == path && k->frameRateOverride == frameRateOverride) {
+            k = std::move(key);
+            *e = std::move(entry);
+            return;
+        }
+    m_entries.emplace_back(std::move(key), std::make_unique<Entry>(std::move(entry)));
+}
+
+void ClipFileCache::clear()
+{
+    m_entries.clear();
+}
+
+namespace {
+
 // Builds the runtime of a scenario and collects every problem it meets (buildRuntime fails with
 // the first, validateScenario lists them all). A part that fails (a clip, an action, a
 // character's skeleton) is left out, so that one mistake is reported once and not again by
 // everything that depends on it. Problems name the character, layer, action and field.
 class RuntimeBuilder {
 public:
-    RuntimeBuilder(const Scenario& scenario, std::filesystem::path baseDir)
-        : m_scenario(scenario), m_baseDir(std::move(baseDir))
+    RuntimeBuilder(const Scenario& scenario, std::filesystem::path baseDir, ClipFileCache* cache = nullptr)
+        : m_scenario(scenario), m_baseDir(std::move(baseDir)), m_cache(cache)
     {
     }
 
@@ -135,20 +181,29 @@ private:
             if (asset.frameRateOverride > 0)
                 options.frameRate = asset.frameRateOverride;
             const std::filesystem::path path = m_baseDir / asset.file;
-            auto imported = anim::bvh::load(path, options);
-            if (!imported) {
-                const Error& e = imported.error();
-                problem(e.code, where + ", file " + quote(asset.file) + ": " + e.message,
-                        "looked for " + path.string() + (e.detail.empty() ? "" : "; " + e.detail));
-                return std::nullopt;
+            const ClipFileCache::Entry* cached = m_cache ? m_cache->find(path, asset.frameRateOverride) : nullptr;
+            ClipFileCache::Entry read;
+            if (!cached) {
+                auto imported = anim::bvh::load(path, options);
+                if (!imported) {
+                    const Error& e = imported.error();
+                    problem(e.code, where + ", file " + quote(asset.file) + ": " + e.message,
+                            "looked for " + path.string() + (e.detail.empty() ? "" : "; " + e.detail));
+                    return std::nullopt;
+                }
+                read.source.clip = imported->clip;
+                read.source.skeleton = std::move(imported->skeleton);
+                read.unmapped = std::move(imported->report.unmapped);
+                if (m_cache) {
+                    m_cache->store(path, asset.frameRateOverride, read);
+                    cached = m_cache->find(path, asset.frameRateOverride);
+                }
             }
-            if (!imported->report.unmapped.empty())
-                warnings.push_back(where + ": " + std::to_string(imported->report.unmapped.size())
-                                   + " BVH joints kept their own names (not H-Anim): "
-                                   + joinNames(imported->report.unmapped) + ".");
-            source.clip = imported->clip;
-            source.skeleton = std::move(imported->skeleton);
-            return source;
+            const ClipFileCache::Entry& entry = cached ? *cached : read;
+            if (!entry.unmapped.empty())
+                warnings.push_back(where + ": " + std::to_string(entry.unmapped.size())
+                                   + " BVH joints kept their own names (not H-Anim): " + joinNames(entry.unmapped) + ".");
+            return entry.source;
         }
         if (asset.joints.empty() && asset.scalars.empty()) {
             problem(ErrorCode::InvalidSchedule, where + ": the clip has neither a file nor inline keyframes.");
@@ -404,6 +459,21 @@ private:
             runtime.clips.emplace(name, std::move(onSkeleton));
         }
 
+        for (std::size_t g = 0; g < character.gestures.size(); ++g) {
+            const Gesture& gesture = character.gestures[g];
+            const std::string where = who + ", gesture " + (gesture.name.empty() ? std::to_string(g + 1) : quote(gesture.name));
+            if (gesture.name.empty())
+                problem(ErrorCode::InvalidSchedule, where + ": a gesture needs a name.");
+            if (!character.findClip(gesture.clip))
+                problem(ErrorCode::InvalidSchedule, where + ", clip: the character has no clip named " + quote(gesture.clip) + ".");
+            if (!gesture.mask.empty() && !m_scenario.findMask(gesture.mask))
+                problem(ErrorCode::InvalidSchedule, where + ", mask: the scenario has no mask named " + quote(gesture.mask) + ".");
+            if (gesture.fadeIn < 0 || gesture.fadeOut < 0)
+                problem(ErrorCode::InvalidSchedule, where + ": fade times must not be negative.");
+        }
+
+        const bool anySolo = std::any_of(character.layers.begin(), character.layers.end(),
+                                         [](const Layer& layer) { return layer.solo; });
         Context ctx{character, sources, {}};
         runtime.body = std::make_shared<BlendingSchedule>(runtime.skeleton);
         runtime.face = std::make_shared<BlendingSchedule>(anim::FrameLayout::mpeg4Face());
@@ -441,6 +511,10 @@ private:
             // outside its domain, so it keeps playing while actions are added to it live. A nested
             // schedule passes on its coverage, so a layer above the base changes only the joints
             // its actions drive, and only while they play.
+            runtime.layers.push_back(schedule);
+            runtime.actionIds.push_back(std::move(ids));
+            if (layer.mute || (anySolo && !layer.solo))
+                continue;
             bool& first = body ? firstBody : firstFace;
             anim::BlendingAction nested;
             nested.name = layer.name;
@@ -453,8 +527,6 @@ private:
             auto& parent = body ? runtime.body : runtime.face;
             if (auto id = parent->addAction(std::move(nested)); !id)
                 problem(ErrorCode::InvalidSchedule, where + ": " + id.error().message, id.error().detail);
-            runtime.layers.push_back(std::move(schedule));
-            runtime.actionIds.push_back(std::move(ids));
         }
         if (errors.size() != before)
             return std::nullopt;
@@ -463,14 +535,16 @@ private:
 
     const Scenario& m_scenario;
     std::filesystem::path m_baseDir;
+    ClipFileCache* m_cache = nullptr;
     std::map<std::string, std::shared_ptr<const anim::JointMask>> m_masks;
 };
 
 } // namespace
 
-Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const std::filesystem::path& baseDir)
+Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const std::filesystem::path& baseDir,
+                                     ClipFileCache* cache)
 {
-    RuntimeBuilder builder(scenario, baseDir);
+    RuntimeBuilder builder(scenario, baseDir, cache);
     ScenarioRuntime runtime = builder.build();
     if (builder.errors.empty())
         return runtime;

@@ -19,6 +19,9 @@
 
 namespace thespis::core::scenario {
 
+/// A character's schedules. Every layer is built (so that its actions are checked and can be
+/// found by id), but only the layers that play — not muted, and solo when any layer of the
+/// character is solo — are nested in `body` / `face`.
 struct CharacterRuntime {
     std::string name;
     anim::Skeleton skeleton;
@@ -36,8 +39,30 @@ struct ScenarioRuntime {
     const CharacterRuntime* findCharacter(const std::string& name) const;
 };
 
-/// `baseDir` is where relative clip files are looked up (the scenario file's folder).
-Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const std::filesystem::path& baseDir);
+/// BVH clips already read, by file and frame rate, so that an editor rebuilding the runtime after
+/// every edit reads each file once. A file changed on disk is read again (its time stamp is kept).
+class ClipFileCache {
+public:
+    ClipFileCache();
+    ~ClipFileCache();
+    ClipFileCache(const ClipFileCache&) = delete;
+    ClipFileCache& operator=(const ClipFileCache&) = delete;
+
+    struct Entry;
+    /// The cached import of `path` read at `frameRateOverride` (0: the file's own), or null.
+    const Entry* find(const std::filesystem::path& path, double frameRateOverride) const;
+    void store(const std::filesystem::path& path, double frameRateOverride, Entry entry);
+    void clear();
+
+private:
+    struct Key;
+    std::vector<std::pair<std::unique_ptr<Key>, std::unique_ptr<Entry>>> m_entries;
+};
+
+/// `baseDir` is where relative clip files are looked up (the scenario file's folder). `cache`
+/// (optional) keeps BVH files read between builds.
+Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const std::filesystem::path& baseDir,
+                                     ClipFileCache* cache = nullptr);
 
 /// Checks a scenario without keeping the result: every problem found, empty when valid.
 std::vector<Error> validateScenario(const Scenario& scenario, const std::filesystem::path& baseDir);

@@ -2,8 +2,7 @@
 // Private to core/scenario (and its tests): the upgrade steps that migrate older scenario
 // documents to the current version before they are parsed (STYLE.md §7). Each step takes the
 // JSON of version N to version N + 1; they run in order, so a file of any older version reaches
-// format::Current. Version 1 is the first, so the table is still empty; raising
-// format::Current means adding a step here in the same change.
+// format::Current. Raising format::Current means adding a step in the same change.
 
 #include <span>
 

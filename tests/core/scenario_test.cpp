@@ -69,6 +69,7 @@ std::vector<std::string> filesIn(const fs::path& folder)
 }
 
 fs::path goldenV1() { return thespis::test::testData("formats/v1/scenario.thespis"); }
+fs::path goldenV2() { return thespis::test::testData("formats/v2/scenario.thespis"); }
 fs::path demoPath() { return thespis::test::resources("demo.thespis"); }
 
 Scenario loadOrFail(const fs::path& path)
@@ -245,6 +246,58 @@ TEST(ScenarioGolden, EveryGoldenFileLoadsAndRewritesByteForByte)
     EXPECT_GE(files, 1);
 }
 
+TEST(ScenarioGolden, LoadsVersion2TimelineStateGesticonAndMarkers)
+{
+    const Scenario s = loadOrFail(goldenV2());
+    ASSERT_EQ(s.characters.size(), 2u);
+    const Character& mocap = s.characters[0];
+    const Character& inl = s.characters[1];
+    EXPECT_TRUE(mocap.layers[0].lock);
+    EXPECT_FALSE(mocap.layers[0].mute || mocap.layers[0].solo);
+    EXPECT_TRUE(mocap.layers[1].solo);
+    EXPECT_TRUE(inl.layers[1].mute);
+    // "muted" was never a field of the format: it stays an unknown field, as in version 1.
+    EXPECT_EQ(inl.layers[1].extra["muted"], false);
+
+    ASSERT_EQ(mocap.gestures.size(), 2u);
+    const Gesture& greet = mocap.gestures[0];
+    EXPECT_EQ(greet.name, "greet");
+    EXPECT_EQ(greet.clip, "wave");
+    EXPECT_EQ(greet.mask, "upper");
+    EXPECT_EQ(greet.fadeIn, TicksPerSecond / 4);
+    EXPECT_EQ(greet.fadeOut, TicksPerSecond / 2);
+    EXPECT_TRUE(greet.dependentJointFilter);
+    EXPECT_TRUE(mocap.gestures[1].mask.empty());
+    EXPECT_EQ(mocap.gestures[1].extra["note"], "kept as written");
+    EXPECT_EQ(mocap.findGesture("stroll"), &mocap.gestures[1]);
+    EXPECT_EQ(mocap.findGesture("nope"), nullptr);
+    ASSERT_EQ(inl.gestures.size(), 1u);
+
+    ASSERT_EQ(s.markers.size(), 2u);
+    EXPECT_EQ(s.markers[0].name, "start of wave");
+    EXPECT_EQ(s.markers[0].time, TicksPerSecond);
+    EXPECT_TRUE(s.markers[1].name.empty());
+    EXPECT_EQ(s.markers[1].time, 5 * TicksPerSecond + TicksPerSecond / 30);
+    for (const Error& e : validateScenario(s, goldenV2().parent_path()))
+        ADD_FAILURE() << describe(e);
+}
+
+TEST(ScenarioGolden, Version1UpgradesToVersion2WithoutTheNewFields)
+{
+    // The version 2 golden file is the version 1 one plus the new fields: taking those away
+    // again must give exactly what the upgraded version 1 file reads as.
+    Scenario v2 = loadOrFail(goldenV2());
+    for (Character& character : v2.characters) {
+        character.gestures.clear();
+        for (Layer& layer : character.layers)
+            layer.mute = layer.solo = layer.lock = false;
+    }
+    v2.markers.clear();
+    Scenario v1 = loadOrFail(goldenV1());
+    v1.name = v2.name;
+    EXPECT_EQ(v1, v2);
+}
+
 TEST(ScenarioGolden, Version1GoldenValidatesAndBuilds)
 {
     const Scenario s = loadOrFail(goldenV1());
@@ -386,7 +439,7 @@ TEST(ScenarioIo, UnknownFieldWithAnEmptyNameSurvives)
 TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 {
     const std::string text = serializeScenario(Scenario{});
-    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 1,\n  \"schema\": \"Scenario.1\"", 0), 0u)
+    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 2,\n  \"schema\": \"Scenario.2\"", 0), 0u)
         << text;
     auto back = parseScenario(text);
     ASSERT_TRUE(back.ok());
@@ -910,6 +963,92 @@ TEST(ScenarioDemo, BuildsAndEvaluatesToUnitRotations)
 
 // ---------------------------------------------------------------------------------------------
 // Runtime: BVH clips, layers, and problems
+
+TEST(ScenarioRuntime, MutedAndNonSoloLayersDoNotPlay)
+{
+    const fs::path path = thespis::test::testData("scenarios/bvh_character.thespis");
+    Scenario s = loadOrFail(path);
+    ASSERT_GE(s.characters.at(0).layers.size(), 2u);
+    auto rotationsAt = [&](const Scenario& scenario, double t) {
+        auto built = buildRuntime(scenario, path.parent_path());
+        EXPECT_TRUE(built.ok()) << describe(built.error());
+        const CharacterRuntime& c = built->characters.at(0);
+        EXPECT_EQ(c.layers.size(), scenario.characters[0].layers.size()); // every layer is built
+        std::vector<float> frame(c.body->layout()->floatCount()), layer0(frame.size()), layer1(frame.size());
+        c.body->evaluate(t, frame);
+        c.layers[0]->evaluate(t, layer0);
+        c.layers[1]->evaluate(t, layer1);
+        return std::tuple{frame, layer0, layer1};
+    };
+    const double t = 0.6; // the head layer plays over the base
+    auto near = [](const std::vector<float>& a, const std::vector<float>& b) {
+        for (std::size_t i = 0; i < a.size(); ++i)
+            if (std::abs(a[i] - b[i]) > 1e-6f)
+                return false;
+        return true;
+    };
+    {
+        auto [all, base, head] = rotationsAt(s, t);
+        EXPECT_FALSE(near(all, base)); // both layers play
+    }
+    s.characters[0].layers[1].mute = true;
+    {
+        auto [all, base, head] = rotationsAt(s, t);
+        EXPECT_TRUE(near(all, base)); // the muted head layer is left out
+    }
+    s.characters[0].layers[1].mute = false;
+    s.characters[0].layers[1].solo = true;
+    {
+        auto [all, base, head] = rotationsAt(s, t);
+        EXPECT_FALSE(near(all, base));
+        // Only the solo layer plays, as the base now: joints it does not drive keep the rest pose.
+        auto alone = buildRuntime(s, path.parent_path());
+        ASSERT_TRUE(alone.ok());
+        std::vector<float> rest = alone->characters[0].skeleton.restFrame();
+        const int shoulder = alone->characters[0].skeleton.find("r_shoulder");
+        EXPECT_LT(anim::angleBetween(anim::rotationAt(std::span<const float>(all), shoulder),
+                                     anim::rotationAt(std::span<const float>(rest), shoulder)), 1e-5f);
+    }
+}
+
+TEST(ScenarioRuntime, GesturesNeedTheirClipAndMask)
+{
+    Scenario s = loadOrFail(goldenV2());
+    s.characters[0].gestures[0].clip = "no such clip";
+    s.characters[0].gestures[1].mask = "no such mask";
+    const auto problems = validateScenario(s, goldenV2().parent_path());
+    ASSERT_EQ(problems.size(), 2u);
+    EXPECT_NE(problems[0].message.find("gesture \"greet\", clip"), std::string::npos) << problems[0].message;
+    EXPECT_NE(problems[1].message.find("gesture \"stroll\", mask"), std::string::npos) << problems[1].message;
+}
+
+TEST(ScenarioRuntime, ClipFileCacheReadsEachFileOnceUntilItChanges)
+{
+    TempDir dir;
+    const fs::path folder = dir.path();
+    const fs::path source = thespis::test::testData("scenarios");
+    for (const char* name : {"bvh_character.thespis", "tiny_body.bvh"})
+        fs::copy_file(source / name, folder / name, fs::copy_options::overwrite_existing);
+    const Scenario s = loadOrFail(folder / "bvh_character.thespis");
+    ASSERT_FALSE(s.characters.at(0).clips.empty());
+    const ClipAsset& clip = s.characters[0].clips[0];
+    ASSERT_FALSE(clip.file.empty());
+    const fs::path bvh = folder / clip.file;
+
+    ClipFileCache cache;
+    EXPECT_EQ(cache.find(bvh, clip.frameRateOverride), nullptr);
+    auto first = buildRuntime(s, folder, &cache);
+    ASSERT_TRUE(first.ok()) << describe(first.error());
+    EXPECT_NE(cache.find(bvh, clip.frameRateOverride), nullptr);
+    auto second = buildRuntime(s, folder, &cache);
+    ASSERT_TRUE(second.ok());
+    EXPECT_EQ(second->characters[0].warnings, first->characters[0].warnings); // reported from the cache too
+
+    // A newer file on disk is read again.
+    fs::last_write_time(bvh, fs::last_write_time(bvh) + std::chrono::seconds(5));
+    EXPECT_EQ(cache.find(bvh, clip.frameRateOverride), nullptr);
+    cache.clear();
+}
 
 TEST(ScenarioRuntime, BuildsACharacterOnItsBvhSkeleton)
 {
