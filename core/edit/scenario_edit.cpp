@@ -1,0 +1,203 @@
+#include "edit/scenario_edit.h"
+
+#include <string>
+
+namespace thespis::core::edit {
+
+namespace {
+
+using namespace scenario;
+
+std::string where(const ActionPath& p)
+{
+    return "character " + std::to_string(p.character) + ", layer " + std::to_string(p.layer) + ", action "
+           + std::to_string(p.action);
+}
+std::string where(const LayerPath& p)
+{
+    return "character " + std::to_string(p.character) + ", layer " + std::to_string(p.layer);
+}
+std::string where(const CharacterItemPath& p)
+{
+    return "character " + std::to_string(p.character) + ", item " + std::to_string(p.index);
+}
+std::string where(int index) { return "item " + std::to_string(index); }
+
+bool inRange(int index, std::size_t size) { return index >= 0 && std::size_t(index) < size; }
+
+Character* characterAt(Scenario& s, int index)
+{
+    return inRange(index, s.characters.size()) ? &s.characters[std::size_t(index)] : nullptr;
+}
+
+// The list a change's index points into, and the index in it; null when the path leads nowhere.
+std::pair<std::vector<ActionSpec>*, int> listOf(Scenario& s, const ActionPath& p)
+{
+    Character* c = characterAt(s, p.character);
+    if (!c || !inRange(p.layer, c->layers.size()))
+        return {nullptr, 0};
+    return {&c->layers[std::size_t(p.layer)].actions, p.action};
+}
+std::pair<std::vector<Layer>*, int> listOf(Scenario& s, const LayerPath& p)
+{
+    Character* c = characterAt(s, p.character);
+    return {c ? &c->layers : nullptr, p.layer};
+}
+std::pair<std::vector<NamedMask>*, int> listOf(Scenario& s, const MaskChange&) { return {&s.masks, 0}; }
+std::pair<std::vector<Marker>*, int> listOf(Scenario& s, const MarkerChange&) { return {&s.markers, 0}; }
+
+template <class T>
+std::pair<std::vector<T>*, int> itemListOf(Scenario& s, const CharacterItemPath& p, std::vector<T> Character::*member)
+{
+    Character* c = characterAt(s, p.character);
+    return {c ? &(c->*member) : nullptr, p.index};
+}
+
+template <class T>
+Result<void> applyTo(std::vector<T>* list, int index, const std::optional<T>& before, const std::optional<T>& after,
+                     const std::string& at)
+{
+    const auto refuse = [&](const std::string& why) {
+        return makeError(ErrorCode::InvalidArgument, "The edit does not fit the document (" + at + "): " + why + ".");
+    };
+    if (!list)
+        return refuse("no such character or layer");
+    if (!before && !after)
+        return refuse("a change must insert, remove or replace something");
+    if (!before) {
+        if (index < 0 || std::size_t(index) > list->size())
+            return refuse("insert position out of range");
+        list->insert(list->begin() + index, *after);
+        return {};
+    }
+    if (!inRange(index, list->size()))
+        return refuse("index out of range");
+    T& current = (*list)[std::size_t(index)];
+    if (!(current == *before))
+        return refuse("the element is not what the edit expects");
+    if (after)
+        current = *after;
+    else
+        list->erase(list->begin() + index);
+    return {};
+}
+
+Result<void> applyChange(Scenario& s, const Change& change)
+{
+    return std::visit(
+        [&](const auto& c) -> Result<void> {
+            using C = std::decay_t<decltype(c)>;
+            if constexpr (std::is_same_v<C, ActionChange> || std::is_same_v<C, LayerChange>) {
+                auto [list, index] = listOf(s, c.at);
+                return applyTo(list, index, c.before, c.after, where(c.at));
+            } else if constexpr (std::is_same_v<C, MaskChange> || std::is_same_v<C, MarkerChange>) {
+                auto [list, unused] = listOf(s, c);
+                return applyTo(list, c.at, c.before, c.after, where(c.at));
+            } else if constexpr (std::is_same_v<C, GestureChange>) {
+                auto [list, index] = itemListOf(s, c.at, &Character::gestures);
+                return applyTo(list, index, c.before, c.after, "gestures, " + where(c.at));
+            } else if constexpr (std::is_same_v<C, ClipChange>) {
+                auto [list, index] = itemListOf(s, c.at, &Character::clips);
+                return applyTo(list, index, c.before, c.after, "clips, " + where(c.at));
+            } else {
+                Character* character = characterAt(s, c.character);
+                if (!character || character->segmentTags != c.before)
+                    return makeError(ErrorCode::InvalidArgument,
+                                     "The edit does not fit the document (segment tags of character "
+                                         + std::to_string(c.character) + ").");
+                character->segmentTags = c.after;
+                return {};
+            }
+        },
+        change);
+}
+
+Change inverted(const Change& change)
+{
+    return std::visit(
+        [](auto c) -> Change {
+            std::swap(c.before, c.after);
+            return c;
+        },
+        change);
+}
+
+// Where a change acts, and whether it replaces in place: two such changes at the same place of
+// the same kind can merge.
+bool samePlaceReplace(const Change& a, const Change& b)
+{
+    if (a.index() != b.index())
+        return false;
+    return std::visit(
+        [&](const auto& first) {
+            using C = std::decay_t<decltype(first)>;
+            const auto& second = std::get<C>(b);
+            if constexpr (std::is_same_v<C, SegmentTagsChange>)
+                return first.character == second.character;
+            else
+                return first.at == second.at && first.before && first.after && second.before && second.after;
+        },
+        a);
+}
+
+} // namespace
+
+void Edit::append(Edit other)
+{
+    for (Change& change : other.m_changes)
+        m_changes.push_back(std::move(change));
+}
+
+Edit Edit::inverse() const
+{
+    Edit result;
+    for (auto it = m_changes.rbegin(); it != m_changes.rend(); ++it)
+        result.m_changes.push_back(inverted(*it));
+    return result;
+}
+
+Result<void> Edit::apply(scenario::Scenario& scenario) const
+{
+    for (std::size_t i = 0; i < m_changes.size(); ++i) {
+        if (auto ok = applyChange(scenario, m_changes[i]); !ok) {
+            // Take back what was applied, newest first: each of those fitted, so its inverse fits.
+            for (std::size_t k = i; k-- > 0;)
+                (void)applyChange(scenario, inverted(m_changes[k]));
+            return ok;
+        }
+    }
+    return {};
+}
+
+bool Edit::canMergeWith(const Edit& later) const
+{
+    if (m_changes.size() != later.m_changes.size() || m_changes.empty())
+        return false;
+    for (std::size_t i = 0; i < m_changes.size(); ++i)
+        if (!samePlaceReplace(m_changes[i], later.m_changes[i]))
+            return false;
+    return true;
+}
+
+void Edit::mergeWith(const Edit& later)
+{
+    for (std::size_t i = 0; i < m_changes.size(); ++i)
+        std::visit(
+            [&](auto& mine) {
+                using C = std::decay_t<decltype(mine)>;
+                mine.after = std::get<C>(later.m_changes[i]).after;
+            },
+            m_changes[i]);
+}
+
+bool Edit::changesNothing() const
+{
+    for (const Change& change : m_changes) {
+        const bool same = std::visit([](const auto& c) { return c.before == c.after; }, change);
+        if (!same)
+            return false;
+    }
+    return true;
+}
+
+} // namespace thespis::core::edit

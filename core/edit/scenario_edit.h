@@ -1,0 +1,98 @@
+#pragma once
+// Edit: a reversible change to a scenario document (STYLE.md §5), the one way editors and
+// scripts change a Scenario. An edit is a list of changes, each inserting, removing or replacing
+// one element of one of the scenario's lists (an action of a layer, a layer, a mask, a marker, a
+// gesture, a clip) or replacing a character's segment tags. Each change keeps the value before
+// and after, so an edit is undone by applying its inverse, and a drag's many small edits of the
+// same elements merge into one.
+//
+// Rules of apply(): changes run in order; an index must be in range (one past the end for an
+// insert); a change whose `before` does not equal what the document holds is refused (the edit
+// was made for another state of the document); on any failure the changes already applied are
+// undone, so the scenario is left exactly as it was.
+
+#include <optional>
+#include <variant>
+#include <vector>
+
+#include "scenario/scenario.h"
+#include "util/error.h"
+
+namespace thespis::core::edit {
+
+struct LayerPath {
+    int character = 0;
+    int layer = 0;
+    auto operator<=>(const LayerPath&) const = default;
+};
+
+struct ActionPath {
+    int character = 0;
+    int layer = 0;
+    int action = 0;
+    LayerPath layerPath() const { return {character, layer}; }
+    auto operator<=>(const ActionPath&) const = default;
+};
+
+/// An element of a character's list (gestures, clips).
+struct CharacterItemPath {
+    int character = 0;
+    int index = 0;
+    auto operator<=>(const CharacterItemPath&) const = default;
+};
+
+/// Inserts (`before` empty), removes (`after` empty) or replaces the element at `at`.
+template <class T, class Where>
+struct ListChange {
+    Where at{};
+    std::optional<T> before;
+    std::optional<T> after;
+    bool operator==(const ListChange&) const = default;
+};
+
+using ActionChange = ListChange<scenario::ActionSpec, ActionPath>;
+using LayerChange = ListChange<scenario::Layer, LayerPath>;
+using MaskChange = ListChange<scenario::NamedMask, int>;
+using MarkerChange = ListChange<scenario::Marker, int>;
+using GestureChange = ListChange<scenario::Gesture, CharacterItemPath>;
+using ClipChange = ListChange<scenario::ClipAsset, CharacterItemPath>;
+
+struct SegmentTagsChange {
+    int character = 0;
+    std::vector<scene::SegmentTag> before, after;
+    bool operator==(const SegmentTagsChange&) const = default;
+};
+
+using Change = std::variant<ActionChange, LayerChange, MaskChange, MarkerChange, GestureChange, ClipChange,
+                            SegmentTagsChange>;
+
+class Edit {
+public:
+    Edit() = default;
+    explicit Edit(Change change) { m_changes.push_back(std::move(change)); }
+
+    void add(Change change) { m_changes.push_back(std::move(change)); }
+    /// Appends every change of `other` (it runs after this edit's changes).
+    void append(Edit other);
+    const std::vector<Change>& changes() const { return m_changes; }
+    bool empty() const { return m_changes.empty(); }
+
+    /// The edit that takes the document back: changes in reverse order, before and after swapped.
+    Edit inverse() const;
+    /// See the rules at the top of this file.
+    Result<void> apply(scenario::Scenario& scenario) const;
+
+    /// True when `later` replaces the same elements in the same order (no inserts or removes):
+    /// a drag's next step. Then mergeWith() keeps this edit's `before` and takes later's `after`.
+    bool canMergeWith(const Edit& later) const;
+    void mergeWith(const Edit& later);
+    /// True when applying the edit changes nothing (every change replaces a value by an equal one).
+    bool changesNothing() const;
+
+    bool operator==(const Edit&) const = default;
+
+private:
+    std::vector<Change> m_changes;
+};
+
+} // namespace thespis::core::edit
