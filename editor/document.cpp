@@ -4,6 +4,7 @@
 #include <QFileInfo>
 #include <QUndoStack>
 
+#include "editor/commands/edit_command.h"
 #include "editor/qt_conversions.h"
 #include "scenario/scenario_io.h"
 
@@ -16,7 +17,8 @@ constexpr double kOpenEndedPreviewSeconds = 10.0;
 Document::Document(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime, QString filePath,
                    QString baseDir)
     : m_scenario(std::move(scenario)), m_runtime(std::move(runtime)), m_filePath(std::move(filePath)),
-      m_baseDir(std::move(baseDir)), m_undoStack(new QUndoStack(this))
+      m_baseDir(std::move(baseDir)), m_undoStack(new QUndoStack(this)),
+      m_clipCache(std::make_unique<core::scenario::ClipFileCache>())
 {
     connect(m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
 }
@@ -38,6 +40,20 @@ core::Result<std::unique_ptr<Document>> Document::open(const QString& path)
     }
     return std::unique_ptr<Document>(
         new Document(std::move(*scenario), std::move(*runtime), info.absoluteFilePath(), info.absolutePath()));
+}
+
+core::Result<std::unique_ptr<Document>> Document::recover(const QString& recoveryFile, const QString& originalPath,
+                                                          const QString& baseDir)
+{
+    core::Result<core::scenario::Scenario> scenario = core::scenario::loadScenario(toFsPath(recoveryFile));
+    if (!scenario)
+        return scenario.error();
+    auto document = fromScenario(std::move(scenario).value(), baseDir);
+    if (!document)
+        return document.error();
+    (*document)->m_filePath = originalPath.isEmpty() ? QString() : QFileInfo(originalPath).absoluteFilePath();
+    (*document)->setClean(false);
+    return document;
 }
 
 core::Result<std::unique_ptr<Document>> Document::fromScenario(core::scenario::Scenario scenario, const QString& baseDir)
@@ -79,6 +95,105 @@ double Document::previewDuration() const
 bool Document::isModified() const
 {
     return !m_undoStack->isClean();
+}
+
+core::Result<void> Document::edit(core::edit::Edit edit, const QString& text, Merge merge)
+{
+    if (edit.empty() || edit.changesNothing()) {
+        // The last step of a drag may add nothing; it still ends the drag's command.
+        if (merge.finished && m_undoStack->index() > 0)
+            if (auto* top = dynamic_cast<const EditCommand*>(m_undoStack->command(m_undoStack->index() - 1));
+                top && top->id() == merge.key && merge.key >= 0)
+                const_cast<EditCommand*>(top)->finish();
+        return {};
+    }
+    core::scenario::Scenario next = m_scenario;
+    if (auto applied = edit.apply(next); !applied)
+        return applied.error();
+    auto runtime = core::scenario::buildRuntime(next, toFsPath(m_baseDir), m_clipCache.get());
+    if (!runtime)
+        return runtime.error();
+    m_undoStack->push(new EditCommand(*this, std::move(edit), text, merge.key, merge.finished, std::move(next),
+                                      std::move(runtime).value()));
+    return {};
+}
+
+core::Result<void> Document::edit(core::Result<core::edit::Edit> edit, const QString& text, Merge merge)
+{
+    if (!edit)
+        return edit.error();
+    return this->edit(std::move(edit).value(), text, merge);
+}
+
+void Document::apply(const core::edit::Edit& edit)
+{
+    // Undo and redo replay edits that fitted this very state before: a failure is a bug.
+    core::scenario::Scenario next = m_scenario;
+    auto applied = edit.apply(next);
+    Q_ASSERT(applied);
+    auto runtime = core::scenario::buildRuntime(next, toFsPath(m_baseDir), m_clipCache.get());
+    Q_ASSERT(runtime);
+    if (!applied || !runtime)
+        return;
+    install(std::move(next), std::move(runtime).value(), edit);
+}
+
+void Document::install(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime,
+                       const core::edit::Edit& edit)
+{
+    m_scenario = std::move(scenario);
+    m_runtime = std::move(runtime);
+    emit edited(edit);
+}
+
+core::Result<void> Document::saveAs(const QString& path)
+{
+    if (path.isEmpty())
+        return core::makeError(core::ErrorCode::InvalidArgument, "The scenario has no file yet: choose where to save it.");
+    const QFileInfo info(path);
+    core::scenario::Scenario saved = m_scenario;
+    const std::filesystem::path oldBase = toFsPath(m_baseDir), newBase = toFsPath(info.absolutePath());
+    if (oldBase != newBase) {
+        // Relative paths (clips, models, the probe) must name the same files from the new folder.
+        auto rebase = [&](std::string& relative) {
+            if (relative.empty() || std::filesystem::path(relative).is_absolute())
+                return;
+            relative = (oldBase / relative).lexically_normal().lexically_relative(newBase).generic_string();
+        };
+        for (core::scenario::Character& character : saved.characters) {
+            rebase(character.model);
+            for (core::scenario::ClipAsset& clip : character.clips)
+                rebase(clip.file);
+        }
+        rebase(saved.lighting.probe);
+    }
+    if (auto written = core::scenario::saveScenario(toFsPath(info.absoluteFilePath()), saved); !written) {
+        core::Error error = written.error();
+        error.detail = (error.detail.empty() ? std::string() : error.detail + "; ") + "file "
+                       + info.absoluteFilePath().toStdString();
+        return error;
+    }
+    m_scenario = std::move(saved);
+    m_baseDir = info.absolutePath();
+    setFilePath(info.absoluteFilePath());
+    m_undoStack->setClean();
+    return {};
+}
+
+void Document::setClean(bool clean)
+{
+    if (clean)
+        m_undoStack->setClean();
+    else
+        m_undoStack->resetClean();
+}
+
+void Document::setFilePath(const QString& path)
+{
+    if (path == m_filePath)
+        return;
+    m_filePath = path;
+    emit filePathChanged(path);
 }
 
 } // namespace thespis::editor

@@ -1,7 +1,8 @@
 #pragma once
 // Document: one open scenario. Owns the scenario document (core::scenario::Scenario), the file
 // it came from, the runnable schedules built from it (ScenarioRuntime) and its undo history.
-// Views read it; edits will go through its operations and the undo stack (STYLE.md §4, §5).
+// Views read it; every change is a core::edit::Edit pushed through edit() as one undoable
+// command (STYLE.md §4, §5). After each change the runtime is rebuilt and edited() is emitted.
 
 #include <QObject>
 #include <QString>
@@ -9,6 +10,7 @@
 
 #include <memory>
 
+#include "edit/scenario_edit.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_runtime.h"
 #include "util/error.h"
@@ -16,6 +18,13 @@
 class QUndoStack;
 
 namespace thespis::editor {
+
+/// How a change joins the undo history. Steps of one drag carry the same `key` (a CommandId)
+/// and merge into one command; the last step (`finished`) closes it.
+struct Merge {
+    int key = -1;
+    bool finished = true;
+};
 
 class Document : public QObject {
     Q_OBJECT
@@ -25,6 +34,11 @@ public:
     /// Reads a .thespis file and builds its schedules (clip files resolve next to it). Errors
     /// are the reader's or the builder's, with the file name added to the detail.
     static core::Result<std::unique_ptr<Document>> open(const QString& path);
+    /// Reads an autosaved copy (Autosaver) back: the document takes the original file's path
+    /// (empty for a never-saved one) and folder, and starts modified, so that saving writes the
+    /// recovered work where it belongs.
+    static core::Result<std::unique_ptr<Document>> recover(const QString& recoveryFile, const QString& originalPath,
+                                                           const QString& baseDir);
     /// A document over a scenario held in memory and never saved; clip files resolve in
     /// `baseDir`.
     static core::Result<std::unique_ptr<Document>> fromScenario(core::scenario::Scenario scenario,
@@ -53,18 +67,44 @@ public:
     QUndoStack* undoStack() const { return m_undoStack; }
     bool isModified() const;
 
+    /// Pushes `edit` as one undoable command named `text` ("Move 2 Actions"). The edit is tried
+    /// on a copy first: when it does not fit, or the scenario it makes does not build, nothing
+    /// changes and the error says why. An edit that changes nothing pushes nothing.
+    core::Result<void> edit(core::edit::Edit edit, const QString& text, Merge merge = {});
+    /// As edit(), for the Result the document edits return.
+    core::Result<void> edit(core::Result<core::edit::Edit> edit, const QString& text, Merge merge = {});
+
+    /// Writes the scenario to `path` atomically; on success the document takes that path (and its
+    /// folder as base: relative clip, model and probe paths are rewritten to still name the same
+    /// files) and is clean. Errors name the file.
+    core::Result<void> saveAs(const QString& path);
+    core::Result<void> save() { return saveAs(m_filePath); }
+    /// Marks the current state as saved (or, false, as changed: a recovered document).
+    void setClean(bool clean);
+    /// The path a recovered document came from (it keeps its original file path).
+    void setFilePath(const QString& path);
+
 signals:
     void modifiedChanged(bool modified);
+    /// After every change (do, undo, redo), once the runtime is rebuilt.
+    void edited(const core::edit::Edit& edit);
+    void filePathChanged(const QString& path);
 
 private:
+    friend class EditCommand;
     Document(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime, QString filePath,
              QString baseDir);
+    // Applies an edit that is known to fit and rebuilds the runtime (undo / redo).
+    void apply(const core::edit::Edit& edit);
+    void install(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime,
+                 const core::edit::Edit& edit);
 
     core::scenario::Scenario m_scenario;
     core::scenario::ScenarioRuntime m_runtime;
     QString m_filePath;
     QString m_baseDir;
     QUndoStack* m_undoStack = nullptr; // child QObject
+    std::unique_ptr<core::scenario::ClipFileCache> m_clipCache;
 };
 
 } // namespace thespis::editor

@@ -58,6 +58,19 @@ core::Result<void> ScenePreview::setDocument(const Document* document)
     return {};
 }
 
+core::Result<void> ScenePreview::updateDocument(const Document* document)
+{
+    if (m_scene && document && m_scene->setRuntime(document->runtime())) {
+        m_viewport->update();
+        return {};
+    }
+    const double time = m_scene ? m_scene->time() : 0.0;
+    auto rebuilt = setDocument(document);
+    if (rebuilt)
+        setTime(time);
+    return rebuilt;
+}
+
 void ScenePreview::setTime(double seconds)
 {
     if (!m_scene)

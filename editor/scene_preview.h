@@ -32,6 +32,9 @@ public:
     /// Builds the scene of `document` (null clears the view). On failure the view is left empty
     /// and the error says which character or file could not be loaded.
     core::Result<void> setDocument(const Document* document);
+    /// After an edit of `document`: plays its new schedules (rebuilding the scene only when the
+    /// characters themselves changed) and redraws at the current time.
+    core::Result<void> updateDocument(const Document* document);
     /// Poses every character at `seconds` and redraws.
     void setTime(double seconds);
     void setShading(core::render::Shading shading);

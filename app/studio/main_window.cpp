@@ -3,6 +3,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -13,6 +14,9 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScreen>
+#include <QSettings>
+#include <QUndoGroup>
+#include <QUndoStack>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTimer>
@@ -21,8 +25,13 @@
 
 #include <algorithm>
 
+#include "editor/autosave.h"
+#include "editor/clip_library_panel.h"
+#include "editor/curve_panel.h"
 #include "editor/error_dialog.h"
+#include "editor/joint_mask_panel.h"
 #include "editor/scenario_tree_model.h"
+#include "editor/timeline_panel.h"
 #include "widgets/osg_viewport.h"
 #include "widgets/pose_view.h"
 #include "widgets/transport_bar.h"
@@ -33,6 +42,10 @@ namespace {
 // Framing samples the whole timeline this often (seconds); 10 Hz catches every pose extreme
 // a person could see without costing noticeable time at load.
 constexpr double kBoundsSampleStep = 0.1;
+constexpr int kMaxRecentFiles = 8;
+const QString kRecentFilesKey = QStringLiteral("recentFiles");
+const QString kWindowStateKey = QStringLiteral("mainWindow/state");
+const QString kWindowGeometryKey = QStringLiteral("mainWindow/geometry");
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
@@ -94,9 +107,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     });
     connect(m_clock, &editor::PlaybackClock::durationChanged, m_transport, &widgets::TransportBar::setDuration);
 
+    m_autosaver = new editor::Autosaver(this);
+    connect(m_autosaver, &editor::Autosaver::failed, this, [this](const QString& message) { statusBar()->showMessage(message, 10000); });
+
     createActions();
     createShadingActions();
     createOutlineDock();
+    createEditorDocks();
     createMenus();
     createStatusBar();
 
@@ -107,14 +124,22 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     // Most of the screen, and enough for the outline's columns beside a usable preview.
     const QRect screen = this->screen() ? this->screen()->availableGeometry() : QRect(0, 0, 1600, 1000);
     resize(std::min(1500, screen.width() * 9 / 10), std::min(900, screen.height() * 9 / 10));
-    resizeDocks({m_outlineDock}, {std::min(690, width() / 2)}, Qt::Horizontal);
+    resizeDocks({m_outlineDock}, {std::min(420, width() / 3)}, Qt::Horizontal);
+    resizeDocks({m_editorDocks.front()}, {std::min(300, height() / 3)}, Qt::Vertical);
+    const QSettings settings;
+    restoreGeometry(settings.value(kWindowGeometryKey).toByteArray());
+    restoreState(settings.value(kWindowStateKey).toByteArray());
     setDocument(nullptr);
 }
 
 MainWindow::~MainWindow()
 {
-    // The model and samplers read the document: detach them before it goes.
+    // The model, panels and samplers read the document: detach them before it goes.
     m_model->setDocument(nullptr);
+    m_timeline->setDocument(nullptr);
+    m_curves->setDocument(nullptr);
+    m_masks->setDocument(nullptr);
+    m_library->setDocument(nullptr);
     m_samplers.clear();
     if (m_preview)
         (void)m_preview->setDocument(nullptr);
@@ -122,6 +147,27 @@ MainWindow::~MainWindow()
 
 void MainWindow::createActions()
 {
+    m_newAction = new QAction(tr("&New"), this);
+    m_newAction->setShortcut(QKeySequence::New);
+    m_newAction->setStatusTip(tr("Start a new scenario with one character on the built-in humanoid"));
+    connect(m_newAction, &QAction::triggered, this, &MainWindow::onNew);
+
+    m_saveAction = new QAction(tr("&Save"), this);
+    m_saveAction->setShortcut(QKeySequence::Save);
+    connect(m_saveAction, &QAction::triggered, this, &MainWindow::save);
+    m_saveAsAction = new QAction(tr("Save &As…"), this);
+    m_saveAsAction->setShortcut(QKeySequence::SaveAs);
+    connect(m_saveAsAction, &QAction::triggered, this, &MainWindow::onSaveAs);
+
+    auto* undoGroup = new QUndoGroup(this);
+    m_undoAction = undoGroup->createUndoAction(this, tr("&Undo"));
+    m_undoAction->setShortcut(QKeySequence::Undo);
+    m_undoAction->setObjectName(QStringLiteral("undo"));
+    m_redoAction = undoGroup->createRedoAction(this, tr("&Redo"));
+    m_redoAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence::Redo});
+    m_redoAction->setObjectName(QStringLiteral("redo"));
+    setProperty("undoGroup", QVariant::fromValue(static_cast<QObject*>(undoGroup)));
+
     m_openAction = new QAction(tr("&Open…"), this);
     m_openAction->setShortcut(QKeySequence::Open);
     m_openAction->setStatusTip(tr("Open a scenario file (.thespis)"));
@@ -179,10 +225,33 @@ void MainWindow::createActions()
 void MainWindow::createMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(m_newAction);
     file->addAction(m_openAction);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
+    updateRecentMenu();
     file->addAction(m_reloadAction);
     file->addSeparator();
+    file->addAction(m_saveAction);
+    file->addAction(m_saveAsAction);
+    file->addSeparator();
     file->addAction(m_quitAction);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addAction(m_undoAction);
+    edit->addAction(m_redoAction);
+    edit->addSeparator();
+    edit->addAction(m_timeline->copyAction());
+    edit->addAction(m_timeline->pasteAction());
+    edit->addAction(m_timeline->duplicateAction());
+    edit->addAction(m_timeline->deleteAction());
+    edit->addAction(m_timeline->rippleDeleteAction());
+    edit->addAction(m_timeline->splitAction());
+    edit->addSeparator();
+    edit->addAction(m_timeline->snapAction());
+    for (QAction* action : {m_timeline->copyAction(), m_timeline->pasteAction(), m_timeline->duplicateAction(),
+                            m_timeline->deleteAction(), m_timeline->rippleDeleteAction(), m_timeline->splitAction()})
+        addAction(action);
 
     QMenu* playback = menuBar()->addMenu(tr("&Playback"));
     playback->addAction(m_playPauseAction);
@@ -197,6 +266,8 @@ void MainWindow::createMenus()
     view->addSection(tr("Stick figures"));
     view->addActions(m_projectionGroup->actions());
     view->addSeparator();
+    for (QDockWidget* dock : m_editorDocks)
+        view->addAction(dock->toggleViewAction());
     view->addAction(m_outlineDock->toggleViewAction());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -258,6 +329,48 @@ void MainWindow::createOutlineDock()
     addDockWidget(Qt::LeftDockWidgetArea, m_outlineDock);
 }
 
+void MainWindow::createEditorDocks()
+{
+    auto dock = [this](const QString& title, const QString& name, QWidget* content, Qt::DockWidgetArea area) {
+        auto* d = new QDockWidget(title, this);
+        d->setObjectName(name);
+        d->setWidget(content);
+        addDockWidget(area, d);
+        m_editorDocks.push_back(d);
+        return d;
+    };
+    m_timeline = new editor::TimelinePanel(this);
+    m_curves = new editor::CurvePanel(this);
+    m_masks = new editor::JointMaskPanel(this);
+    m_library = new editor::ClipLibraryPanel(this);
+    QDockWidget* timelineDock = dock(tr("Timeline"), QStringLiteral("timelineDock"), m_timeline, Qt::BottomDockWidgetArea);
+    QDockWidget* curveDock = dock(tr("Curve Editor"), QStringLiteral("curveDock"), m_curves, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(timelineDock, curveDock);
+    timelineDock->raise();
+    QDockWidget* maskDock = dock(tr("Joint Mask"), QStringLiteral("maskDock"), m_masks, Qt::RightDockWidgetArea);
+    QDockWidget* libraryDock = dock(tr("Clip Library"), QStringLiteral("clipLibraryDock"), m_library, Qt::LeftDockWidgetArea);
+    tabifyDockWidget(m_outlineDock, libraryDock);
+    m_outlineDock->raise();
+    (void)maskDock;
+
+    for (editor::TimelinePanel* t : {m_timeline})
+        connect(t, &editor::TimelinePanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    connect(m_curves, &editor::CurvePanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    connect(m_masks, &editor::JointMaskPanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    connect(m_timeline, &editor::TimelinePanel::seekRequested, m_clock, &editor::PlaybackClock::seek);
+    connect(m_timeline, &editor::TimelinePanel::currentActionChanged, this,
+            [this](std::optional<core::edit::ActionPath> action) {
+                m_curves->setAction(action);
+                if (action && m_document) {
+                    const auto& spec = m_document->scenario().characters[std::size_t(action->character)]
+                                           .layers[std::size_t(action->layer)].actions[std::size_t(action->action)];
+                    if (!spec.mask.empty())
+                        m_masks->showMask(QString::fromStdString(spec.mask));
+                }
+            });
+    connect(m_timeline, &editor::TimelinePanel::actionActivated, this, [curveDock] { curveDock->raise(); });
+}
+
 void MainWindow::createStatusBar()
 {
     m_fileLabel = new QLabel(this);
@@ -280,6 +393,7 @@ bool MainWindow::openScenario(const QString& path)
         return false;
     }
     setDocument(std::move(*document));
+    addRecentFile(m_document->filePath());
     return true;
 }
 
@@ -287,8 +401,28 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
 {
     m_clock->pause();
     m_model->setDocument(nullptr);
+    m_timeline->setDocument(nullptr);
+    m_curves->setDocument(nullptr);
+    m_masks->setDocument(nullptr);
+    m_library->setDocument(nullptr);
+    m_autosaver->setDocument(nullptr);
     m_samplers.clear();
+    auto* undoGroup = qobject_cast<QUndoGroup*>(property("undoGroup").value<QObject*>());
+    if (m_document)
+        undoGroup->removeStack(m_document->undoStack());
     m_document = std::move(document);
+    if (m_document) {
+        undoGroup->addStack(m_document->undoStack());
+        undoGroup->setActiveStack(m_document->undoStack());
+        connect(m_document.get(), &editor::Document::edited, this, &MainWindow::onDocumentEdited);
+        connect(m_document.get(), &editor::Document::modifiedChanged, this, &MainWindow::updateTitle);
+        connect(m_document.get(), &editor::Document::filePathChanged, this, &MainWindow::updateTitle);
+        m_timeline->setDocument(m_document.get());
+        m_curves->setDocument(m_document.get());
+        m_masks->setDocument(m_document.get());
+        m_library->setDocument(m_document.get());
+        m_autosaver->setDocument(m_document.get());
+    }
 
     std::vector<widgets::PoseFigure> figures;
     bool haveBounds = false;
@@ -336,6 +470,8 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
     const bool open = m_document != nullptr;
     m_transport->setEnabled(open);
     m_reloadAction->setEnabled(open && !m_document->filePath().isEmpty());
+    m_saveAction->setEnabled(open);
+    m_saveAsAction->setEnabled(open);
     m_playPauseAction->setEnabled(open);
     m_toStartAction->setEnabled(open);
     m_loopAction->setEnabled(open);
@@ -414,6 +550,8 @@ void MainWindow::onTimeChanged(double seconds)
         m_preview->setTime(seconds);
     m_transport->setTime(seconds);
     m_model->setTime(seconds);
+    m_timeline->setTime(seconds);
+    m_curves->setTime(seconds);
     ++m_framesSinceFps;
 }
 
@@ -451,10 +589,181 @@ void MainWindow::updateFps()
 void MainWindow::updateTitle()
 {
     if (!m_document) {
+        setWindowModified(false);
         setWindowTitle(tr("Thespis Studio"));
         return;
     }
-    setWindowTitle(tr("%1 — Thespis Studio").arg(m_document->scenarioName()));
+    // [*] is where Qt shows the modified mark.
+    setWindowTitle(tr("%1[*] — Thespis Studio").arg(m_document->scenarioName()));
+    setWindowModified(m_document->isModified());
+    m_fileLabel->setText(m_document->fileName());
+    m_fileLabel->setToolTip(QDir::toNativeSeparators(m_document->filePath()));
+}
+
+void MainWindow::rebuildSamplers()
+{
+    // The samplers point into the runtime, which an edit replaces.
+    m_samplers.clear();
+    if (!m_document)
+        return;
+    m_samplers.reserve(m_document->runtime().characters.size());
+    for (const core::scenario::CharacterRuntime& character : m_document->runtime().characters)
+        m_samplers.emplace_back(character);
+}
+
+void MainWindow::onDocumentEdited()
+{
+    rebuildSamplers();
+    m_model->setDocument(m_document.get());
+    m_outline->expandAll();
+    if (m_preview)
+        if (auto updated = m_preview->updateDocument(m_document.get()); !updated)
+            statusBar()->showMessage(tr("The 3D view is empty: %1").arg(QString::fromStdString(updated.error().message)));
+    m_clock->setDuration(m_document->previewDuration());
+    m_transport->setDuration(m_clock->duration());
+    onTimeChanged(m_clock->time());
+}
+
+void MainWindow::onNew()
+{
+    if (!maybeSave())
+        return;
+    core::scenario::Scenario scenario;
+    scenario.name = tr("New scenario").toStdString();
+    scenario.duration = 10 * core::TicksPerSecond;
+    core::scenario::Character actor;
+    actor.name = tr("Actor").toStdString();
+    actor.skeleton = "hanim-25";
+    core::scenario::Layer body;
+    body.name = "body";
+    core::scenario::Layer face;
+    face.name = "face";
+    face.kind = core::scenario::LayerKind::Face;
+    actor.layers = {body, face};
+    scenario.characters.push_back(actor);
+    auto document = editor::Document::fromScenario(std::move(scenario), QDir::homePath());
+    if (!document) {
+        editor::showError(this, document.error(), tr("Could not start a new scenario."));
+        return;
+    }
+    setDocument(std::move(*document));
+}
+
+bool MainWindow::save()
+{
+    if (!m_document)
+        return false;
+    if (m_document->filePath().isEmpty())
+        return onSaveAs();
+    return saveAs(m_document->filePath());
+}
+
+bool MainWindow::saveAs(const QString& path)
+{
+    if (!m_document)
+        return false;
+    if (auto saved = m_document->saveAs(path); !saved) {
+        editor::showError(this, saved.error(), tr("Could not save “%1”.").arg(QFileInfo(path).fileName()));
+        return false;
+    }
+    m_autosaver->discard();
+    addRecentFile(m_document->filePath());
+    m_reloadAction->setEnabled(true);
+    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(m_document->filePath())), 5000);
+    updateTitle();
+    return true;
+}
+
+bool MainWindow::onSaveAs()
+{
+    if (!m_document)
+        return false;
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Scenario As"), m_document->filePath(),
+                                                tr("Thespis scenarios (*.thespis)"));
+    if (path.isEmpty())
+        return false;
+    if (!path.endsWith(QStringLiteral(".thespis")))
+        path += QStringLiteral(".thespis");
+    return saveAs(path);
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!m_document || !m_document->isModified())
+        return true;
+    const auto answer = QMessageBox::question(this, tr("Unsaved Changes"),
+                                              tr("“%1” has changes that are not saved. Save them?").arg(m_document->fileName()),
+                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(kWindowGeometryKey, saveGeometry());
+    settings.setValue(kWindowStateKey, saveState());
+    m_autosaver->discard(); // a clean close: nothing to recover
+    event->accept();
+}
+
+void MainWindow::addRecentFile(const QString& path)
+{
+    QSettings settings;
+    QStringList files = settings.value(kRecentFilesKey).toStringList();
+    files.removeAll(path);
+    files.prepend(path);
+    while (files.size() > kMaxRecentFiles)
+        files.removeLast();
+    settings.setValue(kRecentFilesKey, files);
+    updateRecentMenu();
+}
+
+void MainWindow::updateRecentMenu()
+{
+    if (!m_recentMenu)
+        return;
+    m_recentMenu->clear();
+    const QStringList files = QSettings().value(kRecentFilesKey).toStringList();
+    for (const QString& file : files)
+        m_recentMenu->addAction(QFileInfo(file).fileName(), this, [this, file] {
+            if (maybeSave())
+                openScenario(file);
+        })->setStatusTip(QDir::toNativeSeparators(file));
+    m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+bool MainWindow::offerRecovery()
+{
+    const QList<editor::Autosaver::Recovery> found = editor::Autosaver::pendingRecoveries();
+    if (found.isEmpty())
+        return false;
+    const editor::Autosaver::Recovery& newest = found.front();
+    const QString name = newest.originalPath.isEmpty() ? tr("an unsaved scenario") : QFileInfo(newest.originalPath).fileName();
+    const auto answer = QMessageBox::question(
+        this, tr("Recover Unsaved Work"),
+        tr("Thespis Studio did not close properly. Recover the changes to %1 autosaved at %2?")
+            .arg(name, QLocale().toString(newest.savedAt.toLocalTime(), QLocale::ShortFormat)),
+        QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
+    bool recovered = false;
+    if (answer == QMessageBox::Yes) {
+        auto document = editor::Document::recover(newest.recoveryFile, newest.originalPath, newest.baseDir);
+        if (document) {
+            setDocument(std::move(*document));
+            statusBar()->showMessage(tr("Recovered %1; save it to keep it.").arg(name));
+            recovered = true;
+        } else {
+            editor::showError(this, document.error(), tr("Could not recover %1.").arg(name));
+        }
+    }
+    for (const editor::Autosaver::Recovery& recovery : found)
+        editor::Autosaver::removeRecovery(recovery);
+    return recovered;
 }
 
 } // namespace thespis::studio

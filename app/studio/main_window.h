@@ -1,9 +1,10 @@
 #pragma once
 // MainWindow: the studio's window. Shows one scenario posed at the playback clock's time: the
 // characters' bodies lit with PRT in a 3D viewport (first tab) and their skeletons as stick
-// figures (second tab), the characters / layers / actions outline (a dock), the transport bar,
-// and the file and preview rate in the status bar. Owns the open Document, the clock, the 3D
-// preview and one PoseSampler per character.
+// figures (second tab), the transport bar, and docks for the timeline, the curve editor, the
+// joint-mask editor, the clip library and the scenario outline. Owns the open Document, the
+// clock, the 3D preview, one PoseSampler per character and the autosaver; File and Edit menus
+// (new / open / save / recent, undo / redo); the dock layout is kept in QSettings.
 
 #include <QElapsedTimer>
 #include <QMainWindow>
@@ -20,12 +21,18 @@ class QAction;
 class QActionGroup;
 class QDockWidget;
 class QLabel;
+class QMenu;
 class QTabWidget;
 class QTimer;
 class QTreeView;
 
 namespace thespis::editor {
+class Autosaver;
+class ClipLibraryPanel;
+class CurvePanel;
+class JointMaskPanel;
 class ScenarioTreeModel;
+class TimelinePanel;
 }
 namespace thespis::widgets {
 class OsgViewport;
@@ -56,11 +63,37 @@ public:
     widgets::TransportBar* transportBar() const { return m_transport; }
     QTreeView* outlineView() const { return m_outline; }
     editor::ScenarioTreeModel* outlineModel() const { return m_model; }
+    editor::TimelinePanel* timeline() const { return m_timeline; }
+    editor::CurvePanel* curveEditor() const { return m_curves; }
+    editor::JointMaskPanel* maskEditor() const { return m_masks; }
+    editor::ClipLibraryPanel* clipLibrary() const { return m_library; }
+    editor::Autosaver* autosaver() const { return m_autosaver; }
+    QAction* undoAction() const { return m_undoAction; }
+    QAction* redoAction() const { return m_redoAction; }
+
+    /// Saves to the document's file, asking for one when it has none; false when not saved.
+    bool save();
+    bool saveAs(const QString& path);
+    /// Offers the work an earlier, crashed session autosaved (a question over the window);
+    /// returns true when a document was recovered.
+    bool offerRecovery();
+    /// Adds `path` to the top of File ▸ Open Recent.
+    void addRecentFile(const QString& path);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 private:
     void createActions();
     void createMenus();
     void createOutlineDock();
+    void createEditorDocks();
+    void onNew();
+    bool onSaveAs();
+    void updateRecentMenu();
+    bool maybeSave();
+    void onDocumentEdited();
+    void rebuildSamplers();
     void createStatusBar();
     void createShadingActions();
     void onOpen();
@@ -84,10 +117,22 @@ private:
     widgets::TransportBar* m_transport = nullptr;
     QTreeView* m_outline = nullptr;
     QDockWidget* m_outlineDock = nullptr;
+    editor::TimelinePanel* m_timeline = nullptr;
+    editor::CurvePanel* m_curves = nullptr;
+    editor::JointMaskPanel* m_masks = nullptr;
+    editor::ClipLibraryPanel* m_library = nullptr;
+    editor::Autosaver* m_autosaver = nullptr;
+    QList<QDockWidget*> m_editorDocks;
+    QMenu* m_recentMenu = nullptr;
     QLabel* m_fileLabel = nullptr;
     QLabel* m_fpsLabel = nullptr;
 
+    QAction* m_newAction = nullptr;
     QAction* m_openAction = nullptr;
+    QAction* m_saveAction = nullptr;
+    QAction* m_saveAsAction = nullptr;
+    QAction* m_undoAction = nullptr;
+    QAction* m_redoAction = nullptr;
     QAction* m_reloadAction = nullptr;
     QAction* m_quitAction = nullptr;
     QAction* m_playPauseAction = nullptr;

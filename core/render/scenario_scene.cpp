@@ -69,6 +69,24 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
     return self;
 }
 
+Result<void> ScenarioScene::setRuntime(scenario::ScenarioRuntime runtime)
+{
+    if (runtime.characters.size() != m_performers.size())
+        return makeError(ErrorCode::InvalidArgument, "The scenario's characters changed: the scene must be rebuilt.");
+    for (std::size_t i = 0; i < m_performers.size(); ++i) {
+        const scenario::CharacterRuntime& old = *m_performers[i].runtime;
+        const scenario::CharacterRuntime& next = runtime.characters[i];
+        if (next.name != old.name || !(*next.skeleton.frameLayout() == *old.skeleton.frameLayout()))
+            return makeError(ErrorCode::InvalidArgument,
+                             "Character \"" + next.name + "\" changed its skeleton: the scene must be rebuilt.");
+    }
+    m_runtime = std::move(runtime);
+    for (std::size_t i = 0; i < m_performers.size(); ++i)
+        m_performers[i].runtime = &m_runtime.characters[i];
+    setTime(m_time);
+    return {};
+}
+
 void ScenarioScene::setTime(double seconds)
 {
     m_time = seconds;

@@ -47,6 +47,10 @@ public:
     /// joints with their body); one sentence each.
     const std::vector<std::string>& warnings() const { return m_warnings; }
 
+    /// Plays a new runtime of the same scenario (after an edit): the characters and their
+    /// skeletons must be the same; otherwise an error says so and the scene must be rebuilt.
+    Result<void> setRuntime(scenario::ScenarioRuntime runtime);
+
     /// Poses every character at `seconds` on the timeline (no allocation).
     void setTime(double seconds);
     double time() const { return m_time; }

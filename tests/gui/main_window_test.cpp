@@ -98,7 +98,9 @@ void MainWindowTest::showsTheScenarioInTitleAndStatusBar()
 {
     const auto& scenario = m_window->document()->scenario();
     QVERIFY(!scenario.characters.empty());
-    QCOMPARE(m_window->windowTitle(), QString::fromStdString(scenario.name) + QStringLiteral(" — Thespis Studio"));
+    // "[*]" is where Qt shows the unsaved-changes mark.
+    QCOMPARE(m_window->windowTitle(), QString::fromStdString(scenario.name) + QStringLiteral("[*] — Thespis Studio"));
+    QVERIFY(!m_window->isWindowModified());
     auto* fileLabel = m_window->findChild<QLabel*>(QStringLiteral("fileLabel"));
     QVERIFY(fileLabel);
     QCOMPARE(fileLabel->text(), QFileInfo(m_scenarioPath).fileName());

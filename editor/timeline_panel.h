@@ -1,0 +1,86 @@
+#pragma once
+// TimelinePanel: the timeline editor. Shows one track per character and layer with its actions
+// as clips (widgets::TimelineView), the markers and the playhead, and turns the view's intents
+// (move, trim, fade, drop a clip from the library, mute / solo / lock, markers, scrub) into
+// undoable edits of the document; a drag is one undo step. Also owns the edit actions that work
+// on the timeline selection: delete, ripple delete, copy, paste, duplicate, split at the playhead.
+
+#include <QWidget>
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "edit/document_edits.h"
+
+class QAction;
+class QToolButton;
+
+namespace thespis::widgets {
+class TimelineView;
+}
+
+namespace thespis::editor {
+
+class Document;
+
+class TimelinePanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit TimelinePanel(QWidget* parent = nullptr);
+
+    void setDocument(Document* document);
+    /// The playback time shown by the playhead (seconds).
+    void setTime(double seconds);
+
+    widgets::TimelineView* view() const { return m_view; }
+    /// The actions selected on the timeline, in timeline order.
+    std::vector<core::edit::ActionPath> selectedActions() const;
+    void selectActions(const std::vector<core::edit::ActionPath>& actions);
+    /// The clip id the view shows for an action (tests drive the view with it), or -1.
+    int clipId(const core::edit::ActionPath& action) const;
+
+    QAction* deleteAction() const { return m_delete; }
+    QAction* rippleDeleteAction() const { return m_rippleDelete; }
+    QAction* copyAction() const { return m_copy; }
+    QAction* pasteAction() const { return m_paste; }
+    QAction* duplicateAction() const { return m_duplicate; }
+    QAction* splitAction() const { return m_split; }
+    QAction* snapAction() const { return m_snap; }
+
+signals:
+    void seekRequested(double seconds);
+    /// The first selected action (the curve editor shows it), or none.
+    void currentActionChanged(std::optional<core::edit::ActionPath> action);
+    void actionActivated(core::edit::ActionPath action);
+    void problem(const QString& message);
+
+private:
+    void refresh();
+    void report(const core::Result<void>& result);
+    std::vector<core::edit::ActionPath> pathsOf(const QList<int>& ids) const;
+    void onDelete(bool ripple);
+    void onCopy();
+    void onPaste();
+    void onDuplicate();
+    void onSplit();
+
+    Document* m_document = nullptr;
+    widgets::TimelineView* m_view = nullptr;
+    std::vector<core::edit::LayerPath> m_tracks;     // per view track
+    std::vector<core::edit::ActionPath> m_clipPaths; // per view clip id
+    qint64 m_dragApplied = 0;                        // the part of a move drag already applied
+    core::Tick m_playhead = 0;
+    // Copied actions with their layer, start times relative to the earliest.
+    std::vector<std::pair<core::edit::LayerPath, core::scenario::ActionSpec>> m_clipboard;
+
+    QAction* m_delete = nullptr;
+    QAction* m_rippleDelete = nullptr;
+    QAction* m_copy = nullptr;
+    QAction* m_paste = nullptr;
+    QAction* m_duplicate = nullptr;
+    QAction* m_split = nullptr;
+    QAction* m_snap = nullptr;
+};
+
+} // namespace thespis::editor

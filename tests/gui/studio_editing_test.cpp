@@ -1,0 +1,316 @@
+// The studio's editors driven as a user would, on the real window: drop a clip from the library
+// onto the timeline, move and trim it with the mouse, undo back to the original document and
+// redo forward; change a curve preset; paint a joint mask; save and reopen; recover autosaved
+// work after the studio process is killed with SIGKILL. Each editor leaves a screenshot.
+
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QMimeData>
+#include <QProcess>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+#include <cmath>
+#include <iostream>
+
+#include "edit/document_edits.h"
+#include "editor/autosave.h"
+#include "editor/clip_library_panel.h"
+#include "editor/curve_panel.h"
+#include "editor/document.h"
+#include "editor/joint_mask_panel.h"
+#include "editor/timeline_panel.h"
+#include "main_window.h"
+#include "scenario/scenario_io.h"
+#include "widgets/joint_mask_view.h"
+#include "widgets/timeline_view.h"
+
+using namespace thespis;
+using core::edit::ActionPath;
+
+namespace {
+
+QString demoPath() { return QStringLiteral(THESPIS_RESOURCES "/demo.thespis"); }
+
+void saveScreenshot(QWidget* widget, const QString& name)
+{
+    QDir().mkpath(QStringLiteral(THESPIS_SCREENSHOT_DIR));
+    QVERIFY(widget->grab().save(QStringLiteral(THESPIS_SCREENSHOT_DIR "/") + name));
+}
+
+// Drags with the left button in small steps, as a hand would.
+void drag(QWidget* target, QPoint from, QPoint to, Qt::KeyboardModifiers modifiers = {})
+{
+    QTest::mousePress(target, Qt::LeftButton, modifiers, from);
+    for (int i = 1; i <= 8; ++i)
+        QTest::mouseMove(target, from + (to - from) * i / 8);
+    QTest::mouseRelease(target, Qt::LeftButton, modifiers, to);
+}
+
+const core::scenario::ActionSpec& actionAt(const editor::Document& document, ActionPath p)
+{
+    return document.scenario().characters[std::size_t(p.character)].layers[std::size_t(p.layer)].actions[std::size_t(p.action)];
+}
+
+// The child side of the crash test: a studio that opens a scenario, edits it, autosaves and
+// then waits to be killed.
+int runCrashChild(int argc, char** argv)
+{
+    QApplication app(argc, argv);
+    studio::MainWindow window;
+    if (!window.openScenario(QString::fromLocal8Bit(argv[2])))
+        return 2;
+    window.autosaver()->setInterval(100);
+    QObject::connect(window.autosaver(), &editor::Autosaver::autosaved, [](const QString& file) {
+        std::cout << "AUTOSAVED " << file.toStdString() << std::endl;
+    });
+    editor::Document& document = *window.document();
+    auto edit = core::edit::moveActions(document.scenario(), std::vector<ActionPath>{{0, 0, 1}}, core::TicksPerSecond);
+    if (!document.edit(edit, QStringLiteral("Move")))
+        return 3;
+    return app.exec();
+}
+
+} // namespace
+
+class StudioEditingTest : public QObject {
+    Q_OBJECT
+private slots:
+    void init();
+    void cleanup();
+    void dropMoveTrimThenUndoAndRedo();
+    void curvePresetChangesTheEvaluatedWeights();
+    void paintingAMaskSetsJointWeights();
+    void saveAndReopenGiveTheSameDocument();
+    void autosavedWorkSurvivesKill9();
+
+private:
+    std::unique_ptr<studio::MainWindow> m_window;
+    QTemporaryDir m_dir;
+};
+
+void StudioEditingTest::init()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings().clear();
+    m_window = std::make_unique<studio::MainWindow>();
+    m_window->resize(1500, 950);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QVERIFY(m_window->openScenario(demoPath()));
+}
+
+void StudioEditingTest::cleanup()
+{
+    m_window.reset();
+}
+
+void StudioEditingTest::dropMoveTrimThenUndoAndRedo()
+{
+    editor::Document& document = *m_window->document();
+    const core::scenario::Scenario original = document.scenario();
+    editor::TimelinePanel* timeline = m_window->timeline();
+    widgets::TimelineView* view = timeline->view();
+    view->findChild<QWidget*>(); // make sure it is laid out
+    timeline->parentWidget()->findChild<QWidget*>();
+    qobject_cast<QDockWidget*>(timeline->parentWidget())->raise();
+    view->setPixelsPerSecond(80);
+    QApplication::processEvents();
+
+    // 1. Drop "nod" from the clip library onto Antigone's body track at about 9 s. The drag's
+    //    data is what the library itself hands to Qt's drag and drop.
+    editor::ClipLibraryPanel* library = m_window->clipLibrary();
+    QTreeWidgetItem* nod = library->clipItem(QStringLiteral("Antigone"), QStringLiteral("nod"));
+    QVERIFY(nod);
+    std::unique_ptr<QMimeData> mime(library->model()->mimeData({library->indexFromItem(nod)}));
+    QVERIFY(mime && mime->hasFormat(QString::fromLatin1(widgets::TimelineView::ClipMimeType)));
+    int antigoneBody = -1;
+    for (int t = 0; t < view->tracks().size(); ++t)
+        if (view->tracks()[t].group == QStringLiteral("Antigone") && view->tracks()[t].name == QStringLiteral("body"))
+            antigoneBody = t;
+    QVERIFY(antigoneBody >= 0);
+    const QPoint dropAt(view->xForTime(9 * core::TicksPerSecond), view->trackRect(antigoneBody).center().y());
+    QDragEnterEvent enter(dropAt, Qt::CopyAction, mime.get(), Qt::LeftButton, {});
+    QApplication::sendEvent(view->viewport(), &enter);
+    QDragMoveEvent move(dropAt, Qt::CopyAction, mime.get(), Qt::LeftButton, {});
+    QApplication::sendEvent(view->viewport(), &move);
+    QDropEvent drop(dropAt, Qt::CopyAction, mime.get(), Qt::LeftButton, {});
+    QApplication::sendEvent(view->viewport(), &drop);
+    const ActionPath added{1, 0, int(original.characters[1].layers[0].actions.size())};
+    QCOMPARE(document.scenario().characters[1].layers[0].actions.size(), original.characters[1].layers[0].actions.size() + 1);
+    QCOMPARE(QString::fromStdString(actionAt(document, added).clip), QStringLiteral("nod"));
+    QCOMPARE(actionAt(document, added).start, 9 * core::TicksPerSecond); // snapped to a frame: 9 s exactly
+    QCOMPARE(document.undoStack()->count(), 1);
+    const core::scenario::Scenario afterDrop = document.scenario();
+
+    // 2. Move it 1 s earlier with the mouse: one undo step however many mouse moves.
+    int id = timeline->clipId(added);
+    QVERIFY(id >= 0);
+    QRect clip = view->clipRect(id);
+    const QPoint grab = clip.center() + QPoint(0, 6);
+    drag(view->viewport(), grab, grab - QPoint(80, 0));
+    QCOMPARE(actionAt(document, added).start, 8 * core::TicksPerSecond);
+    QCOMPARE(document.undoStack()->count(), 2);
+    const core::scenario::Scenario afterMove = document.scenario();
+
+    // 3. Trim its end 0.5 s shorter by dragging the right edge.
+    const auto before = core::edit::actionSpan(document.scenario(), document.runtime(), added);
+    QVERIFY(before);
+    clip = view->clipRect(id);
+    const QPoint edge(clip.right() - 1, clip.center().y() + 6);
+    drag(view->viewport(), edge, edge - QPoint(40, 0));
+    const auto after = core::edit::actionSpan(document.scenario(), document.runtime(), added);
+    QVERIFY(after);
+    QCOMPARE(after->start, before->start);
+    QCOMPARE(after->end, before->end - core::TicksPerSecond / 2);
+    QCOMPARE(document.undoStack()->count(), 3);
+    QVERIFY(m_window->isWindowModified());
+    const core::scenario::Scenario afterTrim = document.scenario();
+    saveScreenshot(m_window.get(), QStringLiteral("studio_timeline_editing.png"));
+    saveScreenshot(view, QStringLiteral("timeline_panel.png"));
+
+    // 4. Undo everything: the original document, unmodified; redo: each state again.
+    m_window->undoAction()->trigger();
+    QVERIFY(document.scenario() == afterMove);
+    m_window->undoAction()->trigger();
+    QVERIFY(document.scenario() == afterDrop);
+    m_window->undoAction()->trigger();
+    QVERIFY(document.scenario() == original);
+    QVERIFY(!document.isModified());
+    QVERIFY(!m_window->isWindowModified());
+    m_window->redoAction()->trigger();
+    m_window->redoAction()->trigger();
+    m_window->redoAction()->trigger();
+    QVERIFY(document.scenario() == afterTrim);
+    // The schedules follow: the runtime plays the nod at 8.2 s.
+    const auto span = core::edit::actionSpan(document.scenario(), document.runtime(), added);
+    QVERIFY(span);
+    QCOMPARE(span->start, 8 * core::TicksPerSecond);
+}
+
+void StudioEditingTest::curvePresetChangesTheEvaluatedWeights()
+{
+    editor::Document& document = *m_window->document();
+    const ActionPath wave{0, 0, 1}; // creon_wave: a cubic ADSR
+    m_window->timeline()->selectActions({wave});
+    editor::CurvePanel* curves = m_window->curveEditor();
+    QVERIFY(curves->action() == wave);
+    qobject_cast<QDockWidget*>(curves->parentWidget())->raise();
+    curves->setEditedCurve(editor::CurvePanel::WeightCurve);
+    QComboBox* preset = curves->presetCombo();
+    preset->setCurrentIndex(preset->findText(QStringLiteral("Linear fade")));
+    const core::anim::Curve& weight = actionAt(document, wave).weight;
+    QCOMPARE(weight.kind(), core::anim::CurveKind::LinearFade);
+    // The fade keeps the envelope's attack (0.4 s) and release (0.5 s), now straight.
+    const double duration = core::ticksToSeconds(core::edit::actionSpan(document.scenario(), document.runtime(), wave)->end
+                                                 - actionAt(document, wave).start);
+    QCOMPARE(weight.evaluate(0.2, duration), 0.5);
+    QCOMPARE(weight.evaluate(duration / 2, duration), 1.0);
+    QVERIFY(std::abs(weight.evaluate(duration - 0.25, duration) - 0.5) < 1e-9);
+    auto* attack = curves->findChild<QDoubleSpinBox*>(QStringLiteral("curveAttack"));
+    QVERIFY(attack);
+    attack->setValue(0.8);
+    QCOMPARE(actionAt(document, wave).weight.evaluate(0.2, duration), 0.25);
+    saveScreenshot(curves, QStringLiteral("curve_panel.png"));
+    QCOMPARE(document.undoStack()->count(), 2);
+    document.undoStack()->undo();
+    document.undoStack()->undo();
+    QCOMPARE(actionAt(document, wave).weight.kind(), core::anim::CurveKind::CubicAdsr);
+}
+
+void StudioEditingTest::paintingAMaskSetsJointWeights()
+{
+    editor::Document& document = *m_window->document();
+    editor::JointMaskPanel* masks = m_window->maskEditor();
+    qobject_cast<QDockWidget*>(masks->parentWidget())->raise();
+    masks->showMask(QStringLiteral("leftArm"));
+    QCOMPARE(masks->currentMask(), QStringLiteral("leftArm"));
+    widgets::JointMaskView* view = masks->view();
+    view->setBrushWeight(0.5f);
+    int elbow = -1, wrist = -1;
+    for (int j = 0; j < view->joints().size(); ++j) {
+        if (view->joints()[j].name == QStringLiteral("l_elbow"))
+            elbow = j;
+        if (view->joints()[j].name == QStringLiteral("l_radiocarpal"))
+            wrist = j;
+    }
+    QVERIFY(elbow >= 0 && wrist >= 0);
+    drag(view->picture(), view->jointPosition(elbow), view->jointPosition(wrist));
+    const core::anim::JointMask& mask = document.scenario().findMask("leftArm")->mask;
+    QCOMPARE(mask.weight("l_elbow"), 0.5f);
+    QCOMPARE(mask.weight("l_radiocarpal"), 0.5f);
+    QCOMPARE(mask.weight("l_sternoclavicular"), 1.0f); // untouched
+    QCOMPARE(document.undoStack()->count(), 1);         // one stroke, one step
+    saveScreenshot(masks, QStringLiteral("joint_mask_panel.png"));
+}
+
+void StudioEditingTest::saveAndReopenGiveTheSameDocument()
+{
+    editor::Document& document = *m_window->document();
+    QVERIFY(document.edit(core::edit::moveActions(document.scenario(), std::vector<ActionPath>{{1, 0, 1}}, core::TicksPerSecond),
+                          QStringLiteral("Move")));
+    QVERIFY(m_window->isWindowModified());
+    const QString path = m_dir.filePath(QStringLiteral("sub/saved.thespis"));
+    QDir().mkpath(m_dir.filePath(QStringLiteral("sub")));
+    QVERIFY(m_window->saveAs(path));
+    QVERIFY(!m_window->isWindowModified());
+    const core::scenario::Scenario saved = document.scenario();
+    QVERIFY(m_window->openScenario(path));
+    QVERIFY(m_window->document()->scenario() == saved);
+}
+
+void StudioEditingTest::autosavedWorkSurvivesKill9()
+{
+    // A studio process of its own, with its own data folder.
+    const QString data = m_dir.filePath(QStringLiteral("xdg"));
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("XDG_DATA_HOME"), data);
+    QProcess child;
+    child.setProcessEnvironment(env);
+    child.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    child.start(QCoreApplication::applicationFilePath(), {QStringLiteral("--crash-child"), demoPath()});
+    QVERIFY(child.waitForStarted());
+    QByteArray output;
+    QElapsedTimer waited;
+    waited.start();
+    while (!output.contains("AUTOSAVED") && waited.elapsed() < 60000)
+        if (child.waitForReadyRead(1000))
+            output += child.readAllStandardOutput();
+    QVERIFY2(output.contains("AUTOSAVED"), output.constData());
+    child.kill(); // SIGKILL: no chance to clean up
+    QVERIFY(child.waitForFinished());
+    QCOMPARE(child.exitStatus(), QProcess::CrashExit);
+
+    // The next start finds the copy and recovers the edit into a modified document.
+    qputenv("XDG_DATA_HOME", data.toLocal8Bit());
+    QStandardPaths::setTestModeEnabled(false);
+    const auto pending = editor::Autosaver::pendingRecoveries();
+    QCOMPARE(pending.size(), 1);
+    QCOMPARE(QFileInfo(pending.front().originalPath), QFileInfo(demoPath()));
+    auto recovered = editor::Document::recover(pending.front().recoveryFile, pending.front().originalPath, pending.front().baseDir);
+    QVERIFY(recovered.ok());
+    QVERIFY((*recovered)->isModified());
+    QCOMPARE((*recovered)->filePath(), QFileInfo(demoPath()).absoluteFilePath());
+    auto expected = core::scenario::loadScenario(demoPath().toStdString()).value();
+    QVERIFY(core::edit::moveActions(expected, std::vector<ActionPath>{{0, 0, 1}}, core::TicksPerSecond)->apply(expected).ok());
+    QVERIFY((*recovered)->scenario() == expected);
+    editor::Autosaver::removeRecovery(pending.front());
+    QVERIFY(editor::Autosaver::pendingRecoveries().isEmpty());
+    QStandardPaths::setTestModeEnabled(true);
+}
+
+int main(int argc, char** argv)
+{
+    if (argc >= 3 && std::string_view(argv[1]) == "--crash-child")
+        return runCrashChild(argc, argv);
+    QApplication app(argc, argv);
+    StudioEditingTest test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "studio_editing_test.moc"
