@@ -121,6 +121,9 @@ int main(int argc, char** argv)
     window.show();
     // Open once the event loop runs, so that an error dialog appears over a visible window.
     QTimer::singleShot(0, &window, [&window, scenario, startTime, screenshot] {
+        // Work a crashed session autosaved comes first (the question is skipped for screenshots).
+        if (screenshot.isEmpty() && window.offerRecovery())
+            return;
         const bool opened = window.openScenario(scenario);
         if (opened)
             window.clock()->seek(startTime);
