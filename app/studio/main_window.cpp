@@ -159,14 +159,13 @@ void MainWindow::createActions()
     m_saveAsAction->setShortcut(QKeySequence::SaveAs);
     connect(m_saveAsAction, &QAction::triggered, this, &MainWindow::onSaveAs);
 
-    auto* undoGroup = new QUndoGroup(this);
-    m_undoAction = undoGroup->createUndoAction(this, tr("&Undo"));
+    m_undoGroup = new QUndoGroup(this);
+    m_undoAction = m_undoGroup->createUndoAction(this, tr("&Undo"));
     m_undoAction->setShortcut(QKeySequence::Undo);
     m_undoAction->setObjectName(QStringLiteral("undo"));
-    m_redoAction = undoGroup->createRedoAction(this, tr("&Redo"));
+    m_redoAction = m_undoGroup->createRedoAction(this, tr("&Redo"));
     m_redoAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence::Redo});
     m_redoAction->setObjectName(QStringLiteral("redo"));
-    setProperty("undoGroup", QVariant::fromValue(static_cast<QObject*>(undoGroup)));
 
     m_openAction = new QAction(tr("&Open…"), this);
     m_openAction->setShortcut(QKeySequence::Open);
@@ -347,14 +346,12 @@ void MainWindow::createEditorDocks()
     QDockWidget* curveDock = dock(tr("Curve Editor"), QStringLiteral("curveDock"), m_curves, Qt::BottomDockWidgetArea);
     tabifyDockWidget(timelineDock, curveDock);
     timelineDock->raise();
-    QDockWidget* maskDock = dock(tr("Joint Mask"), QStringLiteral("maskDock"), m_masks, Qt::RightDockWidgetArea);
+    dock(tr("Joint Mask"), QStringLiteral("maskDock"), m_masks, Qt::RightDockWidgetArea);
     QDockWidget* libraryDock = dock(tr("Clip Library"), QStringLiteral("clipLibraryDock"), m_library, Qt::LeftDockWidgetArea);
     tabifyDockWidget(m_outlineDock, libraryDock);
     m_outlineDock->raise();
-    (void)maskDock;
 
-    for (editor::TimelinePanel* t : {m_timeline})
-        connect(t, &editor::TimelinePanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    connect(m_timeline, &editor::TimelinePanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     connect(m_curves, &editor::CurvePanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     connect(m_masks, &editor::JointMaskPanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     connect(m_timeline, &editor::TimelinePanel::seekRequested, m_clock, &editor::PlaybackClock::seek);
@@ -407,13 +404,12 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
     m_library->setDocument(nullptr);
     m_autosaver->setDocument(nullptr);
     m_samplers.clear();
-    auto* undoGroup = qobject_cast<QUndoGroup*>(property("undoGroup").value<QObject*>());
     if (m_document)
-        undoGroup->removeStack(m_document->undoStack());
+        m_undoGroup->removeStack(m_document->undoStack());
     m_document = std::move(document);
     if (m_document) {
-        undoGroup->addStack(m_document->undoStack());
-        undoGroup->setActiveStack(m_document->undoStack());
+        m_undoGroup->addStack(m_document->undoStack());
+        m_undoGroup->setActiveStack(m_document->undoStack());
         connect(m_document.get(), &editor::Document::edited, this, &MainWindow::onDocumentEdited);
         connect(m_document.get(), &editor::Document::modifiedChanged, this, &MainWindow::updateTitle);
         connect(m_document.get(), &editor::Document::filePathChanged, this, &MainWindow::updateTitle);

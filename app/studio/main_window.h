@@ -24,6 +24,7 @@ class QLabel;
 class QMenu;
 class QTabWidget;
 class QTimer;
+class QUndoGroup;
 class QTreeView;
 
 namespace thespis::editor {
@@ -124,6 +125,7 @@ private:
     editor::Autosaver* m_autosaver = nullptr;
     QList<QDockWidget*> m_editorDocks;
     QMenu* m_recentMenu = nullptr;
+    QUndoGroup* m_undoGroup = nullptr; // the open document's undo stack, behind Edit ▸ Undo / Redo
     QLabel* m_fileLabel = nullptr;
     QLabel* m_fpsLabel = nullptr;
 
