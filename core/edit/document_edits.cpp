@@ -567,4 +567,11 @@ Result<Edit> setSegmentTags(const Scenario& scenario, int character, std::vector
     return Edit(SegmentTagsChange{character, scenario.characters[std::size_t(character)].segmentTags, std::move(tags)});
 }
 
+Result<Edit> setCharacterBake(const Scenario& scenario, int character, std::string path)
+{
+    if (!validCharacter(scenario, character))
+        return invalid("There is no character " + std::to_string(character) + ".");
+    return Edit(CharacterBakeChange{character, scenario.characters[std::size_t(character)].bake, std::move(path)});
+}
+
 } // namespace thespis::core::edit

@@ -1,7 +1,7 @@
 #pragma once
 // The edits the studio and scripts make to a scenario: timeline (move, trim, fade, split,
 // insert, delete with ripple, markers, layer mute / solo / lock), curves, joint masks, the
-// gesticon and segment tags. Each function looks at the document as it is and returns the Edit
+// gesticon, segment tags and bakes. Each function looks at the document as it is and returns the Edit
 // that makes the change (apply it, or push it as one undoable command), or an error saying why
 // the change cannot be made. None of them changes the document itself.
 //
@@ -105,6 +105,9 @@ Result<Edit> replaceGesture(const scenario::Scenario& scenario, const CharacterI
 Result<Edit> removeGesture(const scenario::Scenario& scenario, const CharacterItemPath& gesture);
 /// Sets the receiver / occluder and posture tags of one character's segments.
 Result<Edit> setSegmentTags(const scenario::Scenario& scenario, int character, std::vector<scene::SegmentTag> tags);
+/// Sets the bake file of a character (a path relative to the scenario's folder, as the bake
+/// panel writes it; empty: no bake, unshadowed transfer).
+Result<Edit> setCharacterBake(const scenario::Scenario& scenario, int character, std::string path);
 
 /// `base`, or "base 2", "base 3"… the first not in `taken`.
 std::string uniqueName(const std::string& base, std::span<const std::string> taken);

@@ -99,7 +99,16 @@ Result<void> applyChange(Scenario& s, const Change& change)
             } else if constexpr (std::is_same_v<C, ClipChange>) {
                 auto [list, index] = itemListOf(s, c.at, &Character::clips);
                 return applyTo(list, index, c.before, c.after, "clips, " + where(c.at));
+            } else if constexpr (std::is_same_v<C, CharacterBakeChange>) {
+                Character* character = characterAt(s, c.character);
+                if (!character || character->bake != c.before)
+                    return makeError(ErrorCode::InvalidArgument,
+                                     "The edit does not fit the document (bake of character "
+                                         + std::to_string(c.character) + ").");
+                character->bake = c.after;
+                return {};
             } else {
+                static_assert(std::is_same_v<C, SegmentTagsChange>);
                 Character* character = characterAt(s, c.character);
                 if (!character || character->segmentTags != c.before)
                     return makeError(ErrorCode::InvalidArgument,
@@ -134,6 +143,8 @@ bool samePlaceReplace(const Change& a, const Change& b)
             const auto& second = std::get<C>(b);
             if constexpr (std::is_same_v<C, SegmentTagsChange>)
                 return first.character == second.character;
+            else if constexpr (std::is_same_v<C, CharacterBakeChange>)
+                return false; // a bake is one step of its own, whatever follows it
             else
                 return first.at == second.at && first.before && first.after && second.before && second.after;
         },

@@ -2,7 +2,7 @@
 // Edit: a reversible change to a scenario document (STYLE.md §5), the one way editors and
 // scripts change a Scenario. An edit is a list of changes, each inserting, removing or replacing
 // one element of one of the scenario's lists (an action of a layer, a layer, a mask, a marker, a
-// gesture, a clip) or replacing a character's segment tags. Each change keeps the value before
+// gesture, a clip) or replacing a character's segment tags or bake file. Each change keeps the value before
 // and after, so an edit is undone by applying its inverse, and a drag's many small edits of the
 // same elements merge into one.
 //
@@ -12,6 +12,7 @@
 // undone, so the scenario is left exactly as it was.
 
 #include <optional>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -63,8 +64,16 @@ struct SegmentTagsChange {
     bool operator==(const SegmentTagsChange&) const = default;
 };
 
+/// Replaces a character's bake file (Character::bake; empty: none). Never merges: each bake is
+/// its own undo step.
+struct CharacterBakeChange {
+    int character = 0;
+    std::string before, after;
+    bool operator==(const CharacterBakeChange&) const = default;
+};
+
 using Change = std::variant<ActionChange, LayerChange, MaskChange, MarkerChange, GestureChange, ClipChange,
-                            SegmentTagsChange>;
+                            SegmentTagsChange, CharacterBakeChange>;
 
 class Edit {
 public:

@@ -120,6 +120,8 @@ void CharacterNode::buildGeometry(const lighting::TransferBake* bake)
         uniform->setDataVariance(osg::Object::DYNAMIC);
         groupState->addUniform(uniform);
     }
+    // Not selected, for anything drawn under the group without a value of its own.
+    groupState->addUniform(new osg::Uniform("selectionHighlight", 0.0f));
 
     m_vertexArray = new osg::Vec3Array(unsigned(vertices));
     m_normalArray = new osg::Vec3Array(unsigned(vertices));
@@ -192,6 +194,11 @@ void CharacterNode::buildGeometry(const lighting::TransferBake* bake)
         light->setDataVariance(osg::Object::DYNAMIC);
         state->addUniform(light.get());
         m_lightUniforms.push_back(light);
+        // Every segment holds its own value: GL would keep the last segment's otherwise.
+        osg::ref_ptr<osg::Uniform> highlight = new osg::Uniform("selectionHighlight", 0.0f);
+        highlight->setDataVariance(osg::Object::DYNAMIC);
+        state->addUniform(highlight.get());
+        m_highlightUniforms.push_back(highlight);
 
         const int materialIndex = c.segmentMaterials.empty() ? -1 : c.segmentMaterials[s];
         const scene::Material material = materialIndex >= 0 ? c.materials[std::size_t(materialIndex)] : scene::Material{};
@@ -209,6 +216,7 @@ void CharacterNode::buildGeometry(const lighting::TransferBake* bake)
         m_group->addChild(geometry.get());
         m_geometries.push_back(geometry);
     }
+    m_highlighted.assign(mesh.segments.size(), 0);
 }
 
 void CharacterNode::setShading(Shading shading)
@@ -275,6 +283,13 @@ Bounds CharacterNode::bounds() const
     for (const anim::Vec3& p : m_positions)
         result.add(anim::Vec3d{p.x, p.y, p.z});
     return result;
+}
+
+void CharacterNode::setSegmentHighlighted(std::size_t segment, bool highlighted)
+{
+    assert(segment < m_highlightUniforms.size());
+    m_highlighted[segment] = highlighted ? 1 : 0;
+    m_highlightUniforms[segment]->set(highlighted ? 1.0f : 0.0f);
 }
 
 std::span<const float> CharacterNode::segmentLight(std::size_t segment) const

@@ -81,6 +81,11 @@ public:
     /// red, green, blue at 3i, 3i+1, 3i+2): the uniform's own storage.
     std::span<const float> segmentLight(std::size_t segment) const;
 
+    /// Tints a segment as selected (the segment tag editor's selection), in every shading mode:
+    /// 35 % towards orange plus an orange rim. Off for every segment at first.
+    void setSegmentHighlighted(std::size_t segment, bool highlighted);
+    bool segmentHighlighted(std::size_t segment) const { return m_highlighted[segment] != 0; }
+
 private:
     CharacterNode() = default;
     void buildGeometry(const lighting::TransferBake* bake);
@@ -108,6 +113,8 @@ private:
     osg::ref_ptr<osg::Vec3Array> m_vertexArray, m_normalArray;
     std::vector<osg::ref_ptr<osg::Geometry>> m_geometries;
     std::vector<osg::ref_ptr<osg::Uniform>> m_lightUniforms; // shLight of each segment
+    std::vector<osg::ref_ptr<osg::Uniform>> m_highlightUniforms; // selectionHighlight of each segment
+    std::vector<char> m_highlighted;
     osg::ref_ptr<osg::Uniform> m_lightDirection, m_lightColor, m_ambientIrradiance;
 };
 

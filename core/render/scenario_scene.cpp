@@ -3,9 +3,39 @@
 #include <cmath>
 
 #include "lighting/probe.h"
+#include "render/shaders.h"
 #include "scenario/scenario_character.h"
 
 namespace thespis::core::render {
+
+namespace {
+
+// The bake file a character names (relative to baseDir), when it can be read and still fits its
+// body; otherwise the reason, one sentence.
+Result<std::shared_ptr<const lighting::TransferBake>> readCharacterBake(const std::string& file,
+                                                                       const scene::CharacterMesh& body,
+                                                                       const std::filesystem::path& baseDir)
+{
+    auto bake = lighting::readBakeFile(baseDir / file);
+    if (!bake)
+        return bake.error();
+    if (bake->order < 1 || bake->order > shaders::kMaxTransferOrder)
+        return makeError(ErrorCode::InvalidArgument, "Its order " + std::to_string(bake->order) +
+                                                         " is above what the viewport draws (" +
+                                                         std::to_string(shaders::kMaxTransferOrder) + ").");
+    if (auto matches = lighting::checkBakeMatchesMesh(*bake, body); !matches)
+        return matches.error();
+    return std::make_shared<const lighting::TransferBake>(std::move(bake).value());
+}
+
+std::string lowerFirst(std::string sentence)
+{
+    if (!sentence.empty() && sentence[0] >= 'A' && sentence[0] <= 'Z')
+        sentence[0] = char(sentence[0] - 'A' + 'a');
+    return sentence;
+}
+
+} // namespace
 
 Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Scenario& scenario,
                                                              const std::filesystem::path& baseDir,
@@ -46,10 +76,23 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
             return makeError(ErrorCode::Internal, "The runtime lost character \"" + scenario.characters[i].name + "\".");
         for (const std::string& warning : body->warnings)
             self->m_warnings.push_back(scenario.characters[i].name + ": " + warning);
-        const auto bake = options.bakes.find(scenario.characters[i].name);
+        // The caller's bake first; else the file the scenario names, when it still fits the body
+        // (a missing or stale one leaves the character unshadowed, and the user is told).
+        std::shared_ptr<const lighting::TransferBake> bake;
+        const scenario::Character& spec = scenario.characters[i];
+        if (const auto given = options.bakes.find(spec.name); given != options.bakes.end()) {
+            bake = given->second;
+        } else if (!spec.bake.empty()) {
+            auto read = readCharacterBake(spec.bake, body->mesh, baseDir);
+            if (read)
+                bake = std::move(read).value();
+            else
+                self->m_warnings.push_back(spec.name + ": its bake \"" + spec.bake +
+                                           "\" is left out, so it is lit unshadowed (DU): " +
+                                           lowerFirst(read.error().message));
+        }
         auto shared = std::make_shared<const scene::Character>(std::move(body).value());
-        auto node = self->m_scene->addCharacter(shared, bake == options.bakes.end() ? nullptr : bake->second.get(),
-                                                options.skinning);
+        auto node = self->m_scene->addCharacter(shared, bake.get(), options.skinning);
         if (!node)
             return makeError(node.error().code, scenario.characters[i].name + ": " + node.error().message,
                              node.error().detail);

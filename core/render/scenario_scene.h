@@ -23,7 +23,10 @@ namespace thespis::core::render {
 struct ScenarioSceneOptions {
     int skinningThreads = 0; ///< as scene::SkinningWorkers
     scene::SkinningMethod skinning = scene::SkinningMethod::Linear;
-    /// Baked transfer by character name (for its body mesh); characters without one get DU.
+    /// Baked transfer by character name (for its body mesh). A character without one here uses
+    /// the bake file its scenario entry names (Character::bake, relative to baseDir) when that
+    /// can be read and fits its body; otherwise, or without a file, it gets DU (and a warning
+    /// says why a named file was left out).
     std::map<std::string, std::shared_ptr<const lighting::TransferBake>> bakes;
     /// SH order the scenario's probe is projected to (the transfer's order is at most 6).
     int lightOrder = 6;
@@ -44,7 +47,7 @@ public:
     const scenario::ScenarioRuntime& runtime() const { return m_runtime; }
     double duration() const { return m_runtime.duration; }
     /// Things worth telling the user (unmapped joints, characters whose skeleton shares few
-    /// joints with their body); one sentence each.
+    /// joints with their body, bake files left out); one sentence each.
     const std::vector<std::string>& warnings() const { return m_warnings; }
 
     /// Plays a new runtime of the same scenario (after an edit): the characters and their

@@ -39,6 +39,24 @@ vec3 albedo()
 }
 )";
 
+// The selection highlight of the segment tag editor, applied last in every character shading
+// mode so that it reads the same whatever the light and material: 35 % of the way to orange, plus
+// a bright orange rim where the surface turns away from the eye (an outline on any colour). Display values in and out; with
+// selectionHighlight = 0 the colour is returned unchanged.
+constexpr const char* kSelectionFunction = R"(
+uniform float selectionHighlight;
+uniform mat4 osg_ViewMatrixInverse;
+vec3 selectionTint(vec3 display, vec3 position, vec3 normal)
+{
+    if (selectionHighlight < 0.5)
+        return display;
+    const vec3 selection = vec3(1.0, 0.55, 0.1);
+    vec3 toEye = normalize(osg_ViewMatrixInverse[3].xyz - position);
+    float rim = 1.0 - abs(dot(normalize(normal), toEye));
+    return clamp(mix(display, selection, 0.35) + vec3(1.0, 0.7, 0.3) * (rim * rim), 0.0, 1.0);
+}
+)";
+
 std::string transferName(int attribute) { return "a_transfer" + std::to_string(attribute); }
 
 // PRT per vertex, as the paper evaluates it: the dot product is unrolled over the vec4 lanes.
@@ -50,9 +68,10 @@ std::string prtVertexSource(int order)
     source += "attribute vec2 a_texcoord;\n";
     for (int a = 0; a < transferAttributeCount(order); ++a)
         source += "attribute vec4 " + transferName(a) + ";\n";
-    source += "varying vec2 v_texcoord;\nvarying vec3 v_radiance;\n";
+    source += "varying vec2 v_texcoord;\nvarying vec3 v_radiance;\nvarying vec3 v_position;\nvarying vec3 v_normal;\n";
     source += "void main()\n{\n    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n";
-    source += "    v_texcoord = a_texcoord;\n    vec3 radiance = vec3(0.0);\n";
+    source += "    v_texcoord = a_texcoord;\n    v_position = gl_Vertex.xyz;\n    v_normal = gl_Normal;\n";
+    source += "    vec3 radiance = vec3(0.0);\n";
     static constexpr const char* lanes = "xyzw";
     for (int i = 0; i < coefficients; ++i)
         source += "    radiance += " + transferName(i / 4) + "." + lanes[i % 4] + " * shLight[" + std::to_string(i) + "];\n";
@@ -62,9 +81,12 @@ std::string prtVertexSource(int order)
 
 constexpr const char* kPrtFragment = R"(
 varying vec3 v_radiance;
+varying vec3 v_position;
+varying vec3 v_normal;
 void main()
 {
-    gl_FragColor = vec4(toDisplay(albedo() * max(v_radiance, vec3(0.0))), 1.0);
+    vec3 display = toDisplay(albedo() * max(v_radiance, vec3(0.0)));
+    gl_FragColor = vec4(selectionTint(display, v_position, v_normal), 1.0);
 }
 )";
 
@@ -88,7 +110,6 @@ constexpr const char* kPhongFragment = R"(
 uniform vec3 lightDirection;
 uniform vec3 lightColor;
 uniform vec3 ambientIrradiance;
-uniform mat4 osg_ViewMatrixInverse;
 varying vec3 v_position;
 varying vec3 v_normal;
 const float pi = 3.14159265;
@@ -103,14 +124,16 @@ void main()
     float specular = cosine > 0.0
         ? specularAlbedo * (shininess + 8.0) / (8.0 * pi) * pow(max(dot(n, h), 0.0), shininess) : 0.0;
     vec3 radiance = albedo() / pi * (ambientIrradiance + lightColor * cosine) + lightColor * (specular * cosine);
-    gl_FragColor = vec4(toDisplay(radiance), 1.0);
+    gl_FragColor = vec4(selectionTint(toDisplay(radiance), v_position, v_normal), 1.0);
 }
 )";
 
 constexpr const char* kUnlitFragment = R"(
+varying vec3 v_position;
+varying vec3 v_normal;
 void main()
 {
-    gl_FragColor = vec4(encodeSrgb(albedo()), 1.0);
+    gl_FragColor = vec4(selectionTint(encodeSrgb(albedo()), v_position, v_normal), 1.0);
 }
 )";
 
@@ -163,9 +186,11 @@ osg::ref_ptr<osg::Program> makeProgram(const std::string& name, const std::strin
     return program;
 }
 
+// Character fragments (withAlbedo) also get the selection tint.
 std::string fragmentSource(const char* body, bool withAlbedo)
 {
-    return std::string("#version 120\n") + kDisplayFunctions + (withAlbedo ? kAlbedoFunction : "") + body;
+    return std::string("#version 120\n") + kDisplayFunctions + (withAlbedo ? kAlbedoFunction : "") +
+           (withAlbedo ? kSelectionFunction : "") + body;
 }
 
 } // namespace

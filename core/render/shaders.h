@@ -24,7 +24,9 @@ constexpr int transferAttributeCount(int order) { return (order * order + 3) / 4
 /// Character program for a shading mode. `order` sizes the PRT light array and the transfer
 /// attributes (1 … kMaxTransferOrder); the other modes ignore it but bind the same attributes.
 /// Uniforms: exposure; baseColor (vec4), baseColorTexture (unit 0), textureWeight (0 or 1);
-/// Prt: shLight (vec3[order²]); Phong: lightDirection, lightColor, ambientIrradiance.
+/// Prt: shLight (vec3[order²]); Phong: lightDirection, lightColor, ambientIrradiance; every
+/// mode: selectionHighlight (float, 0 or 1: tint the segment as selected; must be set on every
+/// segment, as GL keeps a program's last value).
 osg::ref_ptr<osg::Program> characterProgram(Shading shading, int order);
 /// The ground: uniform groundColor (linear radiance), exposure; a faint 1 m grid.
 osg::ref_ptr<osg::Program> groundProgram();

@@ -118,6 +118,10 @@ struct Character {
     std::string model;
     /// Receiver / occluder and PI / PD tags of the model's segments (paper §6.1.3), by segment name.
     std::vector<scene::SegmentTag> segmentTags;
+    /// The character's PRT transfer bake (a bake file made by the studio's bake panel or
+    /// `thespis-cli bake`; path relative to the scenario); empty = unshadowed (DU) transfer. A bake
+    /// that is missing or no longer fits the body (its tags changed since) is left out with a warning.
+    std::string bake;
     std::vector<ClipAsset> clips;
     std::vector<Layer> layers;
     std::vector<Gesture> gestures;     ///< format 2

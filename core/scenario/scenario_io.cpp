@@ -706,6 +706,7 @@ Character readCharacter(const json& value, const std::string& path)
         fail(r.fieldPath("skeleton"), "expected \"hanim-loa1\", \"hanim-loa2\", \"hanim-25\" or \"clip:NAME\", found "
                                           + quote(character.skeleton));
     character.model = r.string("model", false);
+    character.bake = r.string("bake", false);
     std::set<std::string> names;
     const json& segments = r.array("segments", false);
     for (std::size_t i = 0; i < segments.size(); ++i) {
@@ -1061,6 +1062,8 @@ ojson writeCharacter(const Character& character)
         }
         out["segments"] = std::move(segments);
     }
+    if (!character.bake.empty())
+        out["bake"] = character.bake;
     ojson clips = ojson::array();
     for (const ClipAsset& clip : character.clips)
         clips.push_back(writeClip(clip));

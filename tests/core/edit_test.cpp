@@ -120,6 +120,8 @@ TEST(Edit, EveryKindOfChangeRoundTrips)
     expectRoundTrip(s, *removeGesture(s, {0, 0}));
     scene::SegmentTag tag{"l_hand", scene::SegmentRole::Receiver, std::nullopt};
     expectRoundTrip(s, *setSegmentTags(s, 0, {tag}));
+    expectRoundTrip(s, *setCharacterBake(s, 1, "bakes/demo-Antigone-dsm-o5-0123abcd.prt"));
+    EXPECT_EQ(s.characters[1].bake, "bakes/demo-Antigone-dsm-o5-0123abcd.prt");
     {
         auto action = actionFromClip(s, {1, 0}, "nod", 2 * Second);
         ASSERT_TRUE(action.ok());
@@ -355,6 +357,26 @@ TEST(DocumentEdits, MasksRenameEverywhereAndRefuseRemovalWhileUsed)
     EXPECT_TRUE(validateScenario(s, thespis::test::testData()).empty());
     EXPECT_FALSE(addMask(s, "right arm", {}).ok());
     EXPECT_FALSE(setMaskWeights(s, 0, std::vector<std::string>{"r_elbow"}, 1.5f).ok());
+}
+
+TEST(DocumentEdits, CharacterBakesAreCheckedAndNeverMerge)
+{
+    Scenario s = swingScenario();
+    EXPECT_FALSE(setCharacterBake(s, 3, "bakes/a.prt").ok());
+    EXPECT_FALSE(setCharacterBake(s, -1, "bakes/a.prt").ok());
+    const Scenario original = s;
+    Edit first = applied(s, setCharacterBake(s, 0, "bakes/a.prt"));
+    EXPECT_EQ(s.characters[0].bake, "bakes/a.prt");
+    Edit second = applied(s, setCharacterBake(s, 0, "bakes/b.prt"));
+    EXPECT_FALSE(first.canMergeWith(second)); // each bake is an undo step of its own
+    // The inverse of the first no longer fits (the bake is b now): refused, nothing changed.
+    const Scenario now = s;
+    EXPECT_FALSE(first.inverse().apply(s).ok());
+    EXPECT_EQ(s, now);
+    ASSERT_TRUE(second.inverse().apply(s).ok());
+    ASSERT_TRUE(first.inverse().apply(s).ok());
+    EXPECT_EQ(s, original);
+    EXPECT_TRUE(setCharacterBake(s, 0, "").value().changesNothing());
 }
 
 TEST(DocumentEdits, GesturesAreChecked)

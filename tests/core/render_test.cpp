@@ -15,6 +15,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <numbers>
@@ -22,6 +24,8 @@
 #include <set>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include "lighting/probe.h"
 #include "lighting/sh.h"
@@ -31,9 +35,11 @@
 #include "render/render_scene.h"
 #include "render/scenario_scene.h"
 #include "render/shading.h"
+#include "scenario/scenario_character.h"
 #include "scenario/scenario_io.h"
 #include "scene/character.h"
 #include "scene/default_humanoid.h"
+#include "offscreen_suite.h"
 #include "test_support.h"
 
 namespace thespis::core::render {
@@ -52,28 +58,7 @@ constexpr double kPi = std::numbers::pi;
 using thespis::test::artifact;
 
 /// The picture tests share one renderer, made once for the suite and closed before exit.
-class Render : public ::testing::Test {
-protected:
-    static void SetUpTestSuite()
-    {
-        auto created = OffscreenRenderer::create(kWidth, kHeight);
-        if (created)
-            s_renderer = std::move(*created);
-        else
-            s_failure = describe(created.error());
-    }
-    static void TearDownTestSuite() { s_renderer.reset(); }
-    void SetUp() override
-    {
-        if (s_renderer)
-            return;
-        if (std::getenv("THESPIS_REQUIRE_GL"))
-            FAIL() << s_failure;
-        GTEST_SKIP() << "No OpenGL context: " << s_failure;
-    }
-    static inline std::unique_ptr<OffscreenRenderer> s_renderer;
-    static inline std::string s_failure;
-};
+using Render = thespis::test::OffscreenSuite<kWidth, kHeight>;
 
 // Six faces of 4 vertices (flat normals), wound counter-clockwise seen from outside.
 void addBox(scene::Character& character, const std::string& joint, Vec3 lower, Vec3 upper, int material)
@@ -246,6 +231,91 @@ TEST(CharacterNode, RefusesABakeOfAnotherMesh)
     bake.order = 3;
     bake.vertexCount = 5;
     EXPECT_FALSE(CharacterNode::create(makeBoxCharacter(), &bake).ok());
+}
+
+// A character's bake file named by the scenario (Character::bake) is used when it fits the body;
+// a missing, damaged or stale one (tags changed since) leaves the character unshadowed (DU) and
+// the scene still builds, with a warning naming the character and the file. A bake the caller
+// passes wins over the file.
+TEST(ScenarioScene, UsesTheCharactersBakeFileOnlyWhileItFitsTheBody)
+{
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() / ("thespis_render_bake_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder / "bakes");
+    auto demo = scenario::loadScenario(thespis::test::resources("demo.thespis"));
+    ASSERT_TRUE(demo.ok()) << describe(demo.error());
+    const auto antigone = std::size_t(demo->findCharacter("Antigone") - demo->characters.data());
+    ASSERT_LT(antigone, demo->characters.size());
+    auto body = scenario::loadCharacterBody(*demo, antigone, folder);
+    ASSERT_TRUE(body.ok()) << describe(body.error());
+    lighting::BakeSettings settings;
+    settings.order = 2; // the DU the scene makes without a bake has order 3: the node tells them apart
+    settings.raysPerVertex = 4;
+    settings.transfer = lighting::TransferKind::DiffuseShadowedMerged;
+    auto bake = lighting::bakeTransfer(body->mesh, settings);
+    ASSERT_TRUE(bake.ok()) << describe(bake.error());
+    ASSERT_TRUE(lighting::writeBakeFile(folder / "bakes" / "antigone.prt", *bake).ok());
+
+    auto orderOf = [&](const ScenarioScene& built) { return built.scene().character(antigone).transferOrder(); };
+    auto bakeWarnings = [](const ScenarioScene& built) {
+        std::vector<std::string> found;
+        for (const std::string& warning : built.warnings())
+            if (warning.find("bake") != std::string::npos)
+                found.push_back(warning);
+        return found;
+    };
+
+    scenario::Scenario s = *demo;
+    s.characters[antigone].bake = "bakes/antigone.prt";
+    {
+        auto built = ScenarioScene::create(s, folder);
+        ASSERT_TRUE(built.ok()) << describe(built.error());
+        EXPECT_EQ(orderOf(**built), 2);
+        EXPECT_TRUE(bakeWarnings(**built).empty());
+        EXPECT_EQ((*built)->scene().character(1 - antigone).transferOrder(), 3); // Creon has none
+    }
+    struct Broken {
+        const char* what;
+        std::function<void(scenario::Scenario&)> change;
+        const char* reason;
+    };
+    std::ofstream(folder / "bakes" / "garbage.prt") << "not a bake";
+    const std::vector<Broken> cases = {
+        {"missing file", [](scenario::Scenario& d) { d.characters[1].bake = "bakes/gone.prt"; }, "does not exist"},
+        {"not a bake", [](scenario::Scenario& d) { d.characters[1].bake = "bakes/garbage.prt"; }, "not a Thespis bake file"},
+        {"tags changed since", [](scenario::Scenario& d) {
+             d.characters[1].segmentTags = {{"hair", scene::SegmentRole::Receiver, std::nullopt}};
+         }, "was baked as none and is now tagged receiver"},
+    };
+    ASSERT_EQ(antigone, 1u);
+    for (const Broken& broken : cases) {
+        SCOPED_TRACE(broken.what);
+        scenario::Scenario changed = s;
+        broken.change(changed);
+        auto built = ScenarioScene::create(changed, folder);
+        ASSERT_TRUE(built.ok()) << describe(built.error());
+        EXPECT_EQ(orderOf(**built), 3);
+        const auto warnings = bakeWarnings(**built);
+        ASSERT_EQ(warnings.size(), 1u);
+        EXPECT_EQ(warnings[0].rfind("Antigone: its bake \"" + changed.characters[1].bake + "\" is left out", 0), 0u)
+            << warnings[0];
+        EXPECT_NE(warnings[0].find(broken.reason), std::string::npos) << warnings[0];
+    }
+    {
+        // The caller's bake wins: the file is not even read.
+        scenario::Scenario missing = s;
+        missing.characters[antigone].bake = "bakes/gone.prt";
+        ScenarioSceneOptions options;
+        settings.order = 1;
+        settings.transfer = lighting::TransferKind::DiffuseUnshadowed;
+        options.bakes["Antigone"] = std::make_shared<const lighting::TransferBake>(*lighting::bakeTransfer(body->mesh, settings));
+        auto built = ScenarioScene::create(missing, folder, options);
+        ASSERT_TRUE(built.ok()) << describe(built.error());
+        EXPECT_EQ(orderOf(**built), 1);
+        EXPECT_TRUE(bakeWarnings(**built).empty());
+    }
+    std::filesystem::remove_all(folder);
 }
 
 TEST(CharacterNode, UploadsThePosedVertices)

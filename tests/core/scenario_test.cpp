@@ -362,20 +362,22 @@ TEST(ScenarioIo, ModelSegmentTagsAndLightingRoundTrip)
     c.model = "robot.glb";
     c.segmentTags = {{"hair", scene::SegmentRole::Receiver, scene::Posture::Independent},
                      {"coat", scene::SegmentRole::Occluder, std::nullopt}};
+    c.bake = "bakes/lit-Robot-dsm-o5-0badc0de.prt";
     s.characters.push_back(c);
     s.lighting.probe = "probes/sunset.hdr";
     s.lighting.layout = "angular";
     const std::string text = serializeScenario(s);
     EXPECT_NE(text.find("\"role\": \"receiver\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"bake\": \"bakes/lit-Robot-dsm-o5-0badc0de.prt\""), std::string::npos) << text;
     auto again = parseScenario(text);
     ASSERT_TRUE(again.ok()) << describe(again.error());
     EXPECT_EQ(*again, s);
 
-    // Without a model, tags or probe nothing new is written: older scenarios stay byte-identical.
+    // Without a model, tags, bake or probe nothing new is written: older scenarios stay byte-identical.
     Scenario plain;
     plain.characters.push_back(Character{.name = "Plain"});
     const std::string plainText = serializeScenario(plain);
-    for (const char* member : {"\"model\"", "\"segments\"", "\"lighting\""})
+    for (const char* member : {"\"model\"", "\"segments\"", "\"bake\"", "\"lighting\""})
         EXPECT_EQ(plainText.find(member), std::string::npos) << member;
 }
 
@@ -580,6 +582,7 @@ TEST(ScenarioIo, MalformedFieldsAreNamed)
          "characters[0].segments[0].role: "},
         {"segment tagged twice", [&](json& d) { d["characters"][0]["segments"] = json::parse(R"([{"name": "hair"}, {"name": "hair"}])"); },
          "characters[0].segments[1].name: segment \"hair\" is tagged twice"},
+        {"bake not text", [&](json& d) { d["characters"][0]["bake"] = 5; }, "characters[0].bake: expected a text"},
         {"unknown member of a tag", [&](json& d) { d["characters"][0]["segments"] = json::parse(R"([{"name": "hair", "colour": 1}])"); },
          "characters[0].segments[0].colour: unknown member of a segment tag"},
         {"unknown probe layout", [&](json& d) { d["lighting"] = json::parse(R"({"probe": "p.hdr", "layout": "fisheye"})"); },
