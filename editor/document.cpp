@@ -154,7 +154,7 @@ core::Result<void> Document::saveAs(const QString& path)
     core::scenario::Scenario saved = m_scenario;
     const std::filesystem::path oldBase = toFsPath(m_baseDir), newBase = toFsPath(info.absolutePath());
     if (oldBase != newBase) {
-        // Relative paths (clips, models, the probe) must name the same files from the new folder.
+        // Relative paths (clips, models, bakes, the probe) must name the same files from the new folder.
         auto rebase = [&](std::string& relative) {
             if (relative.empty() || std::filesystem::path(relative).is_absolute())
                 return;
@@ -162,6 +162,7 @@ core::Result<void> Document::saveAs(const QString& path)
         };
         for (core::scenario::Character& character : saved.characters) {
             rebase(character.model);
+            rebase(character.bake);
             for (core::scenario::ClipAsset& clip : character.clips)
                 rebase(clip.file);
         }

@@ -75,7 +75,7 @@ public:
     core::Result<void> edit(core::Result<core::edit::Edit> edit, const QString& text, Merge merge = {});
 
     /// Writes the scenario to `path` atomically; on success the document takes that path (and its
-    /// folder as base: relative clip, model and probe paths are rewritten to still name the same
+    /// folder as base: relative clip, model, bake and probe paths are rewritten to still name the same
     /// files) and is clean. Errors name the file.
     core::Result<void> saveAs(const QString& path);
     core::Result<void> save() { return saveAs(m_filePath); }

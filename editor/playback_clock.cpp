@@ -30,6 +30,23 @@ void PlaybackClock::setTickInterval(int milliseconds)
     m_timer.setInterval(std::max(1, milliseconds));
 }
 
+void PlaybackClock::setFrameRate(double framesPerSecond)
+{
+    if (framesPerSecond > 0 && std::isfinite(framesPerSecond))
+        m_frameRate = framesPerSecond;
+}
+
+void PlaybackClock::step(int frames)
+{
+    pause();
+    // The frame the playhead is in; the epsilon keeps t = n / fps on frame n despite rounding.
+    const double position = m_time * m_frameRate;
+    double frame = std::floor(position + 1e-6);
+    if (frames < 0 && position - frame > 1e-6)
+        ++frame; // between frames: one step back lands on this frame's start
+    seek((frame + frames) / m_frameRate);
+}
+
 void PlaybackClock::play()
 {
     if (isPlaying() || m_duration <= 0)

@@ -1,7 +1,8 @@
 #pragma once
 // PlaybackClock: the preview's current time. Plays in real time (a ~60 Hz QTimer for ticks, a
 // QElapsedTimer for the time itself, so that late ticks never slow playback down), pauses,
-// seeks, and at the end either stops or loops over [0, duration]. Emits timeChanged for every
+// seeks, steps frame by frame at its frame rate, and at the end either stops or loops over
+// [0, duration]. Emits timeChanged for every
 // new time; views follow it, nothing else moves the playhead.
 
 #include <QElapsedTimer>
@@ -24,6 +25,9 @@ public:
     void setDuration(double seconds);
     /// Milliseconds between ticks while playing (default 16, ~60 Hz).
     void setTickInterval(int milliseconds);
+    /// Frames per second of frame steps (default 30); non-positive or non-finite values are ignored.
+    void setFrameRate(double framesPerSecond);
+    double frameRate() const { return m_frameRate; }
 
 public slots:
     /// Starts from the current time; at the end of a non-looping clock, starts over from 0.
@@ -34,6 +38,10 @@ public slots:
     /// Moves the playhead (clamped into [0, duration]); playing continues from there.
     void seek(double seconds);
     void setLooping(bool looping);
+    /// Pauses and moves `frames` whole frames from the frame the playhead is in (−1: the
+    /// previous frame's start, or this frame's start when between frames), clamped into the
+    /// timeline.
+    void step(int frames);
 
 signals:
     void timeChanged(double seconds);
@@ -50,6 +58,7 @@ private:
     double m_anchorTime = 0;
     double m_time = 0;
     double m_duration = 0;
+    double m_frameRate = 30;
     bool m_looping = false;
 };
 

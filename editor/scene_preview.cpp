@@ -6,6 +6,7 @@
 #include "editor/document.h"
 #include "editor/qt_conversions.h"
 #include "render/gl_context.h"
+#include "render/picking.h"
 #include "widgets/osg_viewport.h"
 
 namespace thespis::editor {
@@ -24,6 +25,8 @@ QVector3D toQt(const core::anim::Vec3d& v)
 ScenePreview::ScenePreview(widgets::OsgViewport* viewport, QObject* parent) : QObject(parent), m_viewport(viewport)
 {
     core::render::quietOsgNotifications();
+    if (viewport)
+        connect(viewport, &widgets::OsgViewport::clicked, this, &ScenePreview::onViewportClicked);
 }
 
 ScenePreview::~ScenePreview()
@@ -35,6 +38,11 @@ ScenePreview::~ScenePreview()
 
 core::Result<void> ScenePreview::setDocument(const Document* document)
 {
+    return build(document, true);
+}
+
+core::Result<void> ScenePreview::build(const Document* document, bool frameCamera)
+{
     m_viewport->setSceneData(nullptr);
     m_scene.reset();
     if (!document)
@@ -43,11 +51,15 @@ core::Result<void> ScenePreview::setDocument(const Document* document)
     if (!scene)
         return scene.error();
     m_scene = std::move(scene).value();
+    m_bodySources = bodySources(document->scenario());
     m_scene->scene().setShading(m_shading);
     m_scene->scene().setGroundVisible(m_groundVisible);
     const auto& background = m_scene->scene().backgroundColor();
     m_viewport->setClearColor(QColor::fromRgbF(background[0], background[1], background[2]));
+    applyHighlights();
     m_viewport->setSceneData(m_scene->scene().root());
+    if (!frameCamera)
+        return {};
     const double aspect = m_viewport->height() > 0 ? double(m_viewport->width()) / m_viewport->height() : 16.0 / 9.0;
     const core::render::Bounds bounds = m_scene->boundsOverTimeline();
     if (!bounds.empty()) {
@@ -58,14 +70,25 @@ core::Result<void> ScenePreview::setDocument(const Document* document)
     return {};
 }
 
+std::vector<ScenePreview::BodySource> ScenePreview::bodySources(const core::scenario::Scenario& scenario)
+{
+    std::vector<BodySource> sources;
+    for (const core::scenario::Character& character : scenario.characters)
+        sources.push_back({character.name, character.skeleton, character.model, character.bake, character.segmentTags});
+    return sources;
+}
+
 core::Result<void> ScenePreview::updateDocument(const Document* document)
 {
-    if (m_scene && document && m_scene->setRuntime(document->runtime())) {
+    // Same bodies: only the schedules changed, so the new runtime plays on the scene as it is.
+    if (m_scene && document && bodySources(document->scenario()) == m_bodySources
+        && m_scene->setRuntime(document->runtime())) {
         m_viewport->update();
         return {};
     }
+    // Other bodies (a bake, tags, a model): rebuilt where the user is looking, at the same time.
     const double time = m_scene ? m_scene->time() : 0.0;
-    auto rebuilt = setDocument(document);
+    auto rebuilt = build(document, m_scene == nullptr);
     if (rebuilt)
         setTime(time);
     return rebuilt;
@@ -102,6 +125,70 @@ QStringList ScenePreview::warnings() const
         for (const std::string& warning : m_scene->warnings())
             list << QString::fromStdString(warning);
     return list;
+}
+
+// ---- Gesture preview (GesticonPanel) ----
+
+core::Result<void> ScenePreview::previewRuntime(core::scenario::ScenarioRuntime runtime)
+{
+    if (!m_scene)
+        return core::makeError(core::ErrorCode::InvalidArgument, "There is no scene to preview in: open a scenario first.");
+    if (auto played = m_scene->setRuntime(std::move(runtime)); !played)
+        return played.error();
+    if (m_viewport)
+        m_viewport->update();
+    return {};
+}
+
+// ---- Segment selection ----------------------------------------------------------------------
+
+std::optional<ScenePreview::SegmentHit> ScenePreview::pickSegment(const QVector3D& origin,
+                                                                  const QVector3D& direction) const
+{
+    if (!m_scene)
+        return std::nullopt;
+    const core::render::PickRay ray{{origin.x(), origin.y(), origin.z()}, {direction.x(), direction.y(), direction.z()}};
+    const auto hit = core::render::pick(m_scene->scene(), ray);
+    if (!hit)
+        return std::nullopt;
+    return SegmentHit{int(hit->character), int(hit->segment), hit->distance};
+}
+
+void ScenePreview::setHighlightedSegments(int character, const std::vector<int>& segments)
+{
+    m_highlightCharacter = segments.empty() ? -1 : character;
+    m_highlightSegments = m_highlightCharacter < 0 ? std::vector<int>() : segments;
+    applyHighlights();
+    if (m_viewport)
+        m_viewport->update();
+}
+
+void ScenePreview::applyHighlights()
+{
+    if (!m_scene)
+        return;
+    core::render::RenderScene& scene = m_scene->scene();
+    for (std::size_t c = 0; c < scene.characterCount(); ++c) {
+        core::render::CharacterNode& node = scene.character(c);
+        for (std::size_t s = 0; s < node.segmentCount(); ++s)
+            if (node.segmentHighlighted(s))
+                node.setSegmentHighlighted(s, false);
+    }
+    if (m_highlightCharacter < 0 || std::size_t(m_highlightCharacter) >= scene.characterCount())
+        return;
+    core::render::CharacterNode& node = scene.character(std::size_t(m_highlightCharacter));
+    for (int s : m_highlightSegments)
+        if (s >= 0 && std::size_t(s) < node.segmentCount())
+            node.setSegmentHighlighted(std::size_t(s), true);
+}
+
+void ScenePreview::onViewportClicked(const QVector3D& origin, const QVector3D& direction,
+                                     Qt::KeyboardModifiers modifiers)
+{
+    if (const auto hit = pickSegment(origin, direction))
+        emit segmentClicked(hit->character, hit->segment, modifiers);
+    else
+        emit emptySpaceClicked(modifiers);
 }
 
 } // namespace thespis::editor

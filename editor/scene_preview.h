@@ -2,14 +2,18 @@
 // ScenePreview: the 3D view of the open document. Builds the scenario's render scene (bodies,
 // light, ground — core::render::ScenarioScene) for a Document, hands its root node to an
 // OsgViewport, frames the camera on the characters over the whole timeline, and poses every
-// character whenever the playback time changes.
+// character whenever the playback time changes. It also answers which segment a click in the
+// viewport hits, tints selected segments, and plays a preview runtime (a gesture) for a while.
 
 #include <QObject>
 #include <QPointer>
 #include <QString>
 #include <QStringList>
+#include <QVector3D>
 
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "render/scenario_scene.h"
 #include "render/shading.h"
@@ -26,15 +30,30 @@ class Document;
 class ScenePreview : public QObject {
     Q_OBJECT
 public:
+    /// A segment under the mouse: indices into the document's characters and into that
+    /// character's body segments (as loadCharacterBody orders them).
+    struct SegmentHit {
+        int character = -1;
+        int segment = -1;
+        double distance = 0; ///< from the ray's origin, metres
+    };
+
     explicit ScenePreview(widgets::OsgViewport* viewport, QObject* parent = nullptr);
     ~ScenePreview() override;
 
-    /// Builds the scene of `document` (null clears the view). On failure the view is left empty
-    /// and the error says which character or file could not be loaded.
+    /// Builds the scene of `document` (null clears the view) and frames the camera on it. On
+    /// failure the view is left empty and the error says which character or file could not be
+    /// loaded.
     core::Result<void> setDocument(const Document* document);
-    /// After an edit of `document`: plays its new schedules (rebuilding the scene only when the
-    /// characters themselves changed) and redraws at the current time.
+    /// After an edit of `document`: plays its new schedules (rebuilding the scene, at the same
+    /// time and camera, only when the characters themselves, their bodies, segment tags or bakes
+    /// changed) and redraws at the current time.
     core::Result<void> updateDocument(const Document* document);
+    /// Plays `runtime` — schedules of this scene's characters with something added, such as a
+    /// gesture on a layer of its own — instead of the document's, and redraws at the current
+    /// time, until the next setDocument() or updateDocument() puts the document's own back.
+    /// Fails when no scene is shown or the runtime's characters or skeletons differ from it.
+    core::Result<void> previewRuntime(core::scenario::ScenarioRuntime runtime);
     /// Poses every character at `seconds` and redraws.
     void setTime(double seconds);
     void setShading(core::render::Shading shading);
@@ -42,16 +61,50 @@ public:
     void setGroundVisible(bool visible);
     bool groundVisible() const { return m_groundVisible; }
 
+    /// The first segment the world-space ray meets on the posed bodies shown; nullopt when it
+    /// meets none or no scene is shown.
+    std::optional<SegmentHit> pickSegment(const QVector3D& origin, const QVector3D& direction) const;
+    /// Tints these segments of `character` as selected and clears every other highlight (-1 or
+    /// an empty list: none). Kept across scene rebuilds; indices the scene does not have are
+    /// ignored.
+    void setHighlightedSegments(int character, const std::vector<int>& segments);
+    int highlightedCharacter() const { return m_highlightCharacter; }
+    const std::vector<int>& highlightedSegments() const { return m_highlightSegments; }
+
     /// Problems that did not stop loading (unmapped joints of a model, …).
     QStringList warnings() const;
     /// The scene shown, or null.
     core::render::ScenarioScene* scene() const { return m_scene.get(); }
 
+signals:
+    /// The viewport was clicked (not dragged) on a segment; `modifiers` as held at the click.
+    void segmentClicked(int character, int segment, Qt::KeyboardModifiers modifiers);
+    /// The viewport was clicked where no character is.
+    void emptySpaceClicked(Qt::KeyboardModifiers modifiers);
+
 private:
+    // What each character's body was built from (ScenarioScene::create): an edit that changes
+    // any of it (its bake, its segment tags, its model) needs the scene rebuilt, not only new
+    // schedules. Recorded by build(), compared by updateDocument().
+    struct BodySource {
+        std::string name, skeleton, model, bake;
+        std::vector<core::scene::SegmentTag> segmentTags;
+        bool operator==(const BodySource&) const = default;
+    };
+    static std::vector<BodySource> bodySources(const core::scenario::Scenario& scenario);
+
+    // Builds the scene of `document`; frameCamera: also aim the home view (and go there).
+    core::Result<void> build(const Document* document, bool frameCamera);
+    void onViewportClicked(const QVector3D& origin, const QVector3D& direction, Qt::KeyboardModifiers modifiers);
+    void applyHighlights();
+
     QPointer<widgets::OsgViewport> m_viewport; // may go first when a window closes
     std::unique_ptr<core::render::ScenarioScene> m_scene;
+    std::vector<BodySource> m_bodySources;
     core::render::Shading m_shading = core::render::Shading::Prt;
     bool m_groundVisible = true;
+    int m_highlightCharacter = -1;
+    std::vector<int> m_highlightSegments;
 };
 
 } // namespace thespis::editor

@@ -19,7 +19,6 @@ using core::edit::LayerPath;
 
 namespace {
 
-constexpr int kFrameRate = 30;
 constexpr int kThumbnailSamples = 48;
 constexpr double kOpenEndedThumbnail = 10.0; // seconds of an open-ended action's weight shown
 
@@ -42,7 +41,7 @@ TimelinePanel::TimelinePanel(QWidget* parent) : QWidget(parent)
     m_view = new widgets::TimelineView(this);
     m_view->setObjectName(QStringLiteral("timelineView"));
     m_view->setTicksPerSecond(core::TicksPerSecond);
-    m_view->setFrameRate(kFrameRate);
+    m_view->setFrameRate(m_frameRate);
     layout->addWidget(m_view);
 
     auto makeAction = [this](const QString& text, const QKeySequence& key, const QString& name, auto slot) {
@@ -101,7 +100,7 @@ TimelinePanel::TimelinePanel(QWidget* parent) : QWidget(parent)
                 report(m_document->edit(core::edit::trimAction(m_document->scenario(), path, *span,
                                                                edge == widgets::TimelineEdge::Start ? core::edit::Edge::Start
                                                                                                     : core::edit::Edge::End,
-                                                               time, core::ticksPerFrame(kFrameRate)),
+                                                               time, core::ticksPerFrame(m_frameRate)),
                                         tr("Trim Action"), Merge{TrimActionId, finished}));
             });
     connect(m_view, &widgets::TimelineView::clipFadeRequested, this,
@@ -179,6 +178,15 @@ void TimelinePanel::setTime(double seconds)
 {
     m_playhead = core::secondsToTicks(seconds);
     m_view->setPlayhead(m_playhead);
+    m_view->ensureTimeVisible(m_playhead);
+}
+
+void TimelinePanel::setFrameRate(int framesPerSecond)
+{
+    if (framesPerSecond < 1)
+        return;
+    m_frameRate = framesPerSecond;
+    m_view->setFrameRate(framesPerSecond);
 }
 
 void TimelinePanel::refresh()

@@ -30,8 +30,10 @@ public:
     explicit TimelinePanel(QWidget* parent = nullptr);
 
     void setDocument(Document* document);
-    /// The playback time shown by the playhead (seconds).
+    /// The playback time shown by the playhead (seconds); the lanes scroll to keep it in view.
     void setTime(double seconds);
+    /// Whole frames per second of snapping, trimming and the ruler (default 30).
+    void setFrameRate(int framesPerSecond);
 
     widgets::TimelineView* view() const { return m_view; }
     /// The actions selected on the timeline, in timeline order.
@@ -71,6 +73,7 @@ private:
     std::vector<core::edit::ActionPath> m_clipPaths; // per view clip id
     qint64 m_dragApplied = 0;                        // the part of a move drag already applied
     core::Tick m_playhead = 0;
+    int m_frameRate = 30;
     // Copied actions with their layer, start times relative to the earliest.
     std::vector<std::pair<core::edit::LayerPath, core::scenario::ActionSpec>> m_clipboard;
 

@@ -4,12 +4,14 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QLibraryInfo>
+#include <QSettings>
 #include <QTranslator>
 
 namespace thespis::editor {
 
 namespace {
 const QString kPrefix = QStringLiteral(":/i18n");
+const QString kLanguageKey = QStringLiteral("ui/language");
 } // namespace
 
 QString installTranslators(QCoreApplication& app, const QLocale& locale)
@@ -36,6 +38,36 @@ QStringList availableLanguages()
     for (const QFileInfo& file : QDir(kPrefix).entryInfoList({QStringLiteral("thespis_*.qm")}, QDir::Files, QDir::Name))
         languages << file.completeBaseName().mid(int(qstrlen("thespis_")));
     return languages;
+}
+
+QString preferredLanguage()
+{
+    return QSettings().value(kLanguageKey).toString();
+}
+
+void setPreferredLanguage(const QString& language)
+{
+    QSettings settings;
+    if (language.isEmpty())
+        settings.remove(kLanguageKey);
+    else
+        settings.setValue(kLanguageKey, language);
+}
+
+QLocale preferredLocale()
+{
+    const QString language = preferredLanguage();
+    return language.isEmpty() ? QLocale() : QLocale(language);
+}
+
+QString nativeLanguageName(const QString& language)
+{
+    if (language == QLatin1String("en"))
+        return QStringLiteral("English"); // Qt names it "American English"
+    QString name = QLocale(language).nativeLanguageName();
+    if (!name.isEmpty())
+        name[0] = name[0].toUpper(); // "français" → "Français", as a menu entry
+    return name;
 }
 
 } // namespace thespis::editor

@@ -17,4 +17,13 @@ QString installTranslators(QCoreApplication& app, const QLocale& locale = QLocal
 /// The languages Thespis ships, as in the .qm names ("de", "en", "fr").
 QStringList availableLanguages();
 
+/// The language chosen in Preferences ("de", "fr", …), or empty for the system's.
+QString preferredLanguage();
+/// Remembers the choice (empty: follow the system); it applies from the next start.
+void setPreferredLanguage(const QString& language);
+/// The locale to translate into: the preferred language, else the system's.
+QLocale preferredLocale();
+/// A language's name in that language ("Deutsch", "Français"), for choosing it.
+QString nativeLanguageName(const QString& language);
+
 } // namespace thespis::editor

@@ -20,6 +20,10 @@ namespace thespis::widgets {
 
 namespace {
 
+// How far (logical pixels, Manhattan) the mouse may move between press and release of a click;
+// further, it is an orbit drag.
+constexpr qreal kClickSlop = 4.0;
+
 // OSG numbers mouse buttons 1 (left), 2 (middle), 3 (right).
 unsigned osgButton(Qt::MouseButton button)
 {
@@ -120,7 +124,14 @@ OsgViewport::~OsgViewport()
 
 void OsgViewport::setSceneData(osg::Node* scene)
 {
+    // OSG sends the manipulator home on a new scene; the user's view stays where it was.
+    const osg::Vec3d centre = m_manipulator->getCenter();
+    const double distance = m_manipulator->getDistance();
+    const osg::Quat rotation = m_manipulator->getRotation();
     m_viewer->setSceneData(scene);
+    m_manipulator->setCenter(centre);
+    m_manipulator->setDistance(distance);
+    m_manipulator->setRotation(rotation);
     update();
 }
 
@@ -154,6 +165,32 @@ void OsgViewport::setFieldOfView(double degrees)
     m_fieldOfView = degrees;
     updateProjection(width(), height());
     update();
+}
+
+bool OsgViewport::rayThrough(const QPointF& position, QVector3D& origin, QVector3D& direction) const
+{
+    const osg::Camera* camera = m_viewer->getCamera();
+    const osg::Viewport* viewport = camera->getViewport();
+    if (!viewport || viewport->width() <= 0 || viewport->height() <= 0)
+        return false;
+    // The GL viewport covers the widget in device pixels; OSG's y grows upwards.
+    const qreal ratio = devicePixelRatio();
+    const double x = 2.0 * (position.x() * ratio - viewport->x()) / viewport->width() - 1.0;
+    const double y = 1.0 - 2.0 * (position.y() * ratio - viewport->y()) / viewport->height();
+    // The manipulator's view is what the camera shows (the viewer copies it every frame); it is
+    // also right between a home() and the next frame. The projection's near and far planes,
+    // which OSG adjusts while culling, do not move the ray.
+    const osg::Matrixd inverse =
+        osg::Matrixd::inverse(m_manipulator->getInverseMatrix() * camera->getProjectionMatrix());
+    const osg::Vec3d nearPoint = osg::Vec3d(x, y, -1.0) * inverse;
+    const osg::Vec3d farPoint = osg::Vec3d(x, y, 1.0) * inverse;
+    osg::Vec3d along = farPoint - nearPoint;
+    if (!(along.length() > 0) || !nearPoint.valid())
+        return false;
+    along.normalize();
+    origin = QVector3D(float(nearPoint.x()), float(nearPoint.y()), float(nearPoint.z()));
+    direction = QVector3D(float(along.x()), float(along.y()), float(along.z()));
+    return true;
 }
 
 void OsgViewport::failGl(const QString& message)
@@ -226,6 +263,9 @@ void OsgViewport::paintEvent(QPaintEvent* event)
 
 void OsgViewport::mousePressEvent(QMouseEvent* event)
 {
+    // A click is the left button alone; any other button pressed meanwhile makes it a drag.
+    m_clickPending = event->button() == Qt::LeftButton && event->buttons() == Qt::LeftButton;
+    m_pressPosition = event->position();
     const qreal ratio = devicePixelRatio();
     m_window->getEventQueue()->mouseButtonPress(float(event->position().x() * ratio),
                                                 float(event->position().y() * ratio), osgButton(event->button()));
@@ -238,10 +278,18 @@ void OsgViewport::mouseReleaseEvent(QMouseEvent* event)
     m_window->getEventQueue()->mouseButtonRelease(float(event->position().x() * ratio),
                                                   float(event->position().y() * ratio), osgButton(event->button()));
     update();
+    const bool click = m_clickPending && event->button() == Qt::LeftButton
+                       && (event->position() - m_pressPosition).manhattanLength() <= kClickSlop;
+    m_clickPending = false;
+    QVector3D origin, direction;
+    if (click && rayThrough(event->position(), origin, direction))
+        emit clicked(origin, direction, event->modifiers());
 }
 
 void OsgViewport::mouseMoveEvent(QMouseEvent* event)
 {
+    if (m_clickPending && (event->position() - m_pressPosition).manhattanLength() > kClickSlop)
+        m_clickPending = false;
     const qreal ratio = devicePixelRatio();
     m_window->getEventQueue()->mouseMotion(float(event->position().x() * ratio), float(event->position().y() * ratio));
     update();

@@ -9,6 +9,7 @@
 // When none can be made the widget paints a message instead of failing, and glError() says why.
 
 #include <QOpenGLWidget>
+#include <QPointF>
 #include <QString>
 #include <QVector3D>
 
@@ -38,7 +39,8 @@ public:
     /// callers show something else when it cannot.
     static bool isSupported();
 
-    /// The scene to draw (shared, not copied); null shows only the clear colour.
+    /// The scene to draw (shared, not copied); null shows only the clear colour. The camera
+    /// stays where it is.
     void setSceneData(osg::Node* scene);
     /// Where the camera goes on "home" (double-click, or Home view): eye, target and up vector.
     void setHomeView(const QVector3D& eye, const QVector3D& centre, const QVector3D& up);
@@ -49,6 +51,11 @@ public:
     void setFieldOfView(double degrees);
     double fieldOfView() const { return m_fieldOfView; }
 
+    /// The world-space ray through `position` (widget coordinates, logical pixels) as the camera
+    /// sees it now: `origin` on the near plane, `direction` unit length. False when the widget
+    /// has no size yet.
+    bool rayThrough(const QPointF& position, QVector3D& origin, QVector3D& direction) const;
+
     /// Empty while the GL context works; otherwise what went wrong, for the status bar.
     QString glErrorText() const { return m_glError; }
     osgViewer::Viewer* viewer() const { return m_viewer.get(); }
@@ -58,6 +65,9 @@ signals:
     void frameDrawn(double milliseconds);
     /// The GL context is missing or too old; the message says which.
     void glError(const QString& message);
+    /// A left click (press and release within a few pixels, no orbit drag in between), as the
+    /// world-space ray through the clicked point (see rayThrough) and the keys held at release.
+    void clicked(const QVector3D& rayOrigin, const QVector3D& rayDirection, Qt::KeyboardModifiers modifiers);
 
 protected:
     void initializeGL() override;
@@ -80,6 +90,9 @@ private:
     QVector3D m_homeEye{0, 1, 4}, m_homeCentre{0, 1, 0}, m_homeUp{0, 1, 0};
     double m_fieldOfView = 30.0;
     QString m_glError;
+    // A left press that may still become a click (until the mouse moves too far).
+    QPointF m_pressPosition;
+    bool m_clickPending = false;
 };
 
 } // namespace thespis::widgets

@@ -31,6 +31,7 @@ constexpr int kClipInset = 3;        // clip bar inset from the lane's top and b
 constexpr int kDragThreshold = 3;    // Manhattan pixels before a press becomes a drag
 constexpr int kFadeHandleRadius = 4; // the fade handle's grab square is 2·r + 1 wide
 constexpr int kMinClipDetail = 24;   // narrower clips are drawn as plain bars: no name, handles
+constexpr int kMinSmoothClipWidth = 80; // narrower clips draw their fade ramps and curve aliased
 constexpr int kOpenFadeWidth = 90;   // an open-ended clip fades out over this many pixels
 constexpr int kFlagWidth = 20, kFlagHeight = 16, kFlagGap = 3, kFlagRight = 8;
 constexpr double kMinPixelsPerSecond = 0.05;
@@ -269,6 +270,22 @@ void TimelineView::frameAll()
     m_pixelsPerSecond = std::clamp(available / seconds, kMinPixelsPerSecond, kMaxPixelsPerSecond);
     updateScrollRanges();
     horizontalScrollBar()->setValue(0);
+    viewport()->update();
+}
+
+void TimelineView::ensureTimeVisible(qint64 ticks)
+{
+    if (ticks == OpenEnd)
+        return;
+    const int lanesLeft = HeaderWidth + kTimePad;
+    const int lanesWidth = viewport()->width() - lanesLeft - kTimePad;
+    if (lanesWidth <= 0)
+        return;
+    const int x = xForTime(ticks);
+    if (x >= lanesLeft && x <= lanesLeft + lanesWidth)
+        return;
+    const double seconds = double(ticks) / double(m_ticksPerSecond);
+    horizontalScrollBar()->setValue(int(std::lround(seconds * m_pixelsPerSecond)) - lanesWidth / 10);
     viewport()->update();
 }
 
@@ -1478,16 +1495,21 @@ void TimelineView::paintClip(QPainter& painter, const ClipItem& item, const QRec
             const QPoint shade[] = {{left, top}, {xf, top}, {left, bottom}};
             painter.setPen(Qt::NoPen);
             painter.setBrush(c.fadeShade);
-            painter.drawPolygon(shade, 3);
+            painter.drawConvexPolygon(shade, 3);
         }
         if (!open && clip.fadeOut > 0) {
             const int xf = std::clamp(xForTime(clip.end - clip.fadeOut), left, right);
             const QPoint shade[] = {{right, top}, {xf, top}, {right, bottom}};
             painter.setPen(Qt::NoPen);
             painter.setBrush(c.fadeShade);
-            painter.drawPolygon(shade, 3);
+            painter.drawConvexPolygon(shade, 3);
         }
-        painter.setRenderHint(QPainter::Antialiasing, true);
+        // Narrow clips (zoomed out, hundreds in view) draw their lines aliased: at that size
+        // smoothing is hardly visible, and switching it on and off per clip costs more than the
+        // drawing itself.
+        const bool smooth = r.width() >= kMinSmoothClipWidth;
+        if (smooth)
+            painter.setRenderHint(QPainter::Antialiasing, true);
         if (clip.fadeIn > 0) {
             painter.setPen(m_fadePen);
             painter.drawLine(QPointF(left, bottom), QPointF(std::clamp(xForTime(clip.start + clip.fadeIn), left, right), top));
@@ -1533,7 +1555,8 @@ void TimelineView::paintClip(QPainter& painter, const ClipItem& item, const QRec
                 painter.drawPolyline(m_points.data(), int(m_points.size()));
             }
         }
-        painter.setRenderHint(QPainter::Antialiasing, false);
+        if (smooth)
+            painter.setRenderHint(QPainter::Antialiasing, false);
     }
 
     if (r.width() >= kMinClipDetail) {

@@ -126,6 +126,9 @@ public:
     /// Zooms so that 0..duration (or the last clip end or marker, if later) fits the lanes, and
     /// scrolls to 0. Before the view has a size, this happens at its first resize.
     void frameAll();
+    /// When `ticks` is outside the visible lanes, scrolls so that it sits a tenth of the lanes'
+    /// width from the left (a playing playhead turns the page); otherwise does nothing.
+    void ensureTimeVisible(qint64 ticks);
 
     // Geometry, in viewport() coordinates (tests drive the mouse with these).
     /// The clip's bar; an open-ended clip runs to the right edge of the viewport. Null if unknown.

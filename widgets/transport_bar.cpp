@@ -1,5 +1,6 @@
 #include "widgets/transport_bar.h"
 
+#include <QComboBox>
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -30,6 +31,27 @@ TransportBar::TransportBar(QWidget* parent) : QWidget(parent)
     m_toStart->setToolTip(tr("Go to the start (Home)"));
     m_toStart->setAutoRaise(true);
     connect(m_toStart, &QToolButton::clicked, this, [this] { emit seekRequested(0.0); });
+
+    auto stepButton = [this](const QString& name, QStyle::StandardPixmap icon, const QString& tip, int frames) {
+        auto* button = new QToolButton(this);
+        button->setObjectName(name);
+        button->setIcon(style()->standardIcon(icon));
+        button->setToolTip(tip);
+        button->setAutoRaise(true);
+        button->setAutoRepeat(true); // held down, it keeps stepping
+        connect(button, &QToolButton::clicked, this, [this, frames] { emit stepRequested(frames); });
+        return button;
+    };
+    m_stepBack = stepButton(QStringLiteral("stepBackButton"), QStyle::SP_MediaSeekBackward,
+                            tr("Previous frame (Left arrow)"), -1);
+    m_stepForward = stepButton(QStringLiteral("stepForwardButton"), QStyle::SP_MediaSeekForward,
+                               tr("Next frame (Right arrow)"), +1);
+    m_toEnd = new QToolButton(this);
+    m_toEnd->setObjectName(QStringLiteral("toEndButton"));
+    m_toEnd->setIcon(style()->standardIcon(QStyle::SP_MediaSkipForward));
+    m_toEnd->setToolTip(tr("Go to the end (End)"));
+    m_toEnd->setAutoRaise(true);
+    connect(m_toEnd, &QToolButton::clicked, this, [this] { emit seekRequested(m_duration); });
 
     m_playPause = new QToolButton(this);
     m_playPause->setObjectName(QStringLiteral("playPauseButton"));
@@ -72,15 +94,28 @@ TransportBar::TransportBar(QWidget* parent) : QWidget(parent)
     // Room for five-digit frame numbers, so that the slider does not shift as they grow.
     m_frameLabel->setMinimumWidth(QFontMetrics(mono).horizontalAdvance(tr("frame %1").arg(99999)));
 
+    m_frameRateChoice = new QComboBox(this);
+    m_frameRateChoice->setObjectName(QStringLiteral("frameRateChoice"));
+    m_frameRateChoice->setToolTip(tr("Frames per second for frame numbers, frame steps and snapping"));
+    for (const double rate : {24.0, 25.0, 30.0, 50.0, 60.0})
+        m_frameRateChoice->addItem(tr("%1 fps").arg(rate), rate);
+    connect(m_frameRateChoice, &QComboBox::activated, this,
+            [this](int index) { emit frameRateRequested(m_frameRateChoice->itemData(index).toDouble()); });
+
     layout->addWidget(m_toStart);
+    layout->addWidget(m_stepBack);
     layout->addWidget(m_playPause);
+    layout->addWidget(m_stepForward);
+    layout->addWidget(m_toEnd);
     layout->addWidget(m_loop);
     layout->addWidget(m_slider, 1);
     layout->addSpacing(6);
     layout->addWidget(m_timeLabel);
     layout->addSpacing(10);
     layout->addWidget(m_frameLabel);
+    layout->addWidget(m_frameRateChoice);
 
+    updateFrameRateChoice();
     updatePlayButton();
     updateLabels();
 }
@@ -128,7 +163,19 @@ void TransportBar::setFrameRate(double framesPerSecond)
 {
     if (framesPerSecond > 0 && std::isfinite(framesPerSecond))
         m_frameRate = framesPerSecond;
+    updateFrameRateChoice();
     updateLabels();
+}
+
+void TransportBar::updateFrameRateChoice()
+{
+    int index = m_frameRateChoice->findData(m_frameRate);
+    if (index < 0) {
+        m_frameRateChoice->addItem(tr("%1 fps").arg(m_frameRate), m_frameRate);
+        index = m_frameRateChoice->count() - 1;
+    }
+    const QSignalBlocker block(m_frameRateChoice);
+    m_frameRateChoice->setCurrentIndex(index);
 }
 
 QString TransportBar::formatTime(double seconds)

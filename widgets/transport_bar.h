@@ -1,11 +1,13 @@
 #pragma once
-// TransportBar: the playback controls under a preview — go to start, play/pause, loop, a
-// scrubbing slider, and the current time as mm:ss.fff with the frame number. A pure view:
+// TransportBar: the playback controls under a preview — go to start, step back a frame,
+// play/pause, step forward, go to end, loop, a scrubbing slider, the current time as mm:ss.fff
+// with the frame number, and the frame rate frames are counted in. A pure view:
 // clicking and dragging emit intents (playRequested, seekRequested, …); what is shown changes
 // only through the setters, which emit nothing, so a clock can drive it without feedback loops.
 
 #include <QWidget>
 
+class QComboBox;
 class QLabel;
 class QSlider;
 class QToolButton;
@@ -28,7 +30,8 @@ public:
     bool isPlaying() const { return m_playing; }
     void setLooping(bool looping);
     bool isLooping() const;
-    /// Frames per second used for the frame number (default 30).
+    /// Frames per second used for the frame number and frame steps (default 30); a rate that
+    /// is not among the choices is added to them.
     void setFrameRate(double framesPerSecond);
     double frameRate() const { return m_frameRate; }
 
@@ -42,14 +45,24 @@ signals:
     void pauseRequested();
     void seekRequested(double seconds);
     void loopRequested(bool enabled);
+    /// Step back (−1) or forward (+1) by one frame.
+    void stepRequested(int frames);
+    /// The user picked another frame rate.
+    void frameRateRequested(double framesPerSecond);
 
 private:
     void updateLabels();
     void updatePlayButton();
     void onSliderValueChanged(int value);
 
+    void updateFrameRateChoice();
+
     QToolButton* m_toStart = nullptr;
+    QToolButton* m_stepBack = nullptr;
     QToolButton* m_playPause = nullptr;
+    QToolButton* m_stepForward = nullptr;
+    QToolButton* m_toEnd = nullptr;
+    QComboBox* m_frameRateChoice = nullptr;
     QToolButton* m_loop = nullptr;
     QSlider* m_slider = nullptr;
     QLabel* m_timeLabel = nullptr;

@@ -94,7 +94,7 @@ int main(int argc, char** argv)
     thespis::studio::installDisplayFailureHandler(scenario, studioPath, cliPath);
     QApplication app(argc, argv);
     thespis::studio::finishDisplayFailureHandler();
-    thespis::editor::installTranslators(app);
+    thespis::editor::installTranslators(app, thespis::editor::preferredLocale());
 
     QCommandLineParser parser;
     setUpParser(parser);

@@ -2,6 +2,7 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QCheckBox>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
@@ -24,13 +25,19 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
 
 #include "editor/autosave.h"
+#include "editor/bake_panel.h"
 #include "editor/clip_library_panel.h"
 #include "editor/curve_panel.h"
 #include "editor/error_dialog.h"
+#include "editor/gesticon_panel.h"
 #include "editor/joint_mask_panel.h"
+#include "editor/properties_panel.h"
+#include "preferences_dialog.h"
 #include "editor/scenario_tree_model.h"
+#include "editor/segment_panel.h"
 #include "editor/timeline_panel.h"
 #include "widgets/osg_viewport.h"
 #include "widgets/pose_view.h"
@@ -46,6 +53,7 @@ constexpr int kMaxRecentFiles = 8;
 const QString kRecentFilesKey = QStringLiteral("recentFiles");
 const QString kWindowStateKey = QStringLiteral("mainWindow/state");
 const QString kWindowGeometryKey = QStringLiteral("mainWindow/geometry");
+const QString kFrameRateKey = QStringLiteral("playback/frameRate");
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
@@ -81,6 +89,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     }
     m_poseView = new widgets::PoseView(m_views);
     m_poseView->setObjectName(QStringLiteral("poseView"));
+    // A click in either view gives it the keyboard, so that the arrows then step frames.
+    if (m_viewport)
+        m_viewport->setFocusPolicy(Qt::StrongFocus);
+    m_poseView->setFocusPolicy(Qt::StrongFocus);
     m_views->addTab(scene, tr("Scene"));
     m_views->addTab(m_poseView, tr("Skeletons"));
     m_poseView->setPlaceholderText(tr("No scenario is open.\nUse File ▸ Open… (Ctrl+O) to open a .thespis file."));
@@ -106,8 +118,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
         m_loopAction->setChecked(looping);
     });
     connect(m_clock, &editor::PlaybackClock::durationChanged, m_transport, &widgets::TransportBar::setDuration);
+    connect(m_transport, &widgets::TransportBar::stepRequested, m_clock, &editor::PlaybackClock::step);
+    connect(m_transport, &widgets::TransportBar::frameRateRequested, this, &MainWindow::setFrameRate);
 
     m_autosaver = new editor::Autosaver(this);
+    m_autosaver->setInterval(PreferencesDialog::storedAutosaveMinutes() * 60 * 1000);
     connect(m_autosaver, &editor::Autosaver::failed, this, [this](const QString& message) { statusBar()->showMessage(message, 10000); });
 
     createActions();
@@ -127,6 +142,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     resizeDocks({m_outlineDock}, {std::min(420, width() / 3)}, Qt::Horizontal);
     resizeDocks({m_editorDocks.front()}, {std::min(300, height() / 3)}, Qt::Vertical);
     const QSettings settings;
+    setFrameRate(settings.value(kFrameRateKey, 30.0).toDouble());
     restoreGeometry(settings.value(kWindowGeometryKey).toByteArray());
     restoreState(settings.value(kWindowStateKey).toByteArray());
     setDocument(nullptr);
@@ -140,6 +156,10 @@ MainWindow::~MainWindow()
     m_curves->setDocument(nullptr);
     m_masks->setDocument(nullptr);
     m_library->setDocument(nullptr);
+    m_properties->setDocument(nullptr);
+    m_gesticon->setDocument(nullptr);
+    m_segments->setDocument(nullptr);
+    m_bake->setDocument(nullptr);
     m_samplers.clear();
     if (m_preview)
         (void)m_preview->setDocument(nullptr);
@@ -194,6 +214,24 @@ void MainWindow::createActions()
     connect(m_toStartAction, &QAction::triggered, m_clock, [this] { m_clock->seek(0.0); });
     addAction(m_toStartAction);
 
+    m_toEndAction = new QAction(tr("Go to &End"), this);
+    m_toEndAction->setShortcut(Qt::Key_End);
+    connect(m_toEndAction, &QAction::triggered, m_clock, [this] { m_clock->seek(m_clock->duration()); });
+    addAction(m_toEndAction);
+
+    // The arrows step frames where they mean nothing else: in the views, the transport and the
+    // timeline (added there in createEditorDocks); lists and fields keep them for moving about.
+    m_stepBackAction = new QAction(tr("Previous &Frame"), this);
+    m_stepBackAction->setShortcut(Qt::Key_Left);
+    m_stepBackAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    connect(m_stepBackAction, &QAction::triggered, m_clock, [this] { m_clock->step(-1); });
+    m_stepForwardAction = new QAction(tr("&Next Frame"), this);
+    m_stepForwardAction->setShortcut(Qt::Key_Right);
+    m_stepForwardAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    connect(m_stepForwardAction, &QAction::triggered, m_clock, [this] { m_clock->step(1); });
+    centralWidget()->addAction(m_stepBackAction);
+    centralWidget()->addAction(m_stepForwardAction);
+
     m_loopAction = new QAction(tr("&Loop"), this);
     m_loopAction->setCheckable(true);
     m_loopAction->setShortcut(Qt::Key_L);
@@ -212,6 +250,16 @@ void MainWindow::createActions()
         action->setChecked(projection == m_poseView->projection());
         connect(action, &QAction::triggered, m_poseView, [this, projection = projection] { m_poseView->setProjection(projection); });
     }
+
+    m_preferencesAction = new QAction(tr("&Preferences…"), this);
+    m_preferencesAction->setObjectName(QStringLiteral("preferences"));
+    m_preferencesAction->setMenuRole(QAction::PreferencesRole);
+    m_preferencesAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Comma));
+    connect(m_preferencesAction, &QAction::triggered, this, [this] {
+        PreferencesDialog dialog(this);
+        if (dialog.exec() == QDialog::Accepted)
+            m_autosaver->setInterval(PreferencesDialog::storedAutosaveMinutes() * 60 * 1000);
+    });
 
     m_aboutAction = new QAction(tr("&About Thespis Studio"), this);
     m_aboutAction->setMenuRole(QAction::AboutRole);
@@ -248,6 +296,8 @@ void MainWindow::createMenus()
     edit->addAction(m_timeline->splitAction());
     edit->addSeparator();
     edit->addAction(m_timeline->snapAction());
+    edit->addSeparator();
+    edit->addAction(m_preferencesAction);
     for (QAction* action : {m_timeline->copyAction(), m_timeline->pasteAction(), m_timeline->duplicateAction(),
                             m_timeline->deleteAction(), m_timeline->rippleDeleteAction(), m_timeline->splitAction()})
         addAction(action);
@@ -255,6 +305,9 @@ void MainWindow::createMenus()
     QMenu* playback = menuBar()->addMenu(tr("&Playback"));
     playback->addAction(m_playPauseAction);
     playback->addAction(m_toStartAction);
+    playback->addAction(m_toEndAction);
+    playback->addAction(m_stepBackAction);
+    playback->addAction(m_stepForwardAction);
     playback->addAction(m_loopAction);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
@@ -290,7 +343,7 @@ void MainWindow::createShadingActions()
         action->setChecked(shading == core::render::Shading::Prt);
         action->setObjectName(QStringLiteral("shading_") + QLatin1String(core::render::shadingName(shading)));
         if (haveScene)
-            connect(action, &QAction::triggered, m_preview, [this, shading = shading] { m_preview->setShading(shading); });
+            connect(action, &QAction::triggered, this, [this, shading = shading] { setShading(shading); });
     }
     m_shadingGroup->setEnabled(haveScene);
     m_shadingGroup->actions().at(0)->setStatusTip(tr("Precomputed radiance transfer: soft light and self-shadowing from the light probe"));
@@ -342,22 +395,47 @@ void MainWindow::createEditorDocks()
     m_curves = new editor::CurvePanel(this);
     m_masks = new editor::JointMaskPanel(this);
     m_library = new editor::ClipLibraryPanel(this);
+    m_properties = new editor::PropertiesPanel(this);
+    m_gesticon = new editor::GesticonPanel(this);
+    m_gesticon->setClock(m_clock);
+    m_segments = new editor::SegmentPanel(this);
+    m_bake = new editor::BakePanel(this);
+    m_bake->prtPreviewCheck()->setEnabled(m_preview != nullptr);
+    connect(m_bake, &editor::BakePanel::prtPreviewToggled, this,
+            [this](bool prt) { setShading(prt ? core::render::Shading::Prt : core::render::Shading::Phong); });
+    if (m_preview) {
+        m_gesticon->setScenePreview(m_preview);
+        m_segments->setScenePreview(m_preview);
+    }
+    m_timeline->addAction(m_stepBackAction);
+    m_timeline->addAction(m_stepForwardAction);
     QDockWidget* timelineDock = dock(tr("Timeline"), QStringLiteral("timelineDock"), m_timeline, Qt::BottomDockWidgetArea);
     QDockWidget* curveDock = dock(tr("Curve Editor"), QStringLiteral("curveDock"), m_curves, Qt::BottomDockWidgetArea);
     tabifyDockWidget(timelineDock, curveDock);
     timelineDock->raise();
-    dock(tr("Joint Mask"), QStringLiteral("maskDock"), m_masks, Qt::RightDockWidgetArea);
+    QDockWidget* propertiesDock = dock(tr("Properties"), QStringLiteral("propertiesDock"), m_properties, Qt::RightDockWidgetArea);
+    QDockWidget* maskDock = dock(tr("Joint Mask"), QStringLiteral("maskDock"), m_masks, Qt::RightDockWidgetArea);
+    tabifyDockWidget(propertiesDock, maskDock);
+    QDockWidget* segmentsDock = dock(tr("Segments"), QStringLiteral("segmentsDock"), m_segments, Qt::RightDockWidgetArea);
+    tabifyDockWidget(maskDock, segmentsDock);
+    QDockWidget* bakeDock = dock(tr("Bake"), QStringLiteral("bakeDock"), m_bake, Qt::RightDockWidgetArea);
+    tabifyDockWidget(segmentsDock, bakeDock);
+    propertiesDock->raise();
     QDockWidget* libraryDock = dock(tr("Clip Library"), QStringLiteral("clipLibraryDock"), m_library, Qt::LeftDockWidgetArea);
     tabifyDockWidget(m_outlineDock, libraryDock);
+    QDockWidget* gesticonDock = dock(tr("Gesticon"), QStringLiteral("gesticonDock"), m_gesticon, Qt::LeftDockWidgetArea);
+    tabifyDockWidget(libraryDock, gesticonDock);
     m_outlineDock->raise();
 
     connect(m_timeline, &editor::TimelinePanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     connect(m_curves, &editor::CurvePanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     connect(m_masks, &editor::JointMaskPanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    connect(m_properties, &editor::PropertiesPanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     connect(m_timeline, &editor::TimelinePanel::seekRequested, m_clock, &editor::PlaybackClock::seek);
     connect(m_timeline, &editor::TimelinePanel::currentActionChanged, this,
             [this](std::optional<core::edit::ActionPath> action) {
                 m_curves->setAction(action);
+                m_properties->setAction(action);
                 if (action && m_document) {
                     const auto& spec = m_document->scenario().characters[std::size_t(action->character)]
                                            .layers[std::size_t(action->layer)].actions[std::size_t(action->action)];
@@ -402,6 +480,10 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
     m_curves->setDocument(nullptr);
     m_masks->setDocument(nullptr);
     m_library->setDocument(nullptr);
+    m_properties->setDocument(nullptr);
+    m_gesticon->setDocument(nullptr);
+    m_segments->setDocument(nullptr);
+    m_bake->setDocument(nullptr);
     m_autosaver->setDocument(nullptr);
     m_samplers.clear();
     if (m_document)
@@ -417,6 +499,10 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
         m_curves->setDocument(m_document.get());
         m_masks->setDocument(m_document.get());
         m_library->setDocument(m_document.get());
+        m_properties->setDocument(m_document.get());
+        m_gesticon->setDocument(m_document.get());
+        m_segments->setDocument(m_document.get());
+        m_bake->setDocument(m_document.get());
         m_autosaver->setDocument(m_document.get());
     }
 
@@ -470,6 +556,9 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
     m_saveAsAction->setEnabled(open);
     m_playPauseAction->setEnabled(open);
     m_toStartAction->setEnabled(open);
+    m_toEndAction->setEnabled(open);
+    m_stepBackAction->setEnabled(open);
+    m_stepForwardAction->setEnabled(open);
     m_loopAction->setEnabled(open);
     m_clock->setDuration(open ? m_document->previewDuration() : 0.0);
     m_transport->setDuration(m_clock->duration());
@@ -580,6 +669,27 @@ void MainWindow::updateFps()
     else
         m_fpsLabel->setText(tr("Playing"));
     m_framesSinceFps = 0;
+}
+
+void MainWindow::setFrameRate(double framesPerSecond)
+{
+    // Whole rates only: the timeline snaps to frames in exact ticks.
+    const int rate = std::clamp(int(std::lround(framesPerSecond)), 1, 240);
+    m_clock->setFrameRate(rate);
+    m_transport->setFrameRate(rate);
+    m_timeline->setFrameRate(rate);
+    QSettings().setValue(kFrameRateKey, rate);
+}
+
+void MainWindow::setShading(core::render::Shading shading)
+{
+    if (!m_preview)
+        return;
+    m_preview->setShading(shading);
+    for (QAction* action : m_shadingGroup->actions())
+        if (action->objectName() == QStringLiteral("shading_") + QLatin1String(core::render::shadingName(shading)))
+            action->setChecked(true);
+    m_bake->setPrtPreview(shading == core::render::Shading::Prt);
 }
 
 void MainWindow::updateTitle()

@@ -31,7 +31,11 @@ namespace thespis::editor {
 class Autosaver;
 class ClipLibraryPanel;
 class CurvePanel;
+class BakePanel;
+class GesticonPanel;
+class SegmentPanel;
 class JointMaskPanel;
+class PropertiesPanel;
 class ScenarioTreeModel;
 class TimelinePanel;
 }
@@ -68,6 +72,10 @@ public:
     editor::CurvePanel* curveEditor() const { return m_curves; }
     editor::JointMaskPanel* maskEditor() const { return m_masks; }
     editor::ClipLibraryPanel* clipLibrary() const { return m_library; }
+    editor::PropertiesPanel* properties() const { return m_properties; }
+    editor::GesticonPanel* gesticon() const { return m_gesticon; }
+    editor::SegmentPanel* segments() const { return m_segments; }
+    editor::BakePanel* bakePanel() const { return m_bake; }
     editor::Autosaver* autosaver() const { return m_autosaver; }
     QAction* undoAction() const { return m_undoAction; }
     QAction* redoAction() const { return m_redoAction; }
@@ -104,6 +112,8 @@ private:
     void onPlayingChanged(bool playing);
     void updateFps();
     void updateTitle();
+    void setFrameRate(double framesPerSecond);
+    void setShading(core::render::Shading shading);
 
     // The samplers point into the document's runtime: declared after it, destroyed before it.
     std::unique_ptr<editor::Document> m_document;
@@ -122,6 +132,10 @@ private:
     editor::CurvePanel* m_curves = nullptr;
     editor::JointMaskPanel* m_masks = nullptr;
     editor::ClipLibraryPanel* m_library = nullptr;
+    editor::PropertiesPanel* m_properties = nullptr;
+    editor::GesticonPanel* m_gesticon = nullptr;
+    editor::SegmentPanel* m_segments = nullptr;
+    editor::BakePanel* m_bake = nullptr;
     editor::Autosaver* m_autosaver = nullptr;
     QList<QDockWidget*> m_editorDocks;
     QMenu* m_recentMenu = nullptr;
@@ -139,11 +153,15 @@ private:
     QAction* m_quitAction = nullptr;
     QAction* m_playPauseAction = nullptr;
     QAction* m_toStartAction = nullptr;
+    QAction* m_toEndAction = nullptr;
+    QAction* m_stepBackAction = nullptr;
+    QAction* m_stepForwardAction = nullptr;
     QAction* m_loopAction = nullptr;
     QActionGroup* m_projectionGroup = nullptr;
     QActionGroup* m_shadingGroup = nullptr;
     QAction* m_groundAction = nullptr;
     QAction* m_homeViewAction = nullptr;
+    QAction* m_preferencesAction = nullptr;
     QAction* m_aboutAction = nullptr;
     QAction* m_aboutQtAction = nullptr;
 

@@ -22,6 +22,7 @@ private slots:
     void playAtTheEndStartsOver();
     void loopsOverTheTimeline();
     void doesNotPlayAnEmptyTimeline();
+    void stepsWholeFrames();
 };
 
 void PlaybackClockTest::playsInRealTime()
@@ -162,6 +163,32 @@ void PlaybackClockTest::doesNotPlayAnEmptyTimeline()
     clock.setDuration(std::numeric_limits<double>::infinity());
     QCOMPARE(clock.duration(), 0.0);
     clock.play();
+    QVERIFY(!clock.isPlaying());
+}
+
+void PlaybackClockTest::stepsWholeFrames()
+{
+    PlaybackClock clock;
+    clock.setDuration(2.0);
+    clock.setFrameRate(25);
+    clock.step(1);
+    QCOMPARE(clock.time(), 0.04);
+    clock.step(3);
+    QCOMPARE(clock.time(), 4 / 25.0);
+    clock.seek(0.5 + 0.01); // inside frame 12: back lands on its start, forward on 13
+    clock.step(-1);
+    QCOMPARE(clock.time(), 12 / 25.0);
+    clock.step(-1);
+    QCOMPARE(clock.time(), 11 / 25.0);
+    clock.step(-100);
+    QCOMPARE(clock.time(), 0.0);
+    clock.seek(1.99);
+    clock.step(5);
+    QCOMPARE(clock.time(), 2.0);
+    clock.seek(0.0);
+    clock.play();
+    QVERIFY(clock.isPlaying());
+    clock.step(1); // stepping pauses
     QVERIFY(!clock.isPlaying());
 }
 

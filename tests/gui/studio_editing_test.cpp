@@ -7,12 +7,17 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QLineEdit>
+#include <QSpinBox>
 #include <QMimeData>
 #include <QProcess>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTranslator>
+#include <QLabel>
+#include <QTabWidget>
 #include <QUndoStack>
 
 #include <cmath>
@@ -24,11 +29,16 @@
 #include "editor/curve_panel.h"
 #include "editor/document.h"
 #include "editor/joint_mask_panel.h"
+#include "editor/playback_clock.h"
+#include "editor/properties_panel.h"
+#include "editor/translations.h"
 #include "editor/timeline_panel.h"
 #include "main_window.h"
+#include "preferences_dialog.h"
 #include "scenario/scenario_io.h"
 #include "widgets/joint_mask_view.h"
 #include "widgets/timeline_view.h"
+#include "widgets/transport_bar.h"
 
 using namespace thespis;
 using core::edit::ActionPath;
@@ -88,6 +98,9 @@ private slots:
     void paintingAMaskSetsJointWeights();
     void saveAndReopenGiveTheSameDocument();
     void autosavedWorkSurvivesKill9();
+    void propertiesEditTheSelectedAction();
+    void framesStepWithTheArrowsAndEndGoesToTheEnd();
+    void preferencesChooseTheLanguage();
 
 private:
     std::unique_ptr<studio::MainWindow> m_window;
@@ -221,6 +234,104 @@ void StudioEditingTest::curvePresetChangesTheEvaluatedWeights()
     document.undoStack()->undo();
     document.undoStack()->undo();
     QCOMPARE(actionAt(document, wave).weight.kind(), core::anim::CurveKind::CubicAdsr);
+}
+
+void StudioEditingTest::propertiesEditTheSelectedAction()
+{
+    editor::Document& document = *m_window->document();
+    editor::PropertiesPanel* properties = m_window->properties();
+    qobject_cast<QDockWidget*>(properties->parentWidget())->raise();
+    const ActionPath wave{0, 0, 1};
+    const core::scenario::ActionSpec original = actionAt(document, wave);
+    m_window->timeline()->selectActions({wave});
+    QVERIFY(properties->action() == wave);
+    QCOMPARE(properties->nameEdit()->text(), QString::fromStdString(original.name));
+    QCOMPARE(properties->startEdit()->value(), core::ticksToSeconds(original.start));
+
+    // Type a new start: the action moves there, as one undo step.
+    properties->startEdit()->setFocus();
+    properties->startEdit()->selectAll();
+    QTest::keyClicks(properties->startEdit(), QStringLiteral("2.5"));
+    QTest::keyClick(properties->startEdit(), Qt::Key_Return);
+    QCOMPARE(actionAt(document, wave).start, core::secondsToTicks(2.5));
+    QCOMPARE(document.undoStack()->count(), 1);
+
+    // Rename and change the body part; each one step, undo restores the action exactly.
+    properties->nameEdit()->setFocus();
+    properties->nameEdit()->selectAll();
+    QTest::keyClicks(properties->nameEdit(), QStringLiteral("big wave"));
+    QTest::keyClick(properties->nameEdit(), Qt::Key_Return);
+    QCOMPARE(actionAt(document, wave).name, std::string("big wave"));
+    QComboBox* mask = properties->maskChoice();
+    const int wholeBody = mask->findData(QString());
+    QVERIFY(wholeBody >= 0);
+    mask->setCurrentIndex(wholeBody);
+    emit mask->activated(wholeBody);
+    QCOMPARE(actionAt(document, wave).mask, std::string());
+    QCOMPARE(document.undoStack()->count(), 3);
+    saveScreenshot(properties, QStringLiteral("properties_panel.png"));
+    while (document.undoStack()->canUndo())
+        document.undoStack()->undo();
+    QCOMPARE(actionAt(document, wave), original);
+    QCOMPARE(properties->nameEdit()->text(), QString::fromStdString(original.name));
+
+    m_window->timeline()->selectActions({});
+    QVERIFY(!properties->action());
+}
+
+void StudioEditingTest::framesStepWithTheArrowsAndEndGoesToTheEnd()
+{
+    editor::PlaybackClock* clock = m_window->clock();
+    QWidget* scene = m_window->views()->currentWidget();
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    QTest::mouseClick(scene, Qt::LeftButton, {}, QPoint(5, 5)); // a click gives the view the keys
+    QCOMPARE(QApplication::focusWidget(), scene);
+    QTest::keyClick(scene, Qt::Key_Right);
+    QTest::keyClick(scene, Qt::Key_Right);
+    QCOMPARE(clock->time(), 2.0 / clock->frameRate());
+    QTest::keyClick(scene, Qt::Key_Left);
+    QCOMPARE(clock->time(), 1.0 / clock->frameRate());
+    QTest::keyClick(scene, Qt::Key_End);
+    QCOMPARE(clock->time(), clock->duration());
+    QTest::keyClick(scene, Qt::Key_Home);
+    QCOMPARE(clock->time(), 0.0);
+
+    // A frame rate picked in the transport steps in its frames and is remembered.
+    auto* rate = m_window->transportBar()->findChild<QComboBox*>(QStringLiteral("frameRateChoice"));
+    QVERIFY(rate);
+    const int index = rate->findData(25.0);
+    rate->setCurrentIndex(index);
+    emit rate->activated(index);
+    QCOMPARE(clock->frameRate(), 25.0);
+    QTest::keyClick(scene, Qt::Key_Right);
+    QCOMPARE(clock->time(), 0.04);
+    QCOMPARE(QSettings().value(QStringLiteral("playback/frameRate")).toInt(), 25);
+}
+
+void StudioEditingTest::preferencesChooseTheLanguage()
+{
+    studio::PreferencesDialog dialog(m_window.get());
+    QComboBox* language = dialog.languageChoice();
+    QCOMPARE(language->currentData().toString(), QString()); // the system's by default
+    QVERIFY(language->findData(QStringLiteral("de")) > 0);
+    QVERIFY(language->findData(QStringLiteral("fr")) > 0);
+    QCOMPARE(language->itemText(language->findData(QStringLiteral("fr"))), QStringLiteral("Français"));
+    language->setCurrentIndex(language->findData(QStringLiteral("de")));
+    QVERIFY(dialog.findChild<QLabel*>(QStringLiteral("restartNote"))->isVisibleTo(&dialog));
+    dialog.autosaveMinutes()->setValue(5);
+    saveScreenshot(&dialog, QStringLiteral("preferences.png"));
+    dialog.apply();
+    QCOMPARE(editor::preferredLanguage(), QStringLiteral("de"));
+    QCOMPARE(editor::preferredLocale().language(), QLocale::German);
+    QCOMPARE(studio::PreferencesDialog::storedAutosaveMinutes(), 5);
+
+    // What the studio's main() then installs: German texts.
+    QTranslator probe;
+    QVERIFY(probe.load(editor::preferredLocale(), QStringLiteral("thespis"), QStringLiteral("_"), QStringLiteral(":/i18n")));
+    QVERIFY(probe.language().startsWith(QStringLiteral("de")));
+    editor::setPreferredLanguage({});
+    QCOMPARE(editor::preferredLanguage(), QString());
 }
 
 void StudioEditingTest::paintingAMaskSetsJointWeights()

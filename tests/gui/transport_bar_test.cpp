@@ -1,5 +1,6 @@
 // TransportBar: time formatting, and that user gestures (and only they) emit intents.
 
+#include <QComboBox>
 #include <QLabel>
 #include <QSignalSpy>
 #include <QSlider>
@@ -22,6 +23,8 @@ private slots:
     void playButtonAsksForPlayOrPause();
     void loopButtonRequestsLooping();
     void clockDoesNotFightADrag();
+    void stepAndEndButtons();
+    void frameRateChoice();
 
 private:
     static QSlider* slider(TransportBar& bar) { return bar.findChild<QSlider*>(QStringLiteral("timeSlider")); }
@@ -175,6 +178,43 @@ void TransportBarTest::clockDoesNotFightADrag()
     QTest::mouseRelease(s, Qt::LeftButton, {}, handleCentre(s));
     bar.setTime(7.0);
     QCOMPARE(s->value(), 7000);
+}
+
+void TransportBarTest::stepAndEndButtons()
+{
+    TransportBar bar;
+    bar.setDuration(12.5);
+    QSignalSpy steps(&bar, &TransportBar::stepRequested);
+    QSignalSpy seeks(&bar, &TransportBar::seekRequested);
+    QTest::mouseClick(bar.findChild<QToolButton*>(QStringLiteral("stepForwardButton")), Qt::LeftButton);
+    QTest::mouseClick(bar.findChild<QToolButton*>(QStringLiteral("stepBackButton")), Qt::LeftButton);
+    QCOMPARE(steps.size(), 2);
+    QCOMPARE(steps.at(0).at(0).toInt(), 1);
+    QCOMPARE(steps.at(1).at(0).toInt(), -1);
+    QTest::mouseClick(bar.findChild<QToolButton*>(QStringLiteral("toEndButton")), Qt::LeftButton);
+    QCOMPARE(seeks.size(), 1);
+    QCOMPARE(seeks.at(0).at(0).toDouble(), 12.5);
+}
+
+void TransportBarTest::frameRateChoice()
+{
+    TransportBar bar;
+    auto* choice = bar.findChild<QComboBox*>(QStringLiteral("frameRateChoice"));
+    QVERIFY(choice);
+    QCOMPARE(choice->currentData().toDouble(), 30.0);
+    QSignalSpy requests(&bar, &TransportBar::frameRateRequested);
+    bar.setFrameRate(24); // the clock's rate: shown, not requested back
+    QCOMPARE(choice->currentData().toDouble(), 24.0);
+    bar.setFrameRate(29.97); // not among the choices: added
+    QCOMPARE(choice->currentData().toDouble(), 29.97);
+    QCOMPARE(requests.size(), 0);
+    bar.setTime(1.0);
+    QVERIFY(bar.findChild<QLabel*>(QStringLiteral("frameLabel"))->text().contains(QStringLiteral("29")));
+    const int sixty = choice->findData(60.0);
+    QVERIFY(sixty >= 0);
+    emit choice->activated(sixty); // what a user's pick emits
+    QCOMPARE(requests.size(), 1);
+    QCOMPARE(requests.at(0).at(0).toDouble(), 60.0);
 }
 
 QTEST_MAIN(TransportBarTest)

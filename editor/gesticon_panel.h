@@ -1,0 +1,111 @@
+#pragma once
+// GesticonPanel: the gesticon editor (paper §5): the gesture database of one character of the
+// document — name, clip, body part (mask), default fades, dependent-joint filter — as an
+// editable table (GesticonModel) with combo boxes for the clip and the body part and spin boxes
+// for the fades; Add / Remove / Rename, each one undoable edit; and Preview, which plays the
+// selected gesture on the character in the 3D view.
+//
+// A preview does not change the document: the panel builds a copy of the scenario with the
+// gesture as an action on a layer of its own ("Gesture preview", blending over the character's
+// other layers the way a triggered gesture does: its mask, its fades, override mode), shows that
+// copy's runtime through ScenePreview::previewRuntime, and plays the clock from its current time
+// to the end of the gesture. The document's runtime comes back, and the playhead returns to
+// where the preview began, when the gesture ends, when the user stops (the Stop button, or
+// pausing the clock), on any edit and when the document or character changes.
+
+#include <QPointer>
+#include <QWidget>
+
+#include "scenario/scenario_runtime.h"
+
+class QComboBox;
+class QLabel;
+class QTableView;
+class QToolButton;
+
+namespace thespis::editor {
+
+class Document;
+class GesticonModel;
+class PlaybackClock;
+class ScenePreview;
+
+class GesticonPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit GesticonPanel(QWidget* parent = nullptr);
+    ~GesticonPanel() override;
+
+    /// The document edited (null: none). Shows its first character.
+    void setDocument(Document* document);
+    /// The 3D view previews play in; without one (no OpenGL) Preview is disabled.
+    void setScenePreview(ScenePreview* preview);
+    /// The clock previews play on (the one the 3D view follows); without one Preview is disabled.
+    void setClock(PlaybackClock* clock);
+
+    QTableView* table() const { return m_table; }
+    GesticonModel* model() const { return m_model; }
+    QComboBox* characterCombo() const { return m_characters; }
+    QToolButton* previewButton() const { return m_preview; }
+    /// The text of the message line (the last refused edit or failed preview), empty when none.
+    QString message() const;
+
+    /// Index of the character shown (-1: none).
+    int currentCharacter() const;
+    void setCurrentCharacter(int character);
+    /// The selected rows, in order (the current row when nothing is selected).
+    QList<int> selectedRows() const;
+    /// Selects one row (and makes it current).
+    void selectRow(int row);
+
+    /// Adds a gesture playing the character's first clip, named "gesture", "gesture 2", …, and
+    /// selects it. One undoable edit.
+    void addGesture();
+    /// Removes the selected gestures: one undoable edit, however many.
+    void removeSelected();
+    /// Starts editing the name of the current gesture in the table.
+    void renameSelected();
+    /// Plays the selected gesture on its character (see the class comment); restarts when a
+    /// preview is already playing. Failures go to the message line.
+    void preview();
+    /// Ends a preview and restores the document's runtime; nothing when none plays.
+    void stopPreview();
+    bool isPreviewing() const { return m_previewing; }
+
+signals:
+    void previewingChanged(bool previewing);
+
+private:
+    void refreshCharacters();
+    void updateActions();
+    void showMessage(const QString& message);
+    void onClockTime(double seconds);
+    // Stops the preview playing now from the event loop: for stops asked for from inside the
+    // clock's or the document's signals, which the stop's own clock changes must not re-enter.
+    void stopPreviewLater();
+
+    QPointer<Document> m_document;
+    QPointer<ScenePreview> m_scenePreview;
+    QPointer<PlaybackClock> m_clock;
+    GesticonModel* m_model = nullptr;
+    QComboBox* m_characters = nullptr;
+    QTableView* m_table = nullptr;
+    QToolButton* m_add = nullptr;
+    QToolButton* m_remove = nullptr;
+    QToolButton* m_rename = nullptr;
+    QToolButton* m_preview = nullptr;
+    QLabel* m_message = nullptr;
+    QString m_keptSelection; // the current gesture's name across a model reset
+
+    // The preview playing, if any.
+    bool m_previewing = false;
+    int m_previewSerial = 0;
+    double m_previewStart = 0;
+    double m_previewEnd = 0;
+    double m_previewClockDuration = 0; // what the preview set the clock's duration to
+    double m_savedClockDuration = 0;
+    bool m_savedLooping = false;
+    core::scenario::ClipFileCache m_clipCache; // BVH files read by previews
+};
+
+} // namespace thespis::editor

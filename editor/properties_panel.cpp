@@ -1,0 +1,287 @@
+#include "editor/properties_panel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSignalBlocker>
+#include <QStackedWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+#include "edit/document_edits.h"
+#include "editor/document.h"
+#include "editor/qt_conversions.h"
+
+namespace thespis::editor {
+
+using core::scenario::ActionSpec;
+using core::scenario::ModifierKind;
+using core::scenario::ModifierSpec;
+
+namespace {
+
+const ActionSpec* actionAt(const core::scenario::Scenario& scenario, const core::edit::ActionPath& path)
+{
+    if (path.character < 0 || std::size_t(path.character) >= scenario.characters.size())
+        return nullptr;
+    const auto& layers = scenario.characters[std::size_t(path.character)].layers;
+    if (path.layer < 0 || std::size_t(path.layer) >= layers.size())
+        return nullptr;
+    const auto& actions = layers[std::size_t(path.layer)].actions;
+    if (path.action < 0 || std::size_t(path.action) >= actions.size())
+        return nullptr;
+    return &actions[std::size_t(path.action)];
+}
+
+QString seconds(double value)
+{
+    return PropertiesPanel::tr("%1 s").arg(value, 0, 'f', 3);
+}
+
+QString describeModifier(const ModifierSpec& modifier)
+{
+    switch (modifier.kind) {
+    case ModifierKind::TimeStretch:
+        return PropertiesPanel::tr("time stretch ×%1").arg(modifier.factor, 0, 'g', 4);
+    case ModifierKind::TimeWarp:
+        return PropertiesPanel::tr("time warp over %1").arg(seconds(modifier.duration));
+    case ModifierKind::Loop:
+        return modifier.count == 0 ? PropertiesPanel::tr("loop forever")
+                                   : PropertiesPanel::tr("loop ×%1").arg(modifier.count);
+    case ModifierKind::Mirror:
+        return PropertiesPanel::tr("mirror left/right");
+    case ModifierKind::GlobalTransform:
+        return PropertiesPanel::tr("moved to (%1, %2, %3) m")
+            .arg(modifier.translation.x, 0, 'f', 2)
+            .arg(modifier.translation.y, 0, 'f', 2)
+            .arg(modifier.translation.z, 0, 'f', 2);
+    case ModifierKind::TimeOffset:
+        return PropertiesPanel::tr("offset %1").arg(seconds(modifier.offset));
+    case ModifierKind::Trim:
+        return PropertiesPanel::tr("trim %1 – %2").arg(seconds(modifier.start), seconds(modifier.end));
+    }
+    return {};
+}
+
+} // namespace
+
+PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent)
+{
+    setObjectName(QStringLiteral("propertiesPanel"));
+    auto* layout = new QVBoxLayout(this);
+    m_pages = new QStackedWidget(this);
+    layout->addWidget(m_pages);
+
+    m_scenarioSummary = new QLabel(m_pages);
+    m_scenarioSummary->setObjectName(QStringLiteral("scenarioSummary"));
+    m_scenarioSummary->setWordWrap(true);
+    m_scenarioSummary->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    m_scenarioSummary->setTextFormat(Qt::RichText);
+    m_pages->addWidget(m_scenarioSummary);
+
+    auto* actionPage = new QWidget(m_pages);
+    auto* form = new QFormLayout(actionPage);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    m_owner = new QLabel(actionPage);
+    m_owner->setObjectName(QStringLiteral("actionOwner"));
+    m_name = new QLineEdit(actionPage);
+    m_name->setObjectName(QStringLiteral("actionName"));
+    m_clip = new QComboBox(actionPage);
+    m_clip->setObjectName(QStringLiteral("actionClip"));
+    m_start = new QDoubleSpinBox(actionPage);
+    m_start->setObjectName(QStringLiteral("actionStart"));
+    m_start->setDecimals(3);
+    m_start->setRange(0.0, 24 * 3600.0);
+    m_start->setSingleStep(1.0 / 30.0);
+    m_start->setSuffix(tr(" s"));
+    m_start->setKeyboardTracking(false); // one edit when typing is done, not one per digit
+    m_mode = new QComboBox(actionPage);
+    m_mode->setObjectName(QStringLiteral("actionMode"));
+    m_mode->addItem(tr("Normalized (weighted average)"), int(core::anim::BlendMode::Normalized));
+    m_mode->addItem(tr("Additive (on top of the layers below)"), int(core::anim::BlendMode::Additive));
+    m_mode->addItem(tr("Override (replaces by its weight)"), int(core::anim::BlendMode::Override));
+    m_mask = new QComboBox(actionPage);
+    m_mask->setObjectName(QStringLiteral("actionMask"));
+    m_outsideDomain = new QCheckBox(tr("Hold the first and last pose outside the action"), actionPage);
+    m_outsideDomain->setObjectName(QStringLiteral("actionOutsideDomain"));
+    m_length = new QLabel(actionPage);
+    m_fades = new QLabel(actionPage);
+    m_modifiers = new QLabel(actionPage);
+    m_modifiers->setWordWrap(true);
+    form->addRow(tr("Action of:"), m_owner);
+    form->addRow(tr("Name:"), m_name);
+    form->addRow(tr("Clip:"), m_clip);
+    form->addRow(tr("Start:"), m_start);
+    form->addRow(tr("Length:"), m_length);
+    form->addRow(tr("Fades:"), m_fades);
+    form->addRow(tr("Blend mode:"), m_mode);
+    form->addRow(tr("Body part:"), m_mask);
+    form->addRow(QString(), m_outsideDomain);
+    form->addRow(tr("Modifiers:"), m_modifiers);
+    m_pages->addWidget(actionPage);
+
+    connect(m_name, &QLineEdit::editingFinished, this, [this] {
+        const std::string name = m_name->text().trimmed().toStdString();
+        editAction(tr("Rename Action"), [&](ActionSpec& spec) { spec.name = name; });
+    });
+    connect(m_clip, &QComboBox::activated, this, [this] {
+        const std::string clip = m_clip->currentData().toString().toStdString();
+        editAction(tr("Change Clip"), [&](ActionSpec& spec) { spec.clip = clip; });
+    });
+    connect(m_mode, &QComboBox::activated, this, [this] {
+        const auto mode = core::anim::BlendMode(m_mode->currentData().toInt());
+        editAction(tr("Change Blend Mode"), [&](ActionSpec& spec) { spec.mode = mode; });
+    });
+    connect(m_mask, &QComboBox::activated, this, [this] {
+        const std::string mask = m_mask->currentData().toString().toStdString();
+        editAction(tr("Change Body Part"), [&](ActionSpec& spec) { spec.mask = mask; });
+    });
+    connect(m_outsideDomain, &QCheckBox::toggled, this, [this](bool on) {
+        editAction(tr("Change Outside Domain"), [&](ActionSpec& spec) { spec.renderOutsideDomain = on; });
+    });
+    connect(m_start, &QDoubleSpinBox::valueChanged, this, &PropertiesPanel::onStartEdited);
+    refresh();
+}
+
+void PropertiesPanel::setDocument(Document* document)
+{
+    if (m_document)
+        disconnect(m_document, nullptr, this, nullptr);
+    m_document = document;
+    m_action.reset();
+    if (m_document)
+        connect(m_document, &Document::edited, this, &PropertiesPanel::refresh);
+    refresh();
+}
+
+void PropertiesPanel::setAction(std::optional<core::edit::ActionPath> action)
+{
+    m_action = action;
+    refresh();
+}
+
+template <typename Change> void PropertiesPanel::editAction(const QString& text, Change change)
+{
+    if (m_refreshing || !m_document || !m_action)
+        return;
+    const ActionSpec* current = actionAt(m_document->scenario(), *m_action);
+    if (!current)
+        return;
+    ActionSpec spec = *current;
+    change(spec);
+    const auto result = m_document->edit(core::edit::replaceAction(m_document->scenario(), *m_action, std::move(spec)), text);
+    if (!result) {
+        emit problem(tr("%1: %2").arg(text, fromUtf8(result.error().message)));
+        refresh(); // show what the document still holds
+    }
+}
+
+void PropertiesPanel::onStartEdited()
+{
+    if (m_refreshing || !m_document || !m_action)
+        return;
+    const ActionSpec* current = actionAt(m_document->scenario(), *m_action);
+    if (!current)
+        return;
+    const core::Tick delta = core::secondsToTicks(m_start->value()) - current->start;
+    const core::edit::ActionPath paths[] = {*m_action};
+    const auto result = m_document->edit(core::edit::moveActions(m_document->scenario(), paths, delta), tr("Move Action"));
+    if (!result) {
+        emit problem(tr("Move Action: %1").arg(fromUtf8(result.error().message)));
+        refresh();
+    }
+}
+
+void PropertiesPanel::refresh()
+{
+    m_refreshing = true;
+    if (m_document && m_action && actionAt(m_document->scenario(), *m_action))
+        showAction();
+    else
+        showScenario();
+    m_refreshing = false;
+}
+
+void PropertiesPanel::showScenario()
+{
+    m_pages->setCurrentIndex(0);
+    if (!m_document) {
+        m_scenarioSummary->setText(tr("No scenario is open."));
+        return;
+    }
+    const auto& scenario = m_document->scenario();
+    int actions = 0;
+    for (const auto& character : scenario.characters)
+        for (const auto& layer : character.layers)
+            actions += int(layer.actions.size());
+    QString file = m_document->filePath().isEmpty() ? tr("not saved yet") : m_document->filePath().toHtmlEscaped();
+    m_scenarioSummary->setText(
+        tr("<b>%1</b><br>File: %2<br>%3, %4, %5 markers<br>Length: %6<br><br>"
+           "<i>Select an action on the timeline to see and edit its properties.</i>")
+            .arg(m_document->scenarioName().toHtmlEscaped(), file,
+                 tr("%n character(s)", nullptr, int(scenario.characters.size())),
+                 tr("%n action(s)", nullptr, actions))
+            .arg(scenario.markers.size())
+            .arg(seconds(m_document->duration())));
+}
+
+void PropertiesPanel::showAction()
+{
+    m_pages->setCurrentIndex(1);
+    const auto& scenario = m_document->scenario();
+    const auto& character = scenario.characters[std::size_t(m_action->character)];
+    const auto& layer = character.layers[std::size_t(m_action->layer)];
+    const ActionSpec& spec = *actionAt(scenario, *m_action);
+    const bool editable = !layer.lock;
+
+    m_owner->setText(tr("%1 ▸ %2%3").arg(fromUtf8(character.name), fromUtf8(layer.name),
+                                         layer.lock ? tr(" (locked)") : QString()));
+    m_name->setText(fromUtf8(spec.name));
+
+    m_clip->clear();
+    for (const auto& clip : character.clips)
+        m_clip->addItem(fromUtf8(clip.name), fromUtf8(clip.name));
+    m_clip->setCurrentIndex(m_clip->findData(fromUtf8(spec.clip)));
+
+    m_start->setValue(core::ticksToSeconds(spec.start));
+    m_mode->setCurrentIndex(m_mode->findData(int(spec.mode)));
+
+    m_mask->clear();
+    m_mask->addItem(tr("Whole body"), QString());
+    for (const auto& mask : scenario.masks)
+        m_mask->addItem(fromUtf8(mask.name), fromUtf8(mask.name));
+    m_mask->setCurrentIndex(std::max(0, m_mask->findData(fromUtf8(spec.mask))));
+    m_outsideDomain->setChecked(spec.renderOutsideDomain);
+
+    const auto span = core::edit::actionSpan(scenario, m_document->runtime(), *m_action);
+    if (!span)
+        m_length->setText(tr("unknown"));
+    else if (span->openEnded)
+        m_length->setText(tr("open-ended (plays until cut off)"));
+    else
+        m_length->setText(seconds(core::ticksToSeconds(span->end - span->start)));
+
+    const auto& weight = spec.weight;
+    using core::anim::CurveKind;
+    if (weight.kind() == CurveKind::Constant)
+        m_fades->setText(tr("none (constant weight %1)").arg(weight.constantValue(), 0, 'g', 3));
+    else if (weight.kind() == CurveKind::Keyframed)
+        m_fades->setText(tr("keyframed weight curve (%n key(s))", nullptr, int(weight.keys().size())));
+    else
+        m_fades->setText(tr("in %1, out %2").arg(seconds(weight.envelope().attack), seconds(weight.envelope().release)));
+
+    QStringList modifiers;
+    for (const ModifierSpec& modifier : spec.modifiers)
+        modifiers << describeModifier(modifier);
+    m_modifiers->setText(modifiers.isEmpty() ? tr("none") : modifiers.join(QStringLiteral(", ")));
+
+    for (QWidget* field : {static_cast<QWidget*>(m_name), static_cast<QWidget*>(m_clip), static_cast<QWidget*>(m_start),
+                           static_cast<QWidget*>(m_mode), static_cast<QWidget*>(m_mask), static_cast<QWidget*>(m_outsideDomain)})
+        field->setEnabled(editable);
+}
+
+} // namespace thespis::editor

@@ -1,0 +1,236 @@
+// Studio benchmarks (issue 5 §10), on the Qt offscreen platform with the studio's own panels.
+//
+// TimelineRepaint/1000: one full repaint of the timeline view (1200 × 400, every clip in view
+//   after Frame All) showing 1000 actions on 8 tracks, rendered into an image. Goal < 8 ms.
+//   TimelineRepaint/0 is the same view without actions (ruler, headers, lanes);
+//   TimelineRepaintZoomed/1000 the 1000 actions at a working zoom (80 px/s, about 13 s in view).
+// OpenScenario/1000: what the studio does to open a 1000-action scenario before it first draws:
+//   read and validate the file and build every schedule (Document::open), fill the outline and
+//   the timeline, and build the 3D scene (bodies, retargeting, the camera's bounds over the
+//   whole timeline). Counters split the time. Goal < 300 ms.
+// ScrubToFrame: a playhead move to a new time until the viewport's frame is ready — the clock
+//   seeks, the timeline and the 3D scene follow (schedules evaluated, bodies skinned, light
+//   rotated), and the 1280 × 720 frame is drawn offscreen through EGL and read back, as the
+//   studio's viewport draws it (Mesa llvmpipe here). Goal < 33 ms.
+#include <benchmark/benchmark.h>
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QTemporaryDir>
+
+#include <algorithm>
+#include <memory>
+
+#include "editor/document.h"
+#include "editor/playback_clock.h"
+#include "editor/scenario_tree_model.h"
+#include "editor/timeline_panel.h"
+#include "render/offscreen_renderer.h"
+#include "render/scenario_scene.h"
+#include "scenario/scenario_io.h"
+#include "widgets/timeline_view.h"
+
+using namespace thespis;
+
+namespace {
+
+QApplication& application()
+{
+    static int argc = 1;
+    static char name[] = "thespis-bench";
+    static char* argv[] = {name, nullptr};
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    static QApplication app(argc, argv);
+    return app;
+}
+
+core::Result<core::scenario::Scenario> demoScenario()
+{
+    return core::scenario::loadScenario(THESPIS_RESOURCES "/demo.thespis");
+}
+
+// The demo with `actionCount` actions spread over 8 body tracks (4 layers per character), each
+// a copy of one of the character's finite actions (not its idle loops), one every 0.4 s on its
+// track: after Frame All every clip is in view, wide enough for its name, fades and curve.
+core::Result<core::scenario::Scenario> scenarioWithActions(int actionCount)
+{
+    auto scenario = demoScenario();
+    if (!scenario)
+        return scenario.error();
+    constexpr int kLayersPerCharacter = 4;
+    const int tracks = int(scenario->characters.size()) * kLayersPerCharacter;
+    int track = 0;
+    for (std::size_t c = 0; c < scenario->characters.size(); ++c) {
+        core::scenario::Character& character = scenario->characters[c];
+        core::scenario::Layer base = character.layers.front();
+        std::erase_if(base.actions, [](const core::scenario::ActionSpec& action) {
+            return std::any_of(action.modifiers.begin(), action.modifiers.end(), [](const core::scenario::ModifierSpec& m) {
+                return m.kind == core::scenario::ModifierKind::Loop && m.count == 0;
+            });
+        });
+        if (base.actions.empty())
+            return core::Error{core::ErrorCode::InvalidArgument, character.name + " has no finite action to copy"};
+        character.layers.clear();
+        for (int l = 0; l < kLayersPerCharacter; ++l) {
+            core::scenario::Layer layer = base;
+            layer.name = "track " + std::to_string(l + 1);
+            layer.actions.clear();
+            const int count = actionCount / tracks + (track < actionCount % tracks ? 1 : 0);
+            ++track;
+            for (int a = 0; a < count; ++a) {
+                core::scenario::ActionSpec action = base.actions[std::size_t(a) % base.actions.size()];
+                action.name = "action " + std::to_string(a + 1);
+                action.start = core::secondsToTicks(0.4 * a);
+                layer.actions.push_back(std::move(action));
+            }
+            if (l > 0)
+                layer.mode = core::anim::BlendMode::Override;
+            character.layers.push_back(std::move(layer));
+        }
+    }
+    return scenario;
+}
+
+void repaintTimeline(benchmark::State& state, double pixelsPerSecond)
+{
+    application();
+    auto scenario = scenarioWithActions(int(state.range(0)));
+    if (!scenario) {
+        state.SkipWithError(scenario.error().message.c_str());
+        return;
+    }
+    auto document = editor::Document::fromScenario(std::move(*scenario), QStringLiteral(THESPIS_RESOURCES));
+    if (!document) {
+        state.SkipWithError(document.error().message.c_str());
+        return;
+    }
+    editor::TimelinePanel panel;
+    panel.resize(1200, 400);
+    panel.setDocument(document->get());
+    widgets::TimelineView* view = panel.view();
+    panel.show(); // offscreen: lays the view out at its size
+    QApplication::processEvents();
+    view->frameAll();
+    if (pixelsPerSecond > 0)
+        view->setPixelsPerSecond(pixelsPerSecond);
+    QImage image(view->viewport()->size(), QImage::Format_ARGB32_Premultiplied);
+    for (auto _ : state) {
+        view->viewport()->render(&image);
+        benchmark::DoNotOptimize(image.constBits());
+    }
+    state.counters["clips"] = view->clipCount();
+    state.counters["tracks"] = double(view->tracks().size());
+}
+void TimelineRepaint(benchmark::State& state)
+{
+    repaintTimeline(state, 0);
+}
+BENCHMARK(TimelineRepaint)->Arg(0)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+void TimelineRepaintZoomed(benchmark::State& state)
+{
+    repaintTimeline(state, 80);
+}
+BENCHMARK(TimelineRepaintZoomed)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+void OpenScenario(benchmark::State& state)
+{
+    application();
+    auto scenario = scenarioWithActions(int(state.range(0)));
+    if (!scenario) {
+        state.SkipWithError(scenario.error().message.c_str());
+        return;
+    }
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("bench.thespis"));
+    if (auto written = core::scenario::saveScenario(path.toStdString(), *scenario); !written) {
+        state.SkipWithError(written.error().message.c_str());
+        return;
+    }
+    editor::ScenarioTreeModel outline;
+    editor::TimelinePanel timeline;
+    timeline.resize(1200, 400);
+    double documentMs = 0, panelsMs = 0, sceneMs = 0;
+    for (auto _ : state) {
+        QElapsedTimer clock;
+        clock.start();
+        auto document = editor::Document::open(path);
+        if (!document) {
+            state.SkipWithError(document.error().message.c_str());
+            return;
+        }
+        documentMs += double(clock.nsecsElapsed()) * 1e-6;
+        clock.restart();
+        outline.setDocument(document->get());
+        timeline.setDocument(document->get());
+        panelsMs += double(clock.nsecsElapsed()) * 1e-6;
+        clock.restart();
+        auto scene = core::render::ScenarioScene::create((*document)->scenario(), dir.path().toStdString());
+        if (!scene) {
+            state.SkipWithError(scene.error().message.c_str());
+            return;
+        }
+        benchmark::DoNotOptimize((*scene)->boundsOverTimeline());
+        sceneMs += double(clock.nsecsElapsed()) * 1e-6;
+        state.PauseTiming(); // closing is not opening
+        outline.setDocument(nullptr);
+        timeline.setDocument(nullptr);
+        scene->reset();
+        document->reset();
+        state.ResumeTiming();
+    }
+    const double n = double(state.iterations());
+    state.counters["document_ms"] = documentMs / n;
+    state.counters["panels_ms"] = panelsMs / n;
+    state.counters["scene_ms"] = sceneMs / n;
+}
+BENCHMARK(OpenScenario)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+void ScrubToFrame(benchmark::State& state)
+{
+    application();
+    auto document = editor::Document::open(QStringLiteral(THESPIS_RESOURCES "/demo.thespis"));
+    if (!document) {
+        state.SkipWithError(document.error().message.c_str());
+        return;
+    }
+    auto scene = core::render::ScenarioScene::create((*document)->scenario(), THESPIS_RESOURCES);
+    if (!scene) {
+        state.SkipWithError(scene.error().message.c_str());
+        return;
+    }
+    auto renderer = core::render::OffscreenRenderer::create(1280, 720);
+    if (!renderer) {
+        state.SkipWithError(renderer.error().message.c_str());
+        return;
+    }
+    (*scene)->scene().setGroundVisible(true);
+    const core::render::CameraView view =
+        core::render::frameBounds((*scene)->boundsOverTimeline(), 20.0, 10.0, 1280.0 / 720.0, 30.0);
+    editor::PlaybackClock clock;
+    clock.setDuration((*document)->previewDuration());
+    editor::TimelinePanel timeline;
+    timeline.resize(1200, 400);
+    timeline.setDocument(document->get());
+    core::render::ScenarioScene& shown = **scene;
+    QObject::connect(&clock, &editor::PlaybackClock::timeChanged, &timeline, &editor::TimelinePanel::setTime);
+    QObject::connect(&clock, &editor::PlaybackClock::timeChanged, [&shown](double t) { shown.setTime(t); });
+    core::render::RgbaImage frame;
+    double t = 0;
+    for (auto _ : state) {
+        t += 0.37; // a scrub jumps: no two frames alike
+        if (t > clock.duration())
+            t -= clock.duration();
+        clock.seek(t);
+        if (auto drawn = (*renderer)->render(shown.scene(), view, frame); !drawn) {
+            state.SkipWithError(drawn.error().message.c_str());
+            return;
+        }
+        benchmark::DoNotOptimize(frame);
+    }
+}
+BENCHMARK(ScrubToFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+} // namespace

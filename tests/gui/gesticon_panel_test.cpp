@@ -1,0 +1,472 @@
+// The gesticon editor (GesticonPanel over GesticonModel) on the demo scenario: the table lists
+// each character's gestures; add, rename, fades, clip, body part and the dependent-joint filter
+// are one undoable edit each, refused edits change nothing and say why, remove takes one step
+// however many rows, and undoing everything gives back the original document. Preview plays a
+// gesture on the character in a real 3D view (Xvfb + Mesa): the arm inside the gesture's mask
+// moves, the other arm does not, and the document's own motion comes back when the gesture ends,
+// when the clock is paused, on Stop and on any edit.
+
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QTableView>
+#include <QTest>
+#include <QToolButton>
+#include <QUndoStack>
+
+#include <algorithm>
+#include <cmath>
+
+#include "editor/document.h"
+#include "editor/gesticon_model.h"
+#include "editor/gesticon_panel.h"
+#include "editor/playback_clock.h"
+#include "editor/scene_preview.h"
+#include "editor/translations.h"
+#include "render/character_node.h"
+#include "util/tick.h"
+#include "widgets/osg_viewport.h"
+
+using namespace thespis;
+using editor::GesticonModel;
+using editor::GesticonPanel;
+
+namespace {
+
+QString demoPath() { return QStringLiteral(THESPIS_RESOURCES "/demo.thespis"); }
+
+void saveScreenshot(QWidget* widget, const QString& name)
+{
+    QDir().mkpath(QStringLiteral(THESPIS_SCREENSHOT_DIR));
+    QVERIFY(widget->grab().save(QStringLiteral(THESPIS_SCREENSHOT_DIR "/") + name));
+}
+
+QString cell(const GesticonModel& model, int row, int column, int role = Qt::DisplayRole)
+{
+    return model.data(model.index(row, column), role).toString();
+}
+
+std::unique_ptr<editor::Document> openDemo()
+{
+    auto document = editor::Document::open(demoPath());
+    if (!document)
+        qFatal("cannot open the demo: %s", document.error().message.c_str());
+    return std::move(document).value();
+}
+
+// The rotation of `joint` (x y z w) in a body frame.
+core::anim::Quat rotationOf(const core::scenario::CharacterRuntime& character, std::span<const float> frame,
+                            const std::string& joint)
+{
+    const auto& layout = *character.skeleton.frameLayout();
+    const int element = layout.find(joint, core::anim::ElementKind::Rotation);
+    if (element < 0)
+        qFatal("no joint %s", joint.c_str());
+    const std::size_t at = layout.floatOffset(element);
+    return core::anim::Quat{frame[at], frame[at + 1], frame[at + 2], frame[at + 3]};
+}
+
+// Angle in degrees between two rotations.
+double angleBetween(const core::anim::Quat& a, const core::anim::Quat& b)
+{
+    const double dot = std::abs(double(a.x) * b.x + double(a.y) * b.y + double(a.z) * b.z + double(a.w) * b.w);
+    return 2.0 * std::acos(std::min(1.0, dot)) * 180.0 / M_PI;
+}
+
+std::vector<float> bodyFrame(const core::scenario::CharacterRuntime& character, double t)
+{
+    std::vector<float> frame(character.skeleton.frameLayout()->floatCount());
+    character.body->evaluate(t, frame);
+    return frame;
+}
+
+float largestDistance(std::span<const core::anim::Vec3> a, std::span<const core::anim::Vec3> b)
+{
+    float largest = 0;
+    for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
+        const float dx = a[i].x - b[i].x, dy = a[i].y - b[i].y, dz = a[i].z - b[i].z;
+        largest = std::max(largest, std::sqrt(dx * dx + dy * dy + dz * dz));
+    }
+    return largest;
+}
+
+} // namespace
+
+class GesticonPanelTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void listsEachCharactersGestures();
+    void everyEditIsOneUndoStepAndUndoAllRestores();
+    void editorsInTheTableEditTheDocument();
+    void previewIsDisabledWithoutA3DView();
+    void previewPlaysTheGestureOnTheCharacter();
+};
+
+void GesticonPanelTest::initTestCase()
+{
+    // English text and numbers ("0.40"), whatever the machine's locale.
+    QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+    editor::installTranslators(*QCoreApplication::instance(), QLocale(QLocale::English));
+}
+
+void GesticonPanelTest::listsEachCharactersGestures()
+{
+    auto document = openDemo();
+    GesticonPanel panel;
+    panel.resize(640, 280);
+    panel.setDocument(document.get());
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    const GesticonModel& model = *panel.model();
+
+    QCOMPARE(panel.currentCharacter(), 0);
+    QCOMPARE(panel.characterCombo()->currentText(), QStringLiteral("Creon"));
+    QCOMPARE(model.rowCount(), 2);
+    QCOMPARE(model.columnCount(), 6);
+    QCOMPARE(model.headerData(GesticonModel::MaskColumn, Qt::Horizontal).toString(), QStringLiteral("Body part"));
+    QCOMPARE(cell(model, 0, GesticonModel::NameColumn), QStringLiteral("greet"));
+    QCOMPARE(cell(model, 0, GesticonModel::ClipColumn), QStringLiteral("wave"));
+    QCOMPARE(cell(model, 0, GesticonModel::MaskColumn), QStringLiteral("rightArm"));
+    QCOMPARE(cell(model, 0, GesticonModel::FadeInColumn), QStringLiteral("0.40"));
+    QCOMPARE(cell(model, 0, GesticonModel::FadeOutColumn), QStringLiteral("0.50"));
+    QCOMPARE(model.data(model.index(0, GesticonModel::FadeInColumn), Qt::EditRole).toDouble(), 0.4);
+    QCOMPARE(model.data(model.index(0, GesticonModel::FilterColumn), Qt::CheckStateRole).value<Qt::CheckState>(),
+             Qt::Checked);
+    QCOMPARE(cell(model, 1, GesticonModel::NameColumn), QStringLiteral("agree"));
+    QCOMPARE(cell(model, 1, GesticonModel::ClipColumn), QStringLiteral("nod"));
+    QCOMPARE(cell(model, 1, GesticonModel::MaskColumn), QStringLiteral("head"));
+    QCOMPARE(model.data(model.index(1, GesticonModel::FilterColumn), Qt::CheckStateRole).value<Qt::CheckState>(),
+             Qt::Unchecked);
+    QVERIFY(model.flags(model.index(1, GesticonModel::FilterColumn)) & Qt::ItemIsUserCheckable);
+    QVERIFY(model.flags(model.index(1, GesticonModel::NameColumn)) & Qt::ItemIsEditable);
+    QCOMPARE(model.clipNames(), QStringList({"creon_idle", "wave", "nod", "blink"}));
+    QCOMPARE(model.maskNames(), QStringList({"head", "leftArm", "rightArm"}));
+    // The first gesture is selected, so Preview / Rename / Remove have something to act on.
+    QCOMPARE(panel.selectedRows(), QList<int>{0});
+    saveScreenshot(&panel, QStringLiteral("gesticon_panel.png"));
+
+    panel.setCurrentCharacter(1);
+    QCOMPARE(panel.currentCharacter(), 1);
+    QCOMPARE(model.rowCount(), 1);
+    QCOMPARE(cell(model, 0, GesticonModel::NameColumn), QStringLiteral("agree"));
+    QCOMPARE(cell(model, 0, GesticonModel::FadeInColumn), QStringLiteral("0.20"));
+    QCOMPARE(cell(model, 0, GesticonModel::FadeOutColumn), QStringLiteral("0.30"));
+    QCOMPARE(model.clipNames(), QStringList({"antigone_idle", "wave", "nod"}));
+}
+
+void GesticonPanelTest::everyEditIsOneUndoStepAndUndoAllRestores()
+{
+    auto document = openDemo();
+    const core::scenario::Scenario original = document->scenario();
+    QUndoStack& undo = *document->undoStack();
+    GesticonPanel panel;
+    panel.resize(640, 300);
+    panel.setDocument(document.get());
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    GesticonModel& model = *panel.model();
+    const auto gestures = [&] { return document->scenario().characters[0].gestures; };
+
+    // Add: the first clip, the whole body, a unique name; selected.
+    panel.addGesture();
+    QCOMPARE(undo.count(), 1);
+    QCOMPARE(undo.text(0), QStringLiteral("Add Gesture"));
+    QCOMPARE(model.rowCount(), 3);
+    QCOMPARE(gestures()[2].name, std::string("gesture"));
+    QCOMPARE(gestures()[2].clip, std::string("creon_idle"));
+    QVERIFY(gestures()[2].mask.empty());
+    QCOMPARE(cell(model, 2, GesticonModel::MaskColumn), QStringLiteral("Whole body"));
+    QCOMPARE(panel.selectedRows(), QList<int>{2});
+    panel.addGesture();
+    QCOMPARE(undo.count(), 2);
+    QCOMPARE(gestures()[3].name, std::string("gesture 2"));
+    QCOMPARE(panel.selectedRows(), QList<int>{3});
+
+    // Rename through the model: one step.
+    QVERIFY(model.setData(model.index(2, GesticonModel::NameColumn), QStringLiteral("beckon")));
+    QCOMPARE(undo.count(), 3);
+    QCOMPARE(undo.text(2), QStringLiteral("Rename Gesture"));
+    QCOMPARE(gestures()[2].name, std::string("beckon"));
+    QCOMPARE(cell(model, 2, GesticonModel::NameColumn), QStringLiteral("beckon"));
+
+    // Renaming to a name the character has is refused: nothing changes, the message says why.
+    const core::scenario::Scenario beforeRefusal = document->scenario();
+    QSignalSpy failed(&model, &GesticonModel::editFailed);
+    QVERIFY(!model.setData(model.index(2, GesticonModel::NameColumn), QStringLiteral("greet")));
+    QCOMPARE(failed.count(), 1);
+    QVERIFY(document->scenario() == beforeRefusal);
+    QCOMPARE(undo.count(), 3);
+    QVERIFY2(panel.message().contains(QStringLiteral("already has a gesture named \"greet\"")), qPrintable(panel.message()));
+    QVERIFY(panel.findChild<QLabel*>(QStringLiteral("gesticonMessage"))->isVisible());
+    saveScreenshot(&panel, QStringLiteral("gesticon_panel_refused.png"));
+    // A clip the character does not have and a mask the scenario does not have are refused too.
+    QVERIFY(!model.setData(model.index(2, GesticonModel::ClipColumn), QStringLiteral("antigone_idle")));
+    QVERIFY(!model.setData(model.index(2, GesticonModel::MaskColumn), QStringLiteral("tail")));
+    QVERIFY(document->scenario() == beforeRefusal);
+    QCOMPARE(undo.count(), 3);
+
+    // Fade in, in seconds: the ticks change; the message line clears after an edit that works.
+    QVERIFY(model.setData(model.index(0, GesticonModel::FadeInColumn), 0.75));
+    QCOMPARE(gestures()[0].fadeIn, core::secondsToTicks(0.75));
+    QCOMPARE(gestures()[0].fadeOut, core::secondsToTicks(0.5));
+    QCOMPARE(undo.count(), 4);
+    QCOMPARE(undo.text(3), QStringLiteral("Change Gesture Fade In"));
+    QVERIFY(panel.message().isEmpty());
+    QCOMPARE(cell(model, 0, GesticonModel::FadeInColumn), QStringLiteral("0.75"));
+    QVERIFY(model.setData(model.index(0, GesticonModel::FadeOutColumn), 1.25));
+    QCOMPARE(gestures()[0].fadeOut, core::secondsToTicks(1.25));
+    QCOMPARE(undo.count(), 5);
+    // Setting the same value again pushes nothing.
+    QVERIFY(model.setData(model.index(0, GesticonModel::FadeOutColumn), 1.25));
+    QCOMPARE(undo.count(), 5);
+
+    // The dependent-joint filter.
+    QVERIFY(model.setData(model.index(1, GesticonModel::FilterColumn), Qt::Checked, Qt::CheckStateRole));
+    QVERIFY(gestures()[1].dependentJointFilter);
+    QCOMPARE(undo.count(), 6);
+    QCOMPARE(undo.text(5), QStringLiteral("Turn Dependent-Joint Filter On"));
+    QCOMPARE(model.data(model.index(1, GesticonModel::FilterColumn), Qt::CheckStateRole).value<Qt::CheckState>(),
+             Qt::Checked);
+
+    // Clip and body part.
+    QVERIFY(model.setData(model.index(3, GesticonModel::ClipColumn), QStringLiteral("nod")));
+    QVERIFY(model.setData(model.index(3, GesticonModel::MaskColumn), QStringLiteral("head")));
+    QCOMPARE(gestures()[3].clip, std::string("nod"));
+    QCOMPARE(gestures()[3].mask, std::string("head"));
+    QCOMPARE(undo.count(), 8);
+
+    // Remove two selected gestures: one step.
+    panel.table()->clearSelection();
+    panel.table()->selectionModel()->select(model.index(2, 0),
+                                            QItemSelectionModel::Select | QItemSelectionModel::Rows);
+    panel.table()->selectionModel()->select(model.index(3, 0),
+                                            QItemSelectionModel::Select | QItemSelectionModel::Rows);
+    QCOMPARE(panel.selectedRows(), QList<int>({2, 3}));
+    panel.removeSelected();
+    QCOMPARE(undo.count(), 9);
+    // "Remove 2 Gestures" once thespis_en.ts has the plural forms of the new strings.
+    QVERIFY2(undo.text(8).startsWith(QStringLiteral("Remove 2 Gesture")), qPrintable(undo.text(8)));
+    QCOMPARE(model.rowCount(), 2);
+    QCOMPARE(gestures().size(), std::size_t(2));
+    QCOMPARE(gestures()[0].name, std::string("greet"));
+    QCOMPARE(gestures()[1].name, std::string("agree"));
+    QCOMPARE(panel.selectedRows(), QList<int>{1}); // the row before the removed ones
+
+    // Undo brings the removed rows back, then undo everything: the document as it was.
+    undo.undo();
+    QCOMPARE(model.rowCount(), 4);
+    QCOMPARE(cell(model, 2, GesticonModel::NameColumn), QStringLiteral("beckon"));
+    while (undo.canUndo())
+        undo.undo();
+    QVERIFY(document->scenario() == original);
+    QCOMPARE(model.rowCount(), 2);
+    QCOMPARE(cell(model, 0, GesticonModel::FadeInColumn), QStringLiteral("0.40"));
+    QVERIFY(!document->isModified());
+    while (undo.canRedo())
+        undo.redo();
+    QCOMPARE(gestures().size(), std::size_t(2));
+    QCOMPARE(gestures()[0].fadeIn, core::secondsToTicks(0.75));
+}
+
+void GesticonPanelTest::editorsInTheTableEditTheDocument()
+{
+    auto document = openDemo();
+    QUndoStack& undo = *document->undoStack();
+    GesticonPanel panel;
+    panel.resize(640, 300);
+    panel.setDocument(document.get());
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    QTableView* table = panel.table();
+    GesticonModel& model = *panel.model();
+    const auto gesture = [&](int row) { return document->scenario().characters[0].gestures[std::size_t(row)]; };
+
+    // The body part is a combo of "Whole body" and the scenario's masks; picking one commits.
+    const QModelIndex maskCell = model.index(1, GesticonModel::MaskColumn);
+    table->setCurrentIndex(maskCell);
+    table->edit(maskCell);
+    auto* combo = table->viewport()->findChild<QComboBox*>();
+    QVERIFY(combo);
+    QCOMPARE(combo->count(), 4);
+    QCOMPARE(combo->itemText(0), QStringLiteral("Whole body"));
+    QCOMPARE(combo->currentText(), QStringLiteral("head"));
+    combo->setCurrentIndex(0);
+    emit combo->activated(0);
+    QCOMPARE(gesture(1).mask, std::string());
+    QCOMPARE(undo.count(), 1);
+    QCOMPARE(undo.text(0), QStringLiteral("Change Gesture Body Part"));
+    QTRY_VERIFY(!table->viewport()->findChild<QComboBox*>());
+
+    // Fades: a spin box in seconds.
+    const QModelIndex fadeCell = model.index(1, GesticonModel::FadeOutColumn);
+    table->setCurrentIndex(fadeCell);
+    table->edit(fadeCell);
+    auto* spin = table->viewport()->findChild<QDoubleSpinBox*>();
+    QVERIFY(spin);
+    QCOMPARE(spin->value(), 0.25);
+    spin->selectAll();
+    QTest::keyClicks(spin, QStringLiteral("0.6"));
+    QTest::keyClick(spin, Qt::Key_Return); // the delegate commits from the event loop
+    QTRY_COMPARE(gesture(1).fadeOut, core::secondsToTicks(0.6));
+    QCOMPARE(undo.count(), 2);
+
+    // The filter check box toggles with a click in its cell.
+    const QRect filterRect = table->visualRect(model.index(1, GesticonModel::FilterColumn));
+    QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, filterRect.center());
+    QVERIFY(gesture(1).dependentJointFilter);
+    QCOMPARE(undo.count(), 3);
+
+    // Rename starts editing the name in place.
+    panel.selectRow(0);
+    panel.renameSelected();
+    auto* line = table->viewport()->findChild<QLineEdit*>();
+    QVERIFY(line);
+    QCOMPARE(line->text(), QStringLiteral("greet"));
+    line->selectAll();
+    QTest::keyClicks(line, QStringLiteral("hail"));
+    QTest::keyClick(line, Qt::Key_Return);
+    QTRY_COMPARE(gesture(0).name, std::string("hail"));
+    QCOMPARE(undo.count(), 4);
+    QCOMPARE(panel.selectedRows(), QList<int>{0});
+}
+
+void GesticonPanelTest::previewIsDisabledWithoutA3DView()
+{
+    auto document = openDemo();
+    GesticonPanel panel;
+    editor::PlaybackClock clock;
+    panel.setDocument(document.get());
+    panel.setClock(&clock);
+    QCOMPARE(panel.selectedRows(), QList<int>{0});
+    QVERIFY(!panel.previewButton()->isEnabled());
+    QVERIFY2(panel.previewButton()->toolTip().contains(QStringLiteral("3D view")),
+             qPrintable(panel.previewButton()->toolTip()));
+    panel.preview();
+    QVERIFY(!panel.isPreviewing());
+    QCOMPARE(clock.time(), 0.0);
+}
+
+void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
+{
+    if (!widgets::OsgViewport::isSupported())
+        QSKIP("No OpenGL on this display");
+    auto document = openDemo();
+    const core::scenario::Scenario original = document->scenario();
+
+    QWidget window;
+    window.resize(1200, 520);
+    auto* layout = new QHBoxLayout(&window);
+    auto* viewport = new widgets::OsgViewport(&window);
+    viewport->setMinimumWidth(560);
+    auto* panel = new GesticonPanel(&window);
+    layout->addWidget(viewport, 1);
+    layout->addWidget(panel, 1);
+    editor::ScenePreview scene(viewport);
+    editor::PlaybackClock clock;
+    // As the studio's window wires them: the 3D view follows the clock.
+    connect(&clock, &editor::PlaybackClock::timeChanged, &scene, &editor::ScenePreview::setTime);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY2(viewport->glErrorText().isEmpty(), qPrintable(viewport->glErrorText()));
+    QVERIFY(scene.setDocument(document.get()));
+    clock.setDuration(document->previewDuration());
+    clock.setLooping(true);
+    panel->setDocument(document.get());
+    panel->setScenePreview(&scene);
+    panel->setClock(&clock);
+    QVERIFY(panel->previewButton()->isEnabled());
+    QCOMPARE(panel->previewButton()->text(), QStringLiteral("Preview"));
+
+    // Creon (character 0) "greet": the clip "wave" on the right arm. Before his own wave (1.5 s).
+    QCOMPARE(panel->currentCharacter(), 0);
+    panel->selectRow(0);
+    const core::scenario::CharacterRuntime& creon = document->runtime().characters[0];
+    const core::anim::TimeDomain wave = creon.clips.at("wave")->domain();
+    const double length = wave.end - wave.start;
+    QVERIFY(length > 1.5 && length < 6);
+    const double start = 0.2, during = start + 1.0;
+    clock.seek(start);
+    const auto poseAt = [&](double t) {
+        scene.setTime(t);
+        const auto positions = scene.scene()->scene().character(0).posedPositions();
+        return std::vector<core::anim::Vec3>(positions.begin(), positions.end());
+    };
+    const std::vector<core::anim::Vec3> documentPose = poseAt(during);
+    const std::vector<float> documentFrame = bodyFrame(creon, during);
+    scene.setTime(clock.time());
+
+    panel->preview();
+    QVERIFY(panel->isPreviewing());
+    QVERIFY(clock.isPlaying());
+    QCOMPARE(panel->previewButton()->text(), QStringLiteral("Stop"));
+    QVERIFY(!clock.isLooping());
+    QVERIFY(clock.duration() >= start + length - 1e-6);
+    QVERIFY(document->scenario() == original); // a preview edits nothing
+    QCOMPARE(document->undoStack()->count(), 0);
+    {
+        // The scene plays the document plus the gesture's own layer.
+        const core::scenario::CharacterRuntime& shown = scene.scene()->runtime().characters[0];
+        QCOMPARE(shown.layers.size(), creon.layers.size() + 1);
+        const std::vector<float> frame = bodyFrame(shown, during);
+        const double rightShoulder = angleBetween(rotationOf(shown, frame, "r_shoulder"),
+                                                  rotationOf(creon, documentFrame, "r_shoulder"));
+        const double leftShoulder = angleBetween(rotationOf(shown, frame, "l_shoulder"),
+                                                 rotationOf(creon, documentFrame, "l_shoulder"));
+        const double hip = angleBetween(rotationOf(shown, frame, "l_hip"), rotationOf(creon, documentFrame, "l_hip"));
+        QVERIFY2(rightShoulder > 10, qPrintable(QString::number(rightShoulder)));
+        QVERIFY2(leftShoulder < 0.01 && hip < 0.01, qPrintable(QStringLiteral("%1 %2").arg(leftShoulder).arg(hip)));
+        const float moved = largestDistance(poseAt(during), documentPose);
+        QVERIFY2(moved > 0.05f, qPrintable(QString::number(moved)));
+        saveScreenshot(&window, QStringLiteral("gesticon_preview.png"));
+    }
+
+    // The gesture ends on its own: the document's motion is back, the clock as it was.
+    QTRY_VERIFY_WITH_TIMEOUT(!panel->isPreviewing(), 15000);
+    QVERIFY(!clock.isPlaying());
+    QCOMPARE(clock.time(), start);
+    QCOMPARE(clock.duration(), document->previewDuration());
+    QVERIFY(clock.isLooping());
+    QCOMPARE(panel->previewButton()->text(), QStringLiteral("Preview"));
+    QCOMPARE(scene.scene()->runtime().characters[0].layers.size(), creon.layers.size());
+    QCOMPARE(largestDistance(poseAt(during), documentPose), 0.0f);
+    QVERIFY(bodyFrame(scene.scene()->runtime().characters[0], during) == documentFrame);
+
+    const auto previewShown = [&] { return scene.scene()->runtime().characters[0].layers.size() == creon.layers.size() + 1; };
+
+    // Pausing the clock stops the preview.
+    panel->preview();
+    QVERIFY(panel->isPreviewing() && previewShown());
+    clock.pause();
+    QTRY_VERIFY(!panel->isPreviewing());
+    QVERIFY(!previewShown());
+
+    // So does Stop.
+    panel->preview();
+    QVERIFY(panel->isPreviewing() && previewShown());
+    QTest::mouseClick(panel->previewButton(), Qt::LeftButton);
+    QVERIFY(!panel->isPreviewing());
+    QVERIFY(!previewShown());
+    QCOMPARE(clock.time(), start);
+
+    // Previewing again while a preview plays restarts it (the first one's stop does not end it).
+    panel->preview();
+    panel->preview();
+    QTest::qWait(100);
+    QVERIFY(panel->isPreviewing() && previewShown());
+
+    // Any edit ends it.
+    QVERIFY(panel->model()->setData(panel->model()->index(1, GesticonModel::FadeInColumn), 0.5));
+    QTRY_VERIFY(!panel->isPreviewing());
+    QVERIFY(!previewShown());
+    document->undoStack()->undo();
+    QVERIFY(document->scenario() == original);
+}
+
+QTEST_MAIN(GesticonPanelTest)
+#include "gesticon_panel_test.moc"
