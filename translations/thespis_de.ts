@@ -2,6 +2,13 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>CharacterChoice</name>
+    <message>
+        <source>Character:</source>
+        <translation>Figur:</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Thespis Studio: author and preview virtual humans. Opens SCENARIO, or the built-in demo.</source>
@@ -18,6 +25,387 @@
     <message>
         <source>Save a picture of the window to FILE (PNG) once the scenario is shown, then quit.</source>
         <translation>Ein Bild des Fensters als DATEI (PNG) speichern, sobald das Szenario angezeigt wird, dann beenden.</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::Autosaver</name>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatisches Speichern fehlgeschlagen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::BakePanel</name>
+    <message>
+        <source>The character whose body is baked</source>
+        <translation>Die Figur, deren Körper gebacken wird</translation>
+    </message>
+    <message>
+        <source>Character:</source>
+        <translation>Figur:</translation>
+    </message>
+    <message>
+        <source>Uses now:</source>
+        <translation>Derzeit verwendet:</translation>
+    </message>
+    <message>
+        <source>Bake Settings</source>
+        <translation>Backeinstellungen</translation>
+    </message>
+    <message>
+        <source>Diffuse unshadowed</source>
+        <translation>Diffus, unverschattet</translation>
+    </message>
+    <message>
+        <source>Diffuse shadowed</source>
+        <translation>Diffus, verschattet</translation>
+    </message>
+    <message>
+        <source>Diffuse shadowed merged (paper)</source>
+        <translation>Diffus, verschattet, zusammengeführt (Paper)</translation>
+    </message>
+    <message>
+        <source>DU: no shadows at all</source>
+        <translation>DU: überhaupt keine Schatten</translation>
+    </message>
+    <message>
+        <source>DS: each segment shadows only itself</source>
+        <translation>DS: jedes Segment verschattet nur sich selbst</translation>
+    </message>
+    <message>
+        <source>DSM: every segment shadows the others; receivers are transparent, occluders are not baked</source>
+        <translation>DSM: jedes Segment verschattet die anderen; Empfänger sind transparent, Verdecker werden nicht gebacken</translation>
+    </message>
+    <message>
+        <source>Transfer:</source>
+        <translation>Transfer:</translation>
+    </message>
+    <message>
+        <source>Spherical harmonics order: bands 0 … order − 1</source>
+        <translation>Ordnung der Kugelflächenfunktionen: Bänder 0 … Ordnung − 1</translation>
+    </message>
+    <message>
+        <source>SH order:</source>
+        <translation>SH-Ordnung:</translation>
+    </message>
+    <message>
+        <source>Stratified cosine-weighted directions traced from every vertex</source>
+        <translation>Stratifizierte, kosinusgewichtete Richtungen, von jedem Vertex aus verfolgt</translation>
+    </message>
+    <message>
+        <source>Rays per vertex:</source>
+        <translation>Strahlen pro Vertex:</translation>
+    </message>
+    <message>
+        <source>Embree</source>
+        <translation>Embree</translation>
+    </message>
+    <message>
+        <source>Uniform grid</source>
+        <translation>Gleichmäßiges Gitter</translation>
+    </message>
+    <message>
+        <source>The ray tracer: Embree, or the paper&apos;s uniform grid (same results, slower)</source>
+        <translation>Der Raytracer: Embree oder das gleichmäßige Gitter aus dem Paper (gleiche Ergebnisse, langsamer)</translation>
+    </message>
+    <message>
+        <source>Ray tracer:</source>
+        <translation>Raytracer:</translation>
+    </message>
+    <message>
+        <source>Relaxation ε in metres: hits nearer than this are ignored (default 1.71e-4, the H-Anim segment gap)</source>
+        <translation>Relaxation ε in Metern: Näher liegende Treffer werden ignoriert (Standard 1.71e-4, der H-Anim-Segmentabstand)</translation>
+    </message>
+    <message>
+        <source>Relaxation ε (m):</source>
+        <translation>Relaxation ε (m):</translation>
+    </message>
+    <message>
+        <source>All (%1)</source>
+        <translation>Alle (%1)</translation>
+    </message>
+    <message>
+        <source>Worker threads; the result does not depend on it</source>
+        <translation>Arbeits-Threads; das Ergebnis hängt nicht davon ab</translation>
+    </message>
+    <message>
+        <source>Threads:</source>
+        <translation>Threads:</translation>
+    </message>
+    <message>
+        <source>Start Bake</source>
+        <translation>Backen starten</translation>
+    </message>
+    <message>
+        <source>Bake the character in the background; the result is one undoable step</source>
+        <translation>Die Figur im Hintergrund backen; das Ergebnis lässt sich in einem Schritt rückgängig machen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Stop the bake; nothing changes</source>
+        <translation>Das Backen abbrechen; nichts wird geändert</translation>
+    </message>
+    <message>
+        <source>Not baking</source>
+        <translation>Kein Backvorgang</translation>
+    </message>
+    <message>
+        <source>Show PRT lighting (off: Phong)</source>
+        <translation>PRT-Beleuchtung anzeigen (aus: Phong)</translation>
+    </message>
+    <message>
+        <source>Shade the viewport with the baked transfer, or with plain Phong to compare</source>
+        <translation>Die 3D-Ansicht mit dem gebackenen Transfer schattieren oder zum Vergleich mit einfachem Phong</translation>
+    </message>
+    <message>
+        <source>%1 coefficients per vertex</source>
+        <translation>%1 Koeffizienten pro Vertex</translation>
+    </message>
+    <message>
+        <source>Relaxation ε must be a distance in metres from 0 to %1 (for example 1.71e-4), not “%2”.</source>
+        <translation>Relaxation ε muss ein Abstand in Metern von 0 bis %1 sein (zum Beispiel 1.71e-4), nicht „%2“.</translation>
+    </message>
+    <message>
+        <source>There is no character to bake.</source>
+        <translation>Es gibt keine Figur zum Backen.</translation>
+    </message>
+    <message>
+        <source>Save the scenario in a folder you can write to first: the bake goes to %1, which cannot be written.</source>
+        <translation>Speichern Sie das Szenario zuerst in einem Ordner mit Schreibrechten: Das Backergebnis wird in %1 abgelegt, und dort kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>its folder</source>
+        <translation>dem Ordner des Szenarios</translation>
+    </message>
+    <message>
+        <source>The body of the character could not be loaded: %1</source>
+        <translation>Der Körper der Figur konnte nicht geladen werden: %1</translation>
+    </message>
+    <message>
+        <source>Baking %1: %2, order %3, %4 rays per vertex…</source>
+        <translation>%1 wird gebacken: %2, Ordnung %3, %4 Strahlen pro Vertex…</translation>
+    </message>
+    <message>
+        <source>%p% — %1 / %2 vertices</source>
+        <translation>%p% — %1 / %2 Vertices</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>Abgebrochen</translation>
+    </message>
+    <message>
+        <source>Cancelled — nothing changed.</source>
+        <translation>Abgebrochen — nichts wurde geändert.</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>Fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>The bake failed: %1</source>
+        <translation>Das Backen ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>The scenario was closed while baking; nothing changed.</source>
+        <translation>Das Szenario wurde während des Backens geschlossen; nichts wurde geändert.</translation>
+    </message>
+    <message>
+        <source>The character “%1” is gone; the bake was thrown away.</source>
+        <translation>Die Figur „%1“ existiert nicht mehr; das Backergebnis wurde verworfen.</translation>
+    </message>
+    <message>
+        <source>%1 changed while baking (body or segment tags); nothing changed: bake again.</source>
+        <translation>%1 wurde während des Backens geändert (Körper oder Segmentmarkierungen); nichts wurde geändert: Bitte erneut backen.</translation>
+    </message>
+    <message>
+        <source>Bake %1 (%2, order %3)</source>
+        <translation>%1 backen (%2, Ordnung %3)</translation>
+    </message>
+    <message>
+        <source>The bake could not be applied: %1</source>
+        <translation>Das Backergebnis konnte nicht übernommen werden: %1</translation>
+    </message>
+    <message>
+        <source>Last bake: %1, order %2, %3 rays per vertex — %4 s, %5 Mrays/s.</source>
+        <translation>Letztes Backen: %1, Ordnung %2, %3 Strahlen pro Vertex — %4 s, %5 Mio. Strahlen/s.</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>none — unshadowed (DU)</source>
+        <translation>keine — unverschattet (DU)</translation>
+    </message>
+    <message>
+        <source>Bake the character to light it with shadows</source>
+        <translation>Backen Sie die Figur, um sie mit Schatten zu beleuchten</translation>
+    </message>
+    <message>
+        <source>%1
+missing or unreadable — lit unshadowed (DU)</source>
+        <translation>%1
+fehlt oder ist nicht lesbar — unverschattet beleuchtet (DU)</translation>
+    </message>
+    <message>
+        <source>%1
+stale: it no longer fits the body or its segment tags — lit unshadowed (DU) until baked again</source>
+        <translation>%1
+veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — unverschattet beleuchtet (DU), bis erneut gebacken wird</translation>
+    </message>
+    <message>
+        <source>%1
+%2, order %3, %4 rays per vertex</source>
+        <translation>%1
+%2, Ordnung %3, %4 Strahlen pro Vertex</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::ClipLibraryPanel</name>
+    <message>
+        <source>Clip</source>
+        <translation>Clip</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <source>Drag a clip onto a track of its character to add an action</source>
+        <translation>Ziehen Sie einen Clip auf eine Spur seiner Figur, um eine Aktion hinzuzufügen</translation>
+    </message>
+    <message>
+        <source>keyframes in the scenario</source>
+        <translation>Keyframes im Szenario</translation>
+    </message>
+    <message>
+        <source>Drag onto a track of %1</source>
+        <translation>Auf eine Spur von %1 ziehen</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::CurvePanel</name>
+    <message>
+        <source>Weight</source>
+        <translation>Gewicht</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Skalierung</translation>
+    </message>
+    <message>
+        <source>Constant</source>
+        <translation>Konstant</translation>
+    </message>
+    <message>
+        <source>Linear fade</source>
+        <translation>Lineare Blende</translation>
+    </message>
+    <message>
+        <source>Cubic fade</source>
+        <translation>Kubische Blende</translation>
+    </message>
+    <message>
+        <source>Linear ADSR</source>
+        <translation>Lineare ADSR</translation>
+    </message>
+    <message>
+        <source>Cubic ADSR</source>
+        <translation>Kubische ADSR</translation>
+    </message>
+    <message>
+        <source>Keyframed</source>
+        <translation>Keyframes</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Bearbeiten</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Form</translation>
+    </message>
+    <message>
+        <source>Attack / fade in</source>
+        <translation>Anstieg / Einblendung</translation>
+    </message>
+    <message>
+        <source>Decay</source>
+        <translation>Abfall</translation>
+    </message>
+    <message>
+        <source>Sustain</source>
+        <translation>Haltepegel</translation>
+    </message>
+    <message>
+        <source>Release / fade out</source>
+        <translation>Ausklingen / Ausblendung</translation>
+    </message>
+    <message>
+        <source>Peak / value</source>
+        <translation>Spitze / Wert</translation>
+    </message>
+    <message>
+        <source>Key time</source>
+        <translation>Schlüsselzeit</translation>
+    </message>
+    <message>
+        <source>Key value</source>
+        <translation>Schlüsselwert</translation>
+    </message>
+    <message>
+        <source>Delete Curve Keys</source>
+        <translation>Kurvenschlüssel löschen</translation>
+    </message>
+    <message>
+        <source>Change Tangent</source>
+        <translation>Tangente ändern</translation>
+    </message>
+    <message>
+        <source>Set Tangent Mode</source>
+        <translation>Tangentenmodus festlegen</translation>
+    </message>
+    <message>
+        <source>Select an action on the timeline to edit its curves.</source>
+        <translation>Wählen Sie eine Aktion auf der Zeitleiste aus, um ihre Kurven zu bearbeiten.</translation>
+    </message>
+    <message>
+        <source>No action selected</source>
+        <translation>Keine Aktion ausgewählt</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2 · %3</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2 · %3</translation>
+    </message>
+    <message>
+        <source>Change Weight Curve</source>
+        <translation>Gewichtskurve ändern</translation>
+    </message>
+    <message>
+        <source>Change Scale Curve</source>
+        <translation>Skalierungskurve ändern</translation>
+    </message>
+    <message>
+        <source>Add Curve Key</source>
+        <translation>Kurvenschlüssel hinzufügen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Move %n Curve Key(s)</source>
+        <translation>
+            <numerusform>%n Kurvenschlüssel verschieben</numerusform>
+            <numerusform>%n Kurvenschlüssel verschieben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Set Curve Key</source>
+        <translation>Kurvenschlüssel setzen</translation>
     </message>
 </context>
 <context>
@@ -68,6 +456,522 @@
     <message>
         <source>Error</source>
         <translation>Fehler</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::GesticonModel</name>
+    <message>
+        <source>The dependent-joint filter runs over this gesture: spine and neck follow it</source>
+        <translation>Der Filter für abhängige Gelenke wird auf diese Geste angewendet: Wirbelsäule und Hals folgen ihr</translation>
+    </message>
+    <message>
+        <source>Only the joints of the gesture&apos;s clip move</source>
+        <translation>Nur die Gelenke des Clips der Geste bewegen sich</translation>
+    </message>
+    <message>
+        <source>The gesture drives every joint its clip has</source>
+        <translation>Die Geste steuert jedes Gelenk ihres Clips</translation>
+    </message>
+    <message>
+        <source>Whole body</source>
+        <translation>Ganzer Körper</translation>
+    </message>
+    <message>
+        <source>The gesture drives the joints of mask &quot;%1&quot;</source>
+        <translation>Die Geste steuert die Gelenke der Maske „%1“</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Clip</source>
+        <translation>Clip</translation>
+    </message>
+    <message>
+        <source>Body part</source>
+        <translation>Körperteil</translation>
+    </message>
+    <message>
+        <source>Fade in (s)</source>
+        <translation>Einblenden (s)</translation>
+    </message>
+    <message>
+        <source>Fade out (s)</source>
+        <translation>Ausblenden (s)</translation>
+    </message>
+    <message>
+        <source>Dependent joints</source>
+        <translation>Abhängige Gelenke</translation>
+    </message>
+    <message>
+        <source>The name speech scripts use to trigger the gesture</source>
+        <translation>Der Name, mit dem Sprachskripte die Geste auslösen</translation>
+    </message>
+    <message>
+        <source>The character&apos;s clip the gesture plays</source>
+        <translation>Der Clip der Figur, den die Geste abspielt</translation>
+    </message>
+    <message>
+        <source>The joint mask that limits the gesture to a body part</source>
+        <translation>Die Gelenkmaske, die die Geste auf einen Körperteil beschränkt</translation>
+    </message>
+    <message>
+        <source>How long the gesture takes to blend in, in seconds</source>
+        <translation>Wie lange das Einblenden der Geste dauert, in Sekunden</translation>
+    </message>
+    <message>
+        <source>How long the gesture takes to blend out, in seconds</source>
+        <translation>Wie lange das Ausblenden der Geste dauert, in Sekunden</translation>
+    </message>
+    <message>
+        <source>Dependent-joint filter: joints the gesture does not drive (spine, neck) follow it</source>
+        <translation>Filter für abhängige Gelenke: Gelenke, die die Geste nicht steuert (Wirbelsäule, Hals), folgen ihr</translation>
+    </message>
+    <message>
+        <source>Turn Dependent-Joint Filter On</source>
+        <translation>Filter für abhängige Gelenke einschalten</translation>
+    </message>
+    <message>
+        <source>Turn Dependent-Joint Filter Off</source>
+        <translation>Filter für abhängige Gelenke ausschalten</translation>
+    </message>
+    <message>
+        <source>Rename Gesture</source>
+        <translation>Geste umbenennen</translation>
+    </message>
+    <message>
+        <source>Change Gesture Clip</source>
+        <translation>Clip der Geste ändern</translation>
+    </message>
+    <message>
+        <source>Change Gesture Body Part</source>
+        <translation>Körperteil der Geste ändern</translation>
+    </message>
+    <message>
+        <source>A fade time must be a number of seconds.</source>
+        <translation>Eine Blendzeit muss eine Anzahl von Sekunden sein.</translation>
+    </message>
+    <message>
+        <source>Change Gesture Fade In</source>
+        <translation>Einblendung der Geste ändern</translation>
+    </message>
+    <message>
+        <source>Change Gesture Fade Out</source>
+        <translation>Ausblendung der Geste ändern</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::GesticonPanel</name>
+    <message>
+        <source>The character whose gesture database is shown</source>
+        <translation>Die Figur, deren Gestendatenbank angezeigt wird</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add a gesture playing the character&apos;s first clip</source>
+        <translation>Eine Geste hinzufügen, die den ersten Clip der Figur abspielt</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the selected gestures</source>
+        <translation>Die ausgewählten Gesten entfernen</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Umbenennen</translation>
+    </message>
+    <message>
+        <source>Rename the selected gesture</source>
+        <translation>Die ausgewählte Geste umbenennen</translation>
+    </message>
+    <message>
+        <source>Preview</source>
+        <translation>Vorschau</translation>
+    </message>
+    <message>
+        <source>The character has no clips to make a gesture from</source>
+        <translation>Die Figur hat keine Clips, aus denen sich eine Geste erstellen ließe</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Preview needs the 3D view, which is not available here (no OpenGL)</source>
+        <translation>Die Vorschau braucht die 3D-Ansicht, die hier nicht verfügbar ist (kein OpenGL)</translation>
+    </message>
+    <message>
+        <source>Stop the preview and show the document again</source>
+        <translation>Die Vorschau beenden und wieder das Dokument anzeigen</translation>
+    </message>
+    <message>
+        <source>Play the selected gesture on the character from the playhead, over its other layers (the document does not change)</source>
+        <translation>Die ausgewählte Geste ab dem Abspielkopf auf der Figur abspielen, über ihren anderen Ebenen (das Dokument ändert sich nicht)</translation>
+    </message>
+    <message>
+        <source>Character &quot;%1&quot; has no clips to make a gesture from.</source>
+        <translation>Die Figur „%1“ hat keine Clips, aus denen sich eine Geste erstellen ließe.</translation>
+    </message>
+    <message>
+        <source>gesture</source>
+        <translation>Geste</translation>
+    </message>
+    <message>
+        <source>Add Gesture</source>
+        <translation>Geste hinzufügen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n Gesture(s)</source>
+        <translation>
+            <numerusform>%n Geste entfernen</numerusform>
+            <numerusform>%n Gesten entfernen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Gesture preview</source>
+        <translation>Gestenvorschau</translation>
+    </message>
+    <message>
+        <source>Cannot preview gesture &quot;%1&quot;: %2</source>
+        <translation>Vorschau der Geste „%1“ nicht möglich: %2</translation>
+    </message>
+    <message>
+        <source>Cannot preview gesture &quot;%1&quot;: its clip has no finite length.</source>
+        <translation>Vorschau der Geste „%1“ nicht möglich: Ihr Clip hat keine endliche Länge.</translation>
+    </message>
+    <message>
+        <source>The 3D view could not show the document again: %1</source>
+        <translation>Die 3D-Ansicht konnte das Dokument nicht wieder anzeigen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::JointMaskPanel</name>
+    <message>
+        <source>The mask to edit; actions that name it all change with it</source>
+        <translation>Die zu bearbeitende Maske; alle Aktionen, die sie verwenden, ändern sich mit</translation>
+    </message>
+    <message>
+        <source>New…</source>
+        <translation>Neu…</translation>
+    </message>
+    <message>
+        <source>Add a mask</source>
+        <translation>Eine Maske hinzufügen</translation>
+    </message>
+    <message>
+        <source>Rename…</source>
+        <translation>Umbenennen…</translation>
+    </message>
+    <message>
+        <source>Rename the mask and every action and gesture using it</source>
+        <translation>Die Maske umbenennen, auch in jeder Aktion und Geste, die sie verwendet</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Delete the mask (only when nothing uses it)</source>
+        <translation>Die Maske löschen (nur wenn nichts sie verwendet)</translation>
+    </message>
+    <message>
+        <source>Presets</source>
+        <translation>Vorgaben</translation>
+    </message>
+    <message>
+        <source>Replace the weights by a preset</source>
+        <translation>Die Gewichte durch eine Vorgabe ersetzen</translation>
+    </message>
+    <message>
+        <source>Full Body</source>
+        <translation>Ganzer Körper</translation>
+    </message>
+    <message>
+        <source>Upper Body</source>
+        <translation>Oberkörper</translation>
+    </message>
+    <message>
+        <source>Lower Body</source>
+        <translation>Unterkörper</translation>
+    </message>
+    <message>
+        <source>Left Arm</source>
+        <translation>Linker Arm</translation>
+    </message>
+    <message>
+        <source>Right Arm</source>
+        <translation>Rechter Arm</translation>
+    </message>
+    <message>
+        <source>Head and Neck</source>
+        <translation>Kopf und Hals</translation>
+    </message>
+    <message>
+        <source>Spine</source>
+        <translation>Wirbelsäule</translation>
+    </message>
+    <message>
+        <source>Apply Mask Preset %1</source>
+        <translation>Maskenvorgabe %1 anwenden</translation>
+    </message>
+    <message>
+        <source>Mirror</source>
+        <translation>Spiegeln</translation>
+    </message>
+    <message>
+        <source>Swap left and right</source>
+        <translation>Links und rechts vertauschen</translation>
+    </message>
+    <message>
+        <source>Invert</source>
+        <translation>Invertieren</translation>
+    </message>
+    <message>
+        <source>Every weight w becomes 1 − w</source>
+        <translation>Jedes Gewicht w wird zu 1 − w</translation>
+    </message>
+    <message>
+        <source>Mirror Mask</source>
+        <translation>Maske spiegeln</translation>
+    </message>
+    <message>
+        <source>Invert Mask</source>
+        <translation>Maske invertieren</translation>
+    </message>
+    <message>
+        <source>Paint Mask</source>
+        <translation>Maske malen</translation>
+    </message>
+    <message>
+        <source>Set Joint Weight</source>
+        <translation>Gelenkgewicht setzen</translation>
+    </message>
+    <message>
+        <source>New Mask</source>
+        <translation>Neue Maske</translation>
+    </message>
+    <message>
+        <source>Name of the new mask:</source>
+        <translation>Name der neuen Maske:</translation>
+    </message>
+    <message>
+        <source>mask</source>
+        <translation>Maske</translation>
+    </message>
+    <message>
+        <source>Add Mask %1</source>
+        <translation>Maske %1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Rename Mask</source>
+        <translation>Maske umbenennen</translation>
+    </message>
+    <message>
+        <source>New name:</source>
+        <translation>Neuer Name:</translation>
+    </message>
+    <message>
+        <source>Delete Mask %1</source>
+        <translation>Maske %1 löschen</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::PropertiesPanel</name>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>time stretch ×%1</source>
+        <translation>Zeitdehnung ×%1</translation>
+    </message>
+    <message>
+        <source>time warp over %1</source>
+        <translation>Zeitverzerrung über %1</translation>
+    </message>
+    <message>
+        <source>loop forever</source>
+        <translation>Endlosschleife</translation>
+    </message>
+    <message>
+        <source>loop ×%1</source>
+        <translation>Schleife ×%1</translation>
+    </message>
+    <message>
+        <source>mirror left/right</source>
+        <translation>links/rechts gespiegelt</translation>
+    </message>
+    <message>
+        <source>moved to (%1, %2, %3) m</source>
+        <translation>verschoben nach (%1, %2, %3) m</translation>
+    </message>
+    <message>
+        <source>offset %1</source>
+        <translation>versetzt um %1</translation>
+    </message>
+    <message>
+        <source>trim %1 – %2</source>
+        <translation>beschnitten auf %1 – %2</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Normalized (weighted average)</source>
+        <translation>Normalisiert (gewichteter Mittelwert)</translation>
+    </message>
+    <message>
+        <source>Additive (on top of the layers below)</source>
+        <translation>Additiv (auf die darunterliegenden Ebenen)</translation>
+    </message>
+    <message>
+        <source>Override (replaces by its weight)</source>
+        <translation>Überschreibend (ersetzt gemäß ihrem Gewicht)</translation>
+    </message>
+    <message>
+        <source>Hold the first and last pose outside the action</source>
+        <translation>Erste und letzte Pose außerhalb der Aktion halten</translation>
+    </message>
+    <message>
+        <source>Action of:</source>
+        <translation>Aktion von:</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Name:</translation>
+    </message>
+    <message>
+        <source>Clip:</source>
+        <translation>Clip:</translation>
+    </message>
+    <message>
+        <source>Start:</source>
+        <translation>Beginn:</translation>
+    </message>
+    <message>
+        <source>Length:</source>
+        <translation>Länge:</translation>
+    </message>
+    <message>
+        <source>Fades:</source>
+        <translation>Blenden:</translation>
+    </message>
+    <message>
+        <source>Blend mode:</source>
+        <translation>Mischmodus:</translation>
+    </message>
+    <message>
+        <source>Body part:</source>
+        <translation>Körperteil:</translation>
+    </message>
+    <message>
+        <source>Modifiers:</source>
+        <translation>Modifikatoren:</translation>
+    </message>
+    <message>
+        <source>Rename Action</source>
+        <translation>Aktion umbenennen</translation>
+    </message>
+    <message>
+        <source>Change Clip</source>
+        <translation>Clip ändern</translation>
+    </message>
+    <message>
+        <source>Change Blend Mode</source>
+        <translation>Mischmodus ändern</translation>
+    </message>
+    <message>
+        <source>Change Body Part</source>
+        <translation>Körperteil ändern</translation>
+    </message>
+    <message>
+        <source>Change Outside Domain</source>
+        <translation>Halten außerhalb der Aktion ändern</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Move Action</source>
+        <translation>Aktion verschieben</translation>
+    </message>
+    <message>
+        <source>Move Action: %1</source>
+        <translation>Aktion verschieben: %1</translation>
+    </message>
+    <message>
+        <source>No scenario is open.</source>
+        <translation>Kein Szenario geöffnet.</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>noch nicht gespeichert</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;File: %2&lt;br&gt;%3, %4, %5 markers&lt;br&gt;Length: %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Select an action on the timeline to see and edit its properties.&lt;/i&gt;</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Datei: %2&lt;br&gt;%3, %4, %5 Marker&lt;br&gt;Länge: %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Wählen Sie eine Aktion auf der Zeitleiste aus, um ihre Eigenschaften anzuzeigen und zu bearbeiten.&lt;/i&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n character(s)</source>
+        <translation>
+            <numerusform>%n Figur</numerusform>
+            <numerusform>%n Figuren</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n action(s)</source>
+        <translation>
+            <numerusform>%n Aktion</numerusform>
+            <numerusform>%n Aktionen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 ▸ %2%3</source>
+        <translation>%1 ▸ %2%3</translation>
+    </message>
+    <message>
+        <source> (locked)</source>
+        <translation> (gesperrt)</translation>
+    </message>
+    <message>
+        <source>Whole body</source>
+        <translation>Ganzer Körper</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>open-ended (plays until cut off)</source>
+        <translation>offenes Ende (spielt bis zum Abbruch)</translation>
+    </message>
+    <message>
+        <source>none (constant weight %1)</source>
+        <translation>keine (konstantes Gewicht %1)</translation>
+    </message>
+    <message numerus="yes">
+        <source>keyframed weight curve (%n key(s))</source>
+        <translation>
+            <numerusform>Gewichtskurve mit Keyframes (%n Schlüssel)</numerusform>
+            <numerusform>Gewichtskurve mit Keyframes (%n Schlüssel)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>in %1, out %2</source>
+        <translation>ein %1, aus %2</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
     </message>
 </context>
 <context>
@@ -283,6 +1187,309 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
     </message>
 </context>
 <context>
+    <name>thespis::editor::SegmentPanel</name>
+    <message>
+        <source>The character whose body segments are tagged</source>
+        <translation>Die Figur, deren Körpersegmente markiert werden</translation>
+    </message>
+    <message>
+        <source>Filter segments…</source>
+        <translation>Segmente filtern…</translation>
+    </message>
+    <message>
+        <source>Show only the segments whose name or joint contains this text</source>
+        <translation>Nur die Segmente anzeigen, deren Name oder Gelenk diesen Text enthält</translation>
+    </message>
+    <message>
+        <source>Role:</source>
+        <translation>Rolle:</translation>
+    </message>
+    <message>
+        <source>Tag the selected segments as %1. %2</source>
+        <translation>Die ausgewählten Segmente als %1 markieren. %2</translation>
+    </message>
+    <message>
+        <source>Posture:</source>
+        <translation>Haltung:</translation>
+    </message>
+    <message>
+        <source>Mark the selected segments %1. %2</source>
+        <translation>Die ausgewählten Segmente als %1 kennzeichnen. %2</translation>
+    </message>
+    <message>
+        <source>Occluder</source>
+        <translation>Verdecker</translation>
+    </message>
+    <message>
+        <source>Posture</source>
+        <translation>Haltung</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Vertices</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Dreiecke</translation>
+    </message>
+    <message>
+        <source>Click a segment in the viewport to select it (Ctrl toggles, Shift adds). Receivers are left out of the shadow proxy; occluders cast shadows but are not lit. PI segments keep their shape in every pose.</source>
+        <translation>Klicken Sie auf ein Segment in der 3D-Ansicht, um es auszuwählen (Strg schaltet um, Umschalt fügt hinzu). Empfänger werden aus dem Schatten-Proxy ausgelassen; Verdecker werfen Schatten, werden aber nicht beleuchtet. PI-Segmente behalten in jeder Pose ihre Form.</translation>
+    </message>
+    <message>
+        <source>%1 of %2 selected</source>
+        <translation>%1 von %2 ausgewählt</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::SegmentTableModel</name>
+    <message>
+        <source>No character is shown.</source>
+        <translation>Keine Figur angezeigt.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Tag %n Segment(s)</source>
+        <translation>
+            <numerusform>%n Segment markieren</numerusform>
+            <numerusform>%n Segmente markieren</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <source>Receiver</source>
+        <translation>Empfänger</translation>
+    </message>
+    <message>
+        <source>Occluder</source>
+        <translation>Verdecker</translation>
+    </message>
+    <message>
+        <source>Casts shadows and receives them.</source>
+        <translation>Wirft Schatten und empfängt sie.</translation>
+    </message>
+    <message>
+        <source>Receives shadows but casts none: left out of the shadow proxy (hair, loose clothes).</source>
+        <translation>Empfängt Schatten, wirft aber keine: wird aus dem Schatten-Proxy ausgelassen (Haare, lose Kleidung).</translation>
+    </message>
+    <message>
+        <source>Casts shadows but is not lit itself: no transfer is baked for it (props, phantom geometry).</source>
+        <translation>Wirft Schatten, wird aber selbst nicht beleuchtet: Dafür wird kein Transfer gebacken (Requisiten, Phantomgeometrie).</translation>
+    </message>
+    <message>
+        <source>PI</source>
+        <translation>PI</translation>
+    </message>
+    <message>
+        <source>PD</source>
+        <translation>PD</translation>
+    </message>
+    <message>
+        <source>Posture-independent: keeps its shape in every pose (skull, pelvis, thighs, hands); baked once.</source>
+        <translation>Haltungsunabhängig: behält in jeder Pose seine Form (Schädel, Becken, Oberschenkel, Hände); einmal gebacken.</translation>
+    </message>
+    <message>
+        <source>Posture-dependent: its shadows change with the pose (arms, spine, legs).</source>
+        <translation>Haltungsabhängig: seine Schatten ändern sich mit der Pose (Arme, Wirbelsäule, Beine).</translation>
+    </message>
+    <message>
+        <source>(root)</source>
+        <translation>(Wurzel)</translation>
+    </message>
+    <message>
+        <source>Segment %1 follows joint %2</source>
+        <translation>Segment %1 folgt Gelenk %2</translation>
+    </message>
+    <message>
+        <source>(the body&apos;s default)</source>
+        <translation>(Standard des Körpers)</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>Segment</translation>
+    </message>
+    <message>
+        <source>Joint</source>
+        <translation>Gelenk</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Rolle</translation>
+    </message>
+    <message>
+        <source>Posture</source>
+        <translation>Haltung</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Vertices</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Dreiecke</translation>
+    </message>
+    <message>
+        <source>The mesh segment (paper §6.1.3)</source>
+        <translation>Das Mesh-Segment (Paper §6.1.3)</translation>
+    </message>
+    <message>
+        <source>The H-Anim joint whose frame the segment follows</source>
+        <translation>Das H-Anim-Gelenk, dessen Koordinatensystem das Segment folgt</translation>
+    </message>
+    <message>
+        <source>Receiver: in shadow but casts none. Occluder: casts shadows, not lit. None: both.</source>
+        <translation>Empfänger: im Schatten, wirft aber keinen. Verdecker: wirft Schatten, nicht beleuchtet. Keine: beides.</translation>
+    </message>
+    <message>
+        <source>PI: posture-independent (rigid). PD: posture-dependent.</source>
+        <translation>PI: haltungsunabhängig (starr). PD: haltungsabhängig.</translation>
+    </message>
+    <message>
+        <source>Vertices of the segment</source>
+        <translation>Vertices des Segments</translation>
+    </message>
+    <message>
+        <source>Triangles of the segment</source>
+        <translation>Dreiecke des Segments</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::TimelinePanel</name>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <source>Ripple De&amp;lete</source>
+        <translation>Löschen und Lücke sc&amp;hließen</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <source>&amp;Paste</source>
+        <translation>&amp;Einfügen</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>&amp;Duplizieren</translation>
+    </message>
+    <message>
+        <source>&amp;Split at Playhead</source>
+        <translation>Am Abspielkopf &amp;teilen</translation>
+    </message>
+    <message>
+        <source>S&amp;napping</source>
+        <translation>Einr&amp;asten</translation>
+    </message>
+    <message>
+        <source>Snap to frames, clip edges, markers and the playhead (hold Ctrl while dragging to bypass)</source>
+        <translation>An Bildern, Clipkanten, Markern und dem Abspielkopf einrasten (beim Ziehen Strg halten, um es zu umgehen)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Move %n Action(s)</source>
+        <translation>
+            <numerusform>%n Aktion verschieben</numerusform>
+            <numerusform>%n Aktionen verschieben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Trim Action</source>
+        <translation>Aktion beschneiden</translation>
+    </message>
+    <message>
+        <source>Change Fade In</source>
+        <translation>Einblendung ändern</translation>
+    </message>
+    <message>
+        <source>Change Fade Out</source>
+        <translation>Ausblendung ändern</translation>
+    </message>
+    <message>
+        <source>Mute Layer</source>
+        <translation>Ebene stummschalten</translation>
+    </message>
+    <message>
+        <source>Unmute Layer</source>
+        <translation>Stummschaltung der Ebene aufheben</translation>
+    </message>
+    <message>
+        <source>Solo Layer</source>
+        <translation>Ebene solo schalten</translation>
+    </message>
+    <message>
+        <source>Unsolo Layer</source>
+        <translation>Solo der Ebene aufheben</translation>
+    </message>
+    <message>
+        <source>Lock Layer</source>
+        <translation>Ebene sperren</translation>
+    </message>
+    <message>
+        <source>Unlock Layer</source>
+        <translation>Ebene entsperren</translation>
+    </message>
+    <message>
+        <source>Marker %1</source>
+        <translation>Marker %1</translation>
+    </message>
+    <message>
+        <source>Add Marker</source>
+        <translation>Marker hinzufügen</translation>
+    </message>
+    <message>
+        <source>Move Marker</source>
+        <translation>Marker verschieben</translation>
+    </message>
+    <message>
+        <source>Remove Marker</source>
+        <translation>Marker entfernen</translation>
+    </message>
+    <message>
+        <source>Add Action %1</source>
+        <translation>Aktion %1 hinzufügen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Ripple Delete %n Action(s)</source>
+        <translation>
+            <numerusform>%n Aktion löschen und Lücke schließen</numerusform>
+            <numerusform>%n Aktionen löschen und Lücke schließen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Delete %n Action(s)</source>
+        <translation>
+            <numerusform>%n Aktion löschen</numerusform>
+            <numerusform>%n Aktionen löschen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n Action(s)</source>
+        <translation>
+            <numerusform>%n Aktion einfügen</numerusform>
+            <numerusform>%n Aktionen einfügen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Duplicate %n Action(s)</source>
+        <translation>
+            <numerusform>%n Aktion duplizieren</numerusform>
+            <numerusform>%n Aktionen duplizieren</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Select one action to split at the playhead.</source>
+        <translation>Wählen Sie eine Aktion aus, um sie am Abspielkopf zu teilen.</translation>
+    </message>
+    <message>
+        <source>Split Action</source>
+        <translation>Aktion teilen</translation>
+    </message>
+</context>
+<context>
     <name>thespis::studio::MainWindow</name>
     <message>
         <source>No scenario is open.
@@ -456,10 +1663,6 @@ Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
         <translation>Thespis Studio</translation>
     </message>
     <message>
-        <source>%1 — Thespis Studio</source>
-        <translation>%1 — Thespis Studio</translation>
-    </message>
-    <message>
         <source>m</source>
         <comment>metres</comment>
         <translation>m</translation>
@@ -519,6 +1722,325 @@ Der Reiter Skelette zeigt die Animation; thespis-cli render zeichnet die Szene o
         <source>The 3D view is empty: %1</source>
         <translation>Die 3D-Ansicht ist leer: %1</translation>
     </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>N&amp;eu</translation>
+    </message>
+    <message>
+        <source>Start a new scenario with one character on the built-in humanoid</source>
+        <translation>Ein neues Szenario mit einer Figur auf dem eingebauten Humanoiden beginnen</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <source>Go to &amp;End</source>
+        <translation>Zum &amp;Ende</translation>
+    </message>
+    <message>
+        <source>Previous &amp;Frame</source>
+        <translation>&amp;Vorheriges Bild</translation>
+    </message>
+    <message>
+        <source>&amp;Next Frame</source>
+        <translation>&amp;Nächstes Bild</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>Ein&amp;stellungen…</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>Timeline</source>
+        <translation>Zeitleiste</translation>
+    </message>
+    <message>
+        <source>Curve Editor</source>
+        <translation>Kurveneditor</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Eigenschaften</translation>
+    </message>
+    <message>
+        <source>Joint Mask</source>
+        <translation>Gelenkmaske</translation>
+    </message>
+    <message>
+        <source>Segments</source>
+        <translation>Segmente</translation>
+    </message>
+    <message>
+        <source>Bake</source>
+        <translation>Backen</translation>
+    </message>
+    <message>
+        <source>Clip Library</source>
+        <translation>Clipbibliothek</translation>
+    </message>
+    <message>
+        <source>Gesticon</source>
+        <translation>Gesticon</translation>
+    </message>
+    <message>
+        <source>%1[*] — Thespis Studio</source>
+        <translation>%1[*] — Thespis Studio</translation>
+    </message>
+    <message>
+        <source>New scenario</source>
+        <translation>Neues Szenario</translation>
+    </message>
+    <message>
+        <source>Actor</source>
+        <translation>Darsteller</translation>
+    </message>
+    <message>
+        <source>Could not start a new scenario.</source>
+        <translation>Ein neues Szenario konnte nicht begonnen werden.</translation>
+    </message>
+    <message>
+        <source>Could not save “%1”.</source>
+        <translation>„%1“ konnte nicht gespeichert werden.</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Save Scenario As</source>
+        <translation>Szenario speichern unter</translation>
+    </message>
+    <message>
+        <source>Thespis scenarios (*.thespis)</source>
+        <translation>Thespis-Szenarien (*.thespis)</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved. Save them?</source>
+        <translation>„%1“ enthält ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
+    </message>
+    <message>
+        <source>an unsaved scenario</source>
+        <translation>ein ungespeichertes Szenario</translation>
+    </message>
+    <message>
+        <source>Recover Unsaved Work</source>
+        <translation>Ungespeicherte Arbeit wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Thespis Studio did not close properly. Recover the changes to %1 autosaved at %2?</source>
+        <translation>Thespis Studio wurde nicht ordnungsgemäß beendet. Die um %2 automatisch gespeicherten Änderungen für %1 wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>Recovered %1; save it to keep it.</source>
+        <translation>Wiederhergestellt: %1; speichern Sie, um die Änderungen zu behalten.</translation>
+    </message>
+    <message>
+        <source>Could not recover %1.</source>
+        <translation>Wiederherstellen nicht möglich: %1.</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::studio::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>System default (%1)</source>
+        <translation>Systemstandard (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Sprache:</translation>
+    </message>
+    <message>
+        <source>The new language is used from the next start of the studio.</source>
+        <translation>Die neue Sprache wird ab dem nächsten Start des Studios verwendet.</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>How often open work is copied to a recovery file, offered after a crash</source>
+        <translation>Wie oft offene Arbeit in eine Wiederherstellungsdatei kopiert wird, die nach einem Absturz angeboten wird</translation>
+    </message>
+    <message>
+        <source>&amp;Autosave every:</source>
+        <translation>&amp;Automatisch speichern alle:</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::widgets::CurveView</name>
+    <message>
+        <source>No curves to show</source>
+        <translation>Keine Kurven anzuzeigen</translation>
+    </message>
+    <message>
+        <source>Click a key to select it, drag to move it; double-click a curve to add a key. Wheel: zoom (Ctrl: values only, Shift: time only); middle-drag: pan; F: frame all.</source>
+        <translation>Klicken Sie auf einen Schlüssel, um ihn auszuwählen, und ziehen Sie ihn, um ihn zu verschieben; Doppelklick auf eine Kurve fügt einen Schlüssel hinzu. Mausrad: Zoomen (Strg: nur Werte, Umschalt: nur Zeit); mittig ziehen: Verschieben; F: alles einpassen.</translation>
+    </message>
+    <message>
+        <source>Tangents</source>
+        <translation>Tangenten</translation>
+    </message>
+    <message>
+        <source>Auto Clamped</source>
+        <translation>Automatisch begrenzt</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Linear</translation>
+    </message>
+    <message>
+        <source>Constant</source>
+        <translation>Konstant</translation>
+    </message>
+    <message>
+        <source>Free</source>
+        <translation>Frei</translation>
+    </message>
+    <message>
+        <source>Broken</source>
+        <translation>Gebrochen</translation>
+    </message>
+    <message>
+        <source>Smooth tangents that never overshoot neighbouring keys</source>
+        <translation>Glatte Tangenten, die benachbarte Schlüssel nie überschießen</translation>
+    </message>
+    <message>
+        <source>Straight lines between keys</source>
+        <translation>Gerade Linien zwischen Schlüsseln</translation>
+    </message>
+    <message>
+        <source>Hold the value until the next key</source>
+        <translation>Den Wert bis zum nächsten Schlüssel halten</translation>
+    </message>
+    <message>
+        <source>Smooth tangents you drag, the same on both sides</source>
+        <translation>Glatte Tangenten zum Ziehen, auf beiden Seiten gleich</translation>
+    </message>
+    <message>
+        <source>Tangents you drag, each side on its own</source>
+        <translation>Tangenten zum Ziehen, jede Seite für sich</translation>
+    </message>
+    <message>
+        <source>Delete Keys</source>
+        <translation>Schlüssel löschen</translation>
+    </message>
+    <message>
+        <source>Frame All</source>
+        <translation>Alles einpassen</translation>
+    </message>
+    <message>
+        <source>%1, key %2
+Time %3 s, value %4
+Tangents: %5</source>
+        <translation>%1, Schlüssel %2
+Zeit %3 s, Wert %4
+Tangenten: %5</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Δt %1 s   Δv %2</source>
+        <translation>Δt %1 s   Δv %2</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::widgets::JointMaskView</name>
+    <message>
+        <source>No skeleton</source>
+        <translation>Kein Skelett</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <comment>the character&apos;s right side</comment>
+        <translation>R</translation>
+    </message>
+    <message>
+        <source>L</source>
+        <comment>the character&apos;s left side</comment>
+        <translation>L</translation>
+    </message>
+    <message>
+        <source>Drag to paint · right-drag paints 0</source>
+        <translation>Ziehen zum Malen · rechts ziehen malt 0</translation>
+    </message>
+    <message>
+        <source>Joint</source>
+        <translation>Gelenk</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Gewicht</translation>
+    </message>
+    <message>
+        <source>Brush weight</source>
+        <translation>Pinselgewicht</translation>
+    </message>
+    <message>
+        <source>The weight a left-button stroke paints (the right button paints 0)</source>
+        <translation>Das Gewicht, das ein Strich mit der linken Maustaste malt (die rechte Maustaste malt 0)</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Radius of the brush in the picture</source>
+        <translation>Radius des Pinsels im Bild</translation>
+    </message>
+    <message>
+        <source>%1: set by the mask</source>
+        <translation>%1: von der Maske gesetzt</translation>
+    </message>
+    <message>
+        <source>%1: inherited</source>
+        <translation>%1: geerbt</translation>
+    </message>
+    <message>
+        <source>Set to 1</source>
+        <translation>Auf 1 setzen</translation>
+    </message>
+    <message>
+        <source>Set to 0.5</source>
+        <translation>Auf 0,5 setzen</translation>
+    </message>
+    <message>
+        <source>Set to 0</source>
+        <translation>Auf 0 setzen</translation>
+    </message>
 </context>
 <context>
     <name>thespis::widgets::OsgViewport</name>
@@ -548,6 +2070,53 @@ Der Reiter Skelette zeigt die Animation; thespis-cli render zeichnet die Szene o
     <message>
         <source>Front</source>
         <translation>Vorne</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::widgets::TimelineView</name>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 B/s</translation>
+    </message>
+    <message>
+        <source>Remove Marker “%1”</source>
+        <translation>Marker „%1“ entfernen</translation>
+    </message>
+    <message>
+        <source>Add Marker Here</source>
+        <translation>Marker hier hinzufügen</translation>
+    </message>
+    <message>
+        <source>%1
+%2 – open end</source>
+        <translation>%1
+%2 – offenes Ende</translation>
+    </message>
+    <message>
+        <source>%1
+%2 – %3 (%4)</source>
+        <translation>%1
+%2 – %3 (%4)</translation>
+    </message>
+    <message>
+        <source>The track is locked</source>
+        <translation>Die Spur ist gesperrt</translation>
+    </message>
+    <message>
+        <source>Mute: leave this track out of playback</source>
+        <translation>Stumm: diese Spur bei der Wiedergabe auslassen</translation>
+    </message>
+    <message>
+        <source>Solo: play only the soloed tracks</source>
+        <translation>Solo: nur die Solo-Spuren abspielen</translation>
+    </message>
+    <message>
+        <source>Lock: protect this track&apos;s clips from edits</source>
+        <translation>Sperren: die Clips dieser Spur vor Bearbeitung schützen</translation>
+    </message>
+    <message>
+        <source>%1 at %2</source>
+        <translation>%1 bei %2</translation>
     </message>
 </context>
 <context>
@@ -595,6 +2164,26 @@ Der Reiter Skelette zeigt die Animation; thespis-cli render zeichnet die Szene o
     <message>
         <source>Play</source>
         <translation>Abspielen</translation>
+    </message>
+    <message>
+        <source>Previous frame (Left arrow)</source>
+        <translation>Vorheriges Bild (Pfeil links)</translation>
+    </message>
+    <message>
+        <source>Next frame (Right arrow)</source>
+        <translation>Nächstes Bild (Pfeil rechts)</translation>
+    </message>
+    <message>
+        <source>Go to the end (End)</source>
+        <translation>Zum Ende (Ende)</translation>
+    </message>
+    <message>
+        <source>Frames per second for frame numbers, frame steps and snapping</source>
+        <translation>Bilder pro Sekunde für Bildnummern, Bildschritte und Einrasten</translation>
+    </message>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 B/s</translation>
     </message>
 </context>
 </TS>

@@ -2,6 +2,13 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr_FR">
 <context>
+    <name>CharacterChoice</name>
+    <message>
+        <source>Character:</source>
+        <translation>Personnage :</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Thespis Studio: author and preview virtual humans. Opens SCENARIO, or the built-in demo.</source>
@@ -18,6 +25,387 @@
     <message>
         <source>Save a picture of the window to FILE (PNG) once the scenario is shown, then quit.</source>
         <translation>Enregistrer une image de la fenêtre dans FICHIER (PNG) une fois le scénario affiché, puis quitter.</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::Autosaver</name>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Échec de l’enregistrement automatique : %1</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::BakePanel</name>
+    <message>
+        <source>The character whose body is baked</source>
+        <translation>Le personnage dont le corps est précalculé</translation>
+    </message>
+    <message>
+        <source>Character:</source>
+        <translation>Personnage :</translation>
+    </message>
+    <message>
+        <source>Uses now:</source>
+        <translation>Utilise actuellement :</translation>
+    </message>
+    <message>
+        <source>Bake Settings</source>
+        <translation>Paramètres du précalcul</translation>
+    </message>
+    <message>
+        <source>Diffuse unshadowed</source>
+        <translation>Diffus sans ombres</translation>
+    </message>
+    <message>
+        <source>Diffuse shadowed</source>
+        <translation>Diffus avec ombres</translation>
+    </message>
+    <message>
+        <source>Diffuse shadowed merged (paper)</source>
+        <translation>Diffus avec ombres fusionné (article)</translation>
+    </message>
+    <message>
+        <source>DU: no shadows at all</source>
+        <translation>DU : aucune ombre</translation>
+    </message>
+    <message>
+        <source>DS: each segment shadows only itself</source>
+        <translation>DS : chaque segment ne projette d’ombre que sur lui-même</translation>
+    </message>
+    <message>
+        <source>DSM: every segment shadows the others; receivers are transparent, occluders are not baked</source>
+        <translation>DSM : chaque segment projette des ombres sur les autres ; les récepteurs sont transparents, les occulteurs ne sont pas précalculés</translation>
+    </message>
+    <message>
+        <source>Transfer:</source>
+        <translation>Transfert :</translation>
+    </message>
+    <message>
+        <source>Spherical harmonics order: bands 0 … order − 1</source>
+        <translation>Ordre des harmoniques sphériques : bandes 0 … ordre − 1</translation>
+    </message>
+    <message>
+        <source>SH order:</source>
+        <translation>Ordre SH :</translation>
+    </message>
+    <message>
+        <source>Stratified cosine-weighted directions traced from every vertex</source>
+        <translation>Directions stratifiées pondérées par le cosinus, tracées depuis chaque sommet</translation>
+    </message>
+    <message>
+        <source>Rays per vertex:</source>
+        <translation>Rayons par sommet :</translation>
+    </message>
+    <message>
+        <source>Embree</source>
+        <translation>Embree</translation>
+    </message>
+    <message>
+        <source>Uniform grid</source>
+        <translation>Grille uniforme</translation>
+    </message>
+    <message>
+        <source>The ray tracer: Embree, or the paper&apos;s uniform grid (same results, slower)</source>
+        <translation>Le lancer de rayons : Embree, ou la grille uniforme de l’article (mêmes résultats, plus lent)</translation>
+    </message>
+    <message>
+        <source>Ray tracer:</source>
+        <translation>Lancer de rayons :</translation>
+    </message>
+    <message>
+        <source>Relaxation ε in metres: hits nearer than this are ignored (default 1.71e-4, the H-Anim segment gap)</source>
+        <translation>Relaxation ε en mètres : les impacts plus proches sont ignorés (par défaut 1.71e-4, l’écart entre segments H-Anim)</translation>
+    </message>
+    <message>
+        <source>Relaxation ε (m):</source>
+        <translation>Relaxation ε (m) :</translation>
+    </message>
+    <message>
+        <source>All (%1)</source>
+        <translation>Tous (%1)</translation>
+    </message>
+    <message>
+        <source>Worker threads; the result does not depend on it</source>
+        <translation>Threads de calcul ; le résultat n’en dépend pas</translation>
+    </message>
+    <message>
+        <source>Threads:</source>
+        <translation>Threads :</translation>
+    </message>
+    <message>
+        <source>Start Bake</source>
+        <translation>Lancer le précalcul</translation>
+    </message>
+    <message>
+        <source>Bake the character in the background; the result is one undoable step</source>
+        <translation>Précalculer le personnage en arrière-plan ; le résultat forme une seule étape annulable</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Stop the bake; nothing changes</source>
+        <translation>Arrêter le précalcul ; rien n’est modifié</translation>
+    </message>
+    <message>
+        <source>Not baking</source>
+        <translation>Aucun précalcul en cours</translation>
+    </message>
+    <message>
+        <source>Show PRT lighting (off: Phong)</source>
+        <translation>Afficher l’éclairage PRT (désactivé : Phong)</translation>
+    </message>
+    <message>
+        <source>Shade the viewport with the baked transfer, or with plain Phong to compare</source>
+        <translation>Ombrer la vue 3D avec le transfert précalculé, ou avec un simple Phong pour comparer</translation>
+    </message>
+    <message>
+        <source>%1 coefficients per vertex</source>
+        <translation>%1 coefficients par sommet</translation>
+    </message>
+    <message>
+        <source>Relaxation ε must be a distance in metres from 0 to %1 (for example 1.71e-4), not “%2”.</source>
+        <translation>La relaxation ε doit être une distance en mètres de 0 à %1 (par exemple 1.71e-4), et non « %2 ».</translation>
+    </message>
+    <message>
+        <source>There is no character to bake.</source>
+        <translation>Il n’y a aucun personnage à précalculer.</translation>
+    </message>
+    <message>
+        <source>Save the scenario in a folder you can write to first: the bake goes to %1, which cannot be written.</source>
+        <translation>Enregistrez d’abord le scénario dans un dossier accessible en écriture : le précalcul est écrit dans %1, qui n’est pas accessible en écriture.</translation>
+    </message>
+    <message>
+        <source>its folder</source>
+        <translation>son dossier</translation>
+    </message>
+    <message>
+        <source>The body of the character could not be loaded: %1</source>
+        <translation>Le corps du personnage n’a pas pu être chargé : %1</translation>
+    </message>
+    <message>
+        <source>Baking %1: %2, order %3, %4 rays per vertex…</source>
+        <translation>Précalcul de %1 : %2, ordre %3, %4 rayons par sommet…</translation>
+    </message>
+    <message>
+        <source>%p% — %1 / %2 vertices</source>
+        <translation>%p% — %1 / %2 sommets</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>Annulé</translation>
+    </message>
+    <message>
+        <source>Cancelled — nothing changed.</source>
+        <translation>Annulé — rien n’a été modifié.</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>Échec</translation>
+    </message>
+    <message>
+        <source>The bake failed: %1</source>
+        <translation>Le précalcul a échoué : %1</translation>
+    </message>
+    <message>
+        <source>The scenario was closed while baking; nothing changed.</source>
+        <translation>Le scénario a été fermé pendant le précalcul ; rien n’a été modifié.</translation>
+    </message>
+    <message>
+        <source>The character “%1” is gone; the bake was thrown away.</source>
+        <translation>Le personnage « %1 » n’existe plus ; le précalcul a été abandonné.</translation>
+    </message>
+    <message>
+        <source>%1 changed while baking (body or segment tags); nothing changed: bake again.</source>
+        <translation>%1 a changé pendant le précalcul (corps ou étiquettes de segments) ; rien n’a été modifié : relancez le précalcul.</translation>
+    </message>
+    <message>
+        <source>Bake %1 (%2, order %3)</source>
+        <translation>Précalculer %1 (%2, ordre %3)</translation>
+    </message>
+    <message>
+        <source>The bake could not be applied: %1</source>
+        <translation>Le précalcul n’a pas pu être appliqué : %1</translation>
+    </message>
+    <message>
+        <source>Last bake: %1, order %2, %3 rays per vertex — %4 s, %5 Mrays/s.</source>
+        <translation>Dernier précalcul : %1, ordre %2, %3 rayons par sommet — %4 s, %5 Mrayons/s.</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>none — unshadowed (DU)</source>
+        <translation>aucun — sans ombres (DU)</translation>
+    </message>
+    <message>
+        <source>Bake the character to light it with shadows</source>
+        <translation>Précalculez le personnage pour l’éclairer avec des ombres</translation>
+    </message>
+    <message>
+        <source>%1
+missing or unreadable — lit unshadowed (DU)</source>
+        <translation>%1
+manquant ou illisible — éclairé sans ombres (DU)</translation>
+    </message>
+    <message>
+        <source>%1
+stale: it no longer fits the body or its segment tags — lit unshadowed (DU) until baked again</source>
+        <translation>%1
+obsolète : ne correspond plus au corps ou à ses étiquettes de segments — éclairé sans ombres (DU) jusqu’au prochain précalcul</translation>
+    </message>
+    <message>
+        <source>%1
+%2, order %3, %4 rays per vertex</source>
+        <translation>%1
+%2, ordre %3, %4 rayons par sommet</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::ClipLibraryPanel</name>
+    <message>
+        <source>Clip</source>
+        <translation>Clip</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Source</translation>
+    </message>
+    <message>
+        <source>Drag a clip onto a track of its character to add an action</source>
+        <translation>Faites glisser un clip sur une piste de son personnage pour ajouter une action</translation>
+    </message>
+    <message>
+        <source>keyframes in the scenario</source>
+        <translation>clés dans le scénario</translation>
+    </message>
+    <message>
+        <source>Drag onto a track of %1</source>
+        <translation>Faire glisser sur une piste de %1</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::CurvePanel</name>
+    <message>
+        <source>Weight</source>
+        <translation>Poids</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Échelle</translation>
+    </message>
+    <message>
+        <source>Constant</source>
+        <translation>Constante</translation>
+    </message>
+    <message>
+        <source>Linear fade</source>
+        <translation>Fondu linéaire</translation>
+    </message>
+    <message>
+        <source>Cubic fade</source>
+        <translation>Fondu cubique</translation>
+    </message>
+    <message>
+        <source>Linear ADSR</source>
+        <translation>ADSR linéaire</translation>
+    </message>
+    <message>
+        <source>Cubic ADSR</source>
+        <translation>ADSR cubique</translation>
+    </message>
+    <message>
+        <source>Keyframed</source>
+        <translation>Par clés</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Édition</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Forme</translation>
+    </message>
+    <message>
+        <source>Attack / fade in</source>
+        <translation>Attaque / entrée</translation>
+    </message>
+    <message>
+        <source>Decay</source>
+        <translation>Déclin</translation>
+    </message>
+    <message>
+        <source>Sustain</source>
+        <translation>Maintien</translation>
+    </message>
+    <message>
+        <source>Release / fade out</source>
+        <translation>Relâchement / sortie</translation>
+    </message>
+    <message>
+        <source>Peak / value</source>
+        <translation>Pic / valeur</translation>
+    </message>
+    <message>
+        <source>Key time</source>
+        <translation>Temps de la clé</translation>
+    </message>
+    <message>
+        <source>Key value</source>
+        <translation>Valeur de la clé</translation>
+    </message>
+    <message>
+        <source>Delete Curve Keys</source>
+        <translation>Supprimer les clés de courbe</translation>
+    </message>
+    <message>
+        <source>Change Tangent</source>
+        <translation>Modifier la tangente</translation>
+    </message>
+    <message>
+        <source>Set Tangent Mode</source>
+        <translation>Définir le mode de tangente</translation>
+    </message>
+    <message>
+        <source>Select an action on the timeline to edit its curves.</source>
+        <translation>Sélectionnez une action sur la ligne temporelle pour modifier ses courbes.</translation>
+    </message>
+    <message>
+        <source>No action selected</source>
+        <translation>Aucune action sélectionnée</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2 · %3</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2 · %3</translation>
+    </message>
+    <message>
+        <source>Change Weight Curve</source>
+        <translation>Modifier la courbe de poids</translation>
+    </message>
+    <message>
+        <source>Change Scale Curve</source>
+        <translation>Modifier la courbe d’échelle</translation>
+    </message>
+    <message>
+        <source>Add Curve Key</source>
+        <translation>Ajouter une clé de courbe</translation>
+    </message>
+    <message numerus="yes">
+        <source>Move %n Curve Key(s)</source>
+        <translation>
+            <numerusform>Déplacer %n clé de courbe</numerusform>
+            <numerusform>Déplacer %n clés de courbe</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Set Curve Key</source>
+        <translation>Définir la clé de courbe</translation>
     </message>
 </context>
 <context>
@@ -68,6 +456,522 @@
     <message>
         <source>Error</source>
         <translation>Erreur</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::GesticonModel</name>
+    <message>
+        <source>The dependent-joint filter runs over this gesture: spine and neck follow it</source>
+        <translation>Le filtre des articulations dépendantes s’applique à ce geste : la colonne et le cou le suivent</translation>
+    </message>
+    <message>
+        <source>Only the joints of the gesture&apos;s clip move</source>
+        <translation>Seules les articulations du clip du geste bougent</translation>
+    </message>
+    <message>
+        <source>The gesture drives every joint its clip has</source>
+        <translation>Le geste anime toutes les articulations de son clip</translation>
+    </message>
+    <message>
+        <source>Whole body</source>
+        <translation>Tout le corps</translation>
+    </message>
+    <message>
+        <source>The gesture drives the joints of mask &quot;%1&quot;</source>
+        <translation>Le geste anime les articulations du masque « %1 »</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nom</translation>
+    </message>
+    <message>
+        <source>Clip</source>
+        <translation>Clip</translation>
+    </message>
+    <message>
+        <source>Body part</source>
+        <translation>Partie du corps</translation>
+    </message>
+    <message>
+        <source>Fade in (s)</source>
+        <translation>Fondu d’entrée (s)</translation>
+    </message>
+    <message>
+        <source>Fade out (s)</source>
+        <translation>Fondu de sortie (s)</translation>
+    </message>
+    <message>
+        <source>Dependent joints</source>
+        <translation>Articulations dépendantes</translation>
+    </message>
+    <message>
+        <source>The name speech scripts use to trigger the gesture</source>
+        <translation>Le nom qu’utilisent les scripts de parole pour déclencher le geste</translation>
+    </message>
+    <message>
+        <source>The character&apos;s clip the gesture plays</source>
+        <translation>Le clip du personnage que joue le geste</translation>
+    </message>
+    <message>
+        <source>The joint mask that limits the gesture to a body part</source>
+        <translation>Le masque d’articulations qui limite le geste à une partie du corps</translation>
+    </message>
+    <message>
+        <source>How long the gesture takes to blend in, in seconds</source>
+        <translation>Durée du fondu d’entrée du geste, en secondes</translation>
+    </message>
+    <message>
+        <source>How long the gesture takes to blend out, in seconds</source>
+        <translation>Durée du fondu de sortie du geste, en secondes</translation>
+    </message>
+    <message>
+        <source>Dependent-joint filter: joints the gesture does not drive (spine, neck) follow it</source>
+        <translation>Filtre des articulations dépendantes : les articulations que le geste n’anime pas (colonne, cou) le suivent</translation>
+    </message>
+    <message>
+        <source>Turn Dependent-Joint Filter On</source>
+        <translation>Activer le filtre des articulations dépendantes</translation>
+    </message>
+    <message>
+        <source>Turn Dependent-Joint Filter Off</source>
+        <translation>Désactiver le filtre des articulations dépendantes</translation>
+    </message>
+    <message>
+        <source>Rename Gesture</source>
+        <translation>Renommer le geste</translation>
+    </message>
+    <message>
+        <source>Change Gesture Clip</source>
+        <translation>Modifier le clip du geste</translation>
+    </message>
+    <message>
+        <source>Change Gesture Body Part</source>
+        <translation>Modifier la partie du corps du geste</translation>
+    </message>
+    <message>
+        <source>A fade time must be a number of seconds.</source>
+        <translation>Une durée de fondu doit être un nombre de secondes.</translation>
+    </message>
+    <message>
+        <source>Change Gesture Fade In</source>
+        <translation>Modifier le fondu d’entrée du geste</translation>
+    </message>
+    <message>
+        <source>Change Gesture Fade Out</source>
+        <translation>Modifier le fondu de sortie du geste</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::GesticonPanel</name>
+    <message>
+        <source>The character whose gesture database is shown</source>
+        <translation>Le personnage dont la base de gestes est affichée</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Ajouter</translation>
+    </message>
+    <message>
+        <source>Add a gesture playing the character&apos;s first clip</source>
+        <translation>Ajouter un geste qui joue le premier clip du personnage</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Remove the selected gestures</source>
+        <translation>Supprimer les gestes sélectionnés</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Renommer</translation>
+    </message>
+    <message>
+        <source>Rename the selected gesture</source>
+        <translation>Renommer le geste sélectionné</translation>
+    </message>
+    <message>
+        <source>Preview</source>
+        <translation>Aperçu</translation>
+    </message>
+    <message>
+        <source>The character has no clips to make a gesture from</source>
+        <translation>Le personnage n’a aucun clip pour créer un geste</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Arrêter</translation>
+    </message>
+    <message>
+        <source>Preview needs the 3D view, which is not available here (no OpenGL)</source>
+        <translation>L’aperçu nécessite la vue 3D, indisponible ici (pas d’OpenGL)</translation>
+    </message>
+    <message>
+        <source>Stop the preview and show the document again</source>
+        <translation>Arrêter l’aperçu et réafficher le document</translation>
+    </message>
+    <message>
+        <source>Play the selected gesture on the character from the playhead, over its other layers (the document does not change)</source>
+        <translation>Jouer le geste sélectionné sur le personnage à partir de la tête de lecture, par-dessus ses autres couches (le document n’est pas modifié)</translation>
+    </message>
+    <message>
+        <source>Character &quot;%1&quot; has no clips to make a gesture from.</source>
+        <translation>Le personnage « %1 » n’a aucun clip pour créer un geste.</translation>
+    </message>
+    <message>
+        <source>gesture</source>
+        <translation>geste</translation>
+    </message>
+    <message>
+        <source>Add Gesture</source>
+        <translation>Ajouter un geste</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n Gesture(s)</source>
+        <translation>
+            <numerusform>Supprimer %n geste</numerusform>
+            <numerusform>Supprimer %n gestes</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Gesture preview</source>
+        <translation>Aperçu du geste</translation>
+    </message>
+    <message>
+        <source>Cannot preview gesture &quot;%1&quot;: %2</source>
+        <translation>Impossible de prévisualiser le geste « %1 » : %2</translation>
+    </message>
+    <message>
+        <source>Cannot preview gesture &quot;%1&quot;: its clip has no finite length.</source>
+        <translation>Impossible de prévisualiser le geste « %1 » : son clip n’a pas de durée finie.</translation>
+    </message>
+    <message>
+        <source>The 3D view could not show the document again: %1</source>
+        <translation>La vue 3D n’a pas pu réafficher le document : %1</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::JointMaskPanel</name>
+    <message>
+        <source>The mask to edit; actions that name it all change with it</source>
+        <translation>Le masque à modifier ; toutes les actions qui le désignent changent avec lui</translation>
+    </message>
+    <message>
+        <source>New…</source>
+        <translation>Nouveau…</translation>
+    </message>
+    <message>
+        <source>Add a mask</source>
+        <translation>Ajouter un masque</translation>
+    </message>
+    <message>
+        <source>Rename…</source>
+        <translation>Renommer…</translation>
+    </message>
+    <message>
+        <source>Rename the mask and every action and gesture using it</source>
+        <translation>Renommer le masque et mettre à jour les actions et gestes qui l’utilisent</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Delete the mask (only when nothing uses it)</source>
+        <translation>Supprimer le masque (seulement s’il n’est pas utilisé)</translation>
+    </message>
+    <message>
+        <source>Presets</source>
+        <translation>Préréglages</translation>
+    </message>
+    <message>
+        <source>Replace the weights by a preset</source>
+        <translation>Remplacer les poids par un préréglage</translation>
+    </message>
+    <message>
+        <source>Full Body</source>
+        <translation>Corps entier</translation>
+    </message>
+    <message>
+        <source>Upper Body</source>
+        <translation>Haut du corps</translation>
+    </message>
+    <message>
+        <source>Lower Body</source>
+        <translation>Bas du corps</translation>
+    </message>
+    <message>
+        <source>Left Arm</source>
+        <translation>Bras gauche</translation>
+    </message>
+    <message>
+        <source>Right Arm</source>
+        <translation>Bras droit</translation>
+    </message>
+    <message>
+        <source>Head and Neck</source>
+        <translation>Tête et cou</translation>
+    </message>
+    <message>
+        <source>Spine</source>
+        <translation>Colonne vertébrale</translation>
+    </message>
+    <message>
+        <source>Apply Mask Preset %1</source>
+        <translation>Appliquer le préréglage de masque %1</translation>
+    </message>
+    <message>
+        <source>Mirror</source>
+        <translation>Miroir</translation>
+    </message>
+    <message>
+        <source>Swap left and right</source>
+        <translation>Permuter gauche et droite</translation>
+    </message>
+    <message>
+        <source>Invert</source>
+        <translation>Inverser</translation>
+    </message>
+    <message>
+        <source>Every weight w becomes 1 − w</source>
+        <translation>Chaque poids w devient 1 − w</translation>
+    </message>
+    <message>
+        <source>Mirror Mask</source>
+        <translation>Masque en miroir</translation>
+    </message>
+    <message>
+        <source>Invert Mask</source>
+        <translation>Inverser le masque</translation>
+    </message>
+    <message>
+        <source>Paint Mask</source>
+        <translation>Peindre le masque</translation>
+    </message>
+    <message>
+        <source>Set Joint Weight</source>
+        <translation>Définir le poids de l’articulation</translation>
+    </message>
+    <message>
+        <source>New Mask</source>
+        <translation>Nouveau masque</translation>
+    </message>
+    <message>
+        <source>Name of the new mask:</source>
+        <translation>Nom du nouveau masque :</translation>
+    </message>
+    <message>
+        <source>mask</source>
+        <translation>masque</translation>
+    </message>
+    <message>
+        <source>Add Mask %1</source>
+        <translation>Ajouter le masque %1</translation>
+    </message>
+    <message>
+        <source>Rename Mask</source>
+        <translation>Renommer le masque</translation>
+    </message>
+    <message>
+        <source>New name:</source>
+        <translation>Nouveau nom :</translation>
+    </message>
+    <message>
+        <source>Delete Mask %1</source>
+        <translation>Supprimer le masque %1</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::PropertiesPanel</name>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>time stretch ×%1</source>
+        <translation>étirement temporel ×%1</translation>
+    </message>
+    <message>
+        <source>time warp over %1</source>
+        <translation>distorsion temporelle sur %1</translation>
+    </message>
+    <message>
+        <source>loop forever</source>
+        <translation>boucle sans fin</translation>
+    </message>
+    <message>
+        <source>loop ×%1</source>
+        <translation>boucle ×%1</translation>
+    </message>
+    <message>
+        <source>mirror left/right</source>
+        <translation>miroir gauche/droite</translation>
+    </message>
+    <message>
+        <source>moved to (%1, %2, %3) m</source>
+        <translation>déplacé en (%1, %2, %3) m</translation>
+    </message>
+    <message>
+        <source>offset %1</source>
+        <translation>décalage de %1</translation>
+    </message>
+    <message>
+        <source>trim %1 – %2</source>
+        <translation>coupé à %1 – %2</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Normalized (weighted average)</source>
+        <translation>Normalisé (moyenne pondérée)</translation>
+    </message>
+    <message>
+        <source>Additive (on top of the layers below)</source>
+        <translation>Additif (par-dessus les couches du dessous)</translation>
+    </message>
+    <message>
+        <source>Override (replaces by its weight)</source>
+        <translation>Remplacement (remplace selon son poids)</translation>
+    </message>
+    <message>
+        <source>Hold the first and last pose outside the action</source>
+        <translation>Maintenir la première et la dernière pose hors de l’action</translation>
+    </message>
+    <message>
+        <source>Action of:</source>
+        <translation>Action de :</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Nom :</translation>
+    </message>
+    <message>
+        <source>Clip:</source>
+        <translation>Clip :</translation>
+    </message>
+    <message>
+        <source>Start:</source>
+        <translation>Début :</translation>
+    </message>
+    <message>
+        <source>Length:</source>
+        <translation>Durée :</translation>
+    </message>
+    <message>
+        <source>Fades:</source>
+        <translation>Fondus :</translation>
+    </message>
+    <message>
+        <source>Blend mode:</source>
+        <translation>Mode de mélange :</translation>
+    </message>
+    <message>
+        <source>Body part:</source>
+        <translation>Partie du corps :</translation>
+    </message>
+    <message>
+        <source>Modifiers:</source>
+        <translation>Modificateurs :</translation>
+    </message>
+    <message>
+        <source>Rename Action</source>
+        <translation>Renommer l’action</translation>
+    </message>
+    <message>
+        <source>Change Clip</source>
+        <translation>Modifier le clip</translation>
+    </message>
+    <message>
+        <source>Change Blend Mode</source>
+        <translation>Modifier le mode de mélange</translation>
+    </message>
+    <message>
+        <source>Change Body Part</source>
+        <translation>Modifier la partie du corps</translation>
+    </message>
+    <message>
+        <source>Change Outside Domain</source>
+        <translation>Modifier le comportement hors domaine</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>Move Action</source>
+        <translation>Déplacer l’action</translation>
+    </message>
+    <message>
+        <source>Move Action: %1</source>
+        <translation>Déplacer l’action : %1</translation>
+    </message>
+    <message>
+        <source>No scenario is open.</source>
+        <translation>Aucun scénario ouvert.</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>pas encore enregistré</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;File: %2&lt;br&gt;%3, %4, %5 markers&lt;br&gt;Length: %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Select an action on the timeline to see and edit its properties.&lt;/i&gt;</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Fichier : %2&lt;br&gt;%3, %4, %5 marqueurs&lt;br&gt;Durée : %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Sélectionnez une action sur la ligne temporelle pour voir et modifier ses propriétés.&lt;/i&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n character(s)</source>
+        <translation>
+            <numerusform>%n personnage</numerusform>
+            <numerusform>%n personnages</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n action(s)</source>
+        <translation>
+            <numerusform>%n action</numerusform>
+            <numerusform>%n actions</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 ▸ %2%3</source>
+        <translation>%1 ▸ %2%3</translation>
+    </message>
+    <message>
+        <source> (locked)</source>
+        <translation> (verrouillée)</translation>
+    </message>
+    <message>
+        <source>Whole body</source>
+        <translation>Tout le corps</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>inconnu</translation>
+    </message>
+    <message>
+        <source>open-ended (plays until cut off)</source>
+        <translation>sans fin (jouée jusqu’à interruption)</translation>
+    </message>
+    <message>
+        <source>none (constant weight %1)</source>
+        <translation>aucun (poids constant %1)</translation>
+    </message>
+    <message numerus="yes">
+        <source>keyframed weight curve (%n key(s))</source>
+        <translation>
+            <numerusform>courbe de poids par clés (%n clé)</numerusform>
+            <numerusform>courbe de poids par clés (%n clés)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>in %1, out %2</source>
+        <translation>entrée %1, sortie %2</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>aucun</translation>
     </message>
 </context>
 <context>
@@ -283,6 +1187,309 @@ Un point vert signale une action jouée à l’instant courant.</translation>
     </message>
 </context>
 <context>
+    <name>thespis::editor::SegmentPanel</name>
+    <message>
+        <source>The character whose body segments are tagged</source>
+        <translation>Le personnage dont les segments du corps sont étiquetés</translation>
+    </message>
+    <message>
+        <source>Filter segments…</source>
+        <translation>Filtrer les segments…</translation>
+    </message>
+    <message>
+        <source>Show only the segments whose name or joint contains this text</source>
+        <translation>Afficher uniquement les segments dont le nom ou l’articulation contient ce texte</translation>
+    </message>
+    <message>
+        <source>Role:</source>
+        <translation>Rôle :</translation>
+    </message>
+    <message>
+        <source>Tag the selected segments as %1. %2</source>
+        <translation>Marquer les segments sélectionnés comme %1. %2</translation>
+    </message>
+    <message>
+        <source>Posture:</source>
+        <translation>Posture :</translation>
+    </message>
+    <message>
+        <source>Mark the selected segments %1. %2</source>
+        <translation>Marquer les segments sélectionnés %1. %2</translation>
+    </message>
+    <message>
+        <source>Occluder</source>
+        <translation>Occulteur</translation>
+    </message>
+    <message>
+        <source>Posture</source>
+        <translation>Posture</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Sommets</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Triangles</translation>
+    </message>
+    <message>
+        <source>Click a segment in the viewport to select it (Ctrl toggles, Shift adds). Receivers are left out of the shadow proxy; occluders cast shadows but are not lit. PI segments keep their shape in every pose.</source>
+        <translation>Cliquez sur un segment dans la vue 3D pour le sélectionner (Ctrl : inverser la sélection, Maj : ajouter). Les récepteurs sont exclus du proxy d’ombre ; les occulteurs projettent des ombres mais ne sont pas éclairés. Les segments PI gardent leur forme dans toutes les poses.</translation>
+    </message>
+    <message>
+        <source>%1 of %2 selected</source>
+        <translation>Sélection : %1 sur %2</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::SegmentTableModel</name>
+    <message>
+        <source>No character is shown.</source>
+        <translation>Aucun personnage affiché.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Tag %n Segment(s)</source>
+        <translation>
+            <numerusform>Étiqueter %n segment</numerusform>
+            <numerusform>Étiqueter %n segments</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Aucun</translation>
+    </message>
+    <message>
+        <source>Receiver</source>
+        <translation>Récepteur</translation>
+    </message>
+    <message>
+        <source>Occluder</source>
+        <translation>Occulteur</translation>
+    </message>
+    <message>
+        <source>Casts shadows and receives them.</source>
+        <translation>Projette des ombres et en reçoit.</translation>
+    </message>
+    <message>
+        <source>Receives shadows but casts none: left out of the shadow proxy (hair, loose clothes).</source>
+        <translation>Reçoit des ombres sans en projeter : exclu du proxy d’ombre (cheveux, vêtements amples).</translation>
+    </message>
+    <message>
+        <source>Casts shadows but is not lit itself: no transfer is baked for it (props, phantom geometry).</source>
+        <translation>Projette des ombres sans être lui-même éclairé : aucun transfert n’est précalculé pour lui (accessoires, géométrie fantôme).</translation>
+    </message>
+    <message>
+        <source>PI</source>
+        <translation>PI</translation>
+    </message>
+    <message>
+        <source>PD</source>
+        <translation>PD</translation>
+    </message>
+    <message>
+        <source>Posture-independent: keeps its shape in every pose (skull, pelvis, thighs, hands); baked once.</source>
+        <translation>Indépendant de la posture : garde sa forme dans toutes les poses (crâne, bassin, cuisses, mains) ; précalculé une seule fois.</translation>
+    </message>
+    <message>
+        <source>Posture-dependent: its shadows change with the pose (arms, spine, legs).</source>
+        <translation>Dépendant de la posture : ses ombres changent avec la pose (bras, colonne, jambes).</translation>
+    </message>
+    <message>
+        <source>(root)</source>
+        <translation>(racine)</translation>
+    </message>
+    <message>
+        <source>Segment %1 follows joint %2</source>
+        <translation>Le segment %1 suit l’articulation %2</translation>
+    </message>
+    <message>
+        <source>(the body&apos;s default)</source>
+        <translation>(valeur par défaut du corps)</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>Segment</translation>
+    </message>
+    <message>
+        <source>Joint</source>
+        <translation>Articulation</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Rôle</translation>
+    </message>
+    <message>
+        <source>Posture</source>
+        <translation>Posture</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Sommets</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Triangles</translation>
+    </message>
+    <message>
+        <source>The mesh segment (paper §6.1.3)</source>
+        <translation>Le segment du maillage (article, §6.1.3)</translation>
+    </message>
+    <message>
+        <source>The H-Anim joint whose frame the segment follows</source>
+        <translation>L’articulation H-Anim dont le segment suit le repère</translation>
+    </message>
+    <message>
+        <source>Receiver: in shadow but casts none. Occluder: casts shadows, not lit. None: both.</source>
+        <translation>Récepteur : reçoit les ombres sans en projeter. Occulteur : projette des ombres, non éclairé. Aucun : les deux.</translation>
+    </message>
+    <message>
+        <source>PI: posture-independent (rigid). PD: posture-dependent.</source>
+        <translation>PI : indépendant de la posture (rigide). PD : dépendant de la posture.</translation>
+    </message>
+    <message>
+        <source>Vertices of the segment</source>
+        <translation>Sommets du segment</translation>
+    </message>
+    <message>
+        <source>Triangles of the segment</source>
+        <translation>Triangles du segment</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::TimelinePanel</name>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Supprimer</translation>
+    </message>
+    <message>
+        <source>Ripple De&amp;lete</source>
+        <translation>Supprimer et &amp;raccorder</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copier</translation>
+    </message>
+    <message>
+        <source>&amp;Paste</source>
+        <translation>C&amp;oller</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>&amp;Dupliquer</translation>
+    </message>
+    <message>
+        <source>&amp;Split at Playhead</source>
+        <translation>Sc&amp;inder à la tête de lecture</translation>
+    </message>
+    <message>
+        <source>S&amp;napping</source>
+        <translation>&amp;Aimantation</translation>
+    </message>
+    <message>
+        <source>Snap to frames, clip edges, markers and the playhead (hold Ctrl while dragging to bypass)</source>
+        <translation>Aimanter aux images, aux bords des clips, aux marqueurs et à la tête de lecture (maintenir Ctrl en faisant glisser pour l’ignorer)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Move %n Action(s)</source>
+        <translation>
+            <numerusform>Déplacer %n action</numerusform>
+            <numerusform>Déplacer %n actions</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Trim Action</source>
+        <translation>Couper l’action</translation>
+    </message>
+    <message>
+        <source>Change Fade In</source>
+        <translation>Modifier le fondu d’entrée</translation>
+    </message>
+    <message>
+        <source>Change Fade Out</source>
+        <translation>Modifier le fondu de sortie</translation>
+    </message>
+    <message>
+        <source>Mute Layer</source>
+        <translation>Désactiver la couche</translation>
+    </message>
+    <message>
+        <source>Unmute Layer</source>
+        <translation>Réactiver la couche</translation>
+    </message>
+    <message>
+        <source>Solo Layer</source>
+        <translation>Mettre la couche en solo</translation>
+    </message>
+    <message>
+        <source>Unsolo Layer</source>
+        <translation>Retirer la couche du solo</translation>
+    </message>
+    <message>
+        <source>Lock Layer</source>
+        <translation>Verrouiller la couche</translation>
+    </message>
+    <message>
+        <source>Unlock Layer</source>
+        <translation>Déverrouiller la couche</translation>
+    </message>
+    <message>
+        <source>Marker %1</source>
+        <translation>Marqueur %1</translation>
+    </message>
+    <message>
+        <source>Add Marker</source>
+        <translation>Ajouter un marqueur</translation>
+    </message>
+    <message>
+        <source>Move Marker</source>
+        <translation>Déplacer le marqueur</translation>
+    </message>
+    <message>
+        <source>Remove Marker</source>
+        <translation>Supprimer le marqueur</translation>
+    </message>
+    <message>
+        <source>Add Action %1</source>
+        <translation>Ajouter l’action %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Ripple Delete %n Action(s)</source>
+        <translation>
+            <numerusform>Supprimer et raccorder %n action</numerusform>
+            <numerusform>Supprimer et raccorder %n actions</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Delete %n Action(s)</source>
+        <translation>
+            <numerusform>Supprimer %n action</numerusform>
+            <numerusform>Supprimer %n actions</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n Action(s)</source>
+        <translation>
+            <numerusform>Coller %n action</numerusform>
+            <numerusform>Coller %n actions</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Duplicate %n Action(s)</source>
+        <translation>
+            <numerusform>Dupliquer %n action</numerusform>
+            <numerusform>Dupliquer %n actions</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Select one action to split at the playhead.</source>
+        <translation>Sélectionnez une seule action à scinder à la tête de lecture.</translation>
+    </message>
+    <message>
+        <source>Split Action</source>
+        <translation>Scinder l’action</translation>
+    </message>
+</context>
+<context>
     <name>thespis::studio::MainWindow</name>
     <message>
         <source>No scenario is open.
@@ -456,10 +1663,6 @@ Utilisez Fichier ▸ Ouvrir… (Ctrl+O) pour ouvrir un fichier .thespis.</transl
         <translation>Thespis Studio</translation>
     </message>
     <message>
-        <source>%1 — Thespis Studio</source>
-        <translation>%1 — Thespis Studio</translation>
-    </message>
-    <message>
         <source>m</source>
         <comment>metres</comment>
         <translation>m</translation>
@@ -519,6 +1722,325 @@ L’onglet Squelettes montre l’animation ; thespis-cli render dessine la scèn
         <source>The 3D view is empty: %1</source>
         <translation>La vue 3D est vide : %1</translation>
     </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Nouveau</translation>
+    </message>
+    <message>
+        <source>Start a new scenario with one character on the built-in humanoid</source>
+        <translation>Commencer un nouveau scénario avec un personnage sur l’humanoïde intégré</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Enregistrer</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Enregistrer &amp;sous…</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Annuler</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Rétablir</translation>
+    </message>
+    <message>
+        <source>Go to &amp;End</source>
+        <translation>Aller à la &amp;fin</translation>
+    </message>
+    <message>
+        <source>Previous &amp;Frame</source>
+        <translation>Image &amp;précédente</translation>
+    </message>
+    <message>
+        <source>&amp;Next Frame</source>
+        <translation>Image &amp;suivante</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Préférences…</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Fichiers ré&amp;cents</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>É&amp;dition</translation>
+    </message>
+    <message>
+        <source>Timeline</source>
+        <translation>Ligne temporelle</translation>
+    </message>
+    <message>
+        <source>Curve Editor</source>
+        <translation>Éditeur de courbes</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Propriétés</translation>
+    </message>
+    <message>
+        <source>Joint Mask</source>
+        <translation>Masque d’articulations</translation>
+    </message>
+    <message>
+        <source>Segments</source>
+        <translation>Segments</translation>
+    </message>
+    <message>
+        <source>Bake</source>
+        <translation>Précalcul</translation>
+    </message>
+    <message>
+        <source>Clip Library</source>
+        <translation>Bibliothèque de clips</translation>
+    </message>
+    <message>
+        <source>Gesticon</source>
+        <translation>Gesticon</translation>
+    </message>
+    <message>
+        <source>%1[*] — Thespis Studio</source>
+        <translation>%1[*] — Thespis Studio</translation>
+    </message>
+    <message>
+        <source>New scenario</source>
+        <translation>Nouveau scénario</translation>
+    </message>
+    <message>
+        <source>Actor</source>
+        <translation>Acteur</translation>
+    </message>
+    <message>
+        <source>Could not start a new scenario.</source>
+        <translation>Impossible de commencer un nouveau scénario.</translation>
+    </message>
+    <message>
+        <source>Could not save “%1”.</source>
+        <translation>Impossible d’enregistrer « %1 ».</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Enregistré : %1</translation>
+    </message>
+    <message>
+        <source>Save Scenario As</source>
+        <translation>Enregistrer le scénario sous</translation>
+    </message>
+    <message>
+        <source>Thespis scenarios (*.thespis)</source>
+        <translation>Scénarios Thespis (*.thespis)</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Modifications non enregistrées</translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved. Save them?</source>
+        <translation>« %1 » contient des modifications non enregistrées. Les enregistrer ?</translation>
+    </message>
+    <message>
+        <source>an unsaved scenario</source>
+        <translation>un scénario non enregistré</translation>
+    </message>
+    <message>
+        <source>Recover Unsaved Work</source>
+        <translation>Récupérer le travail non enregistré</translation>
+    </message>
+    <message>
+        <source>Thespis Studio did not close properly. Recover the changes to %1 autosaved at %2?</source>
+        <translation>Thespis Studio ne s’est pas fermé correctement. Récupérer les modifications de %1 enregistrées automatiquement à %2 ?</translation>
+    </message>
+    <message>
+        <source>Recovered %1; save it to keep it.</source>
+        <translation>Récupéré : %1 ; enregistrez pour le conserver.</translation>
+    </message>
+    <message>
+        <source>Could not recover %1.</source>
+        <translation>Impossible de récupérer %1.</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::studio::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Préférences</translation>
+    </message>
+    <message>
+        <source>System default (%1)</source>
+        <translation>Par défaut du système (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Langue :</translation>
+    </message>
+    <message>
+        <source>The new language is used from the next start of the studio.</source>
+        <translation>La nouvelle langue sera utilisée au prochain démarrage du studio.</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>How often open work is copied to a recovery file, offered after a crash</source>
+        <translation>Fréquence de copie du travail ouvert dans un fichier de récupération, proposé après un plantage</translation>
+    </message>
+    <message>
+        <source>&amp;Autosave every:</source>
+        <translation>Enregistrement &amp;automatique toutes les :</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::widgets::CurveView</name>
+    <message>
+        <source>No curves to show</source>
+        <translation>Aucune courbe à afficher</translation>
+    </message>
+    <message>
+        <source>Click a key to select it, drag to move it; double-click a curve to add a key. Wheel: zoom (Ctrl: values only, Shift: time only); middle-drag: pan; F: frame all.</source>
+        <translation>Cliquez sur une clé pour la sélectionner, faites-la glisser pour la déplacer ; double-cliquez sur une courbe pour ajouter une clé. Molette : zoom (Ctrl : valeurs seules, Maj : temps seul) ; glisser avec le bouton du milieu : déplacer la vue ; F : tout cadrer.</translation>
+    </message>
+    <message>
+        <source>Tangents</source>
+        <translation>Tangentes</translation>
+    </message>
+    <message>
+        <source>Auto Clamped</source>
+        <translation>Auto limitée</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Linéaire</translation>
+    </message>
+    <message>
+        <source>Constant</source>
+        <translation>Constante</translation>
+    </message>
+    <message>
+        <source>Free</source>
+        <translation>Libre</translation>
+    </message>
+    <message>
+        <source>Broken</source>
+        <translation>Brisée</translation>
+    </message>
+    <message>
+        <source>Smooth tangents that never overshoot neighbouring keys</source>
+        <translation>Tangentes lisses qui ne dépassent jamais les clés voisines</translation>
+    </message>
+    <message>
+        <source>Straight lines between keys</source>
+        <translation>Lignes droites entre les clés</translation>
+    </message>
+    <message>
+        <source>Hold the value until the next key</source>
+        <translation>Maintenir la valeur jusqu’à la clé suivante</translation>
+    </message>
+    <message>
+        <source>Smooth tangents you drag, the same on both sides</source>
+        <translation>Tangentes lisses à faire glisser, identiques des deux côtés</translation>
+    </message>
+    <message>
+        <source>Tangents you drag, each side on its own</source>
+        <translation>Tangentes à faire glisser, chaque côté indépendamment</translation>
+    </message>
+    <message>
+        <source>Delete Keys</source>
+        <translation>Supprimer les clés</translation>
+    </message>
+    <message>
+        <source>Frame All</source>
+        <translation>Tout cadrer</translation>
+    </message>
+    <message>
+        <source>%1, key %2
+Time %3 s, value %4
+Tangents: %5</source>
+        <translation>%1, clé %2
+Temps %3 s, valeur %4
+Tangentes : %5</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Δt %1 s   Δv %2</source>
+        <translation>Δt %1 s   Δv %2</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::widgets::JointMaskView</name>
+    <message>
+        <source>No skeleton</source>
+        <translation>Aucun squelette</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <comment>the character&apos;s right side</comment>
+        <translation>D</translation>
+    </message>
+    <message>
+        <source>L</source>
+        <comment>the character&apos;s left side</comment>
+        <translation>G</translation>
+    </message>
+    <message>
+        <source>Drag to paint · right-drag paints 0</source>
+        <translation>Glisser pour peindre · glisser avec le bouton droit peint 0</translation>
+    </message>
+    <message>
+        <source>Joint</source>
+        <translation>Articulation</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Poids</translation>
+    </message>
+    <message>
+        <source>Brush weight</source>
+        <translation>Poids du pinceau</translation>
+    </message>
+    <message>
+        <source>The weight a left-button stroke paints (the right button paints 0)</source>
+        <translation>Le poids peint par un trait du bouton gauche (le bouton droit peint 0)</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Rayon</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Radius of the brush in the picture</source>
+        <translation>Rayon du pinceau dans l’image</translation>
+    </message>
+    <message>
+        <source>%1: set by the mask</source>
+        <translation>%1 : défini par le masque</translation>
+    </message>
+    <message>
+        <source>%1: inherited</source>
+        <translation>%1 : hérité</translation>
+    </message>
+    <message>
+        <source>Set to 1</source>
+        <translation>Mettre à 1</translation>
+    </message>
+    <message>
+        <source>Set to 0.5</source>
+        <translation>Mettre à 0,5</translation>
+    </message>
+    <message>
+        <source>Set to 0</source>
+        <translation>Mettre à 0</translation>
+    </message>
 </context>
 <context>
     <name>thespis::widgets::OsgViewport</name>
@@ -548,6 +2070,53 @@ L’onglet Squelettes montre l’animation ; thespis-cli render dessine la scèn
     <message>
         <source>Front</source>
         <translation>Face</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::widgets::TimelineView</name>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 i/s</translation>
+    </message>
+    <message>
+        <source>Remove Marker “%1”</source>
+        <translation>Supprimer le marqueur « %1 »</translation>
+    </message>
+    <message>
+        <source>Add Marker Here</source>
+        <translation>Ajouter un marqueur ici</translation>
+    </message>
+    <message>
+        <source>%1
+%2 – open end</source>
+        <translation>%1
+%2 – fin ouverte</translation>
+    </message>
+    <message>
+        <source>%1
+%2 – %3 (%4)</source>
+        <translation>%1
+%2 – %3 (%4)</translation>
+    </message>
+    <message>
+        <source>The track is locked</source>
+        <translation>La piste est verrouillée</translation>
+    </message>
+    <message>
+        <source>Mute: leave this track out of playback</source>
+        <translation>Désactiver : exclure cette piste de la lecture</translation>
+    </message>
+    <message>
+        <source>Solo: play only the soloed tracks</source>
+        <translation>Solo : ne lire que les pistes en solo</translation>
+    </message>
+    <message>
+        <source>Lock: protect this track&apos;s clips from edits</source>
+        <translation>Verrouiller : protéger les clips de cette piste des modifications</translation>
+    </message>
+    <message>
+        <source>%1 at %2</source>
+        <translation>%1 à %2</translation>
     </message>
 </context>
 <context>
@@ -595,6 +2164,26 @@ L’onglet Squelettes montre l’animation ; thespis-cli render dessine la scèn
     <message>
         <source>Play</source>
         <translation>Lecture</translation>
+    </message>
+    <message>
+        <source>Previous frame (Left arrow)</source>
+        <translation>Image précédente (Flèche gauche)</translation>
+    </message>
+    <message>
+        <source>Next frame (Right arrow)</source>
+        <translation>Image suivante (Flèche droite)</translation>
+    </message>
+    <message>
+        <source>Go to the end (End)</source>
+        <translation>Aller à la fin (Fin)</translation>
+    </message>
+    <message>
+        <source>Frames per second for frame numbers, frame steps and snapping</source>
+        <translation>Images par seconde pour les numéros d’image, l’avance image par image et l’aimantation</translation>
+    </message>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 i/s</translation>
     </message>
 </context>
 </TS>
