@@ -1862,6 +1862,10 @@ Der Reiter Skelette zeigt die Animation; thespis-cli render zeichnet die Szene o
         <source>Could not recover %1.</source>
         <translation>Wiederherstellen nicht möglich: %1.</translation>
     </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Hauptwerkzeugleiste</translation>
+    </message>
 </context>
 <context>
     <name>thespis::studio::PreferencesDialog</name>

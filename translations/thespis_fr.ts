@@ -1862,6 +1862,10 @@ L’onglet Squelettes montre l’animation ; thespis-cli render dessine la scèn
         <source>Could not recover %1.</source>
         <translation>Impossible de récupérer %1.</translation>
     </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Barre d’outils principale</translation>
+    </message>
 </context>
 <context>
     <name>thespis::studio::PreferencesDialog</name>

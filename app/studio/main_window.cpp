@@ -19,8 +19,10 @@
 #include <QUndoGroup>
 #include <QUndoStack>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTabWidget>
 #include <QTimer>
+#include <QToolBar>
 #include <QTreeView>
 #include <QVBoxLayout>
 
@@ -130,6 +132,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     createOutlineDock();
     createEditorDocks();
     createMenus();
+    createToolBar();
     createStatusBar();
 
     m_fpsTimer = new QTimer(this);
@@ -267,6 +270,33 @@ void MainWindow::createActions()
     m_aboutQtAction = new QAction(tr("About &Qt"), this);
     m_aboutQtAction->setMenuRole(QAction::AboutQtRole);
     connect(m_aboutQtAction, &QAction::triggered, qApp, &QApplication::aboutQt);
+}
+
+void MainWindow::createToolBar()
+{
+    // Icons from the desktop theme where it has them, else Qt's own.
+    auto icon = [this](const char* themeName, QStyle::StandardPixmap fallback) {
+        return QIcon::fromTheme(QLatin1String(themeName), style()->standardIcon(fallback));
+    };
+    m_newAction->setIcon(icon("document-new", QStyle::SP_FileIcon));
+    m_openAction->setIcon(icon("document-open", QStyle::SP_DialogOpenButton));
+    m_saveAction->setIcon(icon("document-save", QStyle::SP_DialogSaveButton));
+    m_undoAction->setIcon(icon("edit-undo", QStyle::SP_ArrowBack));
+    m_redoAction->setIcon(icon("edit-redo", QStyle::SP_ArrowForward));
+    m_homeViewAction->setIcon(icon("go-home", QStyle::SP_DirHomeIcon));
+
+    QToolBar* bar = addToolBar(tr("Main Toolbar"));
+    bar->setObjectName(QStringLiteral("mainToolBar"));
+    bar->addAction(m_newAction);
+    bar->addAction(m_openAction);
+    bar->addAction(m_saveAction);
+    bar->addSeparator();
+    bar->addAction(m_undoAction);
+    bar->addAction(m_redoAction);
+    bar->addSeparator();
+    // Lighting of the 3D view: PRT, Phong or unlit, as in View.
+    bar->addActions(m_shadingGroup->actions());
+    bar->addAction(m_homeViewAction);
 }
 
 void MainWindow::createMenus()

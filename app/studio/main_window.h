@@ -95,6 +95,7 @@ protected:
 private:
     void createActions();
     void createMenus();
+    void createToolBar();
     void createOutlineDock();
     void createEditorDocks();
     void onNew();
