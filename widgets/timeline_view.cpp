@@ -31,7 +31,7 @@ constexpr int kClipInset = 3;        // clip bar inset from the lane's top and b
 constexpr int kDragThreshold = 3;    // Manhattan pixels before a press becomes a drag
 constexpr int kFadeHandleRadius = 4; // the fade handle's grab square is 2·r + 1 wide
 constexpr int kMinClipDetail = 24;   // narrower clips are drawn as plain bars: no name, handles
-constexpr int kMinSmoothClipWidth = 80; // narrower clips draw their fade ramps and curve aliased
+constexpr int kMinSmoothClipWidth = 80; // narrower clips: fade ramps unshaded, lines aliased
 constexpr int kOpenFadeWidth = 90;   // an open-ended clip fades out over this many pixels
 constexpr int kFlagWidth = 20, kFlagHeight = 16, kFlagGap = 3, kFlagRight = 8;
 constexpr double kMinPixelsPerSecond = 0.05;
@@ -1489,25 +1489,25 @@ void TimelineView::paintClip(QPainter& painter, const ClipItem& item, const QRec
     const int top = r.top() + borderWidth, bottom = r.bottom() - borderWidth + 1;
     const int left = r.left() + borderWidth, right = r.left() + r.width() - borderWidth;
     if (r.width() >= 10) {
+        // Narrow clips (zoomed out, hundreds in view) keep the ramps but not their shading, and
+        // draw their lines aliased: at that size neither is visible, and switching smoothing on
+        // and off per clip costs more than the drawing itself.
+        const bool smooth = r.width() >= kMinSmoothClipWidth;
         // Fades: the part above the ramp is shaded, the ramp itself a line.
-        if (clip.fadeIn > 0) {
+        if (smooth && clip.fadeIn > 0) {
             const int xf = std::clamp(xForTime(clip.start + clip.fadeIn), left, right);
             const QPoint shade[] = {{left, top}, {xf, top}, {left, bottom}};
             painter.setPen(Qt::NoPen);
             painter.setBrush(c.fadeShade);
             painter.drawConvexPolygon(shade, 3);
         }
-        if (!open && clip.fadeOut > 0) {
+        if (smooth && !open && clip.fadeOut > 0) {
             const int xf = std::clamp(xForTime(clip.end - clip.fadeOut), left, right);
             const QPoint shade[] = {{right, top}, {xf, top}, {right, bottom}};
             painter.setPen(Qt::NoPen);
             painter.setBrush(c.fadeShade);
             painter.drawConvexPolygon(shade, 3);
         }
-        // Narrow clips (zoomed out, hundreds in view) draw their lines aliased: at that size
-        // smoothing is hardly visible, and switching it on and off per clip costs more than the
-        // drawing itself.
-        const bool smooth = r.width() >= kMinSmoothClipWidth;
         if (smooth)
             painter.setRenderHint(QPainter::Antialiasing, true);
         if (clip.fadeIn > 0) {
