@@ -1519,8 +1519,9 @@ void TimelineView::paintClip(QPainter& painter, const ClipItem& item, const QRec
             painter.drawLine(QPointF(right, bottom), QPointF(std::clamp(xForTime(clip.end - clip.fadeOut), left, right), top));
         }
 
-        // Weight thumbnail in the lower part: one point per sample, or per two pixels when the
-        // samples are denser than that (keeping each bucket's peak), visible columns only.
+        // Weight thumbnail in the lower part: one point per sample, or per two pixels (four on a
+        // narrow clip) when the samples are denser than that (keeping each bucket's peak),
+        // visible columns only.
         const QVector<float>& weight = clip.weight;
         const qsizetype n = weight.size();
         const double barLeft = r.left() + 0.5;
@@ -1533,7 +1534,8 @@ void TimelineView::paintClip(QPainter& painter, const ClipItem& item, const QRec
             const double visibleRight = std::min<double>(barRight, laneRight + 2);
             auto yFor = [&](float w) { return baseY - std::clamp(double(w), 0.0, 1.3) * amplitude; };
             m_points.clear();
-            if (double(n - 1) <= span / 2.0) {
+            const double bucket = smooth ? 2.0 : 4.0; // pixels per point
+            if (double(n - 1) <= span / bucket) {
                 const double step = span / double(n - 1);
                 const qsizetype first = std::max<qsizetype>(0, qsizetype(std::floor((visibleLeft - barLeft) / step)));
                 const qsizetype last = std::min<qsizetype>(n - 1, qsizetype(std::ceil((visibleRight - barLeft) / step)));
@@ -1541,9 +1543,9 @@ void TimelineView::paintClip(QPainter& painter, const ClipItem& item, const QRec
                     m_points.emplace_back(barLeft + double(i) * step, yFor(weight[i]));
             } else {
                 const double samplesPerPixel = double(n - 1) / span;
-                for (double x = visibleLeft; x <= visibleRight; x += 2.0) {
+                for (double x = visibleLeft; x <= visibleRight; x += bucket) {
                     const qsizetype i0 = std::clamp<qsizetype>(qsizetype((x - barLeft) * samplesPerPixel), 0, n - 1);
-                    const qsizetype i1 = std::clamp<qsizetype>(qsizetype((x + 2.0 - barLeft) * samplesPerPixel), i0, n - 1);
+                    const qsizetype i1 = std::clamp<qsizetype>(qsizetype((x + bucket - barLeft) * samplesPerPixel), i0, n - 1);
                     float peak = weight[i0];
                     for (qsizetype i = i0 + 1; i <= i1; ++i)
                         peak = std::max(peak, weight[i]);
