@@ -1,7 +1,8 @@
-// Bindings of the scenario document (core/scenario): the plain-data model, reading and writing
-// .thespis files, validation and building runnable schedules. Document objects are values:
-// reading a list field (`scenario.characters`) gives a copy, edited and assigned back. (Views
-// into the C++ lists would dangle as soon as the list grows, crashing a script that kept one.)
+// Bindings of the scenario document (core/scenario): the plain-data model (format 2 included:
+// layer mute / solo / lock, gestures, markers, bakes), reading and writing .thespis files,
+// validation and building runnable schedules. Document objects are values: reading a list
+// field (`scenario.characters`) gives a copy, edited and assigned back. (Views into the C++
+// lists would dangle as soon as the list grows, crashing a script that kept one.)
 
 #include <optional>
 #include <string>
@@ -164,12 +165,42 @@ void bindDocument(py::module_& m)
         .def_readwrite("name", &Layer::name)
         .def_readwrite("kind", &Layer::kind)
         .def_readwrite("mode", &Layer::mode, "How the layer combines with the layers before it.")
+        .def_readwrite("mute", &Layer::mute, "A muted layer does not play.")
+        .def_readwrite("solo", &Layer::solo, "When any layer of a character is solo, only its solo layers play.")
+        .def_readwrite("lock", &Layer::lock, "A locked layer is shown but not editable in the studio.")
         .def("__eq__", [](const Layer& a, const Layer& b) { return a == b; })
         .def("__repr__", [](const Layer& l) {
-            return "<thespis.Layer '" + l.name + "' " + std::to_string(l.actions.size()) + " actions>";
+            const std::string flags =
+                std::string(l.mute ? " muted" : "") + (l.solo ? " solo" : "") + (l.lock ? " locked" : "");
+            return "<thespis.Layer '" + l.name + "' " + std::to_string(l.actions.size()) + " actions" + flags + ">";
         });
     defExtra(layer);
     defList(layer, "actions", &Layer::actions, "The layer's actions (a copy).");
+
+    py::class_<Gesture> gesture(m, "Gesture",
+                                "A gesture of the character's gesture database (gesticon): a clip, the body part "
+                                "it moves and its fades (ticks).");
+    gesture
+        .def(py::init([](std::string name, std::string clipName, std::string mask) {
+                 Gesture g;
+                 g.name = std::move(name);
+                 g.clip = std::move(clipName);
+                 g.mask = std::move(mask);
+                 return g;
+             }),
+             "name"_a = "", "clip"_a = "", "mask"_a = "")
+        .def_readwrite("name", &Gesture::name)
+        .def_readwrite("clip", &Gesture::clip, "Name of a ClipAsset of the character.")
+        .def_readwrite("mask", &Gesture::mask, "Name of a scenario mask (the body part); empty = whole body.")
+        .def_readwrite("fade_in", &Gesture::fadeIn, "Fade-in time in ticks.")
+        .def_readwrite("fade_out", &Gesture::fadeOut, "Fade-out time in ticks.")
+        .def_readwrite("dependent_joint_filter", &Gesture::dependentJointFilter,
+                       "Run the dependent-joint motion filter, so that joints the gesture does not drive follow it.")
+        .def("__eq__", [](const Gesture& a, const Gesture& b) { return a == b; })
+        .def("__repr__", [](const Gesture& g) {
+            return "<thespis.Gesture '" + g.name + "' clip '" + g.clip + "'>";
+        });
+    defExtra(gesture);
 
     py::class_<Character> character(m, "Character", "A character: its skeleton, clips and layers of actions.");
     character
@@ -191,10 +222,20 @@ void bindDocument(py::module_& m)
     defExtra(character);
     character.def_readwrite("model", &Character::model,
                             "glTF file of the body, relative to the scenario; '' = the built-in humanoid.");
+    character.def_readwrite("bake", &Character::bake,
+                            "PRT transfer bake file, relative to the scenario; '' = unshadowed (DU) transfer.");
     defList(character, "segment_tags", &Character::segmentTags,
             "Receiver / occluder and PI / PD tags of the model's segments (thespis.scene.SegmentTag, a copy).");
     defList(character, "clips", &Character::clips, "The character's clips (a copy).");
     defList(character, "layers", &Character::layers, "The character's layers (a copy).");
+    defList(character, "gestures", &Character::gestures, "The character's gesture database (a copy).");
+    character.def(
+        "find_gesture",
+        [](const Character& c, const std::string& name) -> std::optional<Gesture> {
+            const Gesture* found = c.findGesture(name);
+            return found ? std::optional<Gesture>(*found) : std::nullopt;
+        },
+        "name"_a, "A copy of the gesture called `name`, or None.");
 
     py::class_<NamedMask> namedMask(m, "NamedMask", "A joint mask shared by actions, by name.");
     namedMask.def(py::init([](std::string name, anim::JointMask mask) {
@@ -216,6 +257,22 @@ void bindDocument(py::module_& m)
         .def_readwrite("layout", &LightingSpec::layout, "'angular', 'latlong', 'mirrorball' or 'cross'.")
         .def("__eq__", [](const LightingSpec& a, const LightingSpec& b) { return a == b; });
     defExtra(lighting);
+
+    py::class_<Marker> marker(m, "Marker", "A named point on the timeline (ticks): a cue actions snap to.");
+    marker.def(py::init([](std::string name, core::Tick time) {
+                 Marker mk;
+                 mk.name = std::move(name);
+                 mk.time = time;
+                 return mk;
+             }),
+             "name"_a = "", "time"_a = core::Tick(0))
+        .def_readwrite("name", &Marker::name)
+        .def_readwrite("time", &Marker::time, "Time in ticks (thespis.TICKS_PER_SECOND per second).")
+        .def("__eq__", [](const Marker& a, const Marker& b) { return a == b; })
+        .def("__repr__", [](const Marker& mk) {
+            return "<thespis.Marker '" + mk.name + "' at " + std::to_string(mk.time) + " ticks>";
+        });
+    defExtra(marker);
 
     py::class_<Scenario> scenario(m, "Scenario",
                                   "The scenario document (format 'thespis-scenario'): characters, masks and the "
@@ -254,6 +311,7 @@ void bindDocument(py::module_& m)
     defExtra(scenario);
     defList(scenario, "characters", &Scenario::characters, "The characters (a copy).");
     defList(scenario, "masks", &Scenario::masks, "The named joint masks (a copy).");
+    defList(scenario, "markers", &Scenario::markers, "The timeline markers (a copy).");
     scenario.def_readwrite("lighting", &Scenario::lighting, "The light probe (a LightingSpec).");
 }
 

@@ -176,3 +176,159 @@ def test_invalid_references_are_listed_by_validate(demo):
 def test_missing_scenario_file(tmp_path):
     with pytest.raises(FileNotFoundError):
         thespis.load_scenario(tmp_path / "absent.thespis")
+
+
+# Format 2: layer mute / solo / lock, gestures (the gesticon), markers, the character's bake.
+
+
+def test_demo_lists_gestures_and_markers(demo):
+    creon = demo.find_character("Creon")
+    assert [g.name for g in creon.gestures] == ["greet", "agree"]
+    greet = creon.find_gesture("greet")
+    assert greet == creon.gestures[0]
+    assert (greet.clip, greet.mask) == ("wave", "rightArm")
+    assert (greet.fade_in, greet.fade_out) == (282240000, 352800000)
+    assert thespis.ticks_to_seconds(greet.fade_in) == pytest.approx(0.4)
+    assert greet.dependent_joint_filter is True
+    assert creon.find_gesture("agree").clip == "nod"
+    assert creon.find_gesture("bow") is None
+    assert [(m.name, m.time) for m in demo.markers] == [
+        ("Creon greets", 1058400000),
+        ("Antigone answers", 4233600000),
+    ]
+    assert thespis.ticks_to_seconds(demo.markers[0].time) == pytest.approx(1.5)
+    for character in demo.characters:
+        assert character.bake == ""
+        for layer in character.layers:
+            assert (layer.mute, layer.solo, layer.lock) == (False, False, False)
+
+
+def scenario_with_format_2_fields():
+    scenario = thespis.Scenario("format2")
+    ada = thespis.Character("Ada", "hanim-loa1")
+    ada.bake = "bakes/ada.prt"
+    ada.clips = [thespis.ClipAsset("wave", "wave.bvh")]
+    body = thespis.Layer("body")
+    body.mute = True
+    face = thespis.Layer("face", thespis.LayerKind.face)
+    face.solo = True
+    face.lock = True
+    ada.layers = [body, face]
+    greet = thespis.Gesture("greet", "wave", "rightArm")
+    greet.fade_in = thespis.seconds_to_ticks(0.25)
+    greet.fade_out = thespis.seconds_to_ticks(0.5)
+    greet.dependent_joint_filter = True
+    ada.gestures = [greet, thespis.Gesture("shrug", "wave")]
+    scenario.characters = [ada]
+    scenario.markers = [thespis.Marker("cue", thespis.seconds_to_ticks(1.0)), thespis.Marker("end", 7)]
+    return scenario
+
+
+def test_format_2_fields_survive_save_and_load(tmp_path):
+    scenario = scenario_with_format_2_fields()
+    path = tmp_path / f"format2{thespis.SCENARIO_EXTENSION}"
+    thespis.save_scenario(path, scenario)
+    again = thespis.load_scenario(path)
+    assert again == scenario
+    ada = again.find_character("Ada")
+    assert ada.bake == "bakes/ada.prt"
+    assert [(l.name, l.mute, l.solo, l.lock) for l in ada.layers] == [
+        ("body", True, False, False),
+        ("face", False, True, True),
+    ]
+    assert [g.name for g in ada.gestures] == ["greet", "shrug"]
+    greet = ada.find_gesture("greet")
+    assert (greet.clip, greet.mask, greet.dependent_joint_filter) == ("wave", "rightArm", True)
+    assert (greet.fade_in, greet.fade_out) == (thespis.seconds_to_ticks(0.25), thespis.seconds_to_ticks(0.5))
+    shrug = ada.find_gesture("shrug")
+    assert (shrug.mask, shrug.fade_in, shrug.fade_out, shrug.dependent_joint_filter) == ("", 0, 0, False)
+    assert [(m.name, m.time) for m in again.markers] == [("cue", thespis.TICKS_PER_SECOND), ("end", 7)]
+    # == compares each new field: a document that differs in one of them is not equal.
+    for field in ("markers", "bake", "gestures", "fade_out", "mute"):
+        changed = thespis.load_scenario(path)
+        ada = changed.characters[0]
+        if field == "markers":
+            changed.markers = changed.markers[:1]
+        elif field == "bake":
+            ada.bake = ""
+        elif field == "gestures":
+            ada.gestures = ada.gestures[1:]
+        elif field == "fade_out":
+            gestures = ada.gestures
+            gestures[0].fade_out += 1
+            ada.gestures = gestures
+        else:
+            layers = ada.layers
+            layers[0].mute = False
+            ada.layers = layers
+        changed.characters = [ada]
+        assert changed != scenario, field
+
+
+def test_format_2_fields_are_written_under_their_json_names():
+    document = json.loads(thespis.serialize_scenario(scenario_with_format_2_fields()))
+    ada = document["characters"][0]
+    assert ada["bake"] == "bakes/ada.prt"
+    assert ada["gestures"][0]["name"] == "greet" and ada["gestures"][0]["dependentJointFilter"] is True
+    assert ada["layers"][0]["mute"] is True and ada["layers"][1]["lock"] is True
+    assert [m["name"] for m in document["markers"]] == ["cue", "end"]
+
+
+def test_adding_a_marker_and_a_gesture_to_the_demo(demo, tmp_path):
+    markers = demo.markers
+    markers.append(thespis.Marker("Curtain", thespis.seconds_to_ticks(9.0)))
+    assert len(demo.markers) == 2  # a copy until assigned back
+    demo.markers = markers
+    characters = demo.characters
+    creon = next(c for c in characters if c.name == "Creon")
+    creon.gestures = creon.gestures + [thespis.Gesture("bow", "nod", "head")]
+    demo.characters = characters
+    path = tmp_path / "edited.thespis"
+    thespis.save_scenario(path, demo)
+    again = thespis.load_scenario(path)
+    assert again == demo
+    assert [m.name for m in again.markers] == ["Creon greets", "Antigone answers", "Curtain"]
+    assert again.find_character("Creon").find_gesture("bow").mask == "head"
+
+
+def test_unknown_fields_of_gestures_and_markers_survive(demo):
+    document = json.loads(thespis.serialize_scenario(demo))
+    creon = next(c for c in document["characters"] if c["name"] == "Creon")
+    creon["gestures"][0]["hint"] = "big"
+    document["markers"][1]["colour"] = "#ff8800"
+    again = thespis.parse_scenario(json.dumps(document))
+    assert again.find_character("Creon").gestures[0].extra == {"hint": "big"}
+    assert again.markers[1].extra == {"colour": "#ff8800"}
+    rewritten = json.loads(thespis.serialize_scenario(again))
+    assert next(c for c in rewritten["characters"] if c["name"] == "Creon")["gestures"][0]["hint"] == "big"
+    assert rewritten["markers"][1]["colour"] == "#ff8800"
+
+
+@pytest.mark.parametrize(
+    "target, field, value",
+    [
+        (lambda: thespis.Layer("body"), "mute", "yes"),
+        (lambda: thespis.Layer("body"), "solo", [True]),
+        (lambda: thespis.Layer("body"), "lock", "locked"),
+        (lambda: thespis.Marker("cue"), "time", "soon"),
+        (lambda: thespis.Marker("cue"), "time", 1.5),
+        (lambda: thespis.Marker("cue"), "name", 3),
+        (lambda: thespis.Gesture("greet"), "fade_in", "slow"),
+        (lambda: thespis.Gesture("greet"), "clip", 7),
+        (lambda: thespis.Gesture("greet"), "dependent_joint_filter", "on"),
+        (lambda: thespis.Character("Ada"), "bake", 5),
+        (lambda: thespis.Character("Ada"), "gestures", [thespis.Marker("cue")]),
+        (lambda: thespis.Scenario("s"), "markers", [thespis.Gesture("greet")]),
+    ],
+)
+def test_a_wrong_type_raises_type_error(target, field, value):
+    with pytest.raises(TypeError):
+        setattr(target(), field, value)
+
+
+def test_format_2_reprs():
+    layer = thespis.Layer("body")
+    layer.mute = True
+    assert repr(layer) == "<thespis.Layer 'body' 0 actions muted>"
+    assert repr(thespis.Marker("cue", 5)) == "<thespis.Marker 'cue' at 5 ticks>"
+    assert repr(thespis.Gesture("greet", "wave")) == "<thespis.Gesture 'greet' clip 'wave'>"
