@@ -79,16 +79,7 @@ TimelinePanel::TimelinePanel(QWidget* parent) : QWidget(parent)
         if (id >= 0 && std::size_t(id) < m_clipPaths.size())
             emit actionActivated(m_clipPaths[std::size_t(id)]);
     });
-    connect(m_view, &widgets::TimelineView::clipsMoveRequested, this, [this](const QList<int>& ids, qint64 delta, bool finished) {
-        if (!m_document)
-            return;
-        // The view sends the total since the press; apply what is not applied yet.
-        const qint64 step = delta - m_dragApplied;
-        const auto paths = pathsOf(ids);
-        report(m_document->edit(core::edit::moveActions(m_document->scenario(), paths, step),
-                                tr("Move %n Action(s)", nullptr, int(paths.size())), Merge{MoveActionsId, finished}));
-        m_dragApplied = finished ? 0 : delta;
-    });
+    connect(m_view, &widgets::TimelineView::clipsMoveRequested, this, &TimelinePanel::onMoveRequested);
     connect(m_view, &widgets::TimelineView::clipTrimRequested, this,
             [this](int id, widgets::TimelineEdge edge, qint64 time, bool finished) {
                 if (!m_document || id < 0 || std::size_t(id) >= m_clipPaths.size())
@@ -167,6 +158,7 @@ void TimelinePanel::setDocument(Document* document)
     if (m_document)
         disconnect(m_document, nullptr, this, nullptr);
     m_document = document;
+    m_moveDrag.reset();
     if (m_document)
         connect(m_document, &Document::edited, this, [this] { refresh(); });
     m_view->setSelectedClips({});
@@ -209,6 +201,7 @@ void TimelinePanel::refresh()
                 track.muted = layer.mute;
                 track.solo = layer.solo;
                 track.locked = layer.lock;
+                track.kind = layer.kind == core::scenario::LayerKind::Face ? QStringLiteral("face") : QStringLiteral("body");
                 tracks.push_back(track);
                 m_tracks.push_back({c, l});
                 for (int a = 0; a < int(layer.actions.size()); ++a) {
@@ -284,6 +277,34 @@ void TimelinePanel::report(const core::Result<void>& result)
 {
     if (!result)
         emit problem(QString::fromStdString(result.error().message));
+}
+
+void TimelinePanel::onMoveRequested(const QList<int>& ids, qint64 delta, int trackDelta, bool finished)
+{
+    if (!m_document)
+        return;
+    // The view sends the total since the press, always with the ids of the press: they name the
+    // actions only until a step moves some to another layer, so the drag keeps the paths.
+    if (!m_moveDrag)
+        m_moveDrag = MoveDrag{m_document->scenario(), pathsOf(ids), {}, 0};
+    MoveDrag& drag = *m_moveDrag;
+    core::edit::Edit step; // empty: nothing more to do (still ends the drag's command when finished)
+    auto wanted = core::edit::moveActions(drag.start, drag.actions, delta, trackDelta);
+    if (!wanted)
+        report(wanted.error());
+    else if (!(*wanted == drag.applied))
+        step = drag.applied.stepTo(*wanted);
+    auto done = m_document->edit(std::move(step), tr("Move %n Action(s)", nullptr, int(drag.actions.size())),
+                                 Merge{MoveActionsId, finished});
+    report(done);
+    if (wanted && done) {
+        drag.applied = std::move(wanted).value();
+        drag.appliedLayers = trackDelta;
+    }
+    // The moved actions stay selected, wherever they are now.
+    selectActions(core::edit::movedActionPaths(drag.start, drag.actions, drag.appliedLayers));
+    if (finished)
+        m_moveDrag.reset();
 }
 
 void TimelinePanel::onDelete(bool ripple)

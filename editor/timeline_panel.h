@@ -1,8 +1,8 @@
 #pragma once
 // TimelinePanel: the timeline editor. Shows one track per character and layer with its actions
 // as clips (widgets::TimelineView), the markers and the playhead, and turns the view's intents
-// (move, trim, fade, drop a clip from the library, mute / solo / lock, markers, scrub) into
-// undoable edits of the document; a drag is one undo step. Also owns the edit actions that work
+// (move in time and to another layer of the character, trim, fade, drop a clip from the library,
+// mute / solo / lock, markers, scrub) into undoable edits of the document; a drag is one undo step. Also owns the edit actions that work
 // on the timeline selection: delete, ripple delete, copy, paste, duplicate, split at the playhead.
 
 #include <QWidget>
@@ -61,6 +61,7 @@ private:
     void refresh();
     void report(const core::Result<void>& result);
     std::vector<core::edit::ActionPath> pathsOf(const QList<int>& ids) const;
+    void onMoveRequested(const QList<int>& ids, qint64 delta, int trackDelta, bool finished);
     void onDelete(bool ripple);
     void onCopy();
     void onPaste();
@@ -71,7 +72,16 @@ private:
     widgets::TimelineView* m_view = nullptr;
     std::vector<core::edit::LayerPath> m_tracks;     // per view track
     std::vector<core::edit::ActionPath> m_clipPaths; // per view clip id
-    qint64 m_dragApplied = 0;                        // the part of a move drag already applied
+    // A clip move drag in progress: the document at its start and the actions it moves. Each step
+    // is made again from that start (a step to another layer changes the actions' paths, and the
+    // view's clip ids with them) and pushed as the step from the last one, merging into one command.
+    struct MoveDrag {
+        core::scenario::Scenario start;
+        std::vector<core::edit::ActionPath> actions;
+        core::edit::Edit applied; // what the drag has done to `start` so far
+        int appliedLayers = 0;    // its layer offset
+    };
+    std::optional<MoveDrag> m_moveDrag;
     core::Tick m_playhead = 0;
     int m_frameRate = 30;
     // Copied actions with their layer, start times relative to the earliest.

@@ -329,6 +329,45 @@ qint64 TimelineView::rawDelta(const QPoint& pos) const
     return std::llround(double(pos.x() - m_drag.pressPos.x()) * ticksPerPixel());
 }
 
+int TimelineView::clipTrackDelta(int y) const
+{
+    if (m_drag.origTrack < 0 || m_drag.origTrack >= int(m_tracks.size()))
+        return 0;
+    // The track whose lane centre is nearest to the mouse (also over group rows, above and below
+    // the tracks), then the offset nearest to it (the nearer to 0 on a tie) at which every clip fits.
+    int under = m_drag.origTrack, nearest = std::numeric_limits<int>::max();
+    for (int i = 0; i < int(m_tracks.size()); ++i)
+        if (const int d = std::abs(y - (trackY(i) + TrackHeight / 2)); d < nearest) {
+            nearest = d;
+            under = i;
+        }
+    const int wanted = under - m_drag.origTrack;
+    int best = 0;
+    for (int offset = -int(m_tracks.size()); offset <= int(m_tracks.size()); ++offset) {
+        const int distance = std::abs(offset - wanted), bestDistance = std::abs(best - wanted);
+        if ((distance < bestDistance || (distance == bestDistance && std::abs(offset) < std::abs(best)))
+            && trackOffsetFits(offset))
+            best = offset;
+    }
+    return best;
+}
+
+bool TimelineView::trackOffsetFits(int offset) const
+{
+    if (offset == 0)
+        return true;
+    for (const TimelineClip& c : m_drag.moving) {
+        const int to = c.track + offset;
+        if (c.track < 0 || c.track >= int(m_tracks.size()) || to < 0 || to >= int(m_tracks.size()))
+            return false;
+        const TimelineTrack& from = m_tracks[c.track];
+        const TimelineTrack& target = m_tracks[to];
+        if (target.locked || target.group != from.group || target.kind != from.kind)
+            return false;
+    }
+    return true;
+}
+
 void TimelineView::rebuildRows()
 {
     m_rows.clear();
@@ -846,12 +885,14 @@ void TimelineView::beginClipPress(const Hit& hit, const QPoint& pos, Qt::Keyboar
                 continue;
             moving[std::size_t(i)] = 1;
             m_drag.ids.push_back(c.id);
+            m_drag.moving.push_back(c);
             m_drag.edges.push_back(c.start);
             if (c.end != OpenEnd)
                 m_drag.edges.push_back(c.end);
             m_drag.minStart = std::min(m_drag.minStart, c.start);
         }
         std::sort(m_drag.ids.begin(), m_drag.ids.end());
+        m_drag.origTrack = item.clip.track;
         buildSnapTargets(&moving, -1, true);
         break;
     }
@@ -915,7 +956,16 @@ void TimelineView::updateDrag(const QPoint& pos, Qt::KeyboardModifiers modifiers
             delta = -m_drag.minStart;
             m_snapLine = -1;
         }
-        request(delta, [&](qint64 v, bool done) { emit clipsMoveRequested(m_drag.ids, v, done); });
+        const int tracks = clipTrackDelta(pos.y());
+        if (finished) {
+            if (m_drag.emitted || delta != 0 || tracks != 0)
+                emit clipsMoveRequested(m_drag.ids, delta, tracks, true);
+        } else if (delta != m_drag.last || tracks != m_drag.trackDelta) {
+            m_drag.last = delta;
+            m_drag.trackDelta = tracks;
+            m_drag.emitted = true;
+            emit clipsMoveRequested(m_drag.ids, delta, tracks, false);
+        }
         break;
     }
     case DragMode::TrimStart: {
@@ -1095,7 +1145,7 @@ void TimelineView::cancelDrag()
     // Whatever the drag asked for is asked back, as one finished request.
     if (m_drag.emitted) {
         switch (m_drag.mode) {
-        case DragMode::Clip: emit clipsMoveRequested(m_drag.ids, 0, true); break;
+        case DragMode::Clip: emit clipsMoveRequested(m_drag.ids, 0, 0, true); break;
         case DragMode::TrimStart:
             emit clipTrimRequested(m_drag.clipId, TimelineEdge::Start, m_drag.origValue, true);
             break;
@@ -1598,18 +1648,10 @@ void TimelineView::paintOverlays(QPainter& painter, const QRect& lanes)
     if (m_dropActive && m_dropTrack >= 0) {
         const int x = xForTime(m_dropTime);
         const int width = std::max(90, int(m_pixelsPerSecond));
-        const QRect ghost(x, trackY(m_dropTrack) + kClipInset, width, TrackHeight - 2 * kClipInset);
-        painter.setRenderHint(QPainter::Antialiasing, true);
-        painter.setPen(QPen(c.clipSelectedBorder, 1.5, Qt::DashLine));
-        painter.setBrush(withAlpha(c.clipSelected, 110));
-        painter.drawRoundedRect(QRectF(ghost).adjusted(0.5, 0.5, -0.5, -0.5), 3, 3);
-        painter.setRenderHint(QPainter::Antialiasing, false);
-        painter.setFont(m_clipFont);
-        painter.setPen(c.clipSelectedText);
-        painter.drawText(ghost.adjusted(8, 3, -4, 0), Qt::AlignLeft | Qt::AlignTop,
-                         m_clipMetrics.elidedText(m_dropName, Qt::ElideRight, ghost.width() - 12));
+        paintGhost(painter, QRect(x, trackY(m_dropTrack) + kClipInset, width, TrackHeight - 2 * kClipInset), m_dropName);
         painter.fillRect(QRect(x - 1, lanes.top(), 2, lanes.height()), c.snap);
     }
+    paintMoveGhosts(painter);
     if (m_snapLine >= 0) {
         const int x = xForTime(m_snapLine);
         painter.fillRect(QRect(x, lanes.top(), 1, lanes.height()), c.snap);
@@ -1623,6 +1665,41 @@ void TimelineView::paintOverlays(QPainter& painter, const QRect& lanes)
     const int x = xForTime(m_playhead);
     if (x >= lanes.left() - 1 && x <= lanes.right() + 1)
         painter.fillRect(QRect(x, lanes.top(), 1, lanes.height()), c.playhead);
+}
+
+void TimelineView::paintGhost(QPainter& painter, const QRect& ghost, const QString& name)
+{
+    const Colors& c = m_colors;
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    painter.setPen(QPen(c.clipSelectedBorder, 1.5, Qt::DashLine));
+    painter.setBrush(withAlpha(c.clipSelected, 110));
+    painter.drawRoundedRect(QRectF(ghost).adjusted(0.5, 0.5, -0.5, -0.5), 3, 3);
+    painter.setRenderHint(QPainter::Antialiasing, false);
+    painter.setFont(m_clipFont);
+    painter.setPen(c.clipSelectedText);
+    painter.drawText(ghost.adjusted(8, 3, -4, 0), Qt::AlignLeft | Qt::AlignTop,
+                     m_clipMetrics.elidedText(name, Qt::ElideRight, ghost.width() - 12));
+}
+
+void TimelineView::paintMoveGhosts(QPainter& painter)
+{
+    // Where a clip drag puts the clips, for as long as the editor has not moved them there (it
+    // may refuse, or apply the move only on release).
+    if (m_drag.mode != DragMode::Clip || !m_drag.active || m_drag.locked || (m_drag.last == 0 && m_drag.trackDelta == 0))
+        return;
+    QSet<std::pair<int, qint64>> shown; // (track, start) of the clips as they are now
+    for (const ClipItem& item : std::as_const(m_clips))
+        shown.insert({item.clip.track, item.clip.start});
+    const int laneRight = viewport()->width();
+    for (const TimelineClip& c : std::as_const(m_drag.moving)) {
+        const int track = c.track + m_drag.trackDelta;
+        const qint64 start = c.start + m_drag.last;
+        if (track < 0 || track >= int(m_tracks.size()) || shown.contains({track, start}))
+            continue;
+        const int x0 = xForTime(start);
+        const int x1 = c.end == OpenEnd ? laneRight : std::max(x0 + 1, xForTime(c.end + m_drag.last));
+        paintGhost(painter, QRect(x0, trackY(track) + kClipInset, x1 - x0, TrackHeight - 2 * kClipInset), c.name);
+    }
 }
 
 void TimelineView::paintFlag(QPainter& painter, const QRect& rect, TimelineTrackFlag flag, bool on)

@@ -14,7 +14,9 @@
 // xForTime(), …) is in viewport() coordinates, and the mouse, wheel and drop events are those of
 // the viewport. The header column and the ruler stay put while the lanes scroll.
 //
-// Gestures: drag a clip's body to move the selection (clips on locked tracks stay), within
+// Gestures: drag a clip's body to move the selection in time and, up or down, to other tracks of
+// each clip's own group and kind (clips on locked tracks stay; a ghost shows where they land until
+// the editor has moved them there), within
 // EdgeGrip px of an edge to trim, a handle on the top border to change a fade; click selects,
 // Shift/Ctrl+click toggles, a drag on empty lane space is a rubber band; the ruler scrubs; M adds
 // a marker at the playhead; Ctrl+wheel zooms about the mouse, Shift+wheel pans, the wheel scrolls
@@ -53,6 +55,8 @@ struct TimelineTrack {
     QString name;  ///< "Body", "Face", …
     QString group; ///< the character's name; consecutive tracks of one group share a group header row
     bool muted = false, solo = false, locked = false;
+    /// Clips are dragged only between tracks of the same group and the same kind ("body", "face").
+    QString kind;
 };
 
 /// One action on a track, in ticks.
@@ -155,12 +159,15 @@ public:
 signals:
     /// The user changed the selection (click, Shift/Ctrl+click, rubber band, Ctrl+A).
     void selectionChanged(const QList<int>& ids);
-    /// Drag of selected clip bodies: delta = total since the press, after snapping (clamped so no
-    /// clip starts before 0). Clips on locked tracks are never among the ids. Emitted with
-    /// finished = false whenever the delta changes, then once with finished = true on release if
-    /// anything was requested (a release without movement emits nothing). Escape during a drag
-    /// asks back: one finished request with delta 0 (or the original time / length below).
-    void clipsMoveRequested(const QList<int>& ids, qint64 delta, bool finished);
+    /// Drag of selected clip bodies: delta = total time since the press, after snapping (clamped so
+    /// no clip starts before 0); trackDelta = how many tracks down (up when negative) the clips go,
+    /// from the track under the mouse, the nearest offset at which every clip lands on an unlocked
+    /// track of its own group and kind (0 when there is none). Clips on locked tracks are never among
+    /// the ids, and the ids are those at the press for the whole drag. Emitted with finished = false
+    /// whenever delta or trackDelta changes, then once with finished = true on release if anything
+    /// was requested (a release without movement emits nothing). Escape during a drag asks back:
+    /// one finished request with delta 0 and trackDelta 0 (or the original time / length below).
+    void clipsMoveRequested(const QList<int>& ids, qint64 delta, int trackDelta, bool finished);
     /// Drag of a clip's edge: the new start or end time (the clip keeps at least one frame).
     void clipTrimRequested(int id, thespis::widgets::TimelineEdge edge, qint64 time, bool finished);
     /// Drag of a fade handle: the new fadeIn / fadeOut length, clamped to [0, clip length].
@@ -233,6 +240,9 @@ private:
         qint64 origStart = 0, origEnd = 0, origValue = 0; // origValue: fade length or marker time
         qint64 last = 0;                                   // last value requested
         QList<int> ids;                                    // moving clips
+        QVector<TimelineClip> moving;                      // them as they were at the press
+        int origTrack = -1;                                // the grabbed clip's track at the press
+        int trackDelta = 0;                                // last track offset requested
         std::vector<qint64> edges;                         // their edges at the press
         qint64 minStart = 0;
         std::vector<char> baseSelection;                   // rubber band: selection kept (Shift/Ctrl)
@@ -285,6 +295,8 @@ private:
     void emitSelectionIfChanged(const std::vector<char>& before);
     std::vector<char> selectionFlags() const;
     qint64 rawDelta(const QPoint& pos) const;
+    int clipTrackDelta(int y) const; // the track offset of a clip drag with the mouse at y
+    bool trackOffsetFits(int offset) const;
 
     // Snapping
     void buildSnapTargets(const std::vector<char>* excludeClips, int excludeMarker, bool includePlayhead);
@@ -302,6 +314,8 @@ private:
     void paintClip(QPainter& painter, const ClipItem& item, const QRect& rect, bool dimmed, bool locked,
                    int laneRight);
     void paintOverlays(QPainter& painter, const QRect& lanes);
+    void paintMoveGhosts(QPainter& painter);
+    void paintGhost(QPainter& painter, const QRect& rect, const QString& name);
     void paintHeader(QPainter& painter);
     void paintRuler(QPainter& painter);
     void paintFlag(QPainter& painter, const QRect& rect, TimelineTrackFlag flag, bool on);

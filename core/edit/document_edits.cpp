@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <set>
@@ -175,28 +176,103 @@ Result<Edit> insertActions(const Scenario& scenario, const LayerPath& layerPath,
     return edit;
 }
 
-Result<Edit> moveActions(const Scenario& scenario, std::span<const ActionPath> paths, Tick delta)
+namespace {
+
+const char* kindName(LayerKind kind) { return kind == LayerKind::Face ? "face" : "body"; }
+
+// moveActions()'s edit and where each action lands (in the order given).
+struct PlannedMove {
+    Edit edit;
+    std::vector<ActionPath> landed;
+};
+
+Result<PlannedMove> planMove(const Scenario& scenario, std::span<const ActionPath> paths, Tick delta, int layerDelta)
 {
     Tick earliest = std::numeric_limits<Tick>::max();
+    std::set<ActionPath> moving;
     for (const ActionPath& p : paths) {
         auto action = requireAction(scenario, p);
         if (!action)
             return action.error();
-        if (layerAt(scenario, p.layerPath())->lock)
-            return invalid("Layer " + quote(layerAt(scenario, p.layerPath())->name) + " is locked.");
+        const std::string& name = (*action)->name;
+        if (!moving.insert(p).second)
+            return invalid("Action " + quote(name) + " is listed twice in the move.");
+        const Layer& from = *layerAt(scenario, p.layerPath());
+        if (from.lock)
+            return invalid("Layer " + quote(from.name) + " is locked.");
+        if (layerDelta != 0) {
+            const Layer* to = layerAt(scenario, {p.character, p.layer + layerDelta});
+            if (!to) {
+                const Character& character = scenario.characters[std::size_t(p.character)];
+                return invalid("Action " + quote(name) + " cannot move " + std::to_string(std::abs(layerDelta))
+                               + (std::abs(layerDelta) == 1 ? " layer " : " layers ") + (layerDelta > 0 ? "down" : "up")
+                               + ": character " + quote(character.name) + " has no layer there.");
+            }
+            if (to->lock)
+                return invalid("Layer " + quote(to->name) + " is locked.");
+            if (to->kind != from.kind)
+                return invalid("Action " + quote(name) + " is a " + kindName(from.kind) + " action: it cannot go to "
+                               + kindName(to->kind) + " layer " + quote(to->name) + ".");
+        }
         earliest = std::min(earliest, (*action)->start);
     }
+    PlannedMove plan;
     if (paths.empty())
-        return Edit{};
+        return plan;
     delta = std::max(delta, -earliest);
-    Edit edit;
-    for (const ActionPath& p : paths) {
-        const ActionSpec& before = *actionAt(scenario, p);
-        ActionSpec after = before;
-        after.start += delta;
-        edit.add(ActionChange{p, before, std::move(after)});
+    if (layerDelta == 0) {
+        for (const ActionPath& p : paths) {
+            const ActionSpec& before = *actionAt(scenario, p);
+            ActionSpec after = before;
+            after.start += delta;
+            plan.edit.add(ActionChange{p, before, std::move(after)});
+        }
+        plan.landed.assign(paths.begin(), paths.end());
+        return plan;
     }
-    return edit;
+    // Removals first, highest index first (each leaves the indices of the next ones valid); then
+    // the actions are added at the end of their target layers, in the order given.
+    for (auto it = moving.rbegin(); it != moving.rend(); ++it)
+        plan.edit.add(ActionChange{*it, *actionAt(scenario, *it), std::nullopt});
+    std::map<LayerPath, std::vector<std::string>> names; // per target layer: the names it will hold
+    std::map<LayerPath, int> sizes;
+    for (const ActionPath& p : paths) {
+        const LayerPath to{p.character, p.layer + layerDelta};
+        if (!sizes.count(to)) {
+            const Layer& target = *layerAt(scenario, to);
+            int kept = 0;
+            for (int a = 0; a < int(target.actions.size()); ++a)
+                if (!moving.count({to.character, to.layer, a})) {
+                    names[to].push_back(target.actions[std::size_t(a)].name);
+                    ++kept;
+                }
+            sizes[to] = kept;
+        }
+        ActionSpec after = *actionAt(scenario, p);
+        after.start += delta;
+        after.name = uniqueName(after.name, names[to]);
+        names[to].push_back(after.name);
+        const ActionPath at{to.character, to.layer, sizes[to]++};
+        plan.landed.push_back(at);
+        plan.edit.add(ActionChange{at, std::nullopt, std::move(after)});
+    }
+    return plan;
+}
+
+} // namespace
+
+Result<Edit> moveActions(const Scenario& scenario, std::span<const ActionPath> paths, Tick delta, int layerDelta)
+{
+    auto plan = planMove(scenario, paths, delta, layerDelta);
+    if (!plan)
+        return plan.error();
+    return std::move(plan->edit);
+}
+
+std::vector<ActionPath> movedActionPaths(const Scenario& scenario, std::span<const ActionPath> paths, int layerDelta)
+{
+    auto plan = planMove(scenario, paths, 0, layerDelta);
+    return plan ? std::move(plan->landed) : std::vector<ActionPath>{};
 }
 
 Result<Edit> trimAction(const Scenario& scenario, const ActionPath& path, const ActionSpan& span, Edge edge, Tick time,

@@ -47,8 +47,19 @@ Result<scenario::ActionSpec> actionFromClip(const scenario::Scenario& scenario, 
 /// Adds actions to a layer (names made unique in the layer: "wave", "wave 2", …).
 Result<Edit> insertActions(const scenario::Scenario& scenario, const LayerPath& layer,
                            std::vector<scenario::ActionSpec> actions);
-/// Moves actions in time by `delta`; the earliest cannot go before 0 (the move stops there).
-Result<Edit> moveActions(const scenario::Scenario& scenario, std::span<const ActionPath> actions, Tick delta);
+/// Moves actions in time by `delta` (the earliest cannot go before 0: the move stops there) and,
+/// with `layerDelta`, to the layer that many places further down (up when negative) in their own
+/// character. An action moved to another layer is removed from its layer and added at the end of
+/// the target layer (as insertActions() adds), keeping its name unless the target layer already
+/// has an action of that name ("wave" becomes "wave 2"). Refused when an action is not there or is
+/// listed twice, a layer (source or target) is locked, a target layer is outside the character, or
+/// a target layer is of another kind (a face action cannot go to a body layer).
+Result<Edit> moveActions(const scenario::Scenario& scenario, std::span<const ActionPath> actions, Tick delta,
+                         int layerDelta = 0);
+/// Where moveActions(scenario, actions, delta, layerDelta) puts each of `actions` (same order): the
+/// paths in the document after that edit. Empty when the move is refused.
+std::vector<ActionPath> movedActionPaths(const scenario::Scenario& scenario, std::span<const ActionPath> actions,
+                                         int layerDelta);
 /// Moves one edge of an action to `time`, keeping its motion in place (NLE trimming: the start
 /// edge cuts into the clip, the end edge shortens or lengthens it within the clip). Uses the
 /// action's outermost Trim modifier, adding one when it has none. An action keeps at least

@@ -1,5 +1,6 @@
 #include "edit/scenario_edit.h"
 
+#include <cstddef>
 #include <string>
 
 namespace thespis::core::edit {
@@ -180,7 +181,7 @@ Result<void> Edit::apply(scenario::Scenario& scenario) const
     return {};
 }
 
-bool Edit::canMergeWith(const Edit& later) const
+bool Edit::replacesLike(const Edit& later) const
 {
     if (m_changes.size() != later.m_changes.size() || m_changes.empty())
         return false;
@@ -190,15 +191,64 @@ bool Edit::canMergeWith(const Edit& later) const
     return true;
 }
 
+bool Edit::takenBackBy(const Edit& later) const
+{
+    if (m_changes.empty() || later.m_changes.size() < m_changes.size())
+        return false;
+    for (std::size_t i = 0; i < m_changes.size(); ++i) {
+        const Change& mine = m_changes[m_changes.size() - 1 - i];
+        if (std::holds_alternative<CharacterBakeChange>(mine) || !(later.m_changes[i] == inverted(mine)))
+            return false;
+    }
+    return true;
+}
+
+bool Edit::canMergeWith(const Edit& later) const
+{
+    return replacesLike(later) || takenBackBy(later);
+}
+
 void Edit::mergeWith(const Edit& later)
 {
-    for (std::size_t i = 0; i < m_changes.size(); ++i)
-        std::visit(
-            [&](auto& mine) {
+    if (replacesLike(later)) {
+        for (std::size_t i = 0; i < m_changes.size(); ++i)
+            std::visit(
+                [&](auto& mine) {
+                    using C = std::decay_t<decltype(mine)>;
+                    mine.after = std::get<C>(later.m_changes[i]).after;
+                },
+                m_changes[i]);
+        return;
+    }
+    // A re-based step: this edit, then its own inverse, then the rest; the first two cancel.
+    m_changes.assign(later.m_changes.begin() + std::ptrdiff_t(m_changes.size()), later.m_changes.end());
+}
+
+Edit Edit::stepTo(const Edit& wanted) const
+{
+    bool sameBefore = replacesLike(wanted);
+    for (std::size_t i = 0; sameBefore && i < m_changes.size(); ++i)
+        sameBefore = std::visit(
+            [&](const auto& mine) {
                 using C = std::decay_t<decltype(mine)>;
-                mine.after = std::get<C>(later.m_changes[i]).after;
+                return mine.before == std::get<C>(wanted.m_changes[i]).before;
             },
             m_changes[i]);
+    if (sameBefore) {
+        Edit step = *this;
+        for (std::size_t i = 0; i < m_changes.size(); ++i)
+            std::visit(
+                [&](auto& change) {
+                    using C = std::decay_t<decltype(change)>;
+                    change.before = change.after;
+                    change.after = std::get<C>(wanted.m_changes[i]).after;
+                },
+                step.m_changes[i]);
+        return step;
+    }
+    Edit step = inverse();
+    step.append(wanted);
+    return step;
 }
 
 bool Edit::changesNothing() const

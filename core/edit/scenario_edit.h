@@ -91,16 +91,30 @@ public:
     /// See the rules at the top of this file.
     Result<void> apply(scenario::Scenario& scenario) const;
 
-    /// True when `later` replaces the same elements in the same order (no inserts or removes):
-    /// a drag's next step. Then mergeWith() keeps this edit's `before` and takes later's `after`.
+    /// True when `later` is a drag's next step after this edit: either it replaces the same elements
+    /// in the same order (no inserts or removes), or it starts by taking this whole edit back (its
+    /// first changes are inverse(): a step re-based on the drag's start, see stepTo()). Bake changes
+    /// never merge.
     bool canMergeWith(const Edit& later) const;
+    /// Makes this edit do what it did followed by `later`: for replaces, keeps this edit's `before`
+    /// and takes later's `after`; for a step that starts by taking this edit back, becomes the rest
+    /// of that step. Only after canMergeWith(later).
     void mergeWith(const Edit& later);
+    /// The step from the document this edit leads to, to the document `wanted` leads to, when both
+    /// were made for the same document (a drag re-made from its start at every mouse move): one
+    /// replace per element when both replace the same elements in the same order, else this edit's
+    /// inverse followed by `wanted`. Applied after this edit it gives what `wanted` gives, and
+    /// mergeWith() of it turns this edit into `wanted`.
+    Edit stepTo(const Edit& wanted) const;
     /// True when applying the edit changes nothing (every change replaces a value by an equal one).
     bool changesNothing() const;
 
     bool operator==(const Edit&) const = default;
 
 private:
+    bool replacesLike(const Edit& later) const; // same elements replaced in the same order
+    bool takenBackBy(const Edit& later) const;  // later starts with inverse()
+
     std::vector<Change> m_changes;
 };
 

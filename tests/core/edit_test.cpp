@@ -181,6 +181,144 @@ TEST(Edit, ADragsStepsMergeIntoOneEdit)
     EXPECT_FALSE(first->canMergeWith(*second));
 }
 
+namespace {
+
+// swingScenario's character with more layers: "body" (actions at 0 and 3 s), "gestures" (body,
+// one action at 1 s) and "face" (face, empty).
+Scenario layeredScenario()
+{
+    Scenario s = swingScenario({0, 3 * Second});
+    Layer gestures;
+    gestures.name = "gestures";
+    ActionSpec a;
+    a.name = "nod";
+    a.clip = "swing";
+    a.start = Second;
+    gestures.actions.push_back(a);
+    Layer face;
+    face.name = "face";
+    face.kind = LayerKind::Face;
+    s.characters[0].layers.push_back(gestures);
+    s.characters[0].layers.push_back(face);
+    return s;
+}
+
+const std::vector<ActionSpec>& actionsOf(const Scenario& s, int layer)
+{
+    return s.characters[0].layers[std::size_t(layer)].actions;
+}
+
+} // namespace
+
+TEST(DocumentEdits, MovesActionsToAnotherLayerAndBack)
+{
+    Scenario s = layeredScenario();
+    const Scenario original = s;
+    const std::vector<ActionPath> second{{0, 0, 1}};
+    auto down = moveActions(s, second, Second, 1);
+    ASSERT_TRUE(down.ok()) << down.error().message;
+    EXPECT_EQ(movedActionPaths(s, second, 1), (std::vector<ActionPath>{{0, 1, 1}}));
+    expectRoundTrip(s, *down); // applied; undone restores the original exactly; applied again
+    ASSERT_EQ(actionsOf(s, 0).size(), 1u);
+    ASSERT_EQ(actionsOf(s, 1).size(), 2u);
+    EXPECT_EQ(actionsOf(s, 1)[1].name, "swing 2"); // no clash: keeps its name
+    EXPECT_EQ(actionsOf(s, 1)[1].start, 4 * Second);
+    EXPECT_EQ(actionsOf(s, 1)[0].name, "nod"); // the layer's own action stays first
+    EXPECT_TRUE(validateScenario(s, thespis::test::testData()).empty());
+    EXPECT_NEAR(shoulderDegrees(s, 5.0), 45.0, 0.5); // the gestures layer plays it 1 s into the swing
+
+    // And back up, 1 s earlier: the original document.
+    applied(s, moveActions(s, std::vector<ActionPath>{{0, 1, 1}}, -Second, -1));
+    EXPECT_EQ(s, original);
+
+    // Several actions of several layers at once: each lands at the end of the layer below its own.
+    auto both = moveActions(s, std::vector<ActionPath>{{0, 1, 0}, {0, 0, 0}}, 0, -1);
+    EXPECT_FALSE(both.ok()); // layer 0 has no layer above it
+    const std::vector<ActionPath> two{{0, 1, 0}, {0, 0, 0}};
+    EXPECT_EQ(movedActionPaths(s, two, 1), std::vector<ActionPath>{}); // "nod" would go to the face layer
+    const std::vector<ActionPath> twoBody{{0, 0, 0}, {0, 0, 1}};
+    EXPECT_EQ(movedActionPaths(s, twoBody, 1), (std::vector<ActionPath>{{0, 1, 1}, {0, 1, 2}}));
+    expectRoundTrip(s, *moveActions(s, twoBody, 0, 1));
+    EXPECT_TRUE(actionsOf(s, 0).empty());
+    EXPECT_EQ(actionsOf(s, 1)[1].name, "swing 1");
+    EXPECT_EQ(actionsOf(s, 1)[2].name, "swing 2");
+}
+
+TEST(DocumentEdits, MovedActionsGetAUniqueNameInTheirNewLayer)
+{
+    Scenario s = layeredScenario();
+    s.characters[0].layers[1].actions[0].name = "swing 1"; // the gestures layer has one already
+    s.characters[0].layers[1].actions.push_back(s.characters[0].layers[1].actions[0]);
+    s.characters[0].layers[1].actions[1].name = "swing 1 2";
+    applied(s, moveActions(s, std::vector<ActionPath>{{0, 0, 0}}, 0, 1));
+    ASSERT_EQ(actionsOf(s, 1).size(), 3u);
+    EXPECT_EQ(actionsOf(s, 1)[2].name, "swing 1 3");
+    EXPECT_EQ(actionsOf(s, 1)[2].start, 0);
+    // Back to the body layer: no clash there, the name stays.
+    applied(s, moveActions(s, std::vector<ActionPath>{{0, 1, 2}}, 0, -1));
+    EXPECT_EQ(actionsOf(s, 0).back().name, "swing 1 3");
+}
+
+TEST(DocumentEdits, LayerMovesRefuseLockedLayersOtherKindsAndOtherCharacters)
+{
+    Scenario s = layeredScenario();
+    const std::vector<ActionPath> first{{0, 0, 0}};
+    // A face layer takes no body action.
+    auto face = moveActions(s, std::vector<ActionPath>{{0, 1, 0}}, 0, 1);
+    ASSERT_FALSE(face.ok());
+    EXPECT_NE(face.error().message.find("body action"), std::string::npos) << face.error().message;
+    EXPECT_NE(face.error().message.find("face layer \"face\""), std::string::npos) << face.error().message;
+    // No layer above the first, none three below: the character ends there.
+    auto above = moveActions(s, first, 0, -1);
+    ASSERT_FALSE(above.ok());
+    EXPECT_NE(above.error().message.find("1 layer up"), std::string::npos) << above.error().message;
+    EXPECT_FALSE(moveActions(s, first, 0, 3).ok());
+    // Locked target, then locked source.
+    applied(s, setLayerFlag(s, {0, 1}, LayerFlag::Lock, true));
+    auto locked = moveActions(s, first, 0, 1);
+    ASSERT_FALSE(locked.ok());
+    EXPECT_NE(locked.error().message.find("\"gestures\" is locked"), std::string::npos) << locked.error().message;
+    EXPECT_FALSE(moveActions(s, std::vector<ActionPath>{{0, 1, 0}}, 0, -1).ok());
+    // Listed twice.
+    EXPECT_FALSE(moveActions(s, std::vector<ActionPath>{{0, 0, 0}, {0, 0, 0}}, Second).ok());
+}
+
+TEST(Edit, ADragAcrossLayersMergesIntoOneEditThatUndoes)
+{
+    // A drag re-made from its start at each mouse move (as the timeline does), merged step by step.
+    const Scenario start = layeredScenario();
+    Scenario s = start;
+    const std::vector<ActionPath> one{{0, 0, 1}};
+    Edit drag = applied(s, moveActions(start, one, Second / 10, 0));
+    auto stepTo = [&](Tick delta, int layers) {
+        Edit wanted = *moveActions(start, one, delta, layers);
+        Edit step = drag.stepTo(wanted);
+        applied(s, step);
+        Scenario expected = start;
+        EXPECT_TRUE(wanted.apply(expected).ok());
+        EXPECT_EQ(s, expected);
+        ASSERT_TRUE(drag.canMergeWith(step));
+        drag.mergeWith(step);
+        EXPECT_EQ(drag, wanted);
+    };
+    stepTo(Second / 5, 0);
+    EXPECT_EQ(drag.stepTo(*moveActions(start, one, Second / 2, 0)).changes().size(), 1u); // in place: one replace
+    stepTo(Second / 5, 1); // down to the gestures layer
+    EXPECT_EQ(actionsOf(s, 1).size(), 2u);
+    stepTo(Second / 2, 1);
+    stepTo(Second, 0); // back up
+    stepTo(Second, 1);
+    const Scenario moved = s;
+    ASSERT_TRUE(drag.inverse().apply(s).ok()); // undo: the drag's start, exactly
+    EXPECT_EQ(s, start);
+    ASSERT_TRUE(drag.apply(s).ok()); // redo
+    EXPECT_EQ(s, moved);
+    // Back to where it started (Escape): nothing left to do.
+    stepTo(0, 0);
+    EXPECT_TRUE(drag.changesNothing());
+    EXPECT_EQ(s, start);
+}
+
 TEST(DocumentEdits, MoveStopsAtTheStartOfTheTimeline)
 {
     Scenario s = swingScenario({Second, 3 * Second});

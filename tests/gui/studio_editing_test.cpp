@@ -94,6 +94,7 @@ private slots:
     void init();
     void cleanup();
     void dropMoveTrimThenUndoAndRedo();
+    void dragToAnotherLayerIsOneUndoStep();
     void curvePresetChangesTheEvaluatedWeights();
     void paintingAMaskSetsJointWeights();
     void saveAndReopenGiveTheSameDocument();
@@ -204,6 +205,105 @@ void StudioEditingTest::dropMoveTrimThenUndoAndRedo()
     const auto span = core::edit::actionSpan(document.scenario(), document.runtime(), added);
     QVERIFY(span);
     QCOMPARE(span->start, 8 * core::TicksPerSecond);
+}
+
+void StudioEditingTest::dragToAnotherLayerIsOneUndoStep()
+{
+    editor::Document& document = *m_window->document();
+    // Creon (character 0) gets a second body layer, "gestures", between his body and face layers.
+    core::scenario::Layer gestures;
+    gestures.name = "gestures";
+    QVERIFY(document.edit(core::edit::Edit(core::edit::LayerChange{{0, 1}, std::nullopt, gestures}),
+                          QStringLiteral("Add Layer")));
+    const core::scenario::Scenario original = document.scenario();
+    const int steps = document.undoStack()->count();
+    editor::TimelinePanel* timeline = m_window->timeline();
+    widgets::TimelineView* view = timeline->view();
+    qobject_cast<QDockWidget*>(timeline->parentWidget())->raise();
+    view->setPixelsPerSecond(80);
+    QApplication::processEvents();
+    auto trackOf = [&](const QString& group, const QString& name) {
+        for (int t = 0; t < view->tracks().size(); ++t)
+            if (view->tracks()[t].group == group && view->tracks()[t].name == name)
+                return t;
+        return -1;
+    };
+    const int body = trackOf(QStringLiteral("Creon"), QStringLiteral("body"));
+    const int layer = trackOf(QStringLiteral("Creon"), QStringLiteral("gestures"));
+    const int face = trackOf(QStringLiteral("Creon"), QStringLiteral("face"));
+    const int antigone = trackOf(QStringLiteral("Antigone"), QStringLiteral("body"));
+    QVERIFY(body >= 0 && layer == body + 1 && face == body + 2 && antigone >= 0);
+    QCOMPARE(view->tracks()[layer].kind, view->tracks()[body].kind);
+    QVERIFY(view->tracks()[face].kind != view->tracks()[body].kind);
+
+    // Drag creon_wave down to "gestures", on over the face layer and Antigone's (it stays on
+    // "gestures"), back up to "body", down again and 1 s later: one drag, many steps.
+    const ActionPath wave{0, 0, 1};
+    const core::scenario::ActionSpec spec = actionAt(document, wave);
+    const QRect clip = view->clipRect(timeline->clipId(wave));
+    QVERIFY(!clip.isNull());
+    const QPoint grab = clip.center();
+    auto y = [&](int track) { return view->trackRect(track).center().y(); };
+    QWidget* vp = view->viewport();
+
+    // Escape during a drag to the other layer: the original document, no undo step, still selected.
+    QTest::mousePress(vp, Qt::LeftButton, {}, grab);
+    QTest::mouseMove(vp, grab + QPoint(0, 8));
+    QTest::mouseMove(vp, QPoint(grab.x() + 40, y(layer)));
+    QCOMPARE(document.scenario().characters[0].layers[1].actions.size(), std::size_t(1));
+    QTest::keyClick(view, Qt::Key_Escape);
+    QVERIFY(document.scenario() == original);
+    QCOMPARE(document.undoStack()->count(), steps);
+    QCOMPARE(timeline->selectedActions(), std::vector<ActionPath>{wave});
+    QTest::mouseRelease(vp, Qt::LeftButton, {}, QPoint(grab.x() + 40, y(layer)));
+    QVERIFY(document.scenario() == original);
+
+    QTest::mousePress(vp, Qt::LeftButton, {}, grab);
+    const QList<QPoint> path = {grab + QPoint(0, 8),         QPoint(grab.x(), y(layer)),      QPoint(grab.x() + 20, y(face)),
+                                QPoint(grab.x() + 40, y(antigone)), QPoint(grab.x() + 40, y(body)), QPoint(grab.x() + 60, y(layer)),
+                                QPoint(grab.x() + 80, y(layer))};
+    QList<int> seenLayers;
+    for (const QPoint& p : path) {
+        QTest::mouseMove(vp, p);
+        // Where the action is now, during the drag: the layer that holds an action named creon_wave.
+        for (int l = 0; l < 3; ++l)
+            for (const auto& a : document.scenario().characters[0].layers[std::size_t(l)].actions)
+                if (a.name == spec.name)
+                    seenLayers.push_back(l);
+    }
+    QCOMPARE(seenLayers, (QList<int>{0, 1, 1, 1, 0, 1, 1}));
+    // The moved clip is selected where it is now, drawn on the gestures lane.
+    QCOMPARE(timeline->selectedActions(), (std::vector<ActionPath>{{0, 1, 0}}));
+    QVERIFY(view->trackRect(layer).contains(view->clipRect(timeline->clipId({0, 1, 0}))));
+    QApplication::processEvents();
+    saveScreenshot(m_window.get(), QStringLiteral("studio_timeline_drag_to_layer.png"));
+    saveScreenshot(view, QStringLiteral("timeline_drag_to_layer.png"));
+    QTest::mouseRelease(vp, Qt::LeftButton, {}, path.last());
+
+    // The action is in "gestures", 1 s later, and the document is exactly that move of the original.
+    core::scenario::Scenario expected = original;
+    QVERIFY(core::edit::moveActions(expected, std::vector<ActionPath>{wave}, core::TicksPerSecond, 1)->apply(expected).ok());
+    QCOMPARE(document.scenario().characters[0].layers[1].actions.size(), std::size_t(1));
+    const core::scenario::ActionSpec& moved = document.scenario().characters[0].layers[1].actions[0];
+    QCOMPARE(moved.name, spec.name);
+    QCOMPARE(moved.start, spec.start + core::TicksPerSecond);
+    QCOMPARE(document.scenario().characters[0].layers[0].actions.size(), original.characters[0].layers[0].actions.size() - 1);
+    QVERIFY(document.scenario() == expected);
+    QCOMPARE(timeline->selectedActions(), (std::vector<ActionPath>{{0, 1, 0}}));
+    // The runtime plays it from the gestures layer.
+    const auto span = core::edit::actionSpan(document.scenario(), document.runtime(), {0, 1, 0});
+    QVERIFY(span);
+    QCOMPARE(span->start, spec.start + core::TicksPerSecond);
+
+    // One undo step; undo gives the original, redo the moved document.
+    QCOMPARE(document.undoStack()->count(), steps + 1);
+    m_window->undoAction()->trigger();
+    QVERIFY(document.scenario() == original);
+    m_window->redoAction()->trigger();
+    QVERIFY(document.scenario() == expected);
+    m_window->undoAction()->trigger();
+    m_window->undoAction()->trigger();
+    QVERIFY(!document.isModified());
 }
 
 void StudioEditingTest::curvePresetChangesTheEvaluatedWeights()

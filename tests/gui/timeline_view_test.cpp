@@ -121,6 +121,8 @@ private slots:
     void moveDragEmitsSnappedDelta();
     void moveSnapsToOtherClipsEdges();
     void escapeCancelsADrag();
+    void verticalDragPicksATrackOfTheGroup();
+    void verticalDragEscapes();
     void ctrlBypassesSnapping();
     void moveLeavesLockedClipsOut();
     void trimsEachEdge();
@@ -142,6 +144,8 @@ private slots:
 private:
     // Anna: Body, Face; Ben: Body, Face (locked). 100 px/s, 10 s long, playhead at 8 s, a marker at 7 s.
     static std::unique_ptr<TimelineView> makeView();
+    // With kinds: Anna: Body, Gestures (body), Face (face); Ben: Body, Props (body, locked).
+    static std::unique_ptr<TimelineView> makeLayeredView();
 };
 
 std::unique_ptr<TimelineView> TimelineViewTest::makeView()
@@ -220,13 +224,14 @@ void TimelineViewTest::moveDragEmitsSnappedDelta()
     // lands on the nearest frame, 44 (1.4667 s): a delta of 14 frames.
     QVERIFY2(moves.count() >= 2, "moving emits while dragging and once on release");
     for (int i = 0; i < moves.count() - 1; ++i) {
-        QCOMPARE(moves.at(i).at(2).toBool(), false);
+        QCOMPARE(moves.at(i).at(3).toBool(), false);
         QCOMPARE(moves.at(i).at(1).toLongLong() % kFrame, 0);
     }
     const QList<QVariant> last = moves.last();
     QCOMPARE(ids(last.at(0)), QList<int>{1});
     QCOMPARE(last.at(1).toLongLong(), 14 * kFrame);
-    QCOMPARE(last.at(2).toBool(), true);
+    QCOMPARE(last.at(2).toInt(), 0); // a horizontal drag stays on its track
+    QCOMPARE(last.at(3).toBool(), true);
     QCOMPARE(selection.count(), 1); // the press selected Walk
     QCOMPARE(ids(selection.at(0).at(0)), QList<int>{1});
 
@@ -244,12 +249,131 @@ void TimelineViewTest::moveSnapsToOtherClipsEdges()
     // 195 px: Walk's end would be at 4.95 s, 5 px from Sit's start at 5 s: it snaps there.
     drag(view->viewport(), from, from + QPoint(195, 0));
     QCOMPARE(moves.last().at(1).toLongLong(), sec(2));
-    QCOMPARE(moves.last().at(2).toBool(), true);
+    QCOMPARE(moves.last().at(3).toBool(), true);
 
     // Nothing moves before 0: a drag far left stops with Walk's start at 0.
     moves.clear();
     drag(view->viewport(), from, from + QPoint(-400, 0));
     QCOMPARE(moves.last().at(1).toLongLong(), -sec(1));
+}
+
+std::unique_ptr<TimelineView> TimelineViewTest::makeLayeredView()
+{
+    auto view = std::make_unique<TimelineView>();
+    const QString anna = QStringLiteral("Anna"), ben = QStringLiteral("Ben");
+    const QString body = QStringLiteral("body"), face = QStringLiteral("face");
+    view->setTracks({{QStringLiteral("Body"), anna, false, false, false, body},
+                     {QStringLiteral("Gestures"), anna, false, false, false, body},
+                     {QStringLiteral("Face"), anna, false, false, false, face},
+                     {QStringLiteral("Body"), ben, false, false, false, body},
+                     {QStringLiteral("Props"), ben, false, false, true, body}});
+    view->setClips({makeClip(1, 0, QStringLiteral("Walk"), 1, 3, 0.2, 0.3), makeClip(2, 1, QStringLiteral("Nod"), 4, 5),
+                    makeClip(3, 2, QStringLiteral("Smile"), 2, 4), makeClip(4, 3, QStringLiteral("Wave"), 0.5, 2.5)});
+    view->setDuration(sec(10));
+    view->setPixelsPerSecond(100);
+    view->resize(1100, 360);
+    view->show();
+    if (!QTest::qWaitForWindowExposed(view.get()))
+        qWarning("the timeline was not exposed");
+    return view;
+}
+
+void TimelineViewTest::verticalDragPicksATrackOfTheGroup()
+{
+    auto view = makeLayeredView();
+    QWidget* vp = view->viewport();
+    QSignalSpy moves(view.get(), &TimelineView::clipsMoveRequested);
+    const QPoint walk = view->clipRect(1).center();
+    auto yOf = [&](int track) { return view->trackRect(track).center().y(); };
+
+    // Straight down onto Anna's Gestures track: one track, no time change.
+    drag(vp, walk, QPoint(walk.x(), yOf(1)));
+    QCOMPARE(ids(moves.last().at(0)), QList<int>{1});
+    QCOMPARE(moves.last().at(1).toLongLong(), 0);
+    QCOMPARE(moves.last().at(2).toInt(), 1);
+    QCOMPARE(moves.last().at(3).toBool(), true);
+    for (int i = 0; i < moves.count() - 1; ++i)
+        QCOMPARE(moves.at(i).at(3).toBool(), false);
+
+    // Down and right at once: time and track together (0.3 s = 9 frames).
+    moves.clear();
+    drag(vp, walk, QPoint(walk.x() + 30, yOf(1)));
+    QCOMPARE(moves.last().at(1).toLongLong(), 9 * kFrame);
+    QCOMPARE(moves.last().at(2).toInt(), 1);
+
+    // Further down, onto the Face track, Ben's tracks or below them all: held on Gestures, the
+    // last body track of Anna. The group row between the characters counts as the nearest track.
+    for (const int y : {yOf(2), yOf(3), yOf(2) + TimelineView::TrackHeight / 2 + TimelineView::GroupHeight / 2,
+                        view->viewport()->height() + 200}) {
+        moves.clear();
+        drag(vp, walk, QPoint(walk.x(), y));
+        QCOMPARE(moves.last().at(2).toInt(), 1);
+    }
+    // Above the first track: nothing to go to, the clip stays on its track (only a time move can be
+    // asked; here none, so the release asks nothing).
+    moves.clear();
+    drag(vp, walk, QPoint(walk.x(), 2));
+    for (const QList<QVariant>& m : std::as_const(moves))
+        QCOMPARE(m.at(2).toInt(), 0);
+
+    // Ben's Wave: Props below is locked, Anna's tracks above are another group: it stays.
+    const QPoint wave = view->clipRect(4).center();
+    for (const int y : {yOf(4), yOf(1)}) {
+        moves.clear();
+        drag(vp, wave, QPoint(wave.x() + 20, y));
+        QCOMPARE(ids(moves.last().at(0)), QList<int>{4});
+        QCOMPARE(moves.last().at(1).toLongLong(), 6 * kFrame);
+        QCOMPARE(moves.last().at(2).toInt(), 0);
+    }
+
+    // Walk and Nod together: one track down would put Nod on the face track, one up would put Walk
+    // above the first track; only a time move is left. Up from Nod to Body: refused as well.
+    view->setSelectedClips({1, 2});
+    moves.clear();
+    drag(vp, walk, QPoint(walk.x(), yOf(1)));
+    for (const QList<QVariant>& m : std::as_const(moves))
+        QCOMPARE(m.at(2).toInt(), 0);
+    QCOMPARE(view->selectedClips(), (QList<int>{1, 2}));
+    const QPoint nod = view->clipRect(2).center();
+    moves.clear();
+    drag(vp, nod, QPoint(nod.x() + 20, yOf(0)));
+    QCOMPARE(ids(moves.last().at(0)), (QList<int>{1, 2}));
+    QCOMPARE(moves.last().at(2).toInt(), 0);
+}
+
+void TimelineViewTest::verticalDragEscapes()
+{
+    auto view = makeLayeredView();
+    view->setPalette(darkPalette());
+    QWidget* vp = view->viewport();
+    QSignalSpy moves(view.get(), &TimelineView::clipsMoveRequested);
+    const QPoint walk = view->clipRect(1).center();
+    const QRect target = view->clipRect(1).translated(0, view->trackRect(1).top() - view->trackRect(0).top());
+    const QImage before = vp->grab(target).toImage();
+
+    QTest::mousePress(vp, Qt::LeftButton, {}, walk);
+    move(vp, walk + QPoint(0, 12));
+    move(vp, QPoint(walk.x(), view->trackRect(1).center().y()));
+    QCOMPARE(moves.count(), 1);
+    QCOMPARE(moves.last().at(2).toInt(), 1);
+    QCOMPARE(moves.last().at(3).toBool(), false);
+    // Nothing moved the clip (no editor here): a ghost shows where it lands.
+    QApplication::processEvents();
+    const QImage during = vp->grab(target).toImage();
+    QVERIFY2(during != before, "the ghost is drawn on the target track");
+    QDir().mkpath(QStringLiteral(THESPIS_SCREENSHOT_DIR));
+    QVERIFY(view->grab().save(QStringLiteral(THESPIS_SCREENSHOT_DIR "/timeline_view_vertical_drag.png")));
+
+    QTest::keyClick(view.get(), Qt::Key_Escape);
+    QCOMPARE(moves.count(), 2); // asked back: same time, same track, finished
+    QCOMPARE(moves.last().at(1).toLongLong(), 0);
+    QCOMPARE(moves.last().at(2).toInt(), 0);
+    QCOMPARE(moves.last().at(3).toBool(), true);
+    QApplication::processEvents();
+    QCOMPARE(vp->grab(target).toImage(), before); // the ghost is gone
+    move(vp, QPoint(walk.x(), view->trackRect(0).center().y()));
+    QTest::mouseRelease(vp, Qt::LeftButton, {}, walk);
+    QCOMPARE(moves.count(), 2);
 }
 
 void TimelineViewTest::escapeCancelsADrag()
@@ -263,7 +387,8 @@ void TimelineViewTest::escapeCancelsADrag()
     QTest::keyClick(view.get(), Qt::Key_Escape);
     QCOMPARE(moves.count(), 2); // asked back: no change, finished
     QCOMPARE(moves.last().at(1).toLongLong(), 0);
-    QCOMPARE(moves.last().at(2).toBool(), true);
+    QCOMPARE(moves.last().at(2).toInt(), 0);
+    QCOMPARE(moves.last().at(3).toBool(), true);
     move(view->viewport(), from + QPoint(90, 0));
     QTest::mouseRelease(view->viewport(), Qt::LeftButton, {}, from + QPoint(90, 0));
     QCOMPARE(moves.count(), 2); // the rest of the gesture is ignored
