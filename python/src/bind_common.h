@@ -130,5 +130,6 @@ void bindScenario(py::module_& m);
 void bindScene(py::module_& m);    // thespis.scene: character meshes, segments, tags, glTF
 void bindLighting(py::module_& m); // thespis.lighting: SH, probes, the transfer bake
 void bindRender(py::module_& m);   // thespis.render: headless pictures of scenarios
+void bindEdit(py::module_& m);     // thespis.edit: the studio's undoable scenario edits
 
 } // namespace thespis::python

@@ -16,4 +16,5 @@ PYBIND11_MODULE(_thespis, m)
     thespis::python::bindScenario(m);
     thespis::python::bindLighting(m);
     thespis::python::bindRender(m);
+    thespis::python::bindEdit(m);
 }
