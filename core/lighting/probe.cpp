@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <span>
 #include <thread>
 
 #include "lighting/probe.h"
@@ -160,24 +161,21 @@ ImagePoint imagePointOf(ProbeLayout layout, int width, int height, const Vec3d& 
 
 using GaussRule = GaussLegendreRule;
 
-/// ∫∫ f over [u0,u1]×[v0,v1] ∩ unit disc, and the f-weighted centroid.
-struct DiscIntegral {
-    double value = 0, u = 0, v = 0;
-};
 /// Splits [u0, u1] where the disc's edge meets the lines v = v0, v = v1 and at u = ±1, so that on
 /// each piece the clipped v-range has one smooth formula; calls piece(a, b) for each piece with
 /// part of the disc.
 template <class Piece>
 void forEachDiscPiece(double u0, double u1, double v0, double v1, Piece&& piece)
 {
+    // Unused cuts stay at u0 and make empty pieces.
     std::array<double, 8> cuts{u0, u1, -1.0, 1.0, u0, u0, u0, u0};
     size_t count = 4;
     for (double v : {v0, v1})
         if (std::abs(v) < 1.0)
             for (double sign : {-1.0, 1.0})
                 cuts[count++] = sign * std::sqrt(1.0 - v * v);
-    std::sort(cuts.begin(), cuts.begin() + std::ptrdiff_t(count));
-    for (size_t i = 0; i + 1 < count; ++i) {
+    std::sort(cuts.begin(), cuts.end());
+    for (size_t i = 0; i + 1 < cuts.size(); ++i) {
         const double a = std::max(cuts[i], u0), b = std::min(cuts[i + 1], u1);
         if (!(b > a) || std::abs(0.5 * (a + b)) >= 1.0)
             continue;
@@ -186,10 +184,11 @@ void forEachDiscPiece(double u0, double u1, double v0, double v1, Piece&& piece)
             piece(a, b);
     }
 }
+/// ∫∫ f over [u0,u1]×[v0,v1] ∩ unit disc.
 template <class F>
-DiscIntegral integrateOverDisc(double u0, double u1, double v0, double v1, const GaussRule& rule, F&& f)
+double integrateOverDisc(double u0, double u1, double v0, double v1, const GaussRule& rule, F&& f)
 {
-    DiscIntegral sum;
+    double sum = 0;
     forEachDiscPiece(u0, u1, v0, v1, [&](double a, double b) {
         for (size_t i = 0; i < rule.x.size(); ++i) {
             const double u = 0.5 * (a + b) + 0.5 * (b - a) * rule.x[i];
@@ -199,17 +198,10 @@ DiscIntegral integrateOverDisc(double u0, double u1, double v0, double v1, const
                 continue;
             for (size_t j = 0; j < rule.x.size(); ++j) {
                 const double v = 0.5 * (lo + hi) + 0.5 * (hi - lo) * rule.x[j];
-                const double weight = 0.25 * (b - a) * (hi - lo) * rule.w[i] * rule.w[j] * f(u, v);
-                sum.value += weight;
-                sum.u += weight * u;
-                sum.v += weight * v;
+                sum += 0.25 * (b - a) * (hi - lo) * rule.w[i] * rule.w[j] * f(u, v);
             }
         }
     });
-    if (sum.value > 0) {
-        sum.u /= sum.value;
-        sum.v /= sum.value;
-    }
     return sum;
 }
 /// Exact area of [u0,u1]×[v0,v1] ∩ unit disc.
@@ -353,12 +345,16 @@ struct ProbeProjector::Table {
     std::vector<float> weightedBasis; ///< entries × coefficientCount (Ω·Y), empty when too large
     std::vector<double> solidAngle;   ///< per entry
     std::vector<Vec3d> direction;     ///< per entry
+    // Both
+    std::vector<double> inverseGram; ///< coefficientCount², G⁻¹ with G = Σ Ω·y·yᵀ over the sampled pixels
 };
 
 namespace {
 
 constexpr size_t kDenseTableBytes = size_t(256) << 20;
 constexpr int kRowsPerChunk = 8; // fixed work unit, so the sum order does not depend on threads
+constexpr int kGramRowsPerChunk = 64; // the same for the Gram matrix, whose partial sums are n² each
+constexpr double kSingularPivot = 1e-10; // Cholesky pivot / diagonal below which the Gram matrix counts as singular
 constexpr int kLanes = 4;        // independent partial sums per dot product (vectorisable, fixed order)
 
 /// The four folds of a lat-long row (see foldLatLongRow), one array per fold and channel.
@@ -494,23 +490,18 @@ double discJacobian(ProbeLayout layout, double u, double v)
     return r < 1e-8 ? kPi * kPi : kPi * std::sin(kPi * r) / r;
 }
 
-/// Solid angle of pixel (x, y) and the direction its basis values are taken at; false when the
-/// pixel does not see the sphere.
-bool pixelFootprint(ProbeLayout layout, int width, int height, int x, int y, const GaussRule& fine,
-                    double& solidAngle, Vec3d& direction)
+/// Solid angle of the part of the sphere that pixel (x, y) covers (0 off the sphere).
+double pixelSolidAngle(ProbeLayout layout, int width, int height, int x, int y, const GaussRule& fine)
 {
     switch (layout) {
-    case ProbeLayout::LatLong:
-        solidAngle = 2.0 * kPi / width * (std::cos(kPi * y / height) - std::cos(kPi * (y + 1) / height));
-        return directionOfPixel(layout, width, height, x, y, direction);
+    case ProbeLayout::LatLong: return 2.0 * kPi / width * (std::cos(kPi * y / height) - std::cos(kPi * (y + 1) / height));
     case ProbeLayout::VerticalCross: {
         const int faceSize = width / 3;
         if (!crossFaceAt(x / faceSize, y / faceSize))
-            return false;
+            return 0;
         const double a0 = 2.0 * (x % faceSize) / faceSize - 1.0, a1 = a0 + 2.0 / faceSize;
         const double b0 = 2.0 * (y % faceSize) / faceSize - 1.0, b1 = b0 + 2.0 / faceSize;
-        solidAngle = cubeAreaTerm(a1, b1) - cubeAreaTerm(a0, b1) - cubeAreaTerm(a1, b0) + cubeAreaTerm(a0, b0);
-        return directionOfPixel(layout, width, height, x, y, direction);
+        return cubeAreaTerm(a1, b1) - cubeAreaTerm(a0, b1) - cubeAreaTerm(a1, b0) + cubeAreaTerm(a0, b0);
     }
     case ProbeLayout::Angular:
     case ProbeLayout::MirrorBall: {
@@ -518,39 +509,22 @@ bool pixelFootprint(ProbeLayout layout, int width, int height, int x, int y, con
         const double u0 = x * scale - 1.0, u1 = u0 + scale;
         const double v1 = 1.0 - y * scale, v0 = v1 - scale;
         const auto inside = [](double u, double v) { return u * u + v * v <= 1.0; };
-        const bool whole = inside(u0, v0) && inside(u0, v1) && inside(u1, v0) && inside(u1, v1);
-        double centreU = 0.5 * (u0 + u1), centreV = 0.5 * (v0 + v1);
-        if (whole) {
+        if (inside(u0, v0) && inside(u0, v1) && inside(u1, v0) && inside(u1, v1)) {
             // Inside the disc the Jacobian is smooth: a 2×2 Gauss rule (exact to degree 3) on a
             // pixel a few thousandths wide is exact to rounding.
-            solidAngle = 0;
+            const double centreU = 0.5 * (u0 + u1), centreV = 0.5 * (v0 + v1), offset = 0.5 * scale / std::sqrt(3.0);
+            double solidAngle = 0;
             for (double a : {-1.0, 1.0})
-                for (double b : {-1.0, 1.0}) {
-                    const double u = centreU + a * 0.5 * scale / std::sqrt(3.0), v = centreV + b * 0.5 * scale / std::sqrt(3.0);
-                    solidAngle += 0.25 * scale * scale * discJacobian(layout, u, v);
-                }
-        } else if (layout == ProbeLayout::MirrorBall) {
-            solidAngle = 4.0 * discArea(u0, u1, v0, v1);
-            if (!whole && solidAngle > 0) {
-                const DiscIntegral part = integrateOverDisc(u0, u1, v0, v1, fine, [](double, double) { return 1.0; });
-                centreU = part.u;
-                centreV = part.v;
-            }
-        } else {
-            const DiscIntegral part = integrateOverDisc(u0, u1, v0, v1, fine,
-                                                        [&](double u, double v) { return discJacobian(layout, u, v); });
-            solidAngle = part.value;
-            centreU = part.u;
-            centreV = part.v;
+                for (double b : {-1.0, 1.0})
+                    solidAngle += 0.25 * scale * scale * discJacobian(layout, centreU + a * offset, centreV + b * offset);
+            return solidAngle;
         }
-        if (!(solidAngle > 0))
-            return false;
-        const double r = std::min(1.0, std::hypot(centreU, centreV));
-        direction = discDirection(centreU, centreV, discTheta(layout, r));
-        return true;
+        if (layout == ProbeLayout::MirrorBall)
+            return 4.0 * discArea(u0, u1, v0, v1);
+        return integrateOverDisc(u0, u1, v0, v1, fine, [&](double u, double v) { return discJacobian(layout, u, v); });
     }
     }
-    return false;
+    return 0;
 }
 
 /// Runs work(chunk) for every chunk of rows on a few threads; false if stopped.
@@ -577,6 +551,60 @@ bool forEachChunk(int chunks, int threads, std::stop_token stop, Work&& work)
     return !stopped && !stop.stop_requested();
 }
 
+/// gram (n×n, lower triangle) += weight·y·yᵀ.
+void addOuterProduct(std::span<double> gram, const double* y, double weight)
+{
+    const int n = int(std::lround(std::sqrt(double(gram.size()))));
+    for (int i = 0; i < n; ++i) {
+        const double scaled = weight * y[i];
+        double* row = gram.data() + size_t(i) * size_t(n);
+        for (int j = 0; j <= i; ++j)
+            row[j] += scaled * y[j];
+    }
+}
+
+/// Replaces the symmetric matrix whose lower triangle is in gram (n×n) by its full inverse,
+/// through a Cholesky factor; false when a pivot shows it (numerically) singular: the samples do
+/// not pin every basis function down.
+bool invertGram(std::vector<double>& gram, int n)
+{
+    const auto at = [n](std::vector<double>& m, int i, int j) -> double& { return m[size_t(i) * size_t(n) + size_t(j)]; };
+    std::vector<double> factor(gram.size(), 0.0); // L, lower, with G = L·Lᵀ
+    for (int j = 0; j < n; ++j) {
+        double pivot = at(gram, j, j);
+        for (int k = 0; k < j; ++k)
+            pivot -= at(factor, j, k) * at(factor, j, k);
+        if (!(pivot > kSingularPivot * at(gram, j, j)))
+            return false;
+        at(factor, j, j) = std::sqrt(pivot);
+        for (int i = j + 1; i < n; ++i) {
+            double value = at(gram, i, j);
+            for (int k = 0; k < j; ++k)
+                value -= at(factor, i, k) * at(factor, j, k);
+            at(factor, i, j) = value / at(factor, j, j);
+        }
+    }
+    // Column c of G⁻¹ solves L·Lᵀ·x = e_c.
+    std::vector<double> column(static_cast<size_t>(n));
+    for (int c = 0; c < n; ++c) {
+        for (int i = 0; i < n; ++i) {
+            double value = i == c ? 1.0 : 0.0;
+            for (int k = 0; k < i; ++k)
+                value -= at(factor, i, k) * column[size_t(k)];
+            column[size_t(i)] = value / at(factor, i, i);
+        }
+        for (int i = n - 1; i >= 0; --i) {
+            double value = column[size_t(i)];
+            for (int k = i + 1; k < n; ++k)
+                value -= at(factor, k, i) * column[size_t(k)];
+            column[size_t(i)] = value / at(factor, i, i);
+        }
+        for (int i = 0; i < n; ++i)
+            at(gram, i, c) = column[size_t(i)];
+    }
+    return true;
+}
+
 } // namespace
 
 Result<ProbeProjector> ProbeProjector::create(ProbeLayout layout, int width, int height, int order)
@@ -586,13 +614,17 @@ Result<ProbeProjector> ProbeProjector::create(ProbeLayout layout, int width, int
                          "The SH order must be 1 to " + std::to_string(kMaxShOrder) + "; got " + std::to_string(order) + ".");
     if (auto sized = checkSize(layout, width, height); !sized)
         return sized.error();
-    if (layout == ProbeLayout::LatLong && width <= 2 * (order - 1))
-        return makeError(ErrorCode::InvalidArgument, "A latitude–longitude map of width " + std::to_string(width)
-                                                         + " is too small for SH order " + std::to_string(order) + ".");
+    // Fewer rows than bands cannot tell the zonal functions apart (nor, then, can the fit).
+    if (layout == ProbeLayout::LatLong && height < order)
+        return makeError(ErrorCode::InvalidArgument, "A latitude–longitude map of " + std::to_string(width) + "×" + std::to_string(height)
+                                                         + " has too few rows for SH order " + std::to_string(order) + "; it needs at least "
+                                                         + std::to_string(order) + ".");
     auto table = std::make_shared<Table>();
     const int n = shCoefficientCount(order);
+    const size_t nn = size_t(n) * size_t(n);
     table->coefficientCount = n;
-    std::vector<double> basis(static_cast<size_t>(n));
+    const GaussRule fine = gaussLegendre(16);
+    std::vector<double> gram(nn, 0.0); // lower triangle of Σ Ω·y·yᵀ over the sampled pixels
     if (layout == ProbeLayout::LatLong) {
         const int bands = order - 1;
         const int trigCount = 2 * bands + 1;
@@ -612,10 +644,11 @@ Result<ProbeProjector> ProbeProjector::create(ProbeLayout layout, int width, int
         // Fourier coefficients of each basis function along the row, exact from trigCount
         // equally spaced samples (a trigonometric polynomial of degree ≤ bands).
         table->rowMatrix.assign(size_t(height) * size_t(n) * size_t(trigCount), 0.0);
+        std::vector<double> basis(static_cast<size_t>(n));
         std::vector<double> trigAtSample(size_t(trigCount), 1.0); // 1, 2·cos φ, 2·sin φ, …: the DFT weights
         for (int y = 0; y < height; ++y) {
             const double theta = kPi * (y + 0.5) / height;
-            const double rowSolidAngle = 2.0 * kPi / width * (std::cos(kPi * y / height) - std::cos(kPi * (y + 1) / height));
+            const double rowSolidAngle = pixelSolidAngle(layout, width, height, 0, y, fine);
             table->totalSolidAngle += rowSolidAngle * width;
             double* matrix = table->rowMatrix.data() + size_t(y) * size_t(n) * size_t(trigCount);
             for (int s = 0; s < trigCount; ++s) {
@@ -629,34 +662,58 @@ Result<ProbeProjector> ProbeProjector::create(ProbeLayout layout, int width, int
                     for (int i = 0; i < n; ++i)
                         matrix[size_t(k) * size_t(n) + size_t(i)] += basis[size_t(i)] * rowSolidAngle / trigCount * trigAtSample[size_t(k)];
             }
+            // Row k of the matrix is Ω·a_k, a_k the Fourier coefficients of trig_k; over the W
+            // equally spaced columns Σ_x trig_k·trig_k′ = W·δ_kk′ (½·W for k > 0), exactly, since
+            // every product has degree ≤ 2·bands < W.
+            for (int k = 0; k < trigCount; ++k)
+                addOuterProduct(gram, matrix + size_t(k) * size_t(n), (k == 0 ? 1.0 : 0.5) * width / rowSolidAngle);
         }
     } else {
-        const GaussRule fine = gaussLegendre(16);
         table->rowStart.assign(size_t(height) + 1, 0);
         for (int y = 0; y < height; ++y) {
             table->rowStart[size_t(y)] = table->pixelIndex.size();
             for (int x = 0; x < width; ++x) {
-                double solidAngle = 0;
+                const double solidAngle = pixelSolidAngle(layout, width, height, x, y, fine);
+                table->totalSolidAngle += solidAngle;
                 Vec3d direction;
-                if (!pixelFootprint(layout, width, height, x, y, fine, solidAngle, direction))
+                if (!(solidAngle > 0) || !directionOfPixel(layout, width, height, x, y, direction))
                     continue;
                 table->pixelIndex.push_back(uint32_t(size_t(y) * size_t(width) + size_t(x)));
                 table->solidAngle.push_back(solidAngle);
                 table->direction.push_back(direction);
-                table->totalSolidAngle += solidAngle;
             }
         }
         table->rowStart[size_t(height)] = table->pixelIndex.size();
         const size_t entries = table->pixelIndex.size();
-        if (entries * size_t(n) * sizeof(float) <= kDenseTableBytes) {
+        if (entries * size_t(n) * sizeof(float) <= kDenseTableBytes)
             table->weightedBasis.resize(entries * size_t(n));
-            for (size_t e = 0; e < entries; ++e) {
+        // Σ Ω·y·yᵀ costs n²/2 multiply-adds a pixel (a second at order 11 on a 1000² mirror
+        // ball): threads take chunks of rows, each its own partial sum, added in chunk order.
+        const int chunks = (height + kGramRowsPerChunk - 1) / kGramRowsPerChunk;
+        std::vector<double> partialGram(size_t(chunks) * nn, 0.0);
+        const int threads = std::min(chunks, int(std::max(1u, std::thread::hardware_concurrency())));
+        forEachChunk(chunks, threads, {}, [&](int chunk) {
+            std::array<double, kMaxShCoefficients> basis{};
+            const size_t first = table->rowStart[size_t(chunk * kGramRowsPerChunk)];
+            const size_t last = table->rowStart[size_t(std::min(height, (chunk + 1) * kGramRowsPerChunk))];
+            std::span<double> partial(partialGram.data() + size_t(chunk) * nn, nn);
+            for (size_t e = first; e < last; ++e) {
                 evaluateSh(order, table->direction[e], basis);
-                for (int i = 0; i < n; ++i)
-                    table->weightedBasis[e * size_t(n) + size_t(i)] = float(basis[size_t(i)] * table->solidAngle[e]);
+                if (!table->weightedBasis.empty())
+                    for (int i = 0; i < n; ++i)
+                        table->weightedBasis[e * size_t(n) + size_t(i)] = float(basis[size_t(i)] * table->solidAngle[e]);
+                addOuterProduct(partial, basis.data(), table->solidAngle[e]);
             }
-        }
+        });
+        for (int chunk = 0; chunk < chunks; ++chunk)
+            for (size_t i = 0; i < nn; ++i)
+                gram[i] += partialGram[size_t(chunk) * nn + i];
     }
+    if (!invertGram(gram, n))
+        return makeError(ErrorCode::InvalidArgument, "A " + std::to_string(width) + "×" + std::to_string(height) + " "
+                                                         + probeLayoutName(layout) + " map samples the sphere too coarsely for SH order "
+                                                         + std::to_string(order) + "; use a larger map or a lower order.");
+    table->inverseGram = std::move(gram);
     ProbeProjector projector;
     projector.m_layout = layout;
     projector.m_width = width;
@@ -738,12 +795,21 @@ Result<ShRgb> ProbeProjector::project(const HdrImage& image, std::stop_token sto
                                                            : forEachChunk(chunks, threads, stop, projectDenseChunk);
     if (!finished)
         return makeError(ErrorCode::Cancelled, "The probe projection was cancelled.");
-    ShRgb result;
-    result.order = m_order;
+    std::array<std::array<double, kMaxShCoefficients>, 3> sums{};
     for (int chunk = 0; chunk < chunks; ++chunk)
         for (int c = 0; c < 3; ++c)
             for (int i = 0; i < n; ++i)
-                result.channel[size_t(c)][size_t(i)] += partial[size_t(chunk) * stride + size_t(c) * size_t(n) + size_t(i)];
+                sums[size_t(c)][size_t(i)] += partial[size_t(chunk) * stride + size_t(c) * size_t(n) + size_t(i)];
+    ShRgb result;
+    result.order = m_order;
+    for (int c = 0; c < 3; ++c)
+        for (int i = 0; i < n; ++i) {
+            const double* row = table.inverseGram.data() + size_t(i) * size_t(n);
+            double value = 0;
+            for (int j = 0; j < n; ++j)
+                value += row[j] * sums[size_t(c)][size_t(j)];
+            result.channel[size_t(c)][size_t(i)] = value;
+        }
     return result;
 }
 

@@ -95,6 +95,15 @@ private:
 /// order, so that re-projecting a live probe (the AR mirror ball) is one pass of multiply-adds.
 /// Solid angles are exact per pixel (integrated over the pixel's footprint, not the centre
 /// approximation), accumulation is in double.
+///
+/// Each pixel is a sample at its centre (directionOfPixel). The coefficients are the solid-angle
+/// weighted least-squares fit to those samples, c = G⁻¹·Σ_p Ω_p·L_p·y(d_p) with the discrete Gram
+/// matrix G = Σ_p Ω_p·y(d_p)·y(d_p)ᵀ (precomputed, applied in 3·n² multiply-adds). The plain sum
+/// would be the midpoint rule, whose error G − I is about 1e-5 on a 1024×512 lat-long at order 5
+/// and 4e-3 on a mirror ball, whose outer pixels each span degrees; the fit gives a band-limited
+/// map's coefficients back to rounding. A mirror-ball or angular pixel cut by the disc's rim is
+/// sampled only if its centre is on the disc: otherwise it shows mostly what surrounds the ball.
+/// A map too coarse to pin every coefficient down (G singular) is refused.
 class ProbeProjector {
 public:
     static Result<ProbeProjector> create(ProbeLayout layout, int width, int height, int order);
@@ -103,7 +112,7 @@ public:
     int width() const { return m_width; }
     int height() const { return m_height; }
     int order() const { return m_order; }
-    /// Sum of the pixels' solid angles (4π up to the layout's coverage), for tests.
+    /// Solid angle the pixels cover, sampled or not (4π up to the layout's coverage), for tests.
     double totalSolidAngle() const;
 
     /// Projects an image of this projector's size; threads split the rows (the sum is made in a
