@@ -24,8 +24,9 @@ echo "== tests =="
 (cd build && ctest -j "$jobs" --output-on-failure --timeout 600)
 
 echo "== core tests under AddressSanitizer + UndefinedBehaviorSanitizer =="
+# Without CPU dispatch, so that these tests also cover the baseline (non-AVX2) code paths.
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTHESPIS_SANITIZE=address,undefined \
-  -DTHESPIS_BUILD_GUI=OFF -DTHESPIS_BUILD_PYTHON=OFF -DTHESPIS_BUILD_BENCH=OFF \
+  -DTHESPIS_BUILD_GUI=OFF -DTHESPIS_BUILD_PYTHON=OFF -DTHESPIS_BUILD_BENCH=OFF -DTHESPIS_CPU_DISPATCH=OFF \
   -DPython_EXECUTABLE=/usr/bin/python3
 cmake --build build-asan -j "$jobs"
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \

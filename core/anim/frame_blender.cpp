@@ -11,49 +11,58 @@ namespace {
 // The loops below run input by input over all elements: the elements are independent, so the
 // CPU overlaps their work (running per element over the inputs would chain every step).
 
-// Σ wᵢ·xᵢ into out and Σ wᵢ into totals, for elements [first, first + count) of width floats.
+// Σ wᵢ·xᵢ into out and Σ wᵢ into totals, for elements [first, first + count) of Width floats.
+template <int Width>
 void accumulateLinear(std::span<const BlendInput> inputs, float* __restrict out, float* __restrict totals,
-                      int first, int count, std::size_t offset, int width)
+                      int first, int count, std::size_t offset)
 {
-    std::fill_n(out + offset, std::size_t(count) * std::size_t(width), 0.0f);
-    for (const BlendInput& input : inputs) {
-        const float* __restrict x = input.values + offset;
-        const float* __restrict w = input.weights + first;
+    float* __restrict sum = out + offset;
+    float* __restrict total = totals + first;
+    if (inputs.empty()) {
+        std::fill_n(sum, std::size_t(count) * Width, 0.0f);
+        std::fill_n(total, std::size_t(count), 0.0f);
+        return;
+    }
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        const float* __restrict x = inputs[i].values + offset;
+        const float* __restrict w = inputs[i].weights + first;
         for (int e = 0; e < count; ++e) {
             const float we = std::max(w[e], 0.0f);
-            totals[first + e] += we;
-            for (int c = 0; c < width; ++c)
-                out[offset + std::size_t(e * width + c)] += we * x[e * width + c];
+            total[e] = i == 0 ? we : total[e] + we; // the first input starts the sums
+            for (int c = 0; c < Width; ++c)
+                sum[e * Width + c] = i == 0 ? we * x[e * Width + c] : sum[e * Width + c] + we * x[e * Width + c];
         }
     }
 }
 
 // Applies the normalized rule to accumulated sums: divide by W ≥ 1, else fill with rest (or,
 // without filling, divide by any W > 0).
+template <int Width>
 void finishLinear(std::span<const float> rest, float* __restrict out, const float* __restrict totals,
-                  bool fill, int first, int count, std::size_t offset, int width)
+                  bool fill, int first, int count, std::size_t offset)
 {
     for (int e = 0; e < count; ++e) {
         const float total = totals[first + e];
-        float* x = out + offset + std::size_t(e * width);
-        const float* base = rest.data() + offset + std::size_t(e * width);
+        float* x = out + offset + std::size_t(e * Width);
+        const float* base = rest.data() + offset + std::size_t(e * Width);
         if (total >= 1.0f || (!fill && total > 0.0f)) {
             const float inv = 1.0f / total;
-            for (int c = 0; c < width; ++c)
+            for (int c = 0; c < Width; ++c)
                 x[c] *= inv;
         } else {
             const float restWeight = 1.0f - total;
-            for (int c = 0; c < width; ++c)
+            for (int c = 0; c < Width; ++c)
                 x[c] += restWeight * base[c];
         }
     }
 }
 
+template <int Width>
 void blendLinearElements(std::span<const BlendInput> inputs, std::span<const float> rest, std::span<float> out,
-                         float* totals, bool fill, int first, int count, std::size_t offset, int width)
+                         float* totals, bool fill, int first, int count, std::size_t offset)
 {
-    accumulateLinear(inputs, out.data(), totals, first, count, offset, width);
-    finishLinear(rest, out.data(), totals, fill, first, count, offset, width);
+    accumulateLinear<Width>(inputs, out.data(), totals, first, count, offset);
+    finishLinear<Width>(rest, out.data(), totals, fill, first, count, offset);
 }
 
 void overlayLinear(const BlendInput& input, std::span<float> out, int firstElement, int elementCount,
@@ -89,8 +98,8 @@ void blendTail(const FrameLayout& layout, std::span<const BlendInput> inputs, st
                std::span<float> out, float* totals, bool fill)
 {
     const int r = layout.rotationCount(), t = layout.translationCount();
-    blendLinearElements(inputs, rest, out, totals, fill, r, t, layout.translationOffset(), 3);
-    blendLinearElements(inputs, rest, out, totals, fill, r + t, layout.scalarCount(), layout.scalarOffset(), 1);
+    blendLinearElements<3>(inputs, rest, out, totals, fill, r, t, layout.translationOffset());
+    blendLinearElements<1>(inputs, rest, out, totals, fill, r + t, layout.scalarCount(), layout.scalarOffset());
 }
 
 void overlayTail(const FrameLayout& layout, const BlendInput& input, std::span<float> out)
@@ -109,85 +118,135 @@ void addTail(const FrameLayout& layout, const BlendInput& input, std::span<const
 
 } // namespace
 
-void QuaternionBlender::blend(const FrameLayout& layout, std::span<const BlendInput> inputs,
-                              std::span<const float> rest, std::span<float> out, std::span<float> totals,
-                              bool fill) const
+namespace {
+
+// Function multiversioning: the blend's eight-joint loop gets an AVX2 + FMA build, chosen at load
+// time on CPUs that have them, and a baseline build for the others (the only one without
+// THESPIS_CPU_DISPATCH, which is how the sanitizer build tests it).
+#if defined(__x86_64__) && defined(THESPIS_CPU_DISPATCH)
+#define THESPIS_AVX2_CLONE [[gnu::target_clones("arch=x86-64-v3", "default")]]
+#else
+#define THESPIS_AVX2_CLONE
+#endif
+
+/// Adds one input's rotations into the accumulator (see blendRotations); the first input
+/// initializes it.
+template <bool First>
+[[gnu::always_inline]] inline void accumulateRotations(const BlendInput& input, float* __restrict acc, float* __restrict totals,
+                                                       int blocked, int rotations)
 {
     using namespace simd;
-    const int rotations = layout.rotationCount();
-    const int blocked = rotations / 4 * 4; // joints handled four at a time; the rest one by one
-    float* __restrict acc = out.data();    // during accumulation: per block of 4 joints, x[4] y[4] z[4] w[4]
-    float* __restrict total = totals.data();
-    std::fill_n(acc, 4 * std::size_t(rotations), 0.0f);
-    std::fill_n(total, std::size_t(layout.elementCount()), 0.0f);
-    const I4 signBit = {int(0x80000000u), int(0x80000000u), int(0x80000000u), int(0x80000000u)};
-
-    for (const BlendInput& input : inputs) {
-        const float* __restrict q = input.values;
-        const float* __restrict w = input.weights;
-        for (int r = 0; r < blocked; r += 4) {
-            float* a = acc + 4 * std::size_t(r);
-            F4 x, y, z, qw;
-            loadQuats(q + 4 * std::size_t(r), x, y, z, qw);
-            const F4 weight = max(load(w + r), splat(0.0f));
-            F4 ax = load(a), ay = load(a + 4), az = load(a + 8), aw = load(a + 12);
+    const F8 zero = splat<F8>(0.0f);
+    const I8 signBit = (I8)splat<F8>(-0.0f);
+    for (int r = 0; r < blocked; r += 8) {
+        float* a = acc + 4 * std::size_t(r);
+        F8 x, y, z, qw;
+        loadQuats8(input.values + 4 * std::size_t(r), x, y, z, qw);
+        const F8 weight = max(toQuatLanes(load<F8>(input.weights + r)), zero);
+        if constexpr (First) {
+            store(a, weight * x);
+            store(a + 8, weight * y);
+            store(a + 16, weight * z);
+            store(a + 24, weight * qw);
+            store(totals + r, weight);
+        } else {
+            const F8 ax = load<F8>(a), ay = load<F8>(a + 8), az = load<F8>(a + 16), aw = load<F8>(a + 24);
             // Align with the sum so far, so that q and −q (the same rotation) add up, not cancel.
-            const F4 d = ax * x + ay * y + az * z + aw * qw;
-            const F4 s = (F4)((I4)weight ^ ((d < 0.0f) & signBit));
+            const F8 d = (ax * x + ay * y) + (az * z + aw * qw);
+            const F8 s = (F8)((I8)weight ^ ((d < 0.0f) & signBit));
             store(a, ax + s * x);
-            store(a + 4, ay + s * y);
-            store(a + 8, az + s * z);
-            store(a + 12, aw + s * qw);
-            store(total + r, load(total + r) + weight);
-        }
-        for (int r = blocked; r < rotations; ++r) {
-            const std::size_t k = 4 * std::size_t(r);
-            const float we = std::max(w[r], 0.0f);
-            const float d = acc[k] * q[k] + acc[k + 1] * q[k + 1] + acc[k + 2] * q[k + 2] + acc[k + 3] * q[k + 3];
-            const float s = d < 0.0f ? -we : we;
-            for (int c = 0; c < 4; ++c)
-                acc[k + std::size_t(c)] += s * q[k + std::size_t(c)];
-            total[r] += we;
+            store(a + 8, ay + s * y);
+            store(a + 16, az + s * z);
+            store(a + 24, aw + s * qw);
+            store(totals + r, load<F8>(totals + r) + weight);
         }
     }
+    for (int r = blocked; r < rotations; ++r) {
+        const std::size_t k = 4 * std::size_t(r);
+        const float* q = input.values + k;
+        const float weight = std::max(input.weights[r], 0.0f);
+        if constexpr (First) {
+            for (int c = 0; c < 4; ++c)
+                acc[k + std::size_t(c)] = weight * q[c];
+            totals[r] = weight;
+        } else {
+            const float d = (acc[k] * q[0] + acc[k + 1] * q[1]) + (acc[k + 2] * q[2] + acc[k + 3] * q[3]);
+            const float s = d < 0.0f ? -weight : weight;
+            for (int c = 0; c < 4; ++c)
+                acc[k + std::size_t(c)] += s * q[c];
+            totals[r] += weight;
+        }
+    }
+}
 
-    // Rest fill (total < 1, or nothing at all without filling), normalization, back to x y z w.
-    const F4 one = splat(1.0f), zero = splat(0.0f);
-    for (int r = 0; r < blocked; r += 4) {
-        float* a = acc + 4 * std::size_t(r);
-        F4 ax = load(a), ay = load(a + 4), az = load(a + 8), aw = load(a + 12);
-        const F4 t = load(total + r);
-        const I4 needsRest = fill ? (t < one) : (t == zero);
-        F4 rx, ry, rz, rw;
-        loadQuats(rest.data() + 4 * std::size_t(r), rx, ry, rz, rw);
+/// The quaternion blend of all joints. out serves as the accumulator: per block of eight joints
+/// x[8] y[8] z[8] w[8] (simd::loadQuats8's lanes), then the joints left over as x y z w; totals
+/// are in the same lanes until the end. Input by input over all joints, since the joints are
+/// independent and the CPU overlaps their work (joint by joint over the inputs would chain every
+/// step); then, per joint, the rest fill (total < 1, or nothing at all without filling),
+/// normalization, and back to x y z w in joint order.
+THESPIS_AVX2_CLONE
+void blendRotations(std::span<const BlendInput> inputs, const float* __restrict rest, float* __restrict out,
+                    float* __restrict totals, int rotations, bool fill)
+{
+    using namespace simd;
+    const int blocked = rotations / 8 * 8;
+    if (inputs.empty()) {
+        std::fill_n(out, 4 * std::size_t(rotations), 0.0f);
+        std::fill_n(totals, std::size_t(rotations), 0.0f);
+    } else {
+        accumulateRotations<true>(inputs.front(), out, totals, blocked, rotations);
+        for (const BlendInput& input : inputs.subspan(1))
+            accumulateRotations<false>(input, out, totals, blocked, rotations);
+    }
+
+    const F8 one = splat<F8>(1.0f), zero = splat<F8>(0.0f);
+    for (int r = 0; r < blocked; r += 8) {
+        float* a = out + 4 * std::size_t(r);
+        F8 ax = load<F8>(a), ay = load<F8>(a + 8), az = load<F8>(a + 16), aw = load<F8>(a + 24);
+        const F8 t = load<F8>(totals + r);
+        F8 rx, ry, rz, rw;
+        loadQuats8(rest + 4 * std::size_t(r), rx, ry, rz, rw);
+        const I8 needsRest = fill ? (t < one) : (t == zero);
         if (any(needsRest)) { // most joints are fully driven: skip the fill for them
-            const F4 d = ax * rx + ay * ry + az * rz + aw * rw;
-            const F4 restWeight = select(needsRest, select(d < 0.0f, t - one, one - t), zero);
+            const F8 d = (ax * rx + ay * ry) + (az * rz + aw * rw);
+            const F8 restWeight = select(needsRest, select(d < 0.0f, t - one, one - t), zero);
             ax += restWeight * rx;
             ay += restWeight * ry;
             az += restWeight * rz;
             aw += restWeight * rw;
         }
-        const F4 norm2 = ax * ax + ay * ay + az * az + aw * aw;
-        const I4 degenerate = norm2 < splat(1e-24f); // opposite inputs of equal weight: keep rest
-        const F4 inv = one / simd::sqrt(select(degenerate, one, norm2));
-        storeQuats(a, select(degenerate, rx, ax * inv), select(degenerate, ry, ay * inv),
-                   select(degenerate, rz, az * inv), select(degenerate, rw, aw * inv));
+        const F8 norm2 = (ax * ax + ay * ay) + (az * az + aw * aw);
+        const I8 degenerate = norm2 < splat<F8>(1e-24f); // opposite inputs of equal weight: keep rest
+        const F8 inv = reciprocalSqrt(select(degenerate, one, norm2));
+        storeQuats8(a, select(degenerate, rx, ax * inv), select(degenerate, ry, ay * inv), select(degenerate, rz, az * inv),
+                    select(degenerate, rw, aw * inv));
+        store(totals + r, toJointOrder(t));
     }
     for (int r = blocked; r < rotations; ++r) {
-        const std::size_t k = 4 * std::size_t(r);
-        const float t = total[r];
-        const float* base = rest.data() + k;
+        float* q = out + 4 * std::size_t(r);
+        const float* base = rest + 4 * std::size_t(r);
+        const float t = totals[r];
         if (t < 1.0f && (fill || t == 0.0f)) {
-            const float d = acc[k] * base[0] + acc[k + 1] * base[1] + acc[k + 2] * base[2] + acc[k + 3] * base[3];
+            const float d = (q[0] * base[0] + q[1] * base[1]) + (q[2] * base[2] + q[3] * base[3]);
             const float restWeight = d < 0.0f ? t - 1.0f : 1.0f - t;
             for (int c = 0; c < 4; ++c)
-                acc[k + std::size_t(c)] += restWeight * base[c];
+                q[c] += restWeight * base[c];
         }
-        const float norm = std::sqrt(acc[k] * acc[k] + acc[k + 1] * acc[k + 1] + acc[k + 2] * acc[k + 2] + acc[k + 3] * acc[k + 3]);
+        const float norm = std::sqrt((q[0] * q[0] + q[1] * q[1]) + (q[2] * q[2] + q[3] * q[3]));
         for (int c = 0; c < 4; ++c)
-            acc[k + std::size_t(c)] = norm > 1e-12f ? acc[k + std::size_t(c)] / norm : base[c];
+            q[c] = norm > 1e-12f ? q[c] / norm : base[c];
     }
+}
+
+} // namespace
+
+void QuaternionBlender::blend(const FrameLayout& layout, std::span<const BlendInput> inputs,
+                              std::span<const float> rest, std::span<float> out, std::span<float> totals,
+                              bool fill) const
+{
+    const int rotations = layout.rotationCount();
+    blendRotations(inputs, rest.data(), out.data(), totals.data(), rotations, fill);
     blendTail(layout, inputs, rest, out, totals.data(), fill);
 }
 
@@ -223,8 +282,7 @@ void QuaternionBlender::add(const FrameLayout& layout, const BlendInput& input, 
 void LinearBlender::blend(const FrameLayout& layout, std::span<const BlendInput> inputs, std::span<const float> rest,
                           std::span<float> out, std::span<float> totals, bool fill) const
 {
-    std::fill_n(totals.begin(), std::size_t(layout.elementCount()), 0.0f);
-    blendLinearElements(inputs, rest, out, totals.data(), fill, 0, layout.rotationCount(), 0, 4);
+    blendLinearElements<4>(inputs, rest, out, totals.data(), fill, 0, layout.rotationCount(), 0);
     blendTail(layout, inputs, rest, out, totals.data(), fill);
 }
 

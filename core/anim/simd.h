@@ -1,8 +1,8 @@
 #pragma once
-// Four-float SIMD vectors through GCC/Clang vector extensions (SSE on x86-64, NEON on ARM, plain
-// code elsewhere), for the engine's hot loops. Quaternions are stored x y z w per joint; the
-// loops transpose four joints at a time into one vector per component, so that dot products and
-// accumulations are vertical operations.
+// Four- and eight-float SIMD vectors through GCC/Clang vector extensions (SSE or AVX on x86-64,
+// NEON on ARM, plain code elsewhere), for the engine's hot loops. Quaternions are stored x y z w
+// per joint; the loops transpose four or eight joints at a time into one vector per component,
+// so that dot products and accumulations are vertical operations.
 
 #include <cmath>
 #include <cstring>
@@ -14,16 +14,32 @@ namespace thespis::core::anim::simd {
 
 using F4 = float __attribute__((vector_size(16)));
 using I4 = int __attribute__((vector_size(16)));
+using F8 = float __attribute__((vector_size(32))); // see "Eight lanes" below
+using I8 = int __attribute__((vector_size(32)));
 
-inline F4 load(const float* p)
+/// Unaligned load and store of a whole vector, and a vector of one value (F4 unless told).
+template <class V = F4>
+inline V load(const float* p)
 {
-    F4 v;
+    V v;
     std::memcpy(&v, p, sizeof v);
     return v;
 }
-inline void store(float* p, F4 v) { std::memcpy(p, &v, sizeof v); }
-inline F4 splat(float x) { return F4{x, x, x, x}; }
-inline F4 max(F4 a, F4 b) { return a > b ? a : b; }
+template <class V>
+inline void store(float* p, V v)
+{
+    std::memcpy(p, &v, sizeof v);
+}
+template <class V = F4>
+inline V splat(float x)
+{
+    return V{} + x;
+}
+template <class V>
+inline V max(V a, V b)
+{
+    return a > b ? a : b;
+}
 inline F4 sqrt(F4 v)
 {
 #if defined(__SSE__)
@@ -67,5 +83,64 @@ inline void storeQuats(float* quats, F4 x, F4 y, F4 z, F4 w)
     store(quats + 8, c);
     store(quats + 12, d);
 }
+
+// ---- Eight lanes (one AVX register where the function is compiled for AVX) ------------------------
+
+inline F8 select(I8 mask, F8 a, F8 b) { return mask ? a : b; }
+inline bool any(I8 mask)
+{
+    const I4 half = __builtin_shufflevector(mask, mask, 0, 1, 2, 3) | __builtin_shufflevector(mask, mask, 4, 5, 6, 7);
+    return any(half);
+}
+/// 1/√v to float rounding (a few ulps): the hardware's 12-bit estimate and two Newton steps,
+/// several times the throughput of a square root and a division.
+inline F8 reciprocalSqrt(F8 v)
+{
+#if defined(__SSE__)
+    const F4 low = F4(_mm_rsqrt_ps(__m128(F4(__builtin_shufflevector(v, v, 0, 1, 2, 3)))));
+    const F4 high = F4(_mm_rsqrt_ps(__m128(F4(__builtin_shufflevector(v, v, 4, 5, 6, 7)))));
+    F8 estimate = __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
+    const F8 halfV = splat<F8>(0.5f) * v;
+    estimate = estimate * (splat<F8>(1.5f) - halfV * estimate * estimate);
+    return estimate * (splat<F8>(1.5f) - halfV * estimate * estimate);
+#else
+    F8 out;
+    for (int i = 0; i < 8; ++i)
+        out[i] = 1.0f / std::sqrt(v[i]);
+    return out;
+#endif
+}
+
+/// The 4×4 transpose within each 128-bit half (AVX shuffles do not cross halves).
+inline void transposeHalves(F8 a, F8 b, F8 c, F8 d, F8& x, F8& y, F8& z, F8& w)
+{
+    const F8 t0 = __builtin_shufflevector(a, b, 0, 8, 1, 9, 4, 12, 5, 13);
+    const F8 t1 = __builtin_shufflevector(a, b, 2, 10, 3, 11, 6, 14, 7, 15);
+    const F8 t2 = __builtin_shufflevector(c, d, 0, 8, 1, 9, 4, 12, 5, 13);
+    const F8 t3 = __builtin_shufflevector(c, d, 2, 10, 3, 11, 6, 14, 7, 15);
+    x = __builtin_shufflevector(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13);
+    y = __builtin_shufflevector(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15);
+    z = __builtin_shufflevector(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13);
+    w = __builtin_shufflevector(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
+}
+
+/// Loads quaternions [8b, 8b + 8) of an x y z w array as component vectors whose lanes hold the
+/// joints in the order 0 2 4 6 1 3 5 7 (what the in-half transpose gives); per-joint values
+/// (weights) go through toQuatLanes to match, and back through toJointOrder.
+inline void loadQuats8(const float* quats, F8& x, F8& y, F8& z, F8& w)
+{
+    transposeHalves(load<F8>(quats), load<F8>(quats + 8), load<F8>(quats + 16), load<F8>(quats + 24), x, y, z, w);
+}
+inline void storeQuats8(float* quats, F8 x, F8 y, F8 z, F8 w)
+{
+    F8 a, b, c, d;
+    transposeHalves(x, y, z, w, a, b, c, d);
+    store(quats, a);
+    store(quats + 8, b);
+    store(quats + 16, c);
+    store(quats + 24, d);
+}
+inline F8 toQuatLanes(F8 v) { return __builtin_shufflevector(v, v, 0, 2, 4, 6, 1, 3, 5, 7); }
+inline F8 toJointOrder(F8 v) { return __builtin_shufflevector(v, v, 0, 4, 1, 5, 2, 6, 3, 7); }
 
 } // namespace thespis::core::anim::simd

@@ -72,10 +72,15 @@ core::anim::Quat rotationOf(const core::scenario::CharacterRuntime& character, s
 }
 
 // Angle in degrees between two rotations.
+/// The angle between two rotations in degrees. Lengths are divided out: near 1, acos turns a
+/// quaternion length one float ulp short of 1 into 0.05°.
 double angleBetween(const core::anim::Quat& a, const core::anim::Quat& b)
 {
-    const double dot = std::abs(double(a.x) * b.x + double(a.y) * b.y + double(a.z) * b.z + double(a.w) * b.w);
-    return 2.0 * std::acos(std::min(1.0, dot)) * 180.0 / M_PI;
+    const auto dot = [](const core::anim::Quat& p, const core::anim::Quat& q) {
+        return double(p.x) * q.x + double(p.y) * q.y + double(p.z) * q.z + double(p.w) * q.w;
+    };
+    const double cosine = std::abs(dot(a, b)) / std::sqrt(dot(a, a) * dot(b, b));
+    return 2.0 * std::acos(std::min(1.0, cosine)) * 180.0 / M_PI;
 }
 
 std::vector<float> bodyFrame(const core::scenario::CharacterRuntime& character, double t)
