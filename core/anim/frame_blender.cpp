@@ -122,8 +122,9 @@ namespace {
 
 // Function multiversioning: the blend's eight-joint loop gets an AVX2 + FMA build, chosen at load
 // time on CPUs that have them, and a baseline build for the others (the only one without
-// THESPIS_CPU_DISPATCH, which is how the sanitizer build tests it).
-#if defined(__x86_64__) && defined(THESPIS_CPU_DISPATCH)
+// THESPIS_CPU_DISPATCH, which is how the sanitizer build tests it). GCC only: Clang 14 refuses
+// the AVX clone's calls to the inline simd helpers, which it compiles without AVX.
+#if defined(__x86_64__) && defined(THESPIS_CPU_DISPATCH) && !defined(__clang__)
 #define THESPIS_AVX2_CLONE [[gnu::target_clones("arch=x86-64-v3", "default")]]
 #else
 #define THESPIS_AVX2_CLONE
