@@ -829,23 +829,31 @@ void CurveView::wheelEvent(QWheelEvent* event)
     event->accept();
 }
 
+void CurveView::cancelDrag()
+{
+    if (m_drag == Drag::MovingKeys)
+        emit keysMoveRequested(m_dragKeys, QPointF(0, 0), true);
+    else if (m_drag == Drag::Tangent && m_tangentMoved)
+        emit tangentRequested(m_pressKey, m_tangentIn, m_tangentOut, true);
+    else if (m_drag == Drag::Box) {
+        m_selection = m_selectionAtPress;
+        updateMenuActions();
+    }
+    m_drag = Drag::None;
+    m_dragKeys.clear();
+    unsetCursor();
+    update();
+}
+
 void CurveView::keyPressEvent(QKeyEvent* event)
 {
-    if (event->key() == Qt::Key_Escape && m_drag != Drag::None) {
-        // Cancel the gesture: put everything back as it was.
-        if (m_drag == Drag::MovingKeys)
-            emit keysMoveRequested(m_dragKeys, QPointF(0, 0), true);
-        else if (m_drag == Drag::Tangent && m_tangentMoved)
-            emit tangentRequested(m_pressKey, m_tangentIn, m_tangentOut, true);
-        else if (m_drag == Drag::Box) {
-            m_selection = m_selectionAtPress;
-            updateMenuActions();
+    if (m_drag != Drag::None) {
+        if (event->key() == Qt::Key_Escape || event->matches(QKeySequence::Undo)) {
+            cancelDrag();
+            return;
         }
-        m_drag = Drag::None;
-        m_dragKeys.clear();
-        unsetCursor();
-        update();
-        return;
+        if (event->matches(QKeySequence::Redo))
+            return; // nothing to redo while the drag's own edit is open
     }
     if (event->key() == Qt::Key_Delete || event->key() == Qt::Key_Backspace) {
         if (m_selection.isEmpty() || m_drag != Drag::None)
@@ -882,6 +890,15 @@ void CurveView::contextMenuEvent(QContextMenuEvent* event)
 
 bool CurveView::event(QEvent* event)
 {
+    // During a drag, Escape, Undo and Redo belong to the view, not to window actions: an undo under
+    // a drag would pull the document from under the drag's next steps.
+    if (event->type() == QEvent::ShortcutOverride && m_drag != Drag::None) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        if (key->key() == Qt::Key_Escape || key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo)) {
+            event->accept();
+            return true;
+        }
+    }
     if (event->type() == QEvent::ToolTip) {
         // A key's tooltip says where it is exactly; elsewhere there is none.
         auto* help = static_cast<QHelpEvent*>(event);

@@ -112,7 +112,8 @@ signals:
     void keyAddRequested(int curve, QPointF at);
     /// Dragging selected keys: delta (seconds, value) is the total since the drag began, applied
     /// to the keys as they were then. Unfinished while the mouse moves, finished = true once on
-    /// release (Escape: finished with a zero delta). A click without movement emits nothing.
+    /// release (Escape or Ctrl+Z: finished with a zero delta; Undo and Redo do nothing else
+    /// during a drag). A click without movement emits nothing.
     void keysMoveRequested(const QList<thespis::widgets::CurveKeyRef>& keys, QPointF delta, bool finished);
     /// Delete / Backspace (or the context menu) with keys selected. The view then clears its
     /// selection, since the indices no longer name the same keys.
@@ -138,6 +139,8 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
+    /// Ends the gesture in progress and puts everything back as it was.
+    void cancelDrag();
     enum class Drag { None, PendingKey, MovingKeys, PendingBox, Box, Tangent, Pan };
     struct Colors;  // derived from the palette at paint time
     struct Mapping; // (seconds, value) ↔ pixels for the current size and visible range

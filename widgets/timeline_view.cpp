@@ -1126,13 +1126,15 @@ void TimelineView::wheelEvent(QWheelEvent* event)
 
 bool TimelineView::event(QEvent* event)
 {
-    // Keep Ctrl+A, M (and Escape during a drag) for the timeline while it has focus, even if a
-    // window action uses them.
+    // Keep Ctrl+A, M (and Escape, Undo and Redo during a drag) for the timeline while it has
+    // focus, even if a window action uses them: an undo under a drag would pull the document
+    // from under the drag's next steps.
     if (event->type() == QEvent::ShortcutOverride) {
         auto* key = static_cast<QKeyEvent*>(event);
         if (key->matches(QKeySequence::SelectAll)
             || (key->key() == Qt::Key_M && !(key->modifiers() & ~Qt::KeypadModifier))
-            || (key->key() == Qt::Key_Escape && m_drag.mode != DragMode::None)) {
+            || (m_drag.mode != DragMode::None
+                && (key->key() == Qt::Key_Escape || key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo)))) {
             event->accept();
             return true;
         }
@@ -1165,9 +1167,13 @@ void TimelineView::cancelDrag()
 
 void TimelineView::keyPressEvent(QKeyEvent* event)
 {
-    if (event->key() == Qt::Key_Escape && m_drag.mode != DragMode::None) {
-        cancelDrag();
-        return;
+    if (m_drag.mode != DragMode::None) {
+        if (event->key() == Qt::Key_Escape || event->matches(QKeySequence::Undo)) {
+            cancelDrag();
+            return;
+        }
+        if (event->matches(QKeySequence::Redo))
+            return; // nothing to redo while the drag's own edit is open
     }
     if (event->matches(QKeySequence::SelectAll)) {
         const std::vector<char> before = selectionFlags();

@@ -20,7 +20,8 @@
 // EdgeGrip px of an edge to trim, a handle on the top border to change a fade; click selects,
 // Shift/Ctrl+click toggles, a drag on empty lane space is a rubber band; the ruler scrubs; M adds
 // a marker at the playhead; Ctrl+wheel zooms about the mouse, Shift+wheel pans, the wheel scrolls
-// the tracks; Escape during a drag asks back what it requested. Clips on locked tracks can be
+// the tracks; Escape or Undo's keys (Ctrl+Z) during a drag ask back what it requested, and Redo's
+// do nothing until the drag ends, so no window action edits under the drag. Clips on locked tracks can be
 // selected (to inspect them) but emit no move, trim or fade.
 
 #include <QAbstractScrollArea>
@@ -165,7 +166,7 @@ signals:
     /// track of its own group and kind (0 when there is none). Clips on locked tracks are never among
     /// the ids, and the ids are those at the press for the whole drag. Emitted with finished = false
     /// whenever delta or trackDelta changes, then once with finished = true on release if anything
-    /// was requested (a release without movement emits nothing). Escape during a drag asks back:
+    /// was requested (a release without movement emits nothing). Escape (or Ctrl+Z) during a drag asks back:
     /// one finished request with delta 0 and trackDelta 0 (or the original time / length below).
     void clipsMoveRequested(const QList<int>& ids, qint64 delta, int trackDelta, bool finished);
     /// Drag of a clip's edge: the new start or end time (the clip keeps at least one frame).

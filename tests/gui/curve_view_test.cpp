@@ -374,6 +374,29 @@ void CurveViewTest::escapeCancelsAMove()
     const int count = moves.count();
     QTest::mouseRelease(&f.view, Qt::LeftButton, {}, from + QPoint(40, 0));
     QCOMPARE(moves.count(), count); // the release after a cancel emits nothing
+
+    // Ctrl+Z does the same, and the window's Undo and Redo do not fire under the drag.
+    QAction undo(QStringLiteral("Undo")), redo(QStringLiteral("Redo"));
+    undo.setShortcut(QKeySequence::Undo);
+    redo.setShortcut(QKeySequence::Redo);
+    f.view.addAction(&undo);
+    f.view.addAction(&redo);
+    QSignalSpy undone(&undo, &QAction::triggered), redone(&redo, &QAction::triggered);
+    f.view.show();
+    QVERIFY(QTest::qWaitForWindowActive(&f.view));
+    moves.clear();
+    QTest::mousePress(&f.view, Qt::LeftButton, {}, from);
+    QTest::mouseMove(&f.view, from + QPoint(40, 0));
+    QVERIFY(!moves.isEmpty());
+    QTest::keySequence(&f.view, QKeySequence::Redo);
+    QTest::keySequence(&f.view, QKeySequence::Undo);
+    QCOMPARE(undone.count(), 0);
+    QCOMPARE(redone.count(), 0);
+    QVERIFY(moves.last().at(2).toBool());
+    QCOMPARE(moves.last().at(1).toPointF(), QPointF(0, 0));
+    QTest::mouseRelease(&f.view, Qt::LeftButton, {}, from + QPoint(40, 0));
+    QTest::keySequence(&f.view, QKeySequence::Undo);
+    QCOMPARE(undone.count(), 1);
 }
 
 void CurveViewTest::boxSelectsTheKeysInside()

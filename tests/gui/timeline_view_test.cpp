@@ -3,6 +3,7 @@
 // the time under the mouse. Also saves screenshots of a realistic timeline and reports how long a
 // repaint of 1000 clips takes (report only: timings vary too much between machines to assert).
 
+#include <QAction>
 #include <QApplication>
 #include <QContextMenuEvent>
 #include <QDir>
@@ -392,6 +393,32 @@ void TimelineViewTest::escapeCancelsADrag()
     move(view->viewport(), from + QPoint(90, 0));
     QTest::mouseRelease(view->viewport(), Qt::LeftButton, {}, from + QPoint(90, 0));
     QCOMPARE(moves.count(), 2); // the rest of the gesture is ignored
+
+    // Ctrl+Z during a drag asks back as Escape does, and the window's Undo and Redo (which would
+    // pull the document from under the drag) do not fire; after the drag they do again.
+    QAction undo(QStringLiteral("Undo")), redo(QStringLiteral("Redo"));
+    undo.setShortcut(QKeySequence::Undo);
+    redo.setShortcut(QKeySequence::Redo);
+    view->addAction(&undo);
+    view->addAction(&redo);
+    QSignalSpy undone(&undo, &QAction::triggered), redone(&redo, &QAction::triggered);
+    view->show();
+    QVERIFY(QTest::qWaitForWindowActive(view.get()));
+    moves.clear();
+    QTest::mousePress(view->viewport(), Qt::LeftButton, {}, from);
+    move(view->viewport(), from + QPoint(60, 0));
+    QCOMPARE(moves.count(), 1);
+    QTest::keySequence(view.get(), QKeySequence::Redo);
+    QTest::keySequence(view.get(), QKeySequence::Undo);
+    QCOMPARE(undone.count(), 0);
+    QCOMPARE(redone.count(), 0);
+    QCOMPARE(moves.count(), 2);
+    QCOMPARE(moves.last().at(1).toLongLong(), 0);
+    QCOMPARE(moves.last().at(3).toBool(), true);
+    QTest::mouseRelease(view->viewport(), Qt::LeftButton, {}, from + QPoint(60, 0));
+    QCOMPARE(moves.count(), 2);
+    QTest::keySequence(view.get(), QKeySequence::Undo);
+    QCOMPARE(undone.count(), 1);
 }
 
 void TimelineViewTest::ctrlBypassesSnapping()
