@@ -153,21 +153,8 @@ core::Result<void> Document::saveAs(const QString& path)
     const QFileInfo info(path);
     core::scenario::Scenario saved = m_scenario;
     const std::filesystem::path oldBase = toFsPath(m_baseDir), newBase = toFsPath(info.absolutePath());
-    if (oldBase != newBase) {
-        // Relative paths (clips, models, bakes, the probe) must name the same files from the new folder.
-        auto rebase = [&](std::string& relative) {
-            if (relative.empty() || std::filesystem::path(relative).is_absolute())
-                return;
-            relative = (oldBase / relative).lexically_normal().lexically_relative(newBase).generic_string();
-        };
-        for (core::scenario::Character& character : saved.characters) {
-            rebase(character.model);
-            rebase(character.bake);
-            for (core::scenario::ClipAsset& clip : character.clips)
-                rebase(clip.file);
-        }
-        rebase(saved.lighting.probe);
-    }
+    // Relative paths (clips, models, bakes, the probe) must name the same files from the new folder.
+    core::scenario::rebasePaths(saved, oldBase, newBase);
     if (auto written = core::scenario::saveScenario(toFsPath(info.absoluteFilePath()), saved); !written) {
         core::Error error = written.error();
         error.detail = (error.detail.empty() ? std::string() : error.detail + "; ") + "file "
@@ -175,6 +162,10 @@ core::Result<void> Document::saveAs(const QString& path)
         return error;
     }
     m_scenario = std::move(saved);
+    if (oldBase != newBase) // the undo history must still fit the document
+        for (int i = 0; i < m_undoStack->count(); ++i)
+            if (auto* command = dynamic_cast<const EditCommand*>(m_undoStack->command(i)))
+                const_cast<EditCommand*>(command)->rebasePaths(oldBase, newBase);
     m_baseDir = info.absolutePath();
     setFilePath(info.absoluteFilePath());
     m_undoStack->setClean();

@@ -261,4 +261,21 @@ bool Edit::changesNothing() const
     return true;
 }
 
+void Edit::rebasePaths(const std::filesystem::path& from, const std::filesystem::path& to)
+{
+    const auto rebaseClip = [&](std::optional<scenario::ClipAsset>& clip) {
+        if (clip)
+            clip->file = scenario::rebasedPath(clip->file, from, to);
+    };
+    for (Change& change : m_changes) {
+        if (auto* clip = std::get_if<ClipChange>(&change)) {
+            rebaseClip(clip->before);
+            rebaseClip(clip->after);
+        } else if (auto* bake = std::get_if<CharacterBakeChange>(&change)) {
+            bake->before = scenario::rebasedPath(bake->before, from, to);
+            bake->after = scenario::rebasedPath(bake->after, from, to);
+        }
+    }
+}
+
 } // namespace thespis::core::edit

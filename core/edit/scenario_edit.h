@@ -11,6 +11,7 @@
 // was made for another state of the document); on any failure the changes already applied are
 // undone, so the scenario is left exactly as it was.
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <variant>
@@ -108,6 +109,9 @@ public:
     Edit stepTo(const Edit& wanted) const;
     /// True when applying the edit changes nothing (every change replaces a value by an equal one).
     bool changesNothing() const;
+    /// Rewrites the file paths the edit carries (clips, bakes) as scenario::rebasePaths() does the
+    /// document's, so that it still fits the document after a save to another folder.
+    void rebasePaths(const std::filesystem::path& from, const std::filesystem::path& to);
 
     bool operator==(const Edit&) const = default;
 

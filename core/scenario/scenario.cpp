@@ -2,6 +2,24 @@
 
 namespace thespis::core::scenario {
 
+std::string rebasedPath(const std::string& path, const std::filesystem::path& from, const std::filesystem::path& to)
+{
+    if (path.empty() || std::filesystem::path(path).is_absolute() || from == to)
+        return path;
+    return (from / path).lexically_normal().lexically_relative(to).generic_string();
+}
+
+void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const std::filesystem::path& to)
+{
+    for (Character& character : scenario.characters) {
+        character.model = rebasedPath(character.model, from, to);
+        character.bake = rebasedPath(character.bake, from, to);
+        for (ClipAsset& clip : character.clips)
+            clip.file = rebasedPath(clip.file, from, to);
+    }
+    scenario.lighting.probe = rebasedPath(scenario.lighting.probe, from, to);
+}
+
 const Character* Scenario::findCharacter(const std::string& characterName) const
 {
     for (const Character& character : characters)

@@ -6,6 +6,7 @@
 // Times are exact integer ticks (util/tick.h). Fields this version does not know are kept in
 // `extra` and written back unchanged.
 
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -169,5 +170,11 @@ struct Scenario {
     const Character* findCharacter(const std::string& name) const;
     const NamedMask* findMask(const std::string& name) const;
 };
+
+/// A file path relative to folder `from`, rewritten to name the same file relative to folder `to`
+/// (saving a scenario to another folder). Empty and absolute paths are returned as they are.
+std::string rebasedPath(const std::string& path, const std::filesystem::path& from, const std::filesystem::path& to);
+/// rebasedPath() on every file path of the scenario: models, bakes, clips and the light probe.
+void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const std::filesystem::path& to);
 
 } // namespace thespis::core::scenario

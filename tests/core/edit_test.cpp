@@ -517,6 +517,35 @@ TEST(DocumentEdits, CharacterBakesAreCheckedAndNeverMerge)
     EXPECT_TRUE(setCharacterBake(s, 0, "").value().changesNothing());
 }
 
+TEST(DocumentEdits, PathsRebaseWithTheDocument)
+{
+    // Saved to another folder, the document's relative paths are rewritten; the undo history's
+    // edits must be rewritten the same way, or their inverses no longer fit.
+    EXPECT_EQ(rebasedPath("bakes/a.prt", "/work/show", "/work/show/sub"), "../bakes/a.prt");
+    EXPECT_EQ(rebasedPath("../clips/walk.bvh", "/work/show/sub", "/work/show"), "clips/walk.bvh");
+    EXPECT_EQ(rebasedPath("/data/walk.bvh", "/work/show", "/elsewhere"), "/data/walk.bvh");
+    EXPECT_EQ(rebasedPath("", "/work/show", "/elsewhere"), "");
+
+    Scenario s = swingScenario();
+    s.lighting.probe = "probes/sky.hdr";
+    const Scenario original = s;
+    Edit bake = applied(s, setCharacterBake(s, 0, "bakes/a.prt"));
+    Scenario saved = s;
+    rebasePaths(saved, "/work/show", "/work/show/sub");
+    EXPECT_EQ(saved.characters[0].bake, "../bakes/a.prt");
+    EXPECT_EQ(saved.lighting.probe, "../probes/sky.hdr");
+    for (std::size_t c = 0; c < saved.characters.size(); ++c)
+        for (std::size_t k = 0; k < saved.characters[c].clips.size(); ++k)
+            EXPECT_EQ(saved.characters[c].clips[k].file, rebasedPath(s.characters[c].clips[k].file, "/work/show", "/work/show/sub"));
+    EXPECT_FALSE(bake.inverse().apply(saved).ok()); // made for the old folder
+    bake.rebasePaths("/work/show", "/work/show/sub");
+    ASSERT_TRUE(bake.inverse().apply(saved).ok());
+    Scenario expected = original;
+    rebasePaths(expected, "/work/show", "/work/show/sub");
+    EXPECT_EQ(saved, expected);
+    EXPECT_EQ(saved.characters[0].bake, "");
+}
+
 TEST(DocumentEdits, GesturesAreChecked)
 {
     Scenario s = swingScenario();

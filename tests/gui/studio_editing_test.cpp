@@ -468,9 +468,26 @@ void StudioEditingTest::saveAndReopenGiveTheSameDocument()
     QVERIFY(m_window->isWindowModified());
     const QString path = m_dir.filePath(QStringLiteral("sub/saved.thespis"));
     QDir().mkpath(m_dir.filePath(QStringLiteral("sub")));
+    QVERIFY(document.edit(core::edit::setCharacterBake(document.scenario(), 0, "bakes/made-here.prt"), QStringLiteral("Bake")));
+    const QString bakeFile = QDir(document.baseDir()).absoluteFilePath(QStringLiteral("bakes/made-here.prt"));
     QVERIFY(m_window->saveAs(path));
     QVERIFY(!m_window->isWindowModified());
     const core::scenario::Scenario saved = document.scenario();
+    // The same file, named from the new folder.
+    QCOMPARE(QDir::cleanPath(QDir(document.baseDir()).absoluteFilePath(QString::fromStdString(saved.characters[0].bake))), bakeFile);
+
+    // The history still fits the document saved elsewhere: undo and redo the bake, then the move.
+    document.undoStack()->undo();
+    QCOMPARE(document.scenario().characters[0].bake, std::string());
+    document.undoStack()->redo();
+    QVERIFY(document.scenario() == saved);
+    document.undoStack()->undo();
+    document.undoStack()->undo();
+    QCOMPARE(document.undoStack()->index(), 0);
+    document.undoStack()->redo();
+    document.undoStack()->redo();
+    QVERIFY(document.scenario() == saved);
+
     QVERIFY(m_window->openScenario(path));
     QVERIFY(m_window->document()->scenario() == saved);
 }
