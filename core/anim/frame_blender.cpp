@@ -116,10 +116,6 @@ void addTail(const FrameLayout& layout, const BlendInput& input, std::span<const
     addLinear(input, reference, out, r + t, layout.scalarCount(), layout.scalarOffset(), 1);
 }
 
-} // namespace
-
-namespace {
-
 // Function multiversioning: the blend's eight-joint loop gets an AVX2 + FMA build, chosen at load
 // time on CPUs that have them, and a baseline build for the others (the only one without
 // THESPIS_CPU_DISPATCH, which is how the sanitizer build tests it). GCC only: Clang 14 refuses
