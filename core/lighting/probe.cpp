@@ -17,7 +17,6 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
-#include <span>
 #include <thread>
 
 #include "lighting/probe.h"
@@ -552,12 +551,11 @@ bool forEachChunk(int chunks, int threads, std::stop_token stop, Work&& work)
 }
 
 /// gram (n×n, lower triangle) += weight·y·yᵀ.
-void addOuterProduct(std::span<double> gram, const double* y, double weight)
+void addOuterProduct(double* gram, int n, const double* y, double weight)
 {
-    const int n = int(std::lround(std::sqrt(double(gram.size()))));
     for (int i = 0; i < n; ++i) {
         const double scaled = weight * y[i];
-        double* row = gram.data() + size_t(i) * size_t(n);
+        double* row = gram + size_t(i) * size_t(n);
         for (int j = 0; j <= i; ++j)
             row[j] += scaled * y[j];
     }
@@ -666,7 +664,7 @@ Result<ProbeProjector> ProbeProjector::create(ProbeLayout layout, int width, int
             // equally spaced columns Σ_x trig_k·trig_k′ = W·δ_kk′ (½·W for k > 0), exactly, since
             // every product has degree ≤ 2·bands < W.
             for (int k = 0; k < trigCount; ++k)
-                addOuterProduct(gram, matrix + size_t(k) * size_t(n), (k == 0 ? 1.0 : 0.5) * width / rowSolidAngle);
+                addOuterProduct(gram.data(), n, matrix + size_t(k) * size_t(n), (k == 0 ? 1.0 : 0.5) * width / rowSolidAngle);
         }
     } else {
         table->rowStart.assign(size_t(height) + 1, 0);
@@ -696,13 +694,13 @@ Result<ProbeProjector> ProbeProjector::create(ProbeLayout layout, int width, int
             std::array<double, kMaxShCoefficients> basis{};
             const size_t first = table->rowStart[size_t(chunk * kGramRowsPerChunk)];
             const size_t last = table->rowStart[size_t(std::min(height, (chunk + 1) * kGramRowsPerChunk))];
-            std::span<double> partial(partialGram.data() + size_t(chunk) * nn, nn);
+            double* partial = partialGram.data() + size_t(chunk) * nn;
             for (size_t e = first; e < last; ++e) {
                 evaluateSh(order, table->direction[e], basis);
                 if (!table->weightedBasis.empty())
                     for (int i = 0; i < n; ++i)
                         table->weightedBasis[e * size_t(n) + size_t(i)] = float(basis[size_t(i)] * table->solidAngle[e]);
-                addOuterProduct(partial, basis.data(), table->solidAngle[e]);
+                addOuterProduct(partial, n, basis.data(), table->solidAngle[e]);
             }
         });
         for (int chunk = 0; chunk < chunks; ++chunk)
