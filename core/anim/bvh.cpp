@@ -13,6 +13,7 @@
 
 #include "anim/bvh_naming.h"
 #include "anim/hanim.h"
+#include "anim/rig_orientation.h"
 #include "util/file_io.h"
 
 namespace thespis::core::anim::bvh {
@@ -654,6 +655,32 @@ std::vector<double> rotationRanges(const Motion& motion, std::size_t jointCount,
     return range;
 }
 
+/// Largest rotation of any joint between two frames.
+double largestChange(const Motion& motion, std::size_t jointCount, std::size_t floatCount, int a, int b)
+{
+    double change = 0;
+    for (std::size_t j = 0; j < jointCount; ++j) {
+        const float* p = motion.frames.data() + std::size_t(a) * floatCount + 4 * j;
+        const float* q = motion.frames.data() + std::size_t(b) * floatCount + 4 * j;
+        change = std::max(change, angleBetween(Quatd{p[0], p[1], p[2], p[3]}, Quatd{q[0], q[1], q[2], q[3]}));
+    }
+    return change;
+}
+
+/// True when the first frame is a calibration pose the file opens with (the T-pose of CMU's MB2
+/// releases) rather than motion: from it to the second frame some joint turns by more than 20°,
+/// and by more than four times what any joint turns between the next frames.
+bool firstFrameIsCalibration(const Motion& motion, std::size_t jointCount, std::size_t floatCount)
+{
+    if (motion.frameCount < 3)
+        return false;
+    const double jump = largestChange(motion, jointCount, floatCount, 0, 1);
+    double usual = 0;
+    for (int f = 1; f + 1 < std::min(motion.frameCount, 12); ++f)
+        usual = std::max(usual, largestChange(motion, jointCount, floatCount, f, f + 1));
+    return jump > 20.0 * std::numbers::pi / 180.0 && jump > 4.0 * usual;
+}
+
 bool reachesBody(const std::set<std::string, std::less<>>& mapped)
 {
     auto all = [&](std::initializer_list<std::string_view> names) {
@@ -831,6 +858,12 @@ Result<ImportedClip> parse(std::string_view text, const ImportOptions& options, 
         return motion.error();
 
     Naming naming = nameJoints(h, *motion, floatCount, options);
+    naming.report.frameCount = motion->frameCount;
+    naming.report.calibrationFrame = firstFrameIsCalibration(*motion, jointCount, floatCount);
+    if (naming.report.calibrationFrame && options.dropCalibrationFrame) {
+        motion->frames.erase(motion->frames.begin(), motion->frames.begin() + std::ptrdiff_t(floatCount));
+        --motion->frameCount;
+    }
 
     std::vector<Joint> joints;
     joints.reserve(jointCount);
@@ -849,9 +882,21 @@ Result<ImportedClip> parse(std::string_view text, const ImportOptions& options, 
                 joint.rotationOrder += char('X' + axisOf(c));
         joints.push_back(std::move(joint));
     }
-    auto skeleton = Skeleton::create(std::move(joints));
+    auto skeleton = Skeleton::create(joints);
     if (!skeleton)
         return makeError(ErrorCode::CorruptData, "The BVH skeleton is not valid: " + skeleton.error().message);
+    // A body lying down or facing away (a Z-up export) is stood up in H-Anim's axes.
+    if (options.upright && naming.report.isBody) {
+        const AxisTurn turn = uprightTurn(*skeleton);
+        if (!turn.isIdentity()) {
+            applyTurn(turn, joints);
+            applyTurn(turn, *skeleton->frameLayout(), motion->frames);
+            skeleton = Skeleton::create(std::move(joints));
+            if (!skeleton)
+                return makeError(ErrorCode::Internal, "Turning the BVH skeleton upright broke it: " + skeleton.error().message);
+            naming.report.turnedFrom = turn.description;
+        }
+    }
     for (std::size_t j = 0; j < jointCount; ++j) {
         const int element = skeleton->translationElement(int(j));
         if ((element >= 0 ? int(skeleton->frameLayout()->floatOffset(element)) : -1) != translationOffset[j])
@@ -866,7 +911,6 @@ Result<ImportedClip> parse(std::string_view text, const ImportOptions& options, 
     ImportedClip imported{std::move(*skeleton), std::move(*clip), std::move(naming.report)};
     imported.report.jointCount = int(jointCount);
     imported.report.channelCount = h.channelCount;
-    imported.report.frameCount = motion->frameCount;
     imported.report.frameTime = motion->frameTime;
     imported.report.extraFrameLines = motion->extraFrameLines;
     return imported;

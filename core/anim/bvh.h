@@ -8,7 +8,8 @@
 // report, never dropped silently. A file that is not a body (e.g. a face rig) imports with its
 // own joint names. Rotations become quaternions in each joint's parent frame (BVH rest pose =
 // identity); the root's (and any other 6-channel joint's) position becomes a translation
-// element. Values stay in the file's units.
+// element. Values stay in the file's units; a body lying down or facing away in the file is
+// stood up in H-Anim's axes (ImportOptions::upright).
 
 #include <filesystem>
 #include <map>
@@ -31,6 +32,11 @@ struct ImportOptions {
     bool mapToHAnim = true;              ///< rename joints onto H-Anim names
     std::optional<JointMapping> mapping; ///< user table; replaces the built-in tables
     std::optional<double> frameRate;     ///< overrides the header's Frame Time (e.g. CMU 77_02 is 60 fps)
+    /// Stand a body that lies down or faces away (a Z-up export) up in H-Anim's axes (+Y up,
+    /// facing +Z), by quarter turns (anim/rig_orientation.h).
+    bool upright = true;
+    /// Leave out a first frame that is a calibration pose (ImportReport::calibrationFrame).
+    bool dropCalibrationFrame = false;
 };
 
 struct ImportReport {
@@ -42,6 +48,10 @@ struct ImportReport {
     double frameTime = 0;              ///< "Frame Time:" of the header, seconds
     int extraFrameLines = 0;           ///< frame lines past "Frames:", well-formed but skipped
     std::vector<std::string> unmapped; ///< file joint names that kept their own name
+    std::string turnedFrom;            ///< how the body lay before it was stood up ("+Z up, facing −Y"), or empty
+    /// The first frame is a calibration pose (CMU's MB2 T-pose): it jumps to the second by far
+    /// more than the motion moves. Left out with ImportOptions::dropCalibrationFrame.
+    bool calibrationFrame = false;
 };
 
 struct ImportedClip {

@@ -1,41 +1,116 @@
 #pragma once
-// Plays a frame of one skeleton on another by joint name: the scenario's animation skeleton
-// (H-Anim) drives a character's own skeleton (a glTF rig mapped onto H-Anim names). Both follow
-// the world-aligned rest convention (identity rotation = rest pose, rest frames aligned with the
-// world), so a joint's rotation carries over unchanged; joints the source lacks stay at rest.
-// Translations are scaled by the ratio of the roots' rest heights, so a shorter character does
-// not float or sink. Built once, applied per frame without allocation.
+// Plays a frame of one skeleton on another by joint name: a motion capture rig's frames on the
+// scenario's animation skeleton (H-Anim), that skeleton's frames on a character's own rig (a glTF
+// rig mapped onto H-Anim names). Both follow the world-aligned rest convention (identity rotation
+// = rest pose, rest frames aligned with the world), but their rest *shapes* differ: a CMU rig
+// rests in a T-pose with its legs apart, H-Anim with its arms at its sides. So each target bone
+// is turned to point where the source's bone of the same name points (its rest direction is
+// aligned once, by the smallest rotation taking the target's rest bone direction onto the
+// source's), and the rotations between are found from the source's own chain, so that source
+// joints the target lacks (CMU's LHipJoint, a second spine joint) still move what is below them.
+// Target joints the source lacks keep their rest rotation relative to their parent.
+//
+// The body is placed by its hips (else by its highest mapped joint, normally humanoid_root): the
+// target's hips follow the source's, scaled by the bodies' size ratio (leg lengths; else the
+// source's unit) from where the source stands at rest, so the legs hang from the right place
+// whatever the pelvis above them is like. A rig whose rest pose hangs from its root at y = 0 (CMU) is taken to
+// stand with its lowest foot joint as high above the ground as the target's (scaled), so the
+// scaled motion keeps the target's feet on the ground. Given where the source's feet stand
+// (RetargetOptions::sourcePlantedFeet), each frame's feet are also set as high as the source's,
+// scaled, so a planted foot stays planted on bodies of other proportions.
+//
+// Built once; apply() allocates nothing and, where the two skeletons agree (the same rig), copies
+// rotations exactly.
 
+#include <cstdint>
+#include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "anim/skeleton.h"
 
 namespace thespis::core::anim {
 
+struct RetargetOptions {
+    /// Target units per source unit for the body's motion. 0: from the bodies — the ratio of
+    /// their leg lengths when both have legs, else sourceUnit (a target in metres), else the
+    /// ratio of the rest heights of two roots of the same name, else 1.
+    double scale = 0;
+    /// Metres per source unit (e.g. 0.01 for centimetres, CMU's 0.0564), 0 when unknown. Used when
+    /// a body has no legs to measure.
+    double sourceUnit = 0;
+    /// How high the source's feet (footHeight() of its foot joints, body_measure.h) are when they
+    /// stand on its floor, in source units. With it, every frame's target feet are set as high
+    /// over the target's floor as the source's are over its own, scaled (never below it): a
+    /// planted foot stays on the ground whatever the bodies' proportions. Without it, a source that stands on y = 0 at
+    /// rest gives its own rest feet height; one that does not (motion capture hanging from its
+    /// root) is placed by its hips alone. clip_retarget.h finds it from a whole clip.
+    std::optional<double> sourcePlantedFeet;
+};
+
 class FrameRetarget {
 public:
+    enum class ScaleSource { Given, Legs, Unit, RootHeight, None };
+
     FrameRetarget() = default;
-    FrameRetarget(const Skeleton& from, const Skeleton& to);
+    FrameRetarget(const Skeleton& from, const Skeleton& to, const RetargetOptions& options = {});
 
     /// Target joints that found a source joint of the same name.
     int mappedJointCount() const { return m_mappedJoints; }
+    /// Target units per source unit for the body's motion, and how it was found.
+    double scale() const { return m_scale; }
+    ScaleSource scaleSource() const { return m_scaleSource; }
     /// `toFrame` has the target layout's floatCount().
     void apply(std::span<const float> fromFrame, std::span<float> toFrame) const;
 
 private:
-    struct Copy {
-        std::size_t from = 0, to = 0;
+    // A mapped target rotation: local = before · conj(Π up) · (Π down) · after, with up / down
+    // the source rotations from the two joints' common ancestor down to the source joint of the
+    // nearest mapped target ancestor (up) and to the joint's own source joint (down).
+    struct RotationMap {
+        std::size_t to = 0;
+        Quat before, after;
+        bool hasBefore = false, hasAfter = false;
+        std::uint32_t upBegin = 0, upEnd = 0, downBegin = 0, downEnd = 0; // into m_path
     };
+    // A step of forward kinematics down a chain: the joint's rotation and its offset from its
+    // parent (a translation element, or its rest offset), as float offsets in a frame.
+    struct ChainStep {
+        std::size_t rotation = 0;
+        int translation = -1;
+        Vec3 offset;
+    };
+    static ChainStep chainStep(const Skeleton& skeleton, int joint);
+    /// Position of a chain's last joint: from the first joint's translation (`fromOrigin`: the
+    /// source's root) or relative to the first joint.
+    static Vec3 chainEnd(std::span<const ChainStep> chain, std::span<const float> frame, bool fromOrigin);
     struct TranslationCopy {
         std::size_t from = 0, to = 0;
-        Vec3 fromRest, toRest; ///< offsets the scaled motion is measured from and added to
+        Vec3 add; ///< to = from · scale + add
     };
-    std::vector<Copy> m_rotations;            ///< float offsets of mapped rotations
+
+    std::vector<RotationMap> m_rotations;
+    std::vector<std::size_t> m_path;          ///< float offsets of source rotations
     std::vector<std::size_t> m_restRotations; ///< float offsets of target rotations left at rest
+    // The body's placement: points (both hips, else the anchor) as chains in the source from its
+    // root, and in the target from the joint whose translation is written.
+    std::vector<ChainStep> m_sourceSteps, m_targetSteps;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> m_sourceChains, m_targetChains;
+    std::size_t m_placedTranslation = 0; ///< float offset of the translation written
+    Vec3 m_placeAdd;                     ///< it is source points · scale + add − target points
+    float m_placedBaseY = 0;             ///< world height of the placed joint's parent at rest
+    // Feet: chains to every foot joint (source from its root, target from the placed joint), and
+    // the heights that keep a planted foot on the ground.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> m_sourceFeet, m_targetFeet;
+    static constexpr std::size_t kMaxFootJoints = 64; ///< more, and the feet are not matched
+    bool m_matchFeet = false;
+    float m_sourcePlanted = 0, m_targetFeetRest = 0, m_sourceSoftness = 1, m_targetSoftness = 1;
     std::vector<TranslationCopy> m_translations;
     std::vector<std::pair<std::size_t, Vec3>> m_restTranslations;
-    float m_scale = 1.0f;
+    float m_scaleF = 1.0f;
+    double m_scale = 1.0;
+    ScaleSource m_scaleSource = ScaleSource::None;
     int m_mappedJoints = 0;
 };
 

@@ -1,4 +1,5 @@
 #include "scene/gltf_character.h"
+#include "scene/rig_repair.h"
 
 #include <algorithm>
 #include <cctype>
@@ -1245,6 +1246,12 @@ Result<Character> loadGltfCharacter(const std::filesystem::path& path, const Glt
     if (Result<void> built = buildClips(import, animations, character); !built)
         return built.error();
     warnAboutIgnoredChannels(ignored, character.warnings);
+    if (options.standardRig) {
+        for (const std::string& foot : attachIkFeet(character, &automaticHAnimName))
+            character.warnings.push_back("The IK foot " + foot + " now hangs from its knee, so that motion made for other bodies moves it.");
+        if (const std::string was = turnToFaceForward(character); !was.empty())
+            character.warnings.push_back("The model stood " + was + "; it is turned to stand +Y up facing +Z, as H-Anim does.");
+    }
 
     if (Result<void> valid = character.validate(); !valid)
         return makeError(ErrorCode::Internal, "The character read from " + file->name + " is inconsistent.",

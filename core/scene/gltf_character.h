@@ -75,6 +75,9 @@ struct GltfCharacterOptions {
     double clipFrameRate = 30.0; ///< animations are resampled at this rate
     /// Decode the base colour textures (off: materials keep their colours, no textures).
     bool loadTextures = true;
+    /// Stand the rig as H-Anim does (+Y up, facing +Z) and hang IK-control feet from their
+    /// knees (rig_repair.h), so that any H-Anim motion plays on it. Off: the file's rig as it is.
+    bool standardRig = true;
 };
 
 /// The H-Anim name the automatic mapping gives a source joint name on its own, or "" when it

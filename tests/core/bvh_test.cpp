@@ -117,13 +117,14 @@ std::string relativeName(const fs::path& path)
     return fs::relative(path, thespis::test::sharedData("mocap")).generic_string();
 }
 
-// One import per file for the whole test program: the files are large, the tests many.
+// One import per file for the whole test program: the files are large, the tests many. The
+// file's axes are kept (not stood upright), so that what is read can be compared with the text.
 const bvh::ImportedClip& imported(const fs::path& path)
 {
     static std::map<fs::path, bvh::ImportedClip> cache;
     auto it = cache.find(path);
     if (it == cache.end()) {
-        auto result = bvh::load(path);
+        auto result = bvh::load(path, {.upright = false});
         if (!result) {
             ADD_FAILURE() << path << ": " << describe(result.error());
             std::abort();
@@ -695,7 +696,7 @@ TEST(BvhExport, RoundTripOfEveryMocapFile)
         SCOPED_TRACE(relativeName(path));
         const bvh::ImportedClip& original = imported(path);
         const std::string text = bvh::write(original.skeleton, *original.clip);
-        auto back = bvh::parse(text, {}, original.clip->name());
+        auto back = bvh::parse(text, {.upright = false}, original.clip->name());
         ASSERT_TRUE(back) << describe(back.error());
         EXPECT_EQ(back->report.convention, original.report.convention);
         EXPECT_EQ(back->report.isBody, original.report.isBody);
@@ -963,6 +964,74 @@ TEST(BvhMirror, MirrorSwapsTheMappedSides)
         const Quat reflected{r.x, -r.y, -r.z, r.w};
         EXPECT_LE(angleOf(rotationAt(std::span<const float>(m), left), reflected), 1e-6);
         EXPECT_GT(angleOf(rotationAt(std::span<const float>(m), left), rotationAt(std::span<const float>(a), left)), 1e-3);
+    }
+}
+
+// MakeHuman's walk is Z-up (Blender's axes): it is stood up, exactly, and says so; the files
+// already in H-Anim's axes are left exactly as they are.
+TEST(BvhImport, ABodyLyingDownIsStoodUp)
+{
+    const fs::path walk = thespis::test::sharedData("mocap/makehuman/walk1.bvh");
+    auto upright = bvh::load(walk);
+    ASSERT_TRUE(upright.ok()) << describe(upright.error());
+    EXPECT_EQ(upright->report.turnedFrom, "+Z up, facing −Y");
+    const bvh::ImportedClip& raw = imported(walk);
+    for (int j = 0; j < raw.skeleton.jointCount(); ++j) {
+        const Vec3d a = raw.skeleton.joint(j).offset, b = upright->skeleton.joint(j).offset;
+        EXPECT_EQ(b.x, a.x);
+        EXPECT_EQ(b.y, a.z);
+        EXPECT_EQ(b.z, -a.y);
+    }
+    const std::vector<Vec3d> rest = upright->skeleton.worldPositions(upright->skeleton.restFrame());
+    const auto at = [&](const char* name) { return rest[std::size_t(upright->skeleton.find(name))]; };
+    EXPECT_GT(at("skullbase").y, at("humanoid_root").y + 3.0); // decimetres: the head is above the hips
+    EXPECT_GT(at("l_hip").x, at("r_hip").x);                   // its left is +X: it faces +Z
+    // Poses stay the same body: the head stays as far from the toes in every frame.
+    std::vector<Vec3d> rawPositions(std::size_t(raw.skeleton.jointCount())), positions(rawPositions.size());
+    std::vector<Quatd> rawOrientations(rawPositions.size()), orientations(rawPositions.size());
+    for (int f = 0; f < raw.clip->frameCount(); ++f) {
+        raw.skeleton.worldTransforms(raw.clip->frame(f), rawPositions, rawOrientations);
+        upright->skeleton.worldTransforms(upright->clip->frame(f), positions, orientations);
+        for (std::size_t j = 0; j < positions.size(); ++j) {
+            EXPECT_NEAR(positions[j].y, rawPositions[j].z, 1e-4);
+            EXPECT_NEAR(positions[j].z, -rawPositions[j].y, 1e-4);
+        }
+    }
+    for (const fs::path& path : mocapFiles()) {
+        if (path == walk || isFaceFile(path))
+            continue;
+        auto stood = bvh::load(path);
+        ASSERT_TRUE(stood.ok());
+        EXPECT_EQ(stood->report.turnedFrom, "") << path;
+        EXPECT_EQ(stood->clip->data(), imported(path).clip->data()) << path;
+    }
+}
+
+// CMU's MB2 releases open with a T-pose frame; the motion starts on the next one.
+TEST(BvhImport, ACalibrationFirstFrameIsFoundAndCanBeLeftOut)
+{
+    const std::set<std::string> calibrated = {"cmu/01_01.bvh",  "cmu/77_02.bvh",  "cmu/111_28.bvh", "cmu/113_21.bvh",
+                                              "cmu/140_06.bvh", "cmu/140_07.bvh", "cmu/141_20.bvh"};
+    for (const fs::path& path : mocapFiles()) {
+        SCOPED_TRACE(relativeName(path));
+        const bvh::ImportedClip& whole = imported(path);
+        EXPECT_EQ(whole.report.calibrationFrame, calibrated.count(relativeName(path)) > 0);
+        if (!whole.report.calibrationFrame)
+            continue;
+        auto dropped = bvh::load(path, {.upright = false, .dropCalibrationFrame = true});
+        ASSERT_TRUE(dropped.ok());
+        EXPECT_EQ(dropped->report.frameCount, whole.report.frameCount); // the header's count
+        ASSERT_EQ(dropped->clip->frameCount(), whole.clip->frameCount() - 1);
+        // The same frames from the second on (keys are stored in one hemisphere along the clip, so
+        // a rotation may come back with the other sign).
+        const FrameLayout& layout = *whole.skeleton.frameLayout();
+        for (int f = 0; f < dropped->clip->frameCount(); ++f) {
+            const auto a = dropped->clip->frame(f), b = whole.clip->frame(f + 1);
+            for (int r = 0; r < layout.rotationCount(); ++r)
+                EXPECT_NEAR(std::abs(dot(rotationAt(a, r), rotationAt(b, r))), 1.0f, 1e-6f);
+            EXPECT_TRUE(std::equal(a.begin() + std::ptrdiff_t(layout.translationOffset()), a.end(),
+                                   b.begin() + std::ptrdiff_t(layout.translationOffset())));
+        }
     }
 }
 

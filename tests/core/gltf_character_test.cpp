@@ -39,8 +39,11 @@ const char* const kRiggedFigure = "characters/RiggedFigure/RiggedFigure.gltf";
 const char* const kRiggedSimple = "characters/RiggedSimple/RiggedSimple.gltf";
 const char* const kRobot = "characters/RobotExpressive/RobotExpressive.glb";
 
-Character load(const std::filesystem::path& path, const GltfCharacterOptions& options = {})
+// The file's own rig (not stood as H-Anim, IK feet where the file has them), as tinygltf's
+// reference sees it; GltfCharacter.StandardRig checks what standardRig changes.
+Character load(const std::filesystem::path& path, GltfCharacterOptions options = {})
 {
+    options.standardRig = false;
     Result<Character> character = loadGltfCharacter(path, options);
     EXPECT_TRUE(character.ok()) << (character.ok() ? "" : describe(character.error()));
     return character.ok() ? std::move(*character) : Character{};
@@ -892,6 +895,53 @@ TEST_F(EditedGltf, AMixamoRigIsNamedByItsConvention)
     for (const auto& [source, name] : expected)
         EXPECT_EQ(names.at("mixamorig:" + source), name) << source;
     EXPECT_TRUE(character->warnings.empty()) << allWarnings(*character);
+}
+
+// standardRig: CesiumMan (its root node turns it to face +X) is turned to face +Z; the robot's IK
+// feet hang from its knees. Nothing the file shows changes: every joint of every clip frame is
+// where the file's own rig puts it (turned), and every vertex keeps its joints.
+TEST(GltfCharacter, StandardRig)
+{
+    for (const char* path : {kCesiumMan, kRobot, kRiggedFigure}) {
+        SCOPED_TRACE(path);
+        const Character raw = load(sharedData(path));
+        Result<Character> standard = loadGltfCharacter(sharedData(path));
+        ASSERT_TRUE(standard.ok());
+        const anim::Skeleton& s = standard->skeleton;
+        const std::vector<Vec3d> rest = s.worldPositions(s.restFrame());
+        EXPECT_GT(rest[std::size_t(s.find("l_hip"))].x, rest[std::size_t(s.find("r_hip"))].x); // faces +Z
+        ASSERT_GE(s.find("l_talocrural"), 0);
+        EXPECT_EQ(s.joint(s.joint(s.find("l_talocrural")).parent).name, "l_knee");
+        const bool turned = std::string(path) == kCesiumMan;
+        EXPECT_EQ(allWarnings(*standard).find("facing +X; it is turned") != std::string::npos, turned);
+        // The turn CesiumMan gets: a quarter turn about +Y taking +X to +Z.
+        const auto turn = [&](const Vec3d& v) { return turned ? Vec3d{-v.z, v.y, v.x} : v; };
+        for (std::size_t v = 0; v < raw.mesh.vertexCount(); ++v) {
+            const Vec3d a = turn({raw.mesh.positions[v].x, raw.mesh.positions[v].y, raw.mesh.positions[v].z});
+            ASSERT_NEAR(standard->mesh.positions[v].x, a.x, 1e-6);
+            ASSERT_NEAR(standard->mesh.positions[v].z, a.z, 1e-6);
+        }
+        // Joints by source name: same world place in every frame of every clip.
+        ASSERT_EQ(standard->clips.size(), raw.clips.size());
+        std::vector<Vec3d> rp(std::size_t(raw.skeleton.jointCount())), sp(rp.size());
+        std::vector<Quatd> ro(rp.size()), so(rp.size());
+        double largest = 0;
+        for (std::size_t c = 0; c < raw.clips.size(); ++c)
+            for (int f = 0; f < raw.clips[c]->frameCount(); ++f) {
+                raw.skeleton.worldTransforms(raw.clips[c]->frame(f), rp, ro);
+                s.worldTransforms(standard->clips[c]->frame(f), sp, so);
+                for (int j = 0; j < s.jointCount(); ++j) {
+                    int r = 0;
+                    while (raw.skeleton.joint(r).sourceName != s.joint(j).sourceName)
+                        ++r;
+                    const Vec3d d = sp[std::size_t(j)] - turn(rp[std::size_t(r)]);
+                    largest = std::max(largest, std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z));
+                }
+            }
+        EXPECT_LT(largest, 1e-4);
+        for (std::size_t k = 0; k < raw.skin.joints.size(); ++k)
+            ASSERT_EQ(s.joint(standard->skin.joints[k]).sourceName, raw.skeleton.joint(raw.skin.joints[k]).sourceName);
+    }
 }
 
 } // namespace
