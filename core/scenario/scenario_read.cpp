@@ -1,0 +1,609 @@
+// Reading scenario JSON into the document model: one reader per object, each naming the field
+// path of anything wrong (scenario_io.h).
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "lighting/probe.h"
+#include "scenario/scenario_json.h"
+
+namespace thespis::core::scenario::detail {
+
+namespace {
+
+
+enum class Range { Any, NonNegative, Positive, UnitInterval };
+
+// Reads one JSON object: typed fields by name, each read marking the name as known, so that
+// the remaining members can be kept as `extra`. Every error names the field's path.
+class ObjectReader {
+public:
+    ObjectReader(const json& value, std::string path, std::string_view schema)
+        : m_value(value), m_path(std::move(path))
+    {
+        if (!value.is_object())
+            fail(m_path, "expected an object, found " + describeValue(value));
+        if (!schema.empty()) {
+            // "schema" names the object's type and version (OpenTimelineIO style); files written
+            // by hand may leave it out, but a wrong one means this is not the object we expect.
+            if (const json* s = find("schema")) {
+                if (!s->is_string() || s->get_ref<const std::string&>() != schema)
+                    fail(join(m_path, "schema"), "expected " + quote(schema) + ", found " + describeValue(*s));
+            }
+        }
+    }
+
+    const std::string& path() const { return m_path; }
+    std::string fieldPath(std::string_view key) const { return join(m_path, key); }
+
+    const json* find(std::string_view key)
+    {
+        m_known.emplace_back(key);
+        const auto it = m_value.find(key);
+        return it == m_value.end() ? nullptr : &*it;
+    }
+
+    const json& require(std::string_view key)
+    {
+        const json* value = find(key);
+        if (!value)
+            fail(fieldPath(key), "this field is required but missing");
+        return *value;
+    }
+
+    std::string string(std::string_view key, bool required, std::string fallback = {})
+    {
+        const json* value = required ? &require(key) : find(key);
+        if (!value)
+            return fallback;
+        if (!value->is_string())
+            fail(fieldPath(key), "expected a text, found " + describeValue(*value));
+        return value->get<std::string>();
+    }
+
+    std::string name(std::string_view key = "name")
+    {
+        std::string text = string(key, true);
+        if (text.empty())
+            fail(fieldPath(key), "must not be empty");
+        return text;
+    }
+
+    bool boolean(std::string_view key, bool fallback)
+    {
+        const json* value = find(key);
+        if (!value)
+            return fallback;
+        if (!value->is_boolean())
+            fail(fieldPath(key), "expected true or false, found " + describeValue(*value));
+        return value->get<bool>();
+    }
+
+    double number(std::string_view key, bool required, double fallback, Range range)
+    {
+        const json* value = required ? &require(key) : find(key);
+        if (!value)
+            return fallback;
+        return checkedNumber(*value, fieldPath(key), range);
+    }
+
+    float floatNumber(std::string_view key, bool required, float fallback, Range range)
+    {
+        const json* value = required ? &require(key) : find(key);
+        if (!value)
+            return fallback;
+        return checkedFloat(*value, fieldPath(key), range);
+    }
+
+    std::int64_t integer(std::string_view key, bool required, std::int64_t fallback, std::int64_t min,
+                         std::int64_t max)
+    {
+        const json* value = required ? &require(key) : find(key);
+        if (!value)
+            return fallback;
+        if (!value->is_number_integer())
+            fail(fieldPath(key), "expected a whole number, found " + describeValue(*value));
+        const bool tooLarge = value->is_number_unsigned() && value->get<std::uint64_t>() > std::uint64_t(max);
+        const auto n = tooLarge ? max : value->get<std::int64_t>();
+        if (tooLarge || n < min || n > max)
+            fail(fieldPath(key), "must be between " + std::to_string(min) + " and " + std::to_string(max)
+                                     + ", found " + value->dump());
+        return n;
+    }
+
+    Tick ticks(std::string_view key, bool required)
+    {
+        const json* value = required ? &require(key) : find(key);
+        if (!value)
+            return 0;
+        if (!value->is_number_integer() || (value->is_number_unsigned()
+                                            && value->get<std::uint64_t>() > std::uint64_t(std::numeric_limits<Tick>::max())))
+            fail(fieldPath(key), "expected an integer number of ticks (" + std::to_string(TicksPerSecond)
+                                     + " per second), found " + describeValue(*value));
+        const Tick n = value->get<Tick>();
+        if (n < 0)
+            fail(fieldPath(key), "must not be negative, found " + std::to_string(n) + " ticks");
+        return n;
+    }
+
+    template <class E, std::size_t N>
+    E enumeration(std::string_view key, const NamedValue<E> (&table)[N], bool required, E fallback)
+    {
+        const json* value = required ? &require(key) : find(key);
+        if (!value)
+            return fallback;
+        if (value->is_string())
+            for (const auto& entry : table)
+                if (entry.name == value->get_ref<const std::string&>())
+                    return entry.value;
+        fail(fieldPath(key), "expected " + namesOf(table) + ", found " + describeValue(*value));
+    }
+
+    /// The list under `key` (empty when absent).
+    const json& array(std::string_view key, bool required)
+    {
+        static const json empty = json::array();
+        const json* value = required ? &require(key) : find(key);
+        if (!value)
+            return empty;
+        if (!value->is_array())
+            fail(fieldPath(key), "expected a list, found " + describeValue(*value));
+        return *value;
+    }
+
+    std::vector<std::string> names(std::string_view key)
+    {
+        std::vector<std::string> result;
+        std::set<std::string> seen;
+        const json& list = array(key, false);
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const std::string at = indexed(fieldPath(key), i);
+            if (!list[i].is_string())
+                fail(at, "expected a text, found " + describeValue(list[i]));
+            const auto& text = list[i].get_ref<const std::string&>();
+            if (text.empty())
+                fail(at, "must not be empty");
+            if (!seen.insert(text).second)
+                fail(at, quote(text) + " is listed twice");
+            result.push_back(text);
+        }
+        return result;
+    }
+
+    /// Members this reader has not asked for: kept so that they are written back unchanged.
+    json extra() const
+    {
+        json result = json::object();
+        for (const auto& [key, value] : m_value.items())
+            if (std::find(m_known.begin(), m_known.end(), key) == m_known.end())
+                result[key] = value;
+        return result;
+    }
+
+    static double checkedNumber(const json& value, const std::string& path, Range range)
+    {
+        if (!value.is_number())
+            fail(path, "expected a number, found " + describeValue(value));
+        const double d = value.get<double>();
+        if (!std::isfinite(d))
+            fail(path, "expected a finite number, found " + value.dump());
+        checkRange(d, path, range);
+        return d;
+    }
+
+    static float checkedFloat(const json& value, const std::string& path, Range range)
+    {
+        const double d = checkedNumber(value, path, range);
+        // Doubles below FLT_MAX + half its ulp still round to FLT_MAX (3.4028235e38 is written
+        // for it); from there on the conversion would overflow.
+        constexpr double kFloatLimit = double(std::numeric_limits<float>::max()) + 0x1p103;
+        if (std::abs(d) >= kFloatLimit)
+            fail(path, "the number " + value.dump() + " is too large");
+        return float(d);
+    }
+
+private:
+    static void checkRange(double d, const std::string& path, Range range)
+    {
+        switch (range) {
+        case Range::Any: break;
+        case Range::NonNegative:
+            if (d < 0)
+                fail(path, "must not be negative, found " + json(d).dump());
+            break;
+        case Range::Positive:
+            if (!(d > 0))
+                fail(path, "must be greater than 0, found " + json(d).dump());
+            break;
+        case Range::UnitInterval:
+            if (d < 0 || d > 1)
+                fail(path, "must be between 0 and 1, found " + json(d).dump());
+            break;
+        }
+    }
+
+    const json& m_value;
+    std::string m_path;
+    std::vector<std::string> m_known;
+};
+
+// What a curve drives decides which values are allowed.
+enum class CurveUse { Weight, Scale, Warp };
+
+anim::Curve readCurve(const json& value, const std::string& path, CurveUse use, json& extra)
+{
+    ObjectReader r(value, path, "Curve.1");
+    const anim::CurveKind kind = r.enumeration("kind", kCurveKinds, true, anim::CurveKind::Constant);
+    // A weight must not go below 0 (the blend divides by the sum of weights).
+    const Range level = use == CurveUse::Weight ? Range::NonNegative : Range::Any;
+    anim::Curve curve;
+    json keyExtras = json::array();
+    bool anyKeyExtra = false;
+    switch (kind) {
+    case anim::CurveKind::Constant:
+        curve = anim::Curve::constant(r.number("value", true, 1, level));
+        break;
+    case anim::CurveKind::LinearFade:
+    case anim::CurveKind::CubicFade: {
+        const double fadeIn = r.number("fadeIn", true, 0, Range::NonNegative);
+        const double fadeOut = r.number("fadeOut", true, 0, Range::NonNegative);
+        const double peak = r.number("peak", false, 1, level);
+        curve = kind == anim::CurveKind::LinearFade ? anim::Curve::linearFade(fadeIn, fadeOut, peak)
+                                                    : anim::Curve::cubicFade(fadeIn, fadeOut, peak);
+        break;
+    }
+    case anim::CurveKind::LinearAdsr:
+    case anim::CurveKind::CubicAdsr: {
+        const double attack = r.number("attack", true, 0, Range::NonNegative);
+        const double decay = r.number("decay", true, 0, Range::NonNegative);
+        const double sustain = r.number("sustain", true, 1, Range::UnitInterval);
+        const double release = r.number("release", true, 0, Range::NonNegative);
+        const double peak = r.number("peak", false, 1, level);
+        curve = kind == anim::CurveKind::LinearAdsr ? anim::Curve::linearAdsr(attack, decay, sustain, release, peak)
+                                                    : anim::Curve::cubicAdsr(attack, decay, sustain, release, peak);
+        break;
+    }
+    case anim::CurveKind::Keyframed: {
+        const json& list = r.array("keys", true);
+        if (list.empty())
+            fail(r.fieldPath("keys"), "a keyframed curve needs at least one key");
+        std::vector<anim::CurveKey> keys;
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            ObjectReader k(list[i], indexed(r.fieldPath("keys"), i), {});
+            anim::CurveKey key;
+            key.time = k.number("time", true, 0, Range::Any);
+            key.value = k.number("value", true, 0, level);
+            key.mode = k.enumeration("tangent", kTangentModes, false, anim::TangentMode::AutoClamped);
+            key.inSlope = k.number("inSlope", false, 0, Range::Any);
+            key.outSlope = k.number("outSlope", false, 0, Range::Any);
+            if (i > 0 && !(key.time > keys.back().time))
+                fail(k.fieldPath("time"), "keys must be in increasing time order (the previous key is at "
+                                              + json(keys.back().time).dump() + " s)");
+            keys.push_back(key);
+            keyExtras.push_back(k.extra());
+            anyKeyExtra = anyKeyExtra || !keyExtras.back().empty();
+        }
+        auto made = anim::Curve::keyframed(std::move(keys));
+        if (!made)
+            fail(r.fieldPath("keys"), made.error().message);
+        curve = std::move(made).value();
+        break;
+    }
+    }
+    extra = r.extra();
+    // Unknown members of keys travel with the curve's own, as a list aligned with the keys.
+    if (anyKeyExtra)
+        extra["keys"] = std::move(keyExtras);
+    return curve;
+}
+
+ModifierSpec readModifier(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "Modifier.1");
+    ModifierSpec m;
+    m.kind = r.enumeration("kind", kModifierKinds, true, ModifierKind::Loop);
+    switch (m.kind) {
+    case ModifierKind::TimeStretch:
+        m.factor = r.number("factor", true, 1, Range::Positive);
+        break;
+    case ModifierKind::TimeWarp:
+        m.warp = readCurve(r.require("warp"), r.fieldPath("warp"), CurveUse::Warp, m.warpExtra);
+        m.duration = r.number("duration", true, 0, Range::Positive);
+        break;
+    case ModifierKind::Loop:
+        m.count = int(r.integer("count", true, 0, 0, std::numeric_limits<int>::max()));
+        break;
+    case ModifierKind::Mirror:
+        m.axis = int(r.integer("axis", false, 0, 0, 2));
+        break;
+    case ModifierKind::GlobalTransform: {
+        if (const json* rotation = r.find("rotation")) {
+            const std::string at = r.fieldPath("rotation");
+            if (!rotation->is_array() || rotation->size() != 4)
+                fail(at, "expected a quaternion [x, y, z, w], found " + describeValue(*rotation));
+            float q[4];
+            for (std::size_t i = 0; i < 4; ++i)
+                q[i] = ObjectReader::checkedFloat((*rotation)[i], indexed(at, i), Range::Any);
+            m.rotation = {q[0], q[1], q[2], q[3]};
+            const double length = std::sqrt(double(anim::dot(m.rotation, m.rotation)));
+            if (std::abs(length - 1.0) > 1e-3)
+                fail(at, "expected a unit quaternion, found one of length " + json(length).dump());
+        }
+        if (const json* translation = r.find("translation")) {
+            const std::string at = r.fieldPath("translation");
+            if (!translation->is_array() || translation->size() != 3)
+                fail(at, "expected a vector [x, y, z], found " + describeValue(*translation));
+            m.translation = {ObjectReader::checkedFloat((*translation)[0], indexed(at, 0), Range::Any),
+                             ObjectReader::checkedFloat((*translation)[1], indexed(at, 1), Range::Any),
+                             ObjectReader::checkedFloat((*translation)[2], indexed(at, 2), Range::Any)};
+        }
+        break;
+    }
+    case ModifierKind::TimeOffset:
+        m.offset = r.number("offset", true, 0, Range::Any);
+        break;
+    case ModifierKind::Trim:
+        m.start = r.number("start", true, 0, Range::NonNegative);
+        m.end = r.number("end", true, 0, Range::NonNegative);
+        if (!(m.end > m.start))
+            fail(r.fieldPath("end"), "must be after start (" + json(m.start).dump() + " s), found "
+                                         + json(m.end).dump() + " s");
+        break;
+    }
+    m.extra = r.extra();
+    return m;
+}
+
+ActionSpec readAction(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "Action.1");
+    ActionSpec a;
+    a.name = r.name();
+    a.clip = r.name("clip");
+    a.start = r.ticks("start", true);
+    const json& modifiers = r.array("modifiers", false);
+    for (std::size_t i = 0; i < modifiers.size(); ++i)
+        a.modifiers.push_back(readModifier(modifiers[i], indexed(r.fieldPath("modifiers"), i)));
+    if (const json* weight = r.find("weight"))
+        a.weight = readCurve(*weight, r.fieldPath("weight"), CurveUse::Weight, a.weightExtra);
+    if (const json* scale = r.find("scale"))
+        a.scale = readCurve(*scale, r.fieldPath("scale"), CurveUse::Scale, a.scaleExtra);
+    a.mask = r.string("mask", false);
+    a.mode = r.enumeration("mode", kBlendModes, false, anim::BlendMode::Normalized);
+    a.renderOutsideDomain = r.boolean("renderOutsideDomain", false);
+    a.extra = r.extra();
+    return a;
+}
+
+Layer readLayer(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "Layer.2");
+    Layer layer;
+    layer.name = r.name();
+    layer.kind = r.enumeration("kind", kLayerKinds, false, LayerKind::Body);
+    layer.mode = r.enumeration("mode", kBlendModes, false, anim::BlendMode::Normalized);
+    layer.mute = r.boolean("mute", false);
+    layer.solo = r.boolean("solo", false);
+    layer.lock = r.boolean("lock", false);
+    const json& actions = r.array("actions", false);
+    for (std::size_t i = 0; i < actions.size(); ++i)
+        layer.actions.push_back(readAction(actions[i], indexed(r.fieldPath("actions"), i)));
+    layer.extra = r.extra();
+    return layer;
+}
+
+ClipAsset readClip(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "Clip.1");
+    ClipAsset clip;
+    clip.name = r.name();
+    if (r.find("file")) {
+        clip.file = r.string("file", true);
+        if (clip.file.empty())
+            fail(r.fieldPath("file"), "must not be empty (leave the field out for a clip stored inline)");
+        clip.frameRateOverride = r.number("frameRate", false, 0, Range::Positive);
+        for (const char* inlineField : {"joints", "rootTranslation", "scalars", "frames"})
+            if (r.find(inlineField))
+                fail(r.fieldPath(inlineField), "a clip read from a file cannot also hold inline keyframes");
+    } else {
+        clip.frameRate = r.number("frameRate", true, 30, Range::Positive);
+        clip.joints = r.names("joints");
+        clip.rootTranslation = r.boolean("rootTranslation", false);
+        clip.scalars = r.names("scalars");
+        if (clip.rootTranslation && clip.joints.empty())
+            fail(r.fieldPath("rootTranslation"), "a root translation needs a root joint (the first of joints)");
+        if (clip.joints.empty() && clip.scalars.empty())
+            fail(r.fieldPath("joints"), "an inline clip needs at least one joint or scalar");
+        const std::size_t width = clip.valuesPerFrame();
+        const json& frames = r.array("frames", true);
+        if (frames.empty())
+            fail(r.fieldPath("frames"), "an inline clip needs at least one frame");
+        clip.frames.reserve(frames.size() * width);
+        for (std::size_t f = 0; f < frames.size(); ++f) {
+            const std::string at = indexed(r.fieldPath("frames"), f);
+            const json& row = frames[f];
+            if (!row.is_array() || row.size() != width)
+                fail(at, "expected a list of " + std::to_string(width) + " numbers ("
+                             + std::to_string(clip.joints.size()) + " rotations x y z w"
+                             + (clip.rootTranslation ? ", a root translation x y z" : "")
+                             + (clip.scalars.empty() ? "" : ", " + std::to_string(clip.scalars.size()) + " scalars")
+                             + "), found " + (row.is_array() ? std::to_string(row.size()) + " values" : describeValue(row)));
+            for (std::size_t k = 0; k < width; ++k)
+                clip.frames.push_back(ObjectReader::checkedFloat(row[k], indexed(at, k), Range::Any));
+        }
+    }
+    clip.extra = r.extra();
+    return clip;
+}
+
+bool isSkeletonSpec(const std::string& spec)
+{
+    return spec == "hanim-loa1" || spec == "hanim-loa2" || spec == "hanim-25"
+           || (spec.starts_with("clip:") && spec.size() > 5);
+}
+
+// {"name": "hair", "role": "receiver", "posture": "pi"}; role and posture are optional.
+scene::SegmentTag readSegmentTag(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "");
+    scene::SegmentTag tag;
+    tag.segment = r.name();
+    if (const std::string role = r.string("role", false); !role.empty()) {
+        auto parsed = scene::parseSegmentRole(role);
+        if (!parsed)
+            fail(r.fieldPath("role"), parsed.error().message);
+        tag.role = *parsed;
+    }
+    if (const std::string posture = r.string("posture", false); !posture.empty()) {
+        auto parsed = scene::parsePosture(posture);
+        if (!parsed)
+            fail(r.fieldPath("posture"), parsed.error().message);
+        tag.posture = *parsed;
+    }
+    // Unknown members of a tag are not kept: a tag is a small closed record.
+    if (!r.extra().empty())
+        fail(path + "." + r.extra().begin().key(), "unknown member of a segment tag (known: name, role, posture)");
+    return tag;
+}
+
+LightingSpec readLighting(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "Lighting.1");
+    LightingSpec lighting;
+    lighting.probe = r.string("probe", false);
+    lighting.layout = r.string("layout", false, lighting.layout);
+    if (auto layout = lighting::parseProbeLayout(lighting.layout); !layout)
+        fail(r.fieldPath("layout"), layout.error().message);
+    lighting.extra = r.extra();
+    return lighting;
+}
+
+Gesture readGesture(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "Gesture.1");
+    Gesture gesture;
+    gesture.name = r.name();
+    gesture.clip = r.name("clip");
+    gesture.mask = r.string("mask", false);
+    gesture.fadeIn = r.ticks("fadeIn", false);
+    gesture.fadeOut = r.ticks("fadeOut", false);
+    gesture.dependentJointFilter = r.boolean("dependentJointFilter", false);
+    gesture.extra = r.extra();
+    return gesture;
+}
+
+Marker readMarker(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "Marker.1");
+    Marker marker;
+    marker.name = r.string("name", false);
+    marker.time = r.ticks("time", true);
+    marker.extra = r.extra();
+    return marker;
+}
+
+Character readCharacter(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "Character.2");
+    Character character;
+    character.name = r.name();
+    character.skeleton = r.string("skeleton", false, "hanim-loa1");
+    if (!isSkeletonSpec(character.skeleton))
+        fail(r.fieldPath("skeleton"), "expected \"hanim-loa1\", \"hanim-loa2\", \"hanim-25\" or \"clip:NAME\", found "
+                                          + quote(character.skeleton));
+    character.model = r.string("model", false);
+    character.bake = r.string("bake", false);
+    std::set<std::string> names;
+    const json& segments = r.array("segments", false);
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        character.segmentTags.push_back(readSegmentTag(segments[i], indexed(r.fieldPath("segments"), i)));
+        if (!names.insert(character.segmentTags.back().segment).second)
+            fail(indexed(r.fieldPath("segments"), i) + ".name",
+                 "segment " + quote(character.segmentTags.back().segment) + " is tagged twice");
+    }
+    names.clear();
+    const json& clips = r.array("clips", false);
+    for (std::size_t i = 0; i < clips.size(); ++i) {
+        character.clips.push_back(readClip(clips[i], indexed(r.fieldPath("clips"), i)));
+        if (!names.insert(character.clips.back().name).second)
+            fail(indexed(r.fieldPath("clips"), i) + ".name",
+                 "another clip of this character is already named " + quote(character.clips.back().name));
+    }
+    names.clear();
+    const json& layers = r.array("layers", false);
+    for (std::size_t i = 0; i < layers.size(); ++i) {
+        character.layers.push_back(readLayer(layers[i], indexed(r.fieldPath("layers"), i)));
+        if (!names.insert(character.layers.back().name).second)
+            fail(indexed(r.fieldPath("layers"), i) + ".name",
+                 "another layer of this character is already named " + quote(character.layers.back().name));
+    }
+    names.clear();
+    const json& gestures = r.array("gestures", false);
+    for (std::size_t i = 0; i < gestures.size(); ++i) {
+        character.gestures.push_back(readGesture(gestures[i], indexed(r.fieldPath("gestures"), i)));
+        if (!names.insert(character.gestures.back().name).second)
+            fail(indexed(r.fieldPath("gestures"), i) + ".name",
+                 "another gesture of this character is already named " + quote(character.gestures.back().name));
+    }
+    character.extra = r.extra();
+    return character;
+}
+
+NamedMask readMask(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "Mask.1");
+    NamedMask mask;
+    mask.name = r.name();
+    const float defaultWeight = r.floatNumber("defaultWeight", false, 0.0f, Range::UnitInterval);
+    std::map<std::string, float> weights;
+    if (const json* list = r.find("weights")) {
+        if (!list->is_object())
+            fail(r.fieldPath("weights"), "expected an object of joint names and weights, found " + describeValue(*list));
+        for (const auto& [joint, weight] : list->items()) {
+            const std::string at = r.fieldPath("weights") + "." + joint;
+            if (joint.empty())
+                fail(r.fieldPath("weights"), "a joint name must not be empty");
+            weights[joint] = ObjectReader::checkedFloat(weight, at, Range::UnitInterval);
+        }
+    }
+    mask.mask = anim::JointMask(std::move(weights), defaultWeight);
+    mask.extra = r.extra();
+    return mask;
+}
+
+} // namespace
+
+Scenario readScenario(const json& document)
+{
+    ObjectReader r(document, "", "Scenario.2");
+    r.find("format");  // checked before
+    r.find("version");
+    Scenario scenario;
+    scenario.name = r.string("name", false);
+    scenario.duration = r.ticks("duration", false);
+    std::set<std::string> names;
+    const json& masks = r.array("masks", false);
+    for (std::size_t i = 0; i < masks.size(); ++i) {
+        scenario.masks.push_back(readMask(masks[i], indexed("masks", i)));
+        if (!names.insert(scenario.masks.back().name).second)
+            fail(indexed("masks", i) + ".name", "another mask is already named " + quote(scenario.masks.back().name));
+    }
+    names.clear();
+    const json& characters = r.array("characters", false);
+    for (std::size_t i = 0; i < characters.size(); ++i) {
+        scenario.characters.push_back(readCharacter(characters[i], indexed("characters", i)));
+        if (!names.insert(scenario.characters.back().name).second)
+            fail(indexed("characters", i) + ".name",
+                 "another character is already named " + quote(scenario.characters.back().name));
+    }
+    if (const json* lighting = r.find("lighting"))
+        scenario.lighting = readLighting(*lighting, "lighting");
+    const json& markers = r.array("markers", false);
+    for (std::size_t i = 0; i < markers.size(); ++i)
+        scenario.markers.push_back(readMarker(markers[i], indexed("markers", i)));
+    scenario.extra = r.extra();
+    return scenario;
+}
+
+} // namespace thespis::core::scenario::detail
