@@ -301,7 +301,9 @@ void print(const ojson& value, int indent, std::string& out)
             out += ": ";
             print(item, indent + 2, out);
         }
-        out += "\n" + std::string(std::size_t(indent), ' ') + "}";
+        out += '\n';
+        out.append(std::size_t(indent), ' ');
+        out += '}';
     } else if (value.is_array()) {
         if (value.empty()) {
             out += "[]";
@@ -325,7 +327,9 @@ void print(const ojson& value, int indent, std::string& out)
             out += inner;
             print(value[i], indent + 2, out);
         }
-        out += "\n" + std::string(std::size_t(indent), ' ') + "]";
+        out += '\n';
+        out.append(std::size_t(indent), ' ');
+        out += ']';
     } else {
         out += dumpScalar(value);
     }
