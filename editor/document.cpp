@@ -18,7 +18,7 @@ Document::Document(core::scenario::Scenario scenario, core::scenario::ScenarioRu
                    QString baseDir)
     : m_scenario(std::move(scenario)), m_runtime(std::move(runtime)), m_filePath(std::move(filePath)),
       m_baseDir(std::move(baseDir)), m_undoStack(new QUndoStack(this)),
-      m_clipCache(std::make_unique<core::scenario::ClipFileCache>())
+      m_assets(std::make_unique<core::scenario::AssetCache>())
 {
     connect(m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
 }
@@ -110,7 +110,7 @@ core::Result<void> Document::edit(core::edit::Edit edit, const QString& text, Me
     core::scenario::Scenario next = m_scenario;
     if (auto applied = edit.apply(next); !applied)
         return applied.error();
-    auto runtime = core::scenario::buildRuntime(next, toFsPath(m_baseDir), m_clipCache.get());
+    auto runtime = core::scenario::buildRuntime(next, toFsPath(m_baseDir), m_assets.get());
     if (!runtime)
         return runtime.error();
     m_undoStack->push(new EditCommand(*this, std::move(edit), text, merge.key, merge.finished, std::move(next),
@@ -131,7 +131,7 @@ void Document::apply(const core::edit::Edit& edit)
     core::scenario::Scenario next = m_scenario;
     auto applied = edit.apply(next);
     Q_ASSERT(applied);
-    auto runtime = core::scenario::buildRuntime(next, toFsPath(m_baseDir), m_clipCache.get());
+    auto runtime = core::scenario::buildRuntime(next, toFsPath(m_baseDir), m_assets.get());
     Q_ASSERT(runtime);
     if (!applied || !runtime)
         return;

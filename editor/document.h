@@ -104,7 +104,7 @@ private:
     QString m_filePath;
     QString m_baseDir;
     QUndoStack* m_undoStack = nullptr; // child QObject
-    std::unique_ptr<core::scenario::ClipFileCache> m_clipCache;
+    std::unique_ptr<core::scenario::AssetCache> m_assets; // files the runtime reads, kept between edits
 };
 
 } // namespace thespis::editor

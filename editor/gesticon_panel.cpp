@@ -290,7 +290,7 @@ void GesticonPanel::setDocument(Document* document)
     if (m_document)
         disconnect(m_document, nullptr, this, nullptr);
     m_document = document;
-    m_clipCache.clear();
+    m_assets.clear();
     m_model->setDocument(document);
     if (m_document)
         // Any edit ends a preview: what it shows is no longer the document plus the gesture. Queued,
@@ -504,7 +504,7 @@ void GesticonPanel::preview()
     const core::edit::ActionPath path{c, int(character.layers.size()) - 1, 0};
     const QString name = fromUtf8(gesture->name);
 
-    auto runtime = core::scenario::buildRuntime(scenario, toFsPath(m_document->baseDir()), &m_clipCache);
+    auto runtime = core::scenario::buildRuntime(scenario, toFsPath(m_document->baseDir()), &m_assets);
     if (!runtime) {
         showMessage(tr("Cannot preview gesture \"%1\": %2").arg(name, fromUtf8(runtime.error().message)));
         return;

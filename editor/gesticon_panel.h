@@ -105,7 +105,7 @@ private:
     double m_previewClockDuration = 0; // what the preview set the clock's duration to
     double m_savedClockDuration = 0;
     bool m_savedLooping = false;
-    core::scenario::ClipFileCache m_clipCache; // BVH files read by previews
+    core::scenario::AssetCache m_assets; // files read by previews
 };
 
 } // namespace thespis::editor

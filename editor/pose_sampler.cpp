@@ -56,7 +56,7 @@ PoseSampler::PoseSampler(const core::scenario::CharacterRuntime& character)
 void PoseSampler::sample(double seconds)
 {
     if (m_character->body && m_character->body->layout()->floatCount() == m_frame.size())
-        m_character->body->evaluate(seconds, m_frame);
+        m_character->evaluateBody(seconds, m_frame);
     computeWorldPositions();
 }
 

@@ -73,7 +73,7 @@ def clip(name, rate, joints, sample, duration, root_translation=False, scalars=(
     for k in range(count):
         values = sample(k / rate)
         frames.append([number(v) for v in values])
-    out = {"schema": "Clip.1", "name": name, "frameRate": float(rate), "joints": list(joints),
+    out = {"schema": "Clip.2", "name": name, "frameRate": float(rate), "joints": list(joints),
            "rootTranslation": root_translation}
     if scalars:
         out["scalars"] = list(scalars)
@@ -190,20 +190,13 @@ def keyframed(keys):
 
 
 def modifier(kind, **params):
-    out = {"schema": "Modifier.1", "kind": kind}
+    out = {"schema": "Modifier.2", "kind": kind}
     out.update(params)
     return out
 
 
-def placement(x, yaw_degrees):
-    """A globalTransform that stands the character at x on the floor, turned by yaw about +Y."""
-    half = math.radians(yaw_degrees) / 2
-    return modifier("globalTransform", rotation=[0.0, round(math.sin(half), 4), 0.0, round(math.cos(half), 4)],
-                    translation=[x, 0.0, 0.0])
-
-
 def action(name, clip_name, start, weight, scale=None, mask=None, mode="normalized", modifiers=()):
-    out = {"schema": "Action.1", "name": name, "clip": clip_name, "start": ticks(start)}
+    out = {"schema": "Action.2", "name": name, "clip": clip_name, "start": ticks(start)}
     if modifiers:
         out["modifiers"] = list(modifiers)
     out["weight"] = weight
@@ -236,7 +229,9 @@ def mask(name, weights, default=0.0):
 
 def scenario():
     creon = {
-        "schema": "Character.2", "name": "Creon", "skeleton": "hanim-25",
+        # Creon stands on the left, turned towards Antigone.
+        "schema": "Character.3", "name": "Creon", "skeleton": "hanim-25", "position": [-0.55, 0.0, 0.0],
+        "heading": 25.0,
         "clips": [
             idle_clip("creon_idle", period=4.0, sway=0.025, breaths=2, head_tilt=0.0, arm_bend=8.0),
             wave_clip("wave", waves=3, wave_period=0.6),
@@ -245,11 +240,8 @@ def scenario():
         ],
         "layers": [
             layer("body", "body", [
-                # The base idle plays at full weight from the start (a fade-in from the rest pose
-                # would slide the root in from the origin) and places Creon on the left, turned
-                # towards Antigone.
-                action("creon_idle", "creon_idle", 0.0, constant(1.0),
-                       modifiers=[modifier("loop", count=0), placement(-0.55, 25.0)]),
+                # The base idle plays at full weight from the start.
+                action("creon_idle", "creon_idle", 0.0, constant(1.0), modifiers=[modifier("loop", count=0)]),
                 action("creon_wave", "wave", 1.5, adsr("cubicAdsr", 0.4, 0.3, 0.85, 0.5),
                        mask="rightArm", mode="override"),
                 action("creon_nod", "nod", 5.0, fade("linearFade", 0.25, 0.25), mask="head",
@@ -270,7 +262,8 @@ def scenario():
         ],
     }
     antigone = {
-        "schema": "Character.2", "name": "Antigone", "skeleton": "hanim-25",
+        "schema": "Character.3", "name": "Antigone", "skeleton": "hanim-25", "position": [0.55, 0.0, 0.0],
+        "heading": -25.0,
         "clips": [
             idle_clip("antigone_idle", period=5.0, sway=0.03, breaths=3, head_tilt=3.0, arm_bend=12.0),
             wave_clip("wave", waves=2, wave_period=0.8),
@@ -278,8 +271,7 @@ def scenario():
         ],
         "layers": [
             layer("body", "body", [
-                action("antigone_idle", "antigone_idle", 0.0, constant(1.0),
-                       modifiers=[modifier("loop", count=0), placement(0.55, -25.0)]),
+                action("antigone_idle", "antigone_idle", 0.0, constant(1.0), modifiers=[modifier("loop", count=0)]),
                 action("antigone_nod", "nod", 3.0, fade("cubicFade", 0.2, 0.3), mask="head",
                        mode="additive", modifiers=[modifier("trim", start=0.0, end=1.2)]),
                 # Her wave is Creon's motion played on the left arm: the mirror modifier swaps sides.
@@ -293,8 +285,8 @@ def scenario():
     }
     return {
         "format": "thespis-scenario",
-        "version": 2,
-        "schema": "Scenario.2",
+        "version": 3,
+        "schema": "Scenario.3",
         "name": "Antigone, act 1 (demo)",
         "duration": ticks(12.0),
         "masks": [

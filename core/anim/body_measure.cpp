@@ -16,10 +16,13 @@ double distance(const Vec3d& a, const Vec3d& b)
 
 } // namespace
 
-bool BodyMeasure::standsOnGround() const
+void soleHeights(const BodyMeasure& body, std::span<const Vec3d> positions, std::span<const Quatd> orientations,
+                 std::span<double> heights)
 {
-    // A foot a few millimetres below the plane (rounding, a sole's thickness) still stands on it.
-    return hasFeet() && footRestHeight > -0.02 * std::max(legLength, 1e-9);
+    for (std::size_t k = 0; k < body.soles.size(); ++k) {
+        const auto j = std::size_t(body.soles[k].joint);
+        heights[k] = positions[j].y + rotate(orientations[j], body.soles[k].offset).y;
+    }
 }
 
 BodyMeasure measureBody(const Skeleton& skeleton)
@@ -51,15 +54,47 @@ BodyMeasure measureBody(const Skeleton& skeleton)
         if (inFoot[std::size_t(j)])
             measure.footJoints.push_back(j);
     }
-    // About a centimetre on a human (legs of 0.84 m); in the skeleton's own units.
+    // A few millimetres on a human (legs of 0.84 m), in the skeleton's own units: enough to
+    // smooth the change of lowest point, little below the lowest with many points near it.
     if (measure.hasLegs())
-        measure.footSoftness = 0.012 * measure.legLength;
-    if (!measure.footJoints.empty()) {
-        std::vector<double> heights;
-        for (int j : measure.footJoints)
-            heights.push_back(rest[std::size_t(j)].y);
-        measure.footRestHeight = footHeight<double>(heights, measure.footSoftness);
+        measure.footSoftness = 0.0036 * measure.legLength;
+    if (measure.footJoints.empty())
+        return measure;
+
+    double lowest = rest[std::size_t(measure.footJoints.front())].y;
+    for (int j : measure.footJoints)
+        lowest = std::min(lowest, rest[std::size_t(j)].y);
+    // A foot a few millimetres below the plane (rounding, a sole's thickness) still stands on it.
+    measure.groundedAtRest = lowest > -0.02 * std::max(measure.legLength, 1e-9);
+    const double floor = measure.groundedAtRest ? 0.0 : lowest;
+    for (int j : measure.footJoints)
+        measure.soles.push_back({j, {0.0, floor - rest[std::size_t(j)].y, 0.0}});
+    // Heels behind the ankles, toes ahead of a foot without toe joints: the foot's extent along
+    // where it points (to its farthest joint, else the body's facing, +Z).
+    for (const char* side : {"l_", "r_"}) {
+        const int ankle = skeleton.find(std::string(side) + "talocrural");
+        if (ankle < 0)
+            continue;
+        const Vec3d& at = rest[std::size_t(ankle)];
+        Vec3d forward{0, 0, 1};
+        double length = 0;
+        for (int j : measure.footJoints) {
+            const Vec3d d{rest[std::size_t(j)].x - at.x, 0.0, rest[std::size_t(j)].z - at.z};
+            if (const double l = std::hypot(d.x, d.z); l > length) {
+                length = l;
+                forward = d * (1.0 / l);
+            }
+        }
+        const double legs = measure.hasLegs() ? measure.legLength : 1.0;
+        const double heel = length > 0 ? 0.35 * length : 0.08 * legs;
+        measure.soles.push_back({ankle, {-forward.x * heel, floor - at.y, -forward.z * heel}});
+        if (length == 0)
+            measure.soles.push_back({ankle, {forward.x * 0.2 * legs, floor - at.y, forward.z * 0.2 * legs}});
     }
+    std::vector<double> heights(measure.soles.size());
+    for (std::size_t k = 0; k < heights.size(); ++k)
+        heights[k] = rest[std::size_t(measure.soles[k].joint)].y + measure.soles[k].offset.y;
+    measure.footRestHeight = footHeight<double>(heights, measure.footSoftness);
     return measure;
 }
 

@@ -64,7 +64,7 @@ void TimeWarp::evaluate(double t, std::span<float> out) const
     m_source->evaluate(start + m_warp.evaluate(local, m_duration), out);
 }
 
-Result<std::shared_ptr<Loop>> Loop::create(BlendablePtr source, int count)
+Result<std::shared_ptr<Loop>> Loop::create(BlendablePtr source, int count, bool rootMotion)
 {
     if (auto ok = checkSource(source, "A loop"); !ok)
         return ok.error();
@@ -72,7 +72,24 @@ Result<std::shared_ptr<Loop>> Loop::create(BlendablePtr source, int count)
         return makeError(ErrorCode::InvalidArgument, "A loop count must be 0 (forever) or more.");
     if (source->domain().openEnded())
         return makeError(ErrorCode::InvalidArgument, "An open-ended animation cannot be looped.");
-    return std::shared_ptr<Loop>(new Loop(std::move(source), count));
+    std::shared_ptr<Loop> loop(new Loop(std::move(source), count));
+    loop->m_root = rootElements(*loop->layout());
+    if (rootMotion && loop->m_root.valid) {
+        // One repetition moves the root from where the source starts to where it ends.
+        const TimeDomain d = loop->m_source->domain();
+        std::vector<float> first(loop->layout()->floatCount()), last(first.size());
+        loop->m_source->evaluate(d.start, first);
+        loop->m_source->evaluate(d.end, last);
+        const RootElements& root = loop->m_root;
+        const auto at = [&](const std::vector<float>& f) {
+            return Vec3{f[root.translation], f[root.translation + 1], f[root.translation + 2]};
+        };
+        const auto facing = [&](const std::vector<float>& f) {
+            return root.rotation >= 0 ? heading(rotationAt(std::span<const float>(f), root.rotation)) : 0.0;
+        };
+        loop->m_cycle = FloorMove::onto(at(first), facing(first), at(last), facing(last));
+    }
+    return loop;
 }
 
 TimeDomain Loop::domain() const
@@ -94,9 +111,14 @@ void Loop::evaluate(double t, std::span<float> out) const
     }
     if (m_count > 0 && local >= length * m_count) {
         m_source->evaluate(d.end, out);
+        if (m_cycle)
+            m_cycle->repeated(m_count - 1).apply(m_root, out);
         return;
     }
     m_source->evaluate(d.start + std::fmod(local, length), out);
+    if (m_cycle)
+        if (const auto repetition = static_cast<long long>(std::floor(local / length)); repetition > 0)
+            m_cycle->repeated(repetition).apply(m_root, out);
 }
 
 Result<std::shared_ptr<Mirror>> Mirror::create(BlendablePtr source, int axis)

@@ -3,10 +3,12 @@
 // Any chain of modifiers is again a blendable.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "anim/blendable.h"
 #include "anim/curve.h"
+#include "anim/root_motion.h"
 #include "util/error.h"
 
 namespace thespis::core::anim {
@@ -56,17 +58,22 @@ private:
     double m_duration;
 };
 
-/// Repeats the source `count` times, or forever when count = 0 (open-ended).
+/// Repeats the source `count` times, or forever when count = 0 (open-ended). With root motion,
+/// each repetition starts where the previous one ended (the root's position on the floor and its
+/// heading), as a walk goes on, instead of jumping back to where the source starts.
 class Loop final : public Modifier {
 public:
-    static Result<std::shared_ptr<Loop>> create(BlendablePtr source, int count);
+    static Result<std::shared_ptr<Loop>> create(BlendablePtr source, int count, bool rootMotion = false);
     int count() const { return m_count; }
+    bool rootMotion() const { return m_cycle.has_value(); }
     TimeDomain domain() const override;
     void evaluate(double t, std::span<float> out) const override;
 
 private:
     Loop(BlendablePtr source, int count) : Modifier(std::move(source)), m_count(count) {}
     int m_count;
+    RootElements m_root;
+    std::optional<FloorMove> m_cycle; ///< from one repetition's start onto the next's
 };
 
 /// Left/right flip: swaps the elements of paired joints (H-Anim l_/r_ names and common

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string_view>
 
 #include "anim/body_measure.h"
@@ -70,6 +71,19 @@ RestAlignment restAlignment(std::string_view name)
     return RestAlignment::Inherit;
 }
 
+// A body with soles known better than measureBody()'s guess (none given: as it is).
+BodyMeasure withSoles(BodyMeasure body, const std::vector<BodyMeasure::SolePoint>& soles)
+{
+    if (soles.empty())
+        return body;
+    body.soles = soles;
+    std::vector<double> heights;
+    for (const BodyMeasure::SolePoint& sole : body.soles)
+        heights.push_back(body.restPositions[std::size_t(sole.joint)].y + sole.offset.y);
+    body.footRestHeight = footHeight<double>(heights, body.footSoftness);
+    return body;
+}
+
 } // namespace
 
 FrameRetarget::ChainStep FrameRetarget::chainStep(const Skeleton& skeleton, int joint)
@@ -82,7 +96,8 @@ FrameRetarget::ChainStep FrameRetarget::chainStep(const Skeleton& skeleton, int 
     return step;
 }
 
-Vec3 FrameRetarget::chainEnd(std::span<const ChainStep> chain, std::span<const float> frame, bool fromOrigin)
+std::pair<Vec3, Quat> FrameRetarget::chainPose(std::span<const ChainStep> chain, std::span<const float> frame,
+                                              bool fromOrigin)
 {
     const auto offsetOf = [&](const ChainStep& step) {
         if (step.translation < 0)
@@ -98,18 +113,17 @@ Vec3 FrameRetarget::chainEnd(std::span<const ChainStep> chain, std::span<const f
     Quat orientation = rotationOf(chain.front());
     for (std::size_t k = 1; k < chain.size(); ++k) {
         position = position + rotate(orientation, offsetOf(chain[k]));
-        if (k + 1 < chain.size())
-            orientation = orientation * rotationOf(chain[k]);
+        orientation = orientation * rotationOf(chain[k]);
     }
-    return position;
+    return {position, orientation};
 }
 
 FrameRetarget::FrameRetarget(const Skeleton& from, const Skeleton& to, const RetargetOptions& options)
 {
     const FrameLayout& fromLayout = *from.frameLayout();
     const FrameLayout& toLayout = *to.frameLayout();
-    const BodyMeasure fromBody = measureBody(from);
-    const BodyMeasure toBody = measureBody(to);
+    const BodyMeasure fromBody = withSoles(measureBody(from), options.sourceSoles);
+    const BodyMeasure toBody = withSoles(measureBody(to), options.targetSoles);
     const std::size_t count = std::size_t(to.jointCount());
 
     if (options.scale > 0) {
@@ -157,8 +171,13 @@ FrameRetarget::FrameRetarget(const Skeleton& from, const Skeleton& to, const Ret
         if (parent >= 0)
             mappedAncestor[j] = source[std::size_t(parent)] >= 0 ? parent : mappedAncestor[std::size_t(parent)];
         const RestAlignment alignment = restAlignment(to.joint(int(j)).name);
-        if (alignment == RestAlignment::Upright)
+        if (alignment == RestAlignment::Upright) {
+            // A foot the source does not hold flat when it stands (CMU's rest foot points up
+            // from where it stands): turned so that it is flat then.
+            if (const auto flat = options.flatFeet.find(to.joint(int(j)).name); flat != options.flatFeet.end())
+                align[j] = Quatd{flat->second.x, flat->second.y, flat->second.z, flat->second.w};
             continue;
+        }
         align[j] = mappedAncestor[j] >= 0 ? align[std::size_t(mappedAncestor[j])] : Quatd{};
         if (source[j] < 0 || alignment != RestAlignment::Limb)
             continue;
@@ -271,34 +290,37 @@ FrameRetarget::FrameRetarget(const Skeleton& from, const Skeleton& to, const Ret
         std::optional<double> planted = options.sourcePlantedFeet;
         if (!planted && fromBody.standsOnGround())
             planted = fromBody.footRestHeight;
-        std::vector<int> fromFeet, toFeet;
-        for (int j : fromBody.footJoints)
-            fromFeet.push_back(j);
-        for (int j : toBody.footJoints) {
-            const std::vector<int> chain = chainFromRoot(to, j);
-            if (std::find(chain.begin(), chain.end(), placed) != chain.end())
-                toFeet.push_back(j);
-        }
-        if (planted && !fromFeet.empty() && !toFeet.empty() && toFeet.size() == toBody.footJoints.size()
-            && fromFeet.size() <= kMaxFootJoints && toFeet.size() <= kMaxFootJoints) {
+        // Chains to every foot joint (source from its root, target from the placed joint), and
+        // the sole points on them.
+        const auto reachable = [&](int joint) {
+            const std::vector<int> chain = chainFromRoot(to, joint);
+            return std::find(chain.begin(), chain.end(), placed) != chain.end();
+        };
+        const bool feetBelow = std::all_of(toBody.footJoints.begin(), toBody.footJoints.end(), reachable);
+        if (planted && fromBody.hasFeet() && toBody.hasFeet() && feetBelow && fromBody.soles.size() <= kMaxSoles
+            && toBody.soles.size() <= kMaxSoles) {
             m_matchFeet = true;
             m_sourcePlanted = float(*planted);
             m_targetFeetRest = float(toBody.footRestHeight);
             m_sourceSoftness = float(fromBody.footSoftness);
             m_targetSoftness = float(toBody.footSoftness);
-            for (int j : fromFeet) {
-                m_sourceFeet.push_back({std::uint32_t(m_sourceSteps.size()), 0});
-                for (int k : chainFromRoot(from, j))
-                    m_sourceSteps.push_back(chainStep(from, k));
-                m_sourceFeet.back().second = std::uint32_t(m_sourceSteps.size());
-            }
-            for (int j : toFeet) {
-                m_targetFeet.push_back({std::uint32_t(m_targetSteps.size()), 0});
-                const std::vector<int> chain = chainFromRoot(to, j);
-                for (auto it = std::find(chain.begin(), chain.end(), placed); it != chain.end(); ++it)
-                    m_targetSteps.push_back(chainStep(to, *it));
-                m_targetFeet.back().second = std::uint32_t(m_targetSteps.size());
-            }
+            const auto addSoles = [&](const BodyMeasure& body, const Skeleton& skeleton, int from, std::vector<ChainStep>& steps,
+                                      std::vector<Sole>& soles) {
+                std::map<int, std::pair<std::uint32_t, std::uint32_t>> chains;
+                for (const BodyMeasure::SolePoint& sole : body.soles) {
+                    auto [it, added] = chains.try_emplace(sole.joint);
+                    if (added) {
+                        const std::vector<int> chain = chainFromRoot(skeleton, sole.joint);
+                        it->second.first = std::uint32_t(steps.size());
+                        for (auto k = std::find(chain.begin(), chain.end(), from); k != chain.end(); ++k)
+                            steps.push_back(chainStep(skeleton, *k));
+                        it->second.second = std::uint32_t(steps.size());
+                    }
+                    soles.push_back({it->second.first, it->second.second, toFloat(sole.offset)});
+                }
+            };
+            addSoles(fromBody, from, 0, m_sourceSteps, m_sourceSoles);
+            addSoles(toBody, to, placed, m_targetSteps, m_targetSoles);
         }
     }
 
@@ -318,6 +340,11 @@ FrameRetarget::FrameRetarget(const Skeleton& from, const Skeleton& to, const Ret
 }
 
 void FrameRetarget::apply(std::span<const float> fromFrame, std::span<float> toFrame) const
+{
+    apply(fromFrame, toFrame, m_sourcePlanted);
+}
+
+void FrameRetarget::apply(std::span<const float> fromFrame, std::span<float> toFrame, float sourcePlantedFeet) const
 {
     const auto sourceRotation = [&](std::size_t offset) {
         return Quat{fromFrame[offset], fromFrame[offset + 1], fromFrame[offset + 2], fromFrame[offset + 3]};
@@ -371,29 +398,31 @@ void FrameRetarget::apply(std::span<const float> fromFrame, std::span<float> toF
         for (std::size_t p = 0; p < m_sourceChains.size(); ++p) {
             const auto [fromBegin, fromEnd] = m_sourceChains[p];
             const auto [toBegin, toEnd] = m_targetChains[p];
-            fromMean = fromMean + chainEnd(std::span(m_sourceSteps).subspan(fromBegin, fromEnd - fromBegin), fromFrame, true) * share;
-            toMean = toMean + chainEnd(std::span(m_targetSteps).subspan(toBegin, toEnd - toBegin), toFrame, false) * share;
+            fromMean = fromMean + chainPose(std::span(m_sourceSteps).subspan(fromBegin, fromEnd - fromBegin), fromFrame, true).first * share;
+            toMean = toMean + chainPose(std::span(m_targetSteps).subspan(toBegin, toEnd - toBegin), toFrame, false).first * share;
         }
         float* out = &toFrame[m_placedTranslation];
         out[0] = fromMean.x * m_scaleF + m_placeAdd.x - toMean.x;
         out[1] = fromMean.y * m_scaleF + m_placeAdd.y - toMean.y;
         out[2] = fromMean.z * m_scaleF + m_placeAdd.z - toMean.z;
         if (m_matchFeet) {
-            // The feet as high over the floor as the source's, scaled (few joints: no allocation).
-            float fromHeights[kMaxFootJoints], toHeights[kMaxFootJoints];
-            for (std::size_t f = 0; f < m_sourceFeet.size(); ++f) {
-                const auto [begin, end] = m_sourceFeet[f];
-                fromHeights[f] = chainEnd(std::span(m_sourceSteps).subspan(begin, end - begin), fromFrame, true).y;
-            }
-            for (std::size_t f = 0; f < m_targetFeet.size(); ++f) {
-                const auto [begin, end] = m_targetFeet[f];
-                toHeights[f] = chainEnd(std::span(m_targetSteps).subspan(begin, end - begin), toFrame, false).y;
-            }
-            const float fromFeet = footHeight<float>(std::span(fromHeights, m_sourceFeet.size()), m_sourceSoftness);
-            const float toFeet = footHeight<float>(std::span(toHeights, m_targetFeet.size()), m_targetSoftness);
+            // The soles as high over the floor as the source's, scaled (few points: no allocation).
+            float fromHeights[kMaxSoles], toHeights[kMaxSoles];
+            const auto soleHeight = [](const std::vector<ChainStep>& steps, const Sole& sole, std::span<const float> frame,
+                                       bool fromOrigin) {
+                const auto [position, orientation] =
+                    chainPose(std::span(steps).subspan(sole.begin, sole.end - sole.begin), frame, fromOrigin);
+                return (position + rotate(orientation, sole.offset)).y;
+            };
+            for (std::size_t k = 0; k < m_sourceSoles.size(); ++k)
+                fromHeights[k] = soleHeight(m_sourceSteps, m_sourceSoles[k], fromFrame, true);
+            for (std::size_t k = 0; k < m_targetSoles.size(); ++k)
+                toHeights[k] = soleHeight(m_targetSteps, m_targetSoles[k], toFrame, false);
+            const float fromFeet = footHeight<float>(std::span(fromHeights, m_sourceSoles.size()), m_sourceSoftness);
+            const float toFeet = footHeight<float>(std::span(toHeights, m_targetSoles.size()), m_targetSoftness);
             // Never below the floor: where the performer's feet sink into it (a capture's floor is
             // rarely level), the body is lifted instead.
-            const float wanted = m_targetFeetRest + std::max(0.0f, fromFeet - m_sourcePlanted) * m_scaleF;
+            const float wanted = m_targetFeetRest + std::max(0.0f, fromFeet - sourcePlantedFeet) * m_scaleF;
             out[1] = wanted - toFeet - m_placedBaseY;
         }
     }

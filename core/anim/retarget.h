@@ -23,11 +23,13 @@
 // rotations exactly.
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "anim/body_measure.h"
 #include "anim/skeleton.h"
 
 namespace thespis::core::anim {
@@ -47,6 +49,13 @@ struct RetargetOptions {
     /// rest gives its own rest feet height; one that does not (motion capture hanging from its
     /// root) is placed by its hips alone. clip_retarget.h finds it from a whole clip.
     std::optional<double> sourcePlantedFeet;
+    /// Per foot joint (H-Anim name): the turn, in the source joint's frame, that makes it flat on
+    /// the floor as it is when the source stands on it. Feet are otherwise kept as the source holds
+    /// them, flat when its rest pose is (clip_retarget.h measures this from a whole clip).
+    std::map<std::string, Quat> flatFeet;
+    /// The soles, when known better than body_measure.h's guess from the joints (from a mesh:
+    /// scene/foot_soles.h).
+    std::vector<BodyMeasure::SolePoint> sourceSoles, targetSoles;
 };
 
 class FrameRetarget {
@@ -63,6 +72,8 @@ public:
     ScaleSource scaleSource() const { return m_scaleSource; }
     /// `toFrame` has the target layout's floatCount().
     void apply(std::span<const float> fromFrame, std::span<float> toFrame) const;
+    /// The same with where the source's feet stand in this frame (a capture whose floor drifts).
+    void apply(std::span<const float> fromFrame, std::span<float> toFrame, float sourcePlantedFeet) const;
 
 private:
     // A mapped target rotation: local = before · conj(Π up) · (Π down) · after, with up / down
@@ -82,9 +93,15 @@ private:
         Vec3 offset;
     };
     static ChainStep chainStep(const Skeleton& skeleton, int joint);
-    /// Position of a chain's last joint: from the first joint's translation (`fromOrigin`: the
-    /// source's root) or relative to the first joint.
-    static Vec3 chainEnd(std::span<const ChainStep> chain, std::span<const float> frame, bool fromOrigin);
+    /// Position and orientation of a chain's last joint: from the first joint's translation
+    /// (`fromOrigin`: the source's root) or relative to the first joint.
+    static std::pair<Vec3, Quat> chainPose(std::span<const ChainStep> chain, std::span<const float> frame,
+                                           bool fromOrigin);
+    // A sole point (body_measure.h) at the end of a chain: steps [begin, end), its offset there.
+    struct Sole {
+        std::uint32_t begin = 0, end = 0;
+        Vec3 offset;
+    };
     struct TranslationCopy {
         std::size_t from = 0, to = 0;
         Vec3 add; ///< to = from · scale + add
@@ -100,10 +117,10 @@ private:
     std::size_t m_placedTranslation = 0; ///< float offset of the translation written
     Vec3 m_placeAdd;                     ///< it is source points · scale + add − target points
     float m_placedBaseY = 0;             ///< world height of the placed joint's parent at rest
-    // Feet: chains to every foot joint (source from its root, target from the placed joint), and
-    // the heights that keep a planted foot on the ground.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> m_sourceFeet, m_targetFeet;
-    static constexpr std::size_t kMaxFootJoints = 64; ///< more, and the feet are not matched
+    // Feet: the soles (source chains from its root, target chains from the placed joint) and the
+    // heights that keep a planted foot on the ground.
+    std::vector<Sole> m_sourceSoles, m_targetSoles;
+    static constexpr std::size_t kMaxSoles = 96; ///< more, and the feet are not matched
     bool m_matchFeet = false;
     float m_sourcePlanted = 0, m_targetFeetRest = 0, m_sourceSoftness = 1, m_targetSoftness = 1;
     std::vector<TranslationCopy> m_translations;

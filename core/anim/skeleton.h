@@ -25,6 +25,7 @@ struct Joint {
     /// The joint's translation is animated (always true for the root): the frame then holds a
     /// translation element for it, replacing `offset`.
     bool translates = false;
+    bool operator==(const Joint&) const = default;
 };
 
 class Skeleton {

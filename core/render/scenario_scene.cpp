@@ -5,6 +5,7 @@
 #include "lighting/probe.h"
 #include "render/shaders.h"
 #include "scenario/scenario_character.h"
+#include "scene/foot_soles.h"
 
 namespace thespis::core::render {
 
@@ -99,13 +100,19 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
         Performer performer;
         performer.runtime = characterRuntime;
         performer.node = *node;
-        performer.retarget = anim::FrameRetarget(characterRuntime->skeleton, shared->skeleton);
+        // The body's own soles (from its mesh) stay on the floor where the animation's feet are.
+        anim::RetargetOptions retarget;
+        retarget.targetSoles = scene::footSoles(*shared);
+        if (characterRuntime->skeleton.joints() == shared->skeleton.joints())
+            retarget.sourceSoles = retarget.targetSoles; // the body's own rig: the same feet
+        performer.retarget = anim::FrameRetarget(characterRuntime->skeleton, shared->skeleton, retarget);
         if (performer.retarget.mappedJointCount() < std::min(characterRuntime->skeleton.jointCount(), 4))
             self->m_warnings.push_back(scenario.characters[i].name + ": its body shares only " +
                                        std::to_string(performer.retarget.mappedJointCount()) +
                                        " joint names with its animation skeleton, so it will hardly move.");
         performer.scheduleFrame = characterRuntime->skeleton.restFrame();
         performer.bodyFrame = shared->skeleton.restFrame();
+        performer.bodyLayout = shared->skeleton.frameLayout();
         self->m_performers.push_back(std::move(performer));
     }
     self->setTime(0.0);
@@ -134,9 +141,11 @@ void ScenarioScene::setTime(double seconds)
 {
     m_time = seconds;
     for (Performer& performer : m_performers) {
+        // Placed after retargeting: a body of another size must not scale where it stands.
         if (performer.runtime->body)
             performer.runtime->body->evaluate(seconds, performer.scheduleFrame);
         performer.retarget.apply(performer.scheduleFrame, performer.bodyFrame);
+        performer.runtime->place(*performer.bodyLayout, performer.bodyFrame);
         performer.node->setPose(performer.bodyFrame);
     }
 }

@@ -68,6 +68,7 @@ private:
         const scenario::CharacterRuntime* runtime = nullptr;
         CharacterNode* node = nullptr;
         anim::FrameRetarget retarget;
+        anim::FrameLayoutPtr bodyLayout;
         std::vector<float> scheduleFrame, bodyFrame;
     };
     scenario::ScenarioRuntime m_runtime;

@@ -1,7 +1,8 @@
 #pragma once
-// The scenario document (format "thespis-scenario", version 2): characters with their skeleton,
-// clips and gesture database (gesticon), layers of actions (the blending schedules) with their
-// timeline state (mute / solo / lock), named joint masks, timeline markers. Plain data with
+// The scenario document (format "thespis-scenario", version 3): characters with their skeleton,
+// body, placement, clips and gesture database (gesticon), layers of actions (the blending
+// schedules) with their timeline state (mute / solo / lock), named joint masks, timeline
+// markers, the light. Plain data with
 // value semantics; io is in scenario_io.h, building runnable schedules in scenario_runtime.h.
 // Times are exact integer ticks (util/tick.h). Fields this version does not know are kept in
 // `extra` and written back unchanged.
@@ -21,11 +22,23 @@
 
 namespace thespis::core::scenario {
 
-/// A clip a character can play: a BVH file beside the scenario, or keyframes stored inline.
+/// A clip a character can play: motion capture in a file beside the scenario (BVH, or an
+/// animation of a glTF file), or keyframes stored inline. A file's motion is retargeted onto the
+/// character's skeleton (anim/clip_retarget.h): resized by the bodies' legs and stood on the
+/// floor the performer stood on.
 struct ClipAsset {
     std::string name;
     std::string file;                 ///< path relative to the scenario file; empty for inline clips
     double frameRateOverride = 0;     ///< > 0: replaces the BVH header's frame rate
+    // Files (format 3).
+    std::string animation;            ///< glTF: the animation's name (empty: the file's first)
+    /// Metres per file unit (CMU's 0.0564, 0.01 for centimetres); 0: as the file says (glTF is in
+    /// metres; a BVH's convention tells, else its size). Sizes the motion where a body has no legs.
+    double unit = 0;
+    bool fitGround = true;            ///< stand the motion on the performer's floor
+    bool keepCalibrationFrame = false;///< keep a BVH's calibration first frame (CMU's T-pose)
+    /// File joint name → H-Anim name, replacing the automatic mapping (BVH) or overriding it (glTF).
+    std::map<std::string, std::string> mapping;
     // Inline keyframes (file empty), per frame in this order: rotations for `joints` (x y z w
     // each), when `rootTranslation` is set the translation of joints[0] (x y z), then one value
     // per name in `scalars` (e.g. MPEG-4 FAPs "fap3", for face layers).
@@ -55,10 +68,17 @@ struct ModifierSpec {
     anim::Vec3 translation;   ///< GlobalTransform
     double offset = 0;        ///< TimeOffset (seconds)
     double start = 0, end = 0;///< Trim (source seconds)
+    /// Loop: each repetition starts where the last one ended (root position and heading), as a
+    /// walk goes on, instead of jumping back (format 3).
+    bool rootMotion = false;
     nlohmann::json extra = nlohmann::json::object();
     nlohmann::json warpExtra = nlohmann::json::object(); ///< unknown fields of the warp curve
     bool operator==(const ModifierSpec&) const = default;
 };
+
+/// Where an action's motion plays (format 3): as recorded (in the character's frame), from the
+/// character's place and heading, or on from where the layer's previous action leaves the body.
+enum class Placement { World, Character, Continue };
 
 struct ActionSpec {
     std::string name;
@@ -70,6 +90,7 @@ struct ActionSpec {
     std::string mask;                     ///< name of a scenario mask; empty = whole body
     anim::BlendMode mode = anim::BlendMode::Normalized;
     bool renderOutsideDomain = false;
+    Placement placement = Placement::World;
     nlohmann::json extra = nlohmann::json::object();
     /// Unknown fields of the weight / scale curve objects (and, under "keys", of their keys).
     nlohmann::json weightExtra = nlohmann::json::object();
@@ -112,8 +133,13 @@ struct Gesture {
 
 struct Character {
     std::string name;
-    /// "hanim-loa1", "hanim-loa2", "hanim-25", or "clip:NAME" to use a BVH clip's own skeleton.
+    /// "hanim-loa1", "hanim-loa2", "hanim-25", "model" for the glTF model's own rig (format 3),
+    /// or "clip:NAME" to use a BVH clip's own skeleton.
     std::string skeleton = "hanim-loa1";
+    /// Where the character stands (metres) and which way it faces (degrees about +Y; 0 faces +Z):
+    /// its whole motion is moved so (format 3).
+    anim::Vec3 position;
+    double heading = 0;
     /// glTF file of the character's body (path relative to the scenario); empty = the built-in
     /// procedural humanoid.
     std::string model;
@@ -145,6 +171,8 @@ struct NamedMask {
 struct LightingSpec {
     std::string probe;
     std::string layout = "latlong";
+    double rotation = 0;  ///< degrees about the vertical axis (format 3)
+    double intensity = 1; ///< a multiplier of the probe's radiance (format 3)
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const LightingSpec&) const = default;
 };

@@ -48,10 +48,48 @@ static Result<void> upgradeV1toV2(nlohmann::json& document)
     return {};
 }
 
+// 2 → 3: clips gained retarget options and glTF animations, actions their placement, loops root
+// motion, characters a placement and the "model" skeleton, the light a rotation and intensity.
+// All are optional: only the schema names of the objects that changed are new.
+static Result<void> upgradeV2toV3(nlohmann::json& document)
+{
+    const auto renameSchema = [](nlohmann::json& object, std::string_view from, std::string_view to) {
+        if (!object.is_object())
+            return;
+        const auto schema = object.find("schema");
+        if (schema != object.end() && schema->is_string() && schema->get_ref<const std::string&>() == from)
+            *schema = to;
+    };
+    const auto each = [](nlohmann::json& object, const char* member, const auto& visit) {
+        if (!object.is_object())
+            return;
+        const auto list = object.find(member);
+        if (list != object.end() && list->is_array())
+            for (nlohmann::json& item : *list)
+                visit(item);
+    };
+    renameSchema(document, "Scenario.2", "Scenario.3");
+    if (document.is_object())
+        if (const auto lighting = document.find("lighting"); lighting != document.end())
+            renameSchema(*lighting, "Lighting.1", "Lighting.2");
+    each(document, "characters", [&](nlohmann::json& character) {
+        renameSchema(character, "Character.2", "Character.3");
+        each(character, "clips", [&](nlohmann::json& clip) { renameSchema(clip, "Clip.1", "Clip.2"); });
+        each(character, "layers", [&](nlohmann::json& layer) {
+            each(layer, "actions", [&](nlohmann::json& action) {
+                renameSchema(action, "Action.1", "Action.2");
+                each(action, "modifiers", [&](nlohmann::json& m) { renameSchema(m, "Modifier.1", "Modifier.2"); });
+            });
+        });
+    });
+    return {};
+}
+
 std::span<const UpgradeStep> upgradeSteps()
 {
     static constexpr UpgradeStep steps[] = {
         {format::Initial, "timeline state and gesticon", &upgradeV1toV2},
+        {format::TimelineAndGesticon, "clip import options and placement", &upgradeV2toV3},
     };
     return steps;
 }

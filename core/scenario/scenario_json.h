@@ -109,6 +109,11 @@ constexpr NamedValue<ModifierKind> kModifierKinds[] = {
     {ModifierKind::GlobalTransform, "globalTransform"}, {ModifierKind::TimeOffset, "timeOffset"},
     {ModifierKind::Trim, "trim"},
 };
+constexpr NamedValue<Placement> kPlacements[] = {
+    {Placement::World, "world"},
+    {Placement::Character, "character"},
+    {Placement::Continue, "continue"},
+};
 constexpr NamedValue<LayerKind> kLayerKinds[] = {
     {LayerKind::Body, "body"},
     {LayerKind::Face, "face"},

@@ -300,7 +300,7 @@ anim::Curve readCurve(const json& value, const std::string& path, CurveUse use, 
 
 ModifierSpec readModifier(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Modifier.1");
+    ObjectReader r(value, path, "Modifier.2");
     ModifierSpec m;
     m.kind = r.enumeration("kind", kModifierKinds, true, ModifierKind::Loop);
     switch (m.kind) {
@@ -313,6 +313,7 @@ ModifierSpec readModifier(const json& value, const std::string& path)
         break;
     case ModifierKind::Loop:
         m.count = int(r.integer("count", true, 0, 0, std::numeric_limits<int>::max()));
+        m.rootMotion = r.boolean("rootMotion", false);
         break;
     case ModifierKind::Mirror:
         m.axis = int(r.integer("axis", false, 0, 0, 2));
@@ -357,7 +358,7 @@ ModifierSpec readModifier(const json& value, const std::string& path)
 
 ActionSpec readAction(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Action.1");
+    ObjectReader r(value, path, "Action.2");
     ActionSpec a;
     a.name = r.name();
     a.clip = r.name("clip");
@@ -372,6 +373,7 @@ ActionSpec readAction(const json& value, const std::string& path)
     a.mask = r.string("mask", false);
     a.mode = r.enumeration("mode", kBlendModes, false, anim::BlendMode::Normalized);
     a.renderOutsideDomain = r.boolean("renderOutsideDomain", false);
+    a.placement = r.enumeration("placement", kPlacements, false, Placement::World);
     a.extra = r.extra();
     return a;
 }
@@ -395,7 +397,7 @@ Layer readLayer(const json& value, const std::string& path)
 
 ClipAsset readClip(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Clip.1");
+    ObjectReader r(value, path, "Clip.2");
     ClipAsset clip;
     clip.name = r.name();
     if (r.find("file")) {
@@ -406,7 +408,27 @@ ClipAsset readClip(const json& value, const std::string& path)
         for (const char* inlineField : {"joints", "rootTranslation", "scalars", "frames"})
             if (r.find(inlineField))
                 fail(r.fieldPath(inlineField), "a clip read from a file cannot also hold inline keyframes");
+        clip.animation = r.string("animation", false);
+        clip.unit = r.number("unit", false, 0, Range::NonNegative);
+        clip.fitGround = r.boolean("fitGround", true);
+        clip.keepCalibrationFrame = r.boolean("keepCalibrationFrame", false);
+        if (const json* mapping = r.find("mapping")) {
+            if (!mapping->is_object())
+                fail(r.fieldPath("mapping"), "expected an object of file joint names and H-Anim names, found "
+                                                 + describeValue(*mapping));
+            for (const auto& [joint, name] : mapping->items()) {
+                const std::string at = r.fieldPath("mapping") + "." + joint;
+                if (joint.empty())
+                    fail(r.fieldPath("mapping"), "a file joint name must not be empty");
+                if (!name.is_string())
+                    fail(at, "expected a joint name, found " + describeValue(name));
+                clip.mapping[joint] = name.get<std::string>();
+            }
+        }
     } else {
+        for (const char* fileField : {"animation", "unit", "fitGround", "keepCalibrationFrame", "mapping"})
+            if (r.find(fileField))
+                fail(r.fieldPath(fileField), "only a clip read from a file has this");
         clip.frameRate = r.number("frameRate", true, 30, Range::Positive);
         clip.joints = r.names("joints");
         clip.rootTranslation = r.boolean("rootTranslation", false);
@@ -439,7 +461,7 @@ ClipAsset readClip(const json& value, const std::string& path)
 
 bool isSkeletonSpec(const std::string& spec)
 {
-    return spec == "hanim-loa1" || spec == "hanim-loa2" || spec == "hanim-25"
+    return spec == "hanim-loa1" || spec == "hanim-loa2" || spec == "hanim-25" || spec == "model"
            || (spec.starts_with("clip:") && spec.size() > 5);
 }
 
@@ -469,12 +491,14 @@ scene::SegmentTag readSegmentTag(const json& value, const std::string& path)
 
 LightingSpec readLighting(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Lighting.1");
+    ObjectReader r(value, path, "Lighting.2");
     LightingSpec lighting;
     lighting.probe = r.string("probe", false);
     lighting.layout = r.string("layout", false, lighting.layout);
     if (auto layout = lighting::parseProbeLayout(lighting.layout); !layout)
         fail(r.fieldPath("layout"), layout.error().message);
+    lighting.rotation = r.number("rotation", false, 0, Range::Any);
+    lighting.intensity = r.number("intensity", false, 1, Range::NonNegative);
     lighting.extra = r.extra();
     return lighting;
 }
@@ -505,14 +529,25 @@ Marker readMarker(const json& value, const std::string& path)
 
 Character readCharacter(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Character.2");
+    ObjectReader r(value, path, "Character.3");
     Character character;
     character.name = r.name();
     character.skeleton = r.string("skeleton", false, "hanim-loa1");
     if (!isSkeletonSpec(character.skeleton))
-        fail(r.fieldPath("skeleton"), "expected \"hanim-loa1\", \"hanim-loa2\", \"hanim-25\" or \"clip:NAME\", found "
+        fail(r.fieldPath("skeleton"), "expected \"hanim-loa1\", \"hanim-loa2\", \"hanim-25\", \"model\" or \"clip:NAME\", found "
                                           + quote(character.skeleton));
     character.model = r.string("model", false);
+    if (character.skeleton == "model" && character.model.empty())
+        fail(r.fieldPath("skeleton"), "\"model\" plays on the model's own rig, and the character has no model");
+    if (const json* position = r.find("position")) {
+        const std::string at = r.fieldPath("position");
+        if (!position->is_array() || position->size() != 3)
+            fail(at, "expected a position [x, y, z] in metres, found " + describeValue(*position));
+        character.position = {ObjectReader::checkedFloat((*position)[0], indexed(at, 0), Range::Any),
+                              ObjectReader::checkedFloat((*position)[1], indexed(at, 1), Range::Any),
+                              ObjectReader::checkedFloat((*position)[2], indexed(at, 2), Range::Any)};
+    }
+    character.heading = r.number("heading", false, 0, Range::Any);
     character.bake = r.string("bake", false);
     std::set<std::string> names;
     const json& segments = r.array("segments", false);
@@ -576,7 +611,7 @@ NamedMask readMask(const json& value, const std::string& path)
 
 Scenario readScenario(const json& document)
 {
-    ObjectReader r(document, "", "Scenario.2");
+    ObjectReader r(document, "", "Scenario.3");
     r.find("format");  // checked before
     r.find("version");
     Scenario scenario;

@@ -4,17 +4,44 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
+#include <tuple>
 #include <optional>
 #include <set>
 #include <utility>
 
-#include "anim/bvh.h"
+#include "anim/clip_retarget.h"
+#include "scene/default_humanoid.h"
+#include "scene/foot_soles.h"
 #include "anim/hanim.h"
 #include "anim/modifiers.h"
 #include "lighting/probe.h"
 #include "scene/gltf_mesh.h"
 
 namespace thespis::core::scenario {
+
+void CharacterRuntime::evaluateBody(double seconds, std::span<float> frame) const
+{
+    if (body)
+        body->evaluate(seconds, frame);
+    place(*skeleton.frameLayout(), frame);
+}
+
+void CharacterRuntime::place(const anim::FrameLayout& layout, std::span<float> frame) const
+{
+    const anim::RootElements root = anim::rootElements(layout);
+    if (!root.valid)
+        return;
+    if (root.rotation >= 0) {
+        anim::Quat& q = anim::rotationAt(frame, root.rotation);
+        q = anim::normalize(placementRotation * q);
+    }
+    float* p = &frame[root.translation];
+    const anim::Vec3 placed = anim::rotate(placementRotation, anim::Vec3{p[0], p[1], p[2]}) + placementTranslation;
+    p[0] = placed.x;
+    p[1] = placed.y;
+    p[2] = placed.z;
+}
 
 const CharacterRuntime* ScenarioRuntime::findCharacter(const std::string& characterName) const
 {
@@ -46,55 +73,27 @@ std::string joinNames(const std::vector<std::string>& names, std::size_t limit =
 
 // A clip as read from its source, before it is put on a character's layout.
 struct SourceClip {
-    std::shared_ptr<KeyframeClip> clip;
-    std::optional<anim::Skeleton> skeleton; // BVH clips bring their own
+    std::shared_ptr<const KeyframeClip> clip;
+    std::shared_ptr<const ClipFile> file; // clips read from a file bring their rig
+    const ClipAsset* asset = nullptr;
 };
 
 } // namespace
 
-struct ClipFileCache::Key {
-    std::filesystem::path path;
-    double frameRateOverride = 0;
-    std::filesystem::file_time_type modified;
-};
-
-struct ClipFileCache::Entry {
-    SourceClip source;
-    std::vector<std::string> unmapped;
-};
-
-ClipFileCache::ClipFileCache() = default;
-ClipFileCache::~ClipFileCache() = default;
-
-const ClipFileCache::Entry* ClipFileCache::find(const std::filesystem::path& path, double frameRateOverride) const
-{
-    std::error_code error;
-    const auto modified = std::filesystem::last_write_time(path, error);
-    for (const auto& [key, entry] : m_entries)
-        if (key->path == path && key->frameRateOverride == frameRateOverride)
-            return !error && key->modified == modified ? entry.get() : nullptr;
-    return nullptr;
-}
-
-void ClipFileCache::store(const std::filesystem::path& path, double frameRateOverride, Entry entry)
-{
-    std::error_code error;
-    auto key = std::make_unique<Key>(Key{path, frameRateOverride, std::filesystem::last_write_time(path, error)});
-    for (auto& [k, e] : m_entries)
-        if (k->path == path && k->frameRateOverride == frameRateOverride) {
-            k = std::move(key);
-            *e = std::move(entry);
-            return;
-        }
-    m_entries.emplace_back(std::move(key), std::make_unique<Entry>(std::move(entry)));
-}
-
-void ClipFileCache::clear()
-{
-    m_entries.clear();
-}
-
 namespace {
+
+// The soles of the built-in humanoid at a level (scene/foot_soles.h), made once.
+const std::vector<anim::BodyMeasure::SolePoint>& humanoidSoles(anim::hanim::Level level)
+{
+    static const auto soles = [] {
+        std::map<anim::hanim::Level, std::vector<anim::BodyMeasure::SolePoint>> all;
+        for (const anim::hanim::Level l : {anim::hanim::Level::Loa1, anim::hanim::Level::Loa2, anim::hanim::Level::Subset25})
+            if (auto humanoid = scene::makeDefaultHumanoid({.level = l}))
+                all[l] = scene::footSoles(*humanoid);
+        return all;
+    }();
+    return soles.at(level);
+}
 
 // Builds the runtime of a scenario and collects every problem it meets (buildRuntime fails with
 // the first, validateScenario lists them all). A part that fails (a clip, an action, a
@@ -102,8 +101,8 @@ namespace {
 // everything that depends on it. Problems name the character, layer, action and field.
 class RuntimeBuilder {
 public:
-    RuntimeBuilder(const Scenario& scenario, std::filesystem::path baseDir, ClipFileCache* cache = nullptr)
-        : m_scenario(scenario), m_baseDir(std::move(baseDir)), m_cache(cache)
+    RuntimeBuilder(const Scenario& scenario, std::filesystem::path baseDir, AssetCache* cache = nullptr)
+        : m_scenario(scenario), m_baseDir(std::move(baseDir)), m_cache(cache ? cache : &m_ownCache)
     {
     }
 
@@ -168,6 +167,7 @@ private:
                                        std::vector<std::string>& warnings)
     {
         SourceClip source;
+        source.asset = &asset;
         if (!asset.file.empty()) {
             if (!asset.frames.empty() || !asset.joints.empty() || !asset.scalars.empty()) {
                 problem(ErrorCode::InvalidSchedule, where + ": a clip read from a file cannot also hold inline keyframes.");
@@ -177,33 +177,20 @@ private:
                 problem(ErrorCode::InvalidSchedule, where + ": the frame rate override must be a positive number.");
                 return std::nullopt;
             }
-            anim::bvh::ImportOptions options;
-            if (asset.frameRateOverride > 0)
-                options.frameRate = asset.frameRateOverride;
-            const std::filesystem::path path = m_baseDir / asset.file;
-            const ClipFileCache::Entry* cached = m_cache ? m_cache->find(path, asset.frameRateOverride) : nullptr;
-            ClipFileCache::Entry read;
-            if (!cached) {
-                auto imported = anim::bvh::load(path, options);
-                if (!imported) {
-                    const Error& e = imported.error();
-                    problem(e.code, where + ", file " + quote(asset.file) + ": " + e.message,
-                            "looked for " + path.string() + (e.detail.empty() ? "" : "; " + e.detail));
-                    return std::nullopt;
-                }
-                read.source.clip = imported->clip;
-                read.source.skeleton = std::move(imported->skeleton);
-                read.unmapped = std::move(imported->report.unmapped);
-                if (m_cache) {
-                    m_cache->store(path, asset.frameRateOverride, read);
-                    cached = m_cache->find(path, asset.frameRateOverride);
-                }
+            auto read = m_cache->clipFile(asset, m_baseDir);
+            if (!read) {
+                const Error& e = read.error();
+                problem(e.code, where + ", file " + quote(asset.file) + ": " + e.message,
+                        "looked for " + (m_baseDir / asset.file).string() + (e.detail.empty() ? "" : "; " + e.detail));
+                return std::nullopt;
             }
-            const ClipFileCache::Entry& entry = cached ? *cached : read;
-            if (!entry.unmapped.empty())
-                warnings.push_back(where + ": " + std::to_string(entry.unmapped.size())
-                                   + " BVH joints kept their own names (not H-Anim): " + joinNames(entry.unmapped) + ".");
-            return entry.source;
+            const ClipFile& file = **read;
+            if (!file.report.unmapped.empty())
+                warnings.push_back(where + ": " + std::to_string(file.report.unmapped.size())
+                                   + " joints of the file kept their own names (not H-Anim): " + joinNames(file.report.unmapped) + ".");
+            source.clip = file.clip;
+            source.file = *read;
+            return source;
         }
         if (asset.joints.empty() && asset.scalars.empty()) {
             problem(ErrorCode::InvalidSchedule, where + ": the clip has neither a file nor inline keyframes.");
@@ -244,12 +231,28 @@ private:
                                                   std::map<std::string, SourceClip>& sources)
     {
         const std::string& spec = character.skeleton;
-        if (spec == "hanim-loa1")
-            return anim::hanim::skeleton(anim::hanim::Level::Loa1);
-        if (spec == "hanim-loa2")
-            return anim::hanim::skeleton(anim::hanim::Level::Loa2);
-        if (spec == "hanim-25")
-            return anim::hanim::skeleton(anim::hanim::Level::Subset25);
+        for (const auto& [name, level] : {std::pair{"hanim-loa1", anim::hanim::Level::Loa1},
+                                          std::pair{"hanim-loa2", anim::hanim::Level::Loa2},
+                                          std::pair{"hanim-25", anim::hanim::Level::Subset25}})
+            if (spec == name) {
+                if (character.model.empty()) // the built-in humanoid: motion keeps its own feet down
+                    m_soles = humanoidSoles(level);
+                return anim::hanim::skeleton(level);
+            }
+        if (spec == "model") {
+            if (character.model.empty()) {
+                problem(ErrorCode::InvalidSchedule, who + ", skeleton \"model\": the character has no model to take its rig from.");
+                return std::nullopt;
+            }
+            auto rig = m_cache->modelRig(m_baseDir / character.model);
+            if (!rig) {
+                problem(rig.error().code, who + ", model " + quote(character.model) + ": " + rig.error().message,
+                        rig.error().detail);
+                return std::nullopt;
+            }
+            m_soles = (*rig)->soles;
+            return (*rig)->skeleton;
+        }
         if (spec.starts_with("clip:") && spec.size() > 5) {
             const std::string clipName = spec.substr(5);
             const auto it = sources.find(clipName);
@@ -261,21 +264,42 @@ private:
                             who + ", skeleton " + quote(spec) + ": the character has no clip named " + quote(clipName) + ".");
                 return std::nullopt; // a clip that failed to load was reported already
             }
-            if (!it->second.skeleton) {
+            if (!it->second.file) {
                 problem(ErrorCode::InvalidSchedule, who + ", skeleton " + quote(spec)
-                                                        + ": the clip is stored inline; only a BVH clip carries a skeleton.");
+                                                        + ": the clip is stored inline; only a clip read from a file carries a skeleton.");
                 return std::nullopt;
             }
-            return *it->second.skeleton;
+            return it->second.file->skeleton;
         }
         problem(ErrorCode::InvalidSchedule, who + ": unknown skeleton " + quote(spec)
-                                                + " (expected hanim-loa1, hanim-loa2, hanim-25 or clip:NAME).");
+                                                + " (expected hanim-loa1, hanim-loa2, hanim-25, model or clip:NAME).");
         return std::nullopt;
+    }
+
+    // A file's clip on the character's skeleton: as it is when it is that very rig, else
+    // retargeted (resized by the legs, on the performer's floor). Null (and a problem) when it
+    // shares no joint with the skeleton.
+    std::shared_ptr<const KeyframeClip> retargeted(const SourceClip& source, const anim::Skeleton& skeleton,
+                                                   const std::string& where)
+    {
+        const anim::Skeleton& rig = source.file->skeleton;
+        if (rig.joints() == skeleton.joints())
+            return source.clip;
+        anim::ClipRetargetOptions options;
+        options.retarget.sourceUnit = source.asset->unit > 0 ? source.asset->unit : source.file->report.unit;
+        options.fitGround = source.asset->fitGround;
+        options.retarget.targetSoles = m_soles;
+        auto made = anim::retargetClip(*source.clip, rig, skeleton, options);
+        if (!made) {
+            problem(ErrorCode::InvalidSchedule, where + ": " + made.error().message);
+            return nullptr;
+        }
+        return made->clip;
     }
 
     // The clip on `layout`; caches per layout kind. Null (and a problem) when the clip shares no
     // element with the layout.
-    std::shared_ptr<KeyframeClip> onLayout(const SourceClip& source, const anim::FrameLayoutPtr& layout,
+    std::shared_ptr<const KeyframeClip> onLayout(const SourceClip& source, const anim::FrameLayoutPtr& layout,
                                            std::span<const float> rest, const std::string& where,
                                            std::vector<std::string>* dropped)
     {
@@ -307,7 +331,7 @@ private:
         switch (m.kind) {
         case ModifierKind::TimeStretch: return wrap(anim::TimeStretch::create(std::move(source), m.factor));
         case ModifierKind::TimeWarp: return wrap(anim::TimeWarp::create(std::move(source), m.warp, m.duration));
-        case ModifierKind::Loop: return wrap(anim::Loop::create(std::move(source), m.count));
+        case ModifierKind::Loop: return wrap(anim::Loop::create(std::move(source), m.count, m.rootMotion));
         case ModifierKind::Mirror: return wrap(anim::Mirror::create(std::move(source), m.axis));
         case ModifierKind::GlobalTransform: {
             const anim::Quat q = m.rotation;
@@ -336,7 +360,7 @@ private:
     struct Context {
         const Character& character;
         const std::map<std::string, SourceClip>& sources;
-        std::map<std::string, std::shared_ptr<KeyframeClip>> faceClips;
+        std::map<std::string, std::shared_ptr<const KeyframeClip>> faceClips;
     };
 
     std::optional<anim::BlendingAction> buildAction(const ActionSpec& spec, const Layer& layer, Context& ctx,
@@ -418,6 +442,51 @@ private:
         return action;
     }
 
+    // Where each action of a body layer plays (ActionSpec::placement): in start order, an action
+    // starting at the character's place (and heading) or where the layer's previous action leaves
+    // the body at its start is moved on the floor so that its first frame's root stands there.
+    static void placeActions(const Layer& layer, std::vector<std::optional<anim::BlendingAction>>& actions)
+    {
+        std::vector<std::size_t> order(actions.size());
+        for (std::size_t a = 0; a < order.size(); ++a)
+            order[a] = a;
+        std::stable_sort(order.begin(), order.end(),
+                         [&](std::size_t a, std::size_t b) { return layer.actions[a].start < layer.actions[b].start; });
+        const anim::BlendingAction* previous = nullptr;
+        std::vector<float> frame;
+        // The root's place on the floor and heading in a source's frame at `seconds`.
+        const auto rootAt = [&](const anim::BlendablePtr& source, double seconds) {
+            const anim::RootElements root = anim::rootElements(*source->layout());
+            frame.assign(source->layout()->floatCount(), 0.0f);
+            source->evaluate(seconds, frame);
+            const anim::Vec3 at{frame[root.translation], 0.0f, frame[root.translation + 2]};
+            const double facing = root.rotation >= 0 ? anim::heading(anim::rotationAt(std::span<const float>(frame), root.rotation)) : 0.0;
+            return std::pair{at, facing};
+        };
+        for (std::size_t a : order) {
+            std::optional<anim::BlendingAction>& action = actions[a];
+            if (!action)
+                continue;
+            const Placement placement = layer.actions[a].placement;
+            if (placement != Placement::World && anim::rootElements(*action->source->layout()).valid) {
+                const anim::TimeDomain domain = action->source->domain();
+                const auto [from, fromHeading] = rootAt(action->source, domain.start);
+                anim::Vec3 to;
+                double toHeading = 0;
+                if (placement == Placement::Continue && previous) {
+                    const anim::TimeDomain before = previous->source->domain();
+                    const double local = std::clamp(before.start + action->start - previous->start, before.start, before.end);
+                    std::tie(to, toHeading) = rootAt(previous->source, local);
+                }
+                const anim::FloorMove move = anim::FloorMove::onto(from, fromHeading, to, toHeading);
+                const auto shift = move.apply(anim::Vec3{});
+                if (auto placed = anim::GlobalTransform::create(action->source, move.rotation(), shift))
+                    action->source = std::move(placed).value();
+            }
+            previous = &*action;
+        }
+    }
+
     std::optional<CharacterRuntime> buildCharacter(const Character& character)
     {
         const std::string who = "Character " + quote(character.name);
@@ -442,12 +511,29 @@ private:
                 sources.emplace(asset.name, std::move(*loaded));
         }
 
+        m_soles.clear();
         auto skeleton = resolveSkeleton(character, who, sources);
         if (!skeleton)
             return std::nullopt;
         runtime.skeleton = *skeleton;
+        if (!std::isfinite(character.heading) || !std::isfinite(character.position.x)
+            || !std::isfinite(character.position.y) || !std::isfinite(character.position.z))
+            problem(ErrorCode::InvalidSchedule, who + ": its position and heading must be finite numbers.");
+        runtime.placementRotation =
+            anim::Quat::fromAxisAngle(anim::Vec3{0, 1, 0}, float(character.heading * std::numbers::pi / 180.0));
+        runtime.placementTranslation = character.position;
         const std::vector<float> rest = runtime.skeleton.restFrame();
         for (const auto& [name, source] : sources) {
+            if (source.file) {
+                runtime.clipReports[name] = source.file->report;
+                const auto& joints = source.file->skeleton.joints();
+                if (std::none_of(joints.begin(), joints.end(),
+                                 [&](const anim::Joint& j) { return runtime.skeleton.find(j.name) >= 0; }))
+                    continue; // no body joint: fine for a face clip, an error if a body layer plays it
+                if (auto onSkeleton = retargeted(source, runtime.skeleton, who + ", clip " + quote(name)))
+                    runtime.clips.emplace(name, std::move(onSkeleton));
+                continue;
+            }
             std::vector<std::string> dropped;
             auto onSkeleton = onLayout(source, runtime.skeleton.frameLayout(), rest, who + ", clip " + quote(name), &dropped);
             if (!onSkeleton)
@@ -489,16 +575,23 @@ private:
             const bool body = layer.kind == LayerKind::Body;
             auto schedule = body ? std::make_shared<BlendingSchedule>(runtime.skeleton)
                                  : std::make_shared<BlendingSchedule>(anim::FrameLayout::mpeg4Face());
+            std::vector<std::optional<anim::BlendingAction>> actions;
+            for (std::size_t a = 0; a < layer.actions.size(); ++a) {
+                const ActionSpec& spec = layer.actions[a];
+                const std::string at = where + ", action " + (spec.name.empty() ? std::to_string(a + 1) : quote(spec.name));
+                actions.push_back(buildAction(spec, layer, ctx, at, runtime));
+            }
+            if (body)
+                placeActions(layer, actions);
             std::vector<anim::ActionId> ids;
             for (std::size_t a = 0; a < layer.actions.size(); ++a) {
                 const ActionSpec& spec = layer.actions[a];
                 const std::string at = where + ", action " + (spec.name.empty() ? std::to_string(a + 1) : quote(spec.name));
-                auto action = buildAction(spec, layer, ctx, at, runtime);
-                if (!action) {
+                if (!actions[a]) {
                     ids.push_back(0);
                     continue;
                 }
-                auto id = schedule->addAction(std::move(*action));
+                auto id = schedule->addAction(std::move(*actions[a]));
                 if (!id) {
                     problem(ErrorCode::InvalidSchedule, at + ": " + id.error().message, id.error().detail);
                     ids.push_back(0);
@@ -535,14 +628,16 @@ private:
 
     const Scenario& m_scenario;
     std::filesystem::path m_baseDir;
-    ClipFileCache* m_cache = nullptr;
+    AssetCache m_ownCache; // when the caller keeps none
+    std::vector<anim::BodyMeasure::SolePoint> m_soles; // the character's model's, when it plays on its rig
+    AssetCache* m_cache = nullptr;
     std::map<std::string, std::shared_ptr<const anim::JointMask>> m_masks;
 };
 
 } // namespace
 
 Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const std::filesystem::path& baseDir,
-                                     ClipFileCache* cache)
+                                     AssetCache* cache)
 {
     RuntimeBuilder builder(scenario, baseDir, cache);
     ScenarioRuntime runtime = builder.build();

@@ -1,8 +1,8 @@
 #pragma once
-// Turns a scenario document into runnable blending schedules: loads every clip (BVH files
-// relative to the scenario's folder, inline keyframes), builds each character's skeleton,
-// applies modifiers, resolves masks and fills one schedule per layer, nested in one schedule
-// per character and kind (body, face). The document is not changed; problems are errors naming
+// Turns a scenario document into runnable blending schedules: loads every clip (motion files
+// relative to the scenario's folder, retargeted onto the character; inline keyframes), builds
+// each character's skeleton, applies modifiers and placements, resolves masks and fills one
+// schedule per layer, nested in one schedule per character and kind (body, face). The document is not changed; problems are errors naming
 // the character, action and field.
 
 #include <filesystem>
@@ -13,7 +13,9 @@
 
 #include "anim/blending_schedule.h"
 #include "anim/keyframe_clip.h"
+#include "anim/root_motion.h"
 #include "anim/skeleton.h"
+#include "scenario/clip_file.h"
 #include "scenario/scenario.h"
 #include "util/error.h"
 
@@ -25,12 +27,24 @@ namespace thespis::core::scenario {
 struct CharacterRuntime {
     std::string name;
     anim::Skeleton skeleton;
-    std::map<std::string, std::shared_ptr<anim::KeyframeClip>> clips; ///< on skeleton's layout
+    /// Where the character stands and faces (Character::position, heading).
+    anim::Quat placementRotation;
+    anim::Vec3 placementTranslation;
+    std::map<std::string, std::shared_ptr<const anim::KeyframeClip>> clips; ///< on skeleton's layout
     std::shared_ptr<anim::BlendingSchedule> body;       ///< every body layer, nested
     std::shared_ptr<anim::BlendingSchedule> face;       ///< every face layer (MPEG-4 FAPs), nested
     std::vector<std::shared_ptr<anim::BlendingSchedule>> layers; ///< per Layer, same order
     std::vector<std::vector<anim::ActionId>> actionIds; ///< per layer, per ActionSpec
     std::vector<std::string> warnings;                  ///< e.g. unmapped BVH joints
+    /// What reading each file clip found, by clip name (for the studio's import report).
+    std::map<std::string, ClipFileReport> clipReports;
+
+    /// The body at `seconds`: the body schedule, placed where the character stands. Allocates
+    /// nothing; `frame` has the skeleton layout's floatCount().
+    void evaluateBody(double seconds, std::span<float> frame) const;
+    /// Moves a body frame of `layout` (this skeleton's, or the rig it is retargeted onto) to where
+    /// the character stands: its root turned by the heading and shifted by the position.
+    void place(const anim::FrameLayout& layout, std::span<float> frame) const;
 };
 
 struct ScenarioRuntime {
@@ -39,30 +53,10 @@ struct ScenarioRuntime {
     const CharacterRuntime* findCharacter(const std::string& name) const;
 };
 
-/// BVH clips already read, by file and frame rate, so that an editor rebuilding the runtime after
-/// every edit reads each file once. A file changed on disk is read again (its time stamp is kept).
-class ClipFileCache {
-public:
-    ClipFileCache();
-    ~ClipFileCache();
-    ClipFileCache(const ClipFileCache&) = delete;
-    ClipFileCache& operator=(const ClipFileCache&) = delete;
-
-    struct Entry;
-    /// The cached import of `path` read at `frameRateOverride` (0: the file's own), or null.
-    const Entry* find(const std::filesystem::path& path, double frameRateOverride) const;
-    void store(const std::filesystem::path& path, double frameRateOverride, Entry entry);
-    void clear();
-
-private:
-    struct Key;
-    std::vector<std::pair<std::unique_ptr<Key>, std::unique_ptr<Entry>>> m_entries;
-};
-
 /// `baseDir` is where relative clip files are looked up (the scenario file's folder). `cache`
-/// (optional) keeps BVH files read between builds.
+/// (optional) keeps the files read between builds.
 Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const std::filesystem::path& baseDir,
-                                     ClipFileCache* cache = nullptr);
+                                     AssetCache* cache = nullptr);
 
 /// Checks a scenario without keeping the result: every problem found, empty when valid.
 std::vector<Error> validateScenario(const Scenario& scenario, const std::filesystem::path& baseDir);

@@ -107,7 +107,7 @@ ojson writeCurve(const anim::Curve& curve, const json& extra)
 ojson writeModifier(const ModifierSpec& m)
 {
     ojson out = ojson::object();
-    out["schema"] = "Modifier.1";
+    out["schema"] = "Modifier.2";
     out["kind"] = nameOf(kModifierKinds, m.kind);
     switch (m.kind) {
     case ModifierKind::TimeStretch: out["factor"] = m.factor; break;
@@ -115,7 +115,11 @@ ojson writeModifier(const ModifierSpec& m)
         out["warp"] = writeCurve(m.warp, m.warpExtra);
         out["duration"] = m.duration;
         break;
-    case ModifierKind::Loop: out["count"] = m.count; break;
+    case ModifierKind::Loop:
+        out["count"] = m.count;
+        if (m.rootMotion)
+            out["rootMotion"] = true;
+        break;
     case ModifierKind::Mirror: out["axis"] = m.axis; break;
     case ModifierKind::GlobalTransform:
         out["rotation"] = {floatForJson(m.rotation.x), floatForJson(m.rotation.y), floatForJson(m.rotation.z),
@@ -136,7 +140,7 @@ ojson writeModifier(const ModifierSpec& m)
 ojson writeAction(const ActionSpec& a)
 {
     ojson out = ojson::object();
-    out["schema"] = "Action.1";
+    out["schema"] = "Action.2";
     out["name"] = a.name;
     out["clip"] = a.clip;
     out["start"] = a.start;
@@ -152,6 +156,8 @@ ojson writeAction(const ActionSpec& a)
         out["mask"] = a.mask;
     out["mode"] = nameOf(kBlendModes, a.mode);
     out["renderOutsideDomain"] = a.renderOutsideDomain;
+    if (a.placement != Placement::World)
+        out["placement"] = nameOf(kPlacements, a.placement);
     appendExtra(out, a.extra);
     return out;
 }
@@ -181,12 +187,27 @@ ojson writeLayer(const Layer& layer)
 ojson writeClip(const ClipAsset& clip)
 {
     ojson out = ojson::object();
-    out["schema"] = "Clip.1";
+    out["schema"] = "Clip.2";
     out["name"] = clip.name;
     if (!clip.file.empty()) {
         out["file"] = clip.file;
         if (clip.frameRateOverride > 0)
             out["frameRate"] = clip.frameRateOverride;
+        // Import options only when they differ from the defaults.
+        if (!clip.animation.empty())
+            out["animation"] = clip.animation;
+        if (clip.unit > 0)
+            out["unit"] = clip.unit;
+        if (!clip.fitGround)
+            out["fitGround"] = false;
+        if (clip.keepCalibrationFrame)
+            out["keepCalibrationFrame"] = true;
+        if (!clip.mapping.empty()) {
+            ojson mapping = ojson::object();
+            for (const auto& [joint, name] : clip.mapping)
+                mapping[joint] = name;
+            out["mapping"] = std::move(mapping);
+        }
     } else {
         out["frameRate"] = clip.frameRate;
         out["joints"] = clip.joints;
@@ -212,12 +233,17 @@ ojson writeClip(const ClipAsset& clip)
 ojson writeCharacter(const Character& character)
 {
     ojson out = ojson::object();
-    out["schema"] = "Character.2";
+    out["schema"] = "Character.3";
     out["name"] = character.name;
     out["skeleton"] = character.skeleton;
     // Written only when set, so that scenarios without models stay as they were.
     if (!character.model.empty())
         out["model"] = character.model;
+    if (character.position != anim::Vec3{})
+        out["position"] = {floatForJson(character.position.x), floatForJson(character.position.y),
+                           floatForJson(character.position.z)};
+    if (character.heading != 0)
+        out["heading"] = character.heading;
     if (!character.segmentTags.empty()) {
         ojson segments = ojson::array();
         for (const scene::SegmentTag& tag : character.segmentTags) {
@@ -342,7 +368,7 @@ ojson writeScenario(const Scenario& scenario)
     ojson out = ojson::object();
     out["format"] = FormatName;
     out["version"] = int(format::Current);
-    out["schema"] = "Scenario.2";
+    out["schema"] = "Scenario.3";
     out["name"] = scenario.name;
     out["duration"] = scenario.duration;
     ojson masks = ojson::array();
@@ -355,9 +381,13 @@ ojson writeScenario(const Scenario& scenario)
     out["characters"] = std::move(characters);
     if (scenario.lighting != LightingSpec{}) {
         ojson lighting = ojson::object();
-        lighting["schema"] = "Lighting.1";
+        lighting["schema"] = "Lighting.2";
         lighting["probe"] = scenario.lighting.probe;
         lighting["layout"] = scenario.lighting.layout;
+        if (scenario.lighting.rotation != 0)
+            lighting["rotation"] = scenario.lighting.rotation;
+        if (scenario.lighting.intensity != 1)
+            lighting["intensity"] = scenario.lighting.intensity;
         appendExtra(lighting, scenario.lighting.extra);
         out["lighting"] = std::move(lighting);
     }

@@ -70,6 +70,7 @@ std::vector<std::string> filesIn(const fs::path& folder)
 
 fs::path goldenV1() { return thespis::test::testData("formats/v1/scenario.thespis"); }
 fs::path goldenV2() { return thespis::test::testData("formats/v2/scenario.thespis"); }
+fs::path goldenV3() { return thespis::test::testData("formats/v3/scenario.thespis"); }
 fs::path demoPath() { return thespis::test::resources("demo.thespis"); }
 
 Scenario loadOrFail(const fs::path& path)
@@ -282,6 +283,54 @@ TEST(ScenarioGolden, LoadsVersion2TimelineStateGesticonAndMarkers)
         ADD_FAILURE() << describe(e);
 }
 
+TEST(ScenarioGolden, LoadsVersion3ImportOptionsAndPlacement)
+{
+    const Scenario s = loadOrFail(goldenV3());
+    const Character& mocap = s.characters.at(0);
+    EXPECT_EQ(mocap.position, (anim::Vec3{1.5f, 0.0f, -0.25f}));
+    EXPECT_EQ(mocap.heading, 30.0);
+    const ClipAsset& clip = mocap.clips.at(0);
+    EXPECT_EQ(clip.unit, 0.01);
+    EXPECT_FALSE(clip.fitGround);
+    EXPECT_TRUE(clip.keepCalibrationFrame);
+    EXPECT_EQ(clip.mapping.at("Hips"), "humanoid_root");
+    EXPECT_EQ(mocap.layers.at(0).actions.at(0).placement, Placement::Continue);
+    EXPECT_EQ(s.characters.at(1).layers.at(0).actions.at(0).placement, Placement::Character);
+    EXPECT_EQ(s.lighting.rotation, 45.0);
+    EXPECT_EQ(s.lighting.intensity, 1.5);
+    bool rootMotion = false;
+    for (const Layer& layer : mocap.layers)
+        for (const ActionSpec& action : layer.actions)
+            for (const ModifierSpec& m : action.modifiers)
+                rootMotion = rootMotion || (m.kind == ModifierKind::Loop && m.rootMotion);
+    EXPECT_TRUE(rootMotion);
+    // Written back byte for byte.
+    EXPECT_EQ(serializeScenario(s), readFile(goldenV3()));
+}
+
+TEST(ScenarioGolden, Version2UpgradesToVersion3WithoutTheNewFields)
+{
+    Scenario v3 = loadOrFail(goldenV3());
+    v3.characters[0].position = {};
+    v3.characters[0].heading = 0;
+    v3.characters[0].clips[0].unit = 0;
+    v3.characters[0].clips[0].fitGround = true;
+    v3.characters[0].clips[0].keepCalibrationFrame = false;
+    v3.characters[0].clips[0].mapping.clear();
+    for (Character& character : v3.characters)
+        for (Layer& layer : character.layers)
+            for (ActionSpec& action : layer.actions) {
+                action.placement = Placement::World;
+                for (ModifierSpec& m : action.modifiers)
+                    m.rootMotion = false;
+            }
+    v3.lighting.rotation = 0;
+    v3.lighting.intensity = 1;
+    Scenario v2 = loadOrFail(goldenV2());
+    v2.name = v3.name;
+    EXPECT_EQ(v2, v3);
+}
+
 TEST(ScenarioGolden, Version1UpgradesToVersion2WithoutTheNewFields)
 {
     // The version 2 golden file is the version 1 one plus the new fields: taking those away
@@ -441,7 +490,7 @@ TEST(ScenarioIo, UnknownFieldWithAnEmptyNameSurvives)
 TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 {
     const std::string text = serializeScenario(Scenario{});
-    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 2,\n  \"schema\": \"Scenario.2\"", 0), 0u)
+    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 3,\n  \"schema\": \"Scenario.3\"", 0), 0u)
         << text;
     auto back = parseScenario(text);
     ASSERT_TRUE(back.ok());
@@ -454,12 +503,12 @@ TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 TEST(ScenarioIo, RefusesNewerVersion)
 {
     json doc = minimalDocument();
-    doc["version"] = 3;
+    doc["version"] = 4;
     auto result = parseJson(doc);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error().code, ErrorCode::NewerVersion);
     EXPECT_EQ(result.error().message,
-              "This scenario was saved by a newer Thespis (format 3). Update Thespis to open it.");
+              "This scenario was saved by a newer Thespis (format 4). Update Thespis to open it.");
 
     doc["version"] = 18446744073709551615ull;
     result = parseJson(doc);
@@ -589,8 +638,24 @@ TEST(ScenarioIo, MalformedFieldsAreNamed)
          "lighting.layout: "},
         {"layer not an object", [&](json& d) { d["characters"][0]["layers"][0] = 7; },
          "characters[0].layers[0]: expected an object"},
-        {"wrong schema", [&](json& d) { action(d)["schema"] = "Action.2"; },
-         "characters[0].layers[0].actions[0].schema: expected \"Action.1\""},
+        {"wrong schema", [&](json& d) { action(d)["schema"] = "Action.7"; },
+         "characters[0].layers[0].actions[0].schema: expected \"Action.2\""},
+        {"unknown placement", [&](json& d) { action(d)["placement"] = "elsewhere"; },
+         "characters[0].layers[0].actions[0].placement: expected \"world\", \"character\" or \"continue\""},
+        {"root motion not a flag", [&](json& d) { action(d)["modifiers"][0]["rootMotion"] = 1; },
+         "characters[0].layers[0].actions[0].modifiers[0].rootMotion: expected true or false"},
+        {"import option on an inline clip", [&](json& d) { clip(d)["unit"] = 0.01; },
+         "characters[0].clips[0].unit: only a clip read from a file has this"},
+        {"negative unit", [&](json& d) { clip(d) = json::parse(R"({"name": "c", "file": "w.bvh", "unit": -1})"); },
+         "characters[0].clips[0].unit: must not be negative"},
+        {"mapping to a number", [&](json& d) { clip(d) = json::parse(R"({"name": "c", "file": "w.bvh", "mapping": {"Hips": 3}})"); },
+         "characters[0].clips[0].mapping.Hips: expected a joint name"},
+        {"position of two numbers", [&](json& d) { d["characters"][0]["position"] = json::array({1, 2}); },
+         "characters[0].position: expected a position [x, y, z] in metres"},
+        {"model rig without a model", [&](json& d) { d["characters"][0]["skeleton"] = "model"; },
+         "characters[0].skeleton: \"model\" plays on the model's own rig, and the character has no model"},
+        {"negative light intensity", [&](json& d) { d["lighting"] = json::parse(R"({"probe": "p.hdr", "intensity": -2})"); },
+         "lighting.intensity: must not be negative"},
         {"mask weight above 1", [&](json& d) { d["masks"][0]["weights"]["r_shoulder"] = 1.5; },
          "masks[0].weights.r_shoulder: must be between 0 and 1"},
         {"mask weight text", [&](json& d) { d["masks"][0]["weights"]["r_shoulder"] = "full"; },
@@ -1025,7 +1090,7 @@ TEST(ScenarioRuntime, GesturesNeedTheirClipAndMask)
     EXPECT_NE(problems[1].message.find("gesture \"stroll\", mask"), std::string::npos) << problems[1].message;
 }
 
-TEST(ScenarioRuntime, ClipFileCacheReadsEachFileOnceUntilItChanges)
+TEST(ScenarioRuntime, AssetCacheReadsEachFileOnceUntilItChanges)
 {
     TempDir dir;
     const fs::path folder = dir.path();
@@ -1038,18 +1103,18 @@ TEST(ScenarioRuntime, ClipFileCacheReadsEachFileOnceUntilItChanges)
     ASSERT_FALSE(clip.file.empty());
     const fs::path bvh = folder / clip.file;
 
-    ClipFileCache cache;
-    EXPECT_EQ(cache.find(bvh, clip.frameRateOverride), nullptr);
+    AssetCache cache;
+    EXPECT_FALSE(cache.holds(clip, folder));
     auto first = buildRuntime(s, folder, &cache);
     ASSERT_TRUE(first.ok()) << describe(first.error());
-    EXPECT_NE(cache.find(bvh, clip.frameRateOverride), nullptr);
+    EXPECT_TRUE(cache.holds(clip, folder));
     auto second = buildRuntime(s, folder, &cache);
     ASSERT_TRUE(second.ok());
     EXPECT_EQ(second->characters[0].warnings, first->characters[0].warnings); // reported from the cache too
 
     // A newer file on disk is read again.
     fs::last_write_time(bvh, fs::last_write_time(bvh) + std::chrono::seconds(5));
-    EXPECT_EQ(cache.find(bvh, clip.frameRateOverride), nullptr);
+    EXPECT_FALSE(cache.holds(clip, folder));
     cache.clear();
 }
 

@@ -1,0 +1,234 @@
+#include "scenario/clip_file.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "anim/body_measure.h"
+#include "anim/bvh.h"
+#include "anim/hanim.h"
+#include "scene/foot_soles.h"
+#include "scene/gltf_character.h"
+
+namespace thespis::core::scenario {
+
+namespace {
+
+// CMU's unit: (1/0.45)·2.54 cm (mocap.cs.cmu.edu's FAQ).
+constexpr double kCmuUnit = 0.0254 / 0.45;
+
+std::string quote(const std::string& text)
+{
+    return "\"" + text + "\"";
+}
+
+std::string extensionOf(const std::filesystem::path& path)
+{
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return extension;
+}
+
+// A BVH file's unit: CMU's by its conventions, else from the legs (a human's are 0.7 to 1 m).
+void guessUnit(const std::string& convention, const anim::Skeleton& skeleton, ClipFileReport& report)
+{
+    if (convention == "cmu" || convention == "cmu-3dsmax") {
+        report.unit = kCmuUnit;
+        report.unitName = "CMU units (0.0564 m)";
+        return;
+    }
+    const double legs = anim::measureBody(skeleton).legLength;
+    struct Unit {
+        double metres;
+        const char* name;
+    };
+    for (const Unit& unit : {Unit{1.0, "metres"}, Unit{0.1, "decimetres"}, Unit{0.01, "centimetres"},
+                             Unit{0.0254, "inches"}, Unit{0.001, "millimetres"}})
+        if (const double metres = legs * unit.metres; metres > 0.55 && metres < 1.25) {
+            report.unit = unit.metres;
+            report.unitName = unit.name;
+            return;
+        }
+}
+
+Result<ClipFile> readBvh(const ClipAsset& asset, const std::filesystem::path& path)
+{
+    anim::bvh::ImportOptions options;
+    if (asset.frameRateOverride > 0)
+        options.frameRate = asset.frameRateOverride;
+    if (!asset.mapping.empty())
+        options.mapping = anim::bvh::JointMapping(asset.mapping.begin(), asset.mapping.end());
+    options.dropCalibrationFrame = !asset.keepCalibrationFrame;
+    auto imported = anim::bvh::load(path, options);
+    if (!imported)
+        return imported.error();
+    ClipFile file;
+    file.report.format = "bvh";
+    file.report.convention = imported->report.convention;
+    file.report.unmapped = imported->report.unmapped;
+    file.report.turnedFrom = imported->report.turnedFrom;
+    file.report.calibrationFrame = imported->report.calibrationFrame;
+    file.report.calibrationFrameDropped = imported->report.calibrationFrame && options.dropCalibrationFrame;
+    file.report.frameCount = imported->clip->frameCount();
+    file.report.frameRate = imported->clip->frameRate();
+    guessUnit(imported->report.convention, imported->skeleton, file.report);
+    file.clip = std::move(imported->clip);
+    file.skeleton = std::move(imported->skeleton);
+    return file;
+}
+
+Result<ClipFile> readGltf(const ClipAsset& asset, const std::filesystem::path& path)
+{
+    scene::GltfCharacterOptions options;
+    options.loadTextures = false;
+    options.jointMapping = asset.mapping;
+    if (asset.frameRateOverride > 0)
+        options.clipFrameRate = asset.frameRateOverride;
+    auto character = scene::loadGltfCharacter(path, options);
+    if (!character)
+        return character.error();
+    ClipFile file;
+    file.report.format = "gltf";
+    file.report.convention = asset.mapping.empty() ? "automatic" : "user";
+    file.report.unit = 1.0;
+    file.report.unitName = "metres";
+    file.report.warnings = character->warnings;
+    for (const anim::Joint& joint : character->skeleton.joints())
+        if (!anim::hanim::isJointName(joint.name))
+            file.report.unmapped.push_back(joint.sourceName);
+    for (const auto& clip : character->clips)
+        file.report.animations.push_back(clip->name());
+    const std::string name = path.filename().string();
+    if (character->clips.empty())
+        return makeError(ErrorCode::InvalidArgument, name + " has no animations.");
+    auto chosen = character->clips.begin();
+    if (!asset.animation.empty()) {
+        chosen = std::find_if(character->clips.begin(), character->clips.end(),
+                              [&](const auto& clip) { return clip->name() == asset.animation; });
+        if (chosen == character->clips.end()) {
+            std::string names;
+            for (const std::string& animation : file.report.animations)
+                names += (names.empty() ? "" : ", ") + animation;
+            return makeError(ErrorCode::InvalidArgument,
+                             name + " has no animation named " + quote(asset.animation) + " (it has " + names + ").");
+        }
+    }
+    file.clip = *chosen;
+    file.report.frameCount = file.clip->frameCount();
+    file.report.frameRate = file.clip->frameRate();
+    file.skeleton = std::move(character->skeleton);
+    return file;
+}
+
+bool isGltf(const std::filesystem::path& path)
+{
+    const std::string extension = extensionOf(path);
+    return extension == ".gltf" || extension == ".glb";
+}
+
+} // namespace
+
+Result<ClipFile> readClipFile(const ClipAsset& asset, const std::filesystem::path& baseDir)
+{
+    const std::filesystem::path path = baseDir / asset.file;
+    if (isGltf(path))
+        return readGltf(asset, path);
+    if (!asset.animation.empty())
+        return makeError(ErrorCode::InvalidArgument, "animation: only a glTF file holds named animations, and "
+                                                         + path.filename().string() + " is read as BVH.");
+    return readBvh(asset, path);
+}
+
+Result<ModelRig> readModelRig(const std::filesystem::path& path)
+{
+    auto character = scene::loadGltfCharacter(path, {.loadTextures = false});
+    if (!character)
+        return character.error();
+    ModelRig rig;
+    rig.soles = scene::footSoles(*character);
+    rig.skeleton = std::move(character->skeleton);
+    return rig;
+}
+
+// ---- the cache ---------------------------------------------------------------------------------
+
+struct AssetCache::Entry {
+    std::filesystem::file_time_type modified;
+    std::shared_ptr<const ClipFile> clip;
+    std::shared_ptr<const ModelRig> rig;
+};
+
+namespace {
+
+// The file and every option that changes what is read.
+std::string keyOf(const ClipAsset& asset, const std::filesystem::path& baseDir)
+{
+    std::string key = "clip\n" + (baseDir / asset.file).lexically_normal().string() + "\n" + asset.animation + "\n"
+                      + std::to_string(asset.frameRateOverride) + "\n" + (asset.keepCalibrationFrame ? "keep" : "drop");
+    for (const auto& [joint, name] : asset.mapping)
+        key += "\n" + joint + "=" + name;
+    return key;
+}
+
+std::filesystem::file_time_type modifiedTime(const std::filesystem::path& path)
+{
+    std::error_code error;
+    const auto time = std::filesystem::last_write_time(path, error);
+    return error ? std::filesystem::file_time_type::min() : time;
+}
+
+} // namespace
+
+AssetCache::AssetCache() = default;
+AssetCache::~AssetCache() = default;
+
+bool AssetCache::holds(const ClipAsset& asset, const std::filesystem::path& baseDir) const
+{
+    const auto it = m_entries.find(keyOf(asset, baseDir));
+    return it != m_entries.end() && it->second->modified == modifiedTime(baseDir / asset.file);
+}
+
+Result<std::shared_ptr<const ClipFile>> AssetCache::clipFile(const ClipAsset& asset, const std::filesystem::path& baseDir)
+{
+    const std::string key = keyOf(asset, baseDir);
+    const auto modified = modifiedTime(baseDir / asset.file);
+    if (const auto it = m_entries.find(key); it != m_entries.end() && it->second->modified == modified)
+        return it->second->clip;
+    auto read = readClipFile(asset, baseDir);
+    if (!read) {
+        m_entries.erase(key);
+        return read.error();
+    }
+    auto entry = std::make_unique<Entry>();
+    entry->modified = modified;
+    entry->clip = std::make_shared<const ClipFile>(std::move(read).value());
+    auto clip = entry->clip;
+    m_entries[key] = std::move(entry);
+    return clip;
+}
+
+Result<std::shared_ptr<const ModelRig>> AssetCache::modelRig(const std::filesystem::path& path)
+{
+    const std::string key = "rig\n" + path.lexically_normal().string();
+    const auto modified = modifiedTime(path);
+    if (const auto it = m_entries.find(key); it != m_entries.end() && it->second->modified == modified)
+        return it->second->rig;
+    auto read = readModelRig(path);
+    if (!read) {
+        m_entries.erase(key);
+        return read.error();
+    }
+    auto entry = std::make_unique<Entry>();
+    entry->modified = modified;
+    entry->rig = std::make_shared<const ModelRig>(std::move(read).value());
+    auto rig = entry->rig;
+    m_entries[key] = std::move(entry);
+    return rig;
+}
+
+void AssetCache::clear()
+{
+    m_entries.clear();
+}
+
+} // namespace thespis::core::scenario
