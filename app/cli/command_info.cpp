@@ -1,5 +1,5 @@
-// thespis-cli info SCENARIO: what a scenario holds — characters, clips, layers and actions,
-// masks — read from the document alone (clips are not loaded), so it works on scenarios whose
+// thespis-cli info SCENARIO: what a scenario holds — characters (body, placement), clips and
+// their import options, layers and actions, the light, masks — read from the document alone (clips are not loaded), so it works on scenarios whose
 // BVH files are missing too.
 
 #include <cstdio>
@@ -13,6 +13,16 @@ namespace {
 
 namespace scenario = core::scenario;
 
+const char* placementName(scenario::Placement placement)
+{
+    switch (placement) {
+    case scenario::Placement::World: return "";
+    case scenario::Placement::Character: return ", starts at the character";
+    case scenario::Placement::Continue: return ", continues the previous action";
+    }
+    return "";
+}
+
 const char* modeName(core::anim::BlendMode mode)
 {
     switch (mode) {
@@ -25,8 +35,27 @@ const char* modeName(core::anim::BlendMode mode)
 
 std::string clipSummary(const scenario::ClipAsset& clip)
 {
-    if (!clip.file.empty())
-        return "file " + clip.file;
+    if (!clip.file.empty()) {
+        std::string text = "file " + clip.file;
+        if (!clip.animation.empty())
+            text += ", animation '" + clip.animation + "'";
+        char number[64];
+        if (clip.frameRateOverride > 0) {
+            std::snprintf(number, sizeof number, ", at %g fps", clip.frameRateOverride);
+            text += number;
+        }
+        if (clip.unit > 0) {
+            std::snprintf(number, sizeof number, ", %g m per unit", clip.unit);
+            text += number;
+        }
+        if (!clip.fitGround)
+            text += ", not fitted to the floor";
+        if (clip.keepCalibrationFrame)
+            text += ", keeps its calibration frame";
+        if (!clip.mapping.empty())
+            text += ", " + std::to_string(clip.mapping.size()) + " joints mapped by hand";
+        return text;
+    }
     const std::size_t perFrame = clip.valuesPerFrame();
     const std::size_t frames = perFrame ? clip.frames.size() / perFrame : 0;
     char text[160];
@@ -61,7 +90,10 @@ int runInfo(const CommandSpec& spec, const ParsedArguments& arguments)
     else
         std::printf("  duration: up to the last action's end\n");
     for (const scenario::Character& character : document->characters) {
-        std::printf("Character '%s' (skeleton %s)\n", character.name.c_str(), character.skeleton.c_str());
+        std::printf("Character '%s' (%s, skeleton %s) at (%g, %g, %g) m facing %g°\n", character.name.c_str(),
+                    character.model.empty() ? "built-in humanoid" : ("model " + character.model).c_str(),
+                    character.skeleton.c_str(), double(character.position.x), double(character.position.y),
+                    double(character.position.z), character.heading);
         for (const scenario::ClipAsset& clip : character.clips)
             std::printf("  clip '%s': %s\n", clip.name.c_str(), clipSummary(clip).c_str());
         for (const scenario::Layer& layer : character.layers) {
@@ -69,11 +101,17 @@ int runInfo(const CommandSpec& spec, const ParsedArguments& arguments)
                         layer.kind == scenario::LayerKind::Body ? "body" : "face", modeName(layer.mode),
                         layer.actions.size(), layer.actions.size() == 1 ? "" : "s");
             for (const scenario::ActionSpec& action : layer.actions)
-                std::printf("    action '%s': clip '%s' at %.3f s, %s%s%s%s\n", action.name.c_str(),
+                std::printf("    action '%s': clip '%s' at %.3f s, %s%s%s%s%s\n", action.name.c_str(),
                             action.clip.c_str(), core::ticksToSeconds(action.start), modeName(action.mode),
-                            action.mask.empty() ? "" : ", mask '", action.mask.c_str(), action.mask.empty() ? "" : "'");
+                            action.mask.empty() ? "" : ", mask '", action.mask.c_str(), action.mask.empty() ? "" : "'",
+                            placementName(action.placement));
         }
     }
+    if (document->lighting.probe.empty())
+        std::printf("Light: the default sky\n");
+    else
+        std::printf("Light: probe %s (%s), turned %g°, intensity %g\n", document->lighting.probe.c_str(),
+                    document->lighting.layout.c_str(), document->lighting.rotation, document->lighting.intensity);
     for (const scenario::NamedMask& mask : document->masks)
         std::printf("Mask '%s': %zu joints, default weight %g\n", mask.name.c_str(), mask.mask.weights().size(),
                     double(mask.mask.defaultWeight()));

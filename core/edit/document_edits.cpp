@@ -155,6 +155,10 @@ Result<ActionSpec> actionFromClip(const Scenario& scenario, const LayerPath& lay
     action.name = clip;
     action.start = std::max<Tick>(0, start);
     action.weight = anim::Curve::cubicFade(0.3, 0.3);
+    // Motion capture goes on from where the layer's previous action leaves the body (or from
+    // where the character stands); inline clips are made for where they play.
+    if (!character.findClip(clip)->file.empty())
+        action.placement = Placement::Continue;
     return action;
 }
 

@@ -41,7 +41,8 @@ std::optional<ActionSpan> actionSpan(const scenario::Scenario& scenario, const s
 // ---- Actions ---------------------------------------------------------------------------------
 
 /// A new action playing `clip` of the character from `start`, faded in and out over 0.3 s
-/// (cubic), named after the clip and unique in the layer.
+/// (cubic), named after the clip and unique in the layer; a clip read from a file (motion
+/// capture) continues from where the layer's previous action leaves the body.
 Result<scenario::ActionSpec> actionFromClip(const scenario::Scenario& scenario, const LayerPath& layer,
                                             const std::string& clip, Tick start);
 /// Adds actions to a layer (names made unique in the layer: "wave", "wave 2", …).

@@ -45,6 +45,7 @@ std::pair<std::vector<Layer>*, int> listOf(Scenario& s, const LayerPath& p)
     return {c ? &c->layers : nullptr, p.layer};
 }
 std::pair<std::vector<NamedMask>*, int> listOf(Scenario& s, const MaskChange&) { return {&s.masks, 0}; }
+std::pair<std::vector<Character>*, int> listOf(Scenario& s, const CharacterChange&) { return {&s.characters, 0}; }
 std::pair<std::vector<Marker>*, int> listOf(Scenario& s, const MarkerChange&) { return {&s.markers, 0}; }
 
 template <class T>
@@ -91,7 +92,8 @@ Result<void> applyChange(Scenario& s, const Change& change)
             if constexpr (std::is_same_v<C, ActionChange> || std::is_same_v<C, LayerChange>) {
                 auto [list, index] = listOf(s, c.at);
                 return applyTo(list, index, c.before, c.after, where(c.at));
-            } else if constexpr (std::is_same_v<C, MaskChange> || std::is_same_v<C, MarkerChange>) {
+            } else if constexpr (std::is_same_v<C, MaskChange> || std::is_same_v<C, MarkerChange>
+                                 || std::is_same_v<C, CharacterChange>) {
                 auto [list, unused] = listOf(s, c);
                 return applyTo(list, c.at, c.before, c.after, where(c.at));
             } else if constexpr (std::is_same_v<C, GestureChange>) {
@@ -100,6 +102,11 @@ Result<void> applyChange(Scenario& s, const Change& change)
             } else if constexpr (std::is_same_v<C, ClipChange>) {
                 auto [list, index] = itemListOf(s, c.at, &Character::clips);
                 return applyTo(list, index, c.before, c.after, "clips, " + where(c.at));
+            } else if constexpr (std::is_same_v<C, LightingChange>) {
+                if (s.lighting != c.before)
+                    return makeError(ErrorCode::InvalidArgument, "The edit does not fit the document (the light).");
+                s.lighting = c.after;
+                return {};
             } else if constexpr (std::is_same_v<C, CharacterBakeChange>) {
                 Character* character = characterAt(s, c.character);
                 if (!character || character->bake != c.before)
@@ -144,6 +151,8 @@ bool samePlaceReplace(const Change& a, const Change& b)
             const auto& second = std::get<C>(b);
             if constexpr (std::is_same_v<C, SegmentTagsChange>)
                 return first.character == second.character;
+            else if constexpr (std::is_same_v<C, LightingChange>)
+                return true;
             else if constexpr (std::is_same_v<C, CharacterBakeChange>)
                 return false; // a bake is one step of its own, whatever follows it
             else
@@ -267,10 +276,24 @@ void Edit::rebasePaths(const std::filesystem::path& from, const std::filesystem:
         if (clip)
             clip->file = scenario::rebasedPath(clip->file, from, to);
     };
+    const auto rebaseCharacter = [&](std::optional<scenario::Character>& character) {
+        if (!character)
+            return;
+        scenario::Scenario holder;
+        holder.characters.push_back(std::move(*character));
+        scenario::rebasePaths(holder, from, to);
+        character = std::move(holder.characters.front());
+    };
     for (Change& change : m_changes) {
         if (auto* clip = std::get_if<ClipChange>(&change)) {
             rebaseClip(clip->before);
             rebaseClip(clip->after);
+        } else if (auto* character = std::get_if<CharacterChange>(&change)) {
+            rebaseCharacter(character->before);
+            rebaseCharacter(character->after);
+        } else if (auto* light = std::get_if<LightingChange>(&change)) {
+            light->before.probe = scenario::rebasedPath(light->before.probe, from, to);
+            light->after.probe = scenario::rebasedPath(light->after.probe, from, to);
         } else if (auto* bake = std::get_if<CharacterBakeChange>(&change)) {
             bake->before = scenario::rebasedPath(bake->before, from, to);
             bake->after = scenario::rebasedPath(bake->after, from, to);

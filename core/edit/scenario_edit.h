@@ -1,8 +1,8 @@
 #pragma once
 // Edit: a reversible change to a scenario document (STYLE.md §5), the one way editors and
 // scripts change a Scenario. An edit is a list of changes, each inserting, removing or replacing
-// one element of one of the scenario's lists (an action of a layer, a layer, a mask, a marker, a
-// gesture, a clip) or replacing a character's segment tags or bake file. Each change keeps the value before
+// one element of one of the scenario's lists (a character, an action of a layer, a layer, a mask,
+// a marker, a gesture, a clip) or replacing a character's segment tags or bake file, or the light. Each change keeps the value before
 // and after, so an edit is undone by applying its inverse, and a drag's many small edits of the
 // same elements merge into one.
 //
@@ -73,8 +73,17 @@ struct CharacterBakeChange {
     bool operator==(const CharacterBakeChange&) const = default;
 };
 
+/// Inserts, removes or replaces a whole character (format 3: its body, placement and the rest).
+using CharacterChange = ListChange<scenario::Character, int>;
+
+/// Replaces the scenario's light (probe, layout, rotation, intensity).
+struct LightingChange {
+    scenario::LightingSpec before, after;
+    bool operator==(const LightingChange&) const = default;
+};
+
 using Change = std::variant<ActionChange, LayerChange, MaskChange, MarkerChange, GestureChange, ClipChange,
-                            SegmentTagsChange, CharacterBakeChange>;
+                            SegmentTagsChange, CharacterBakeChange, CharacterChange, LightingChange>;
 
 class Edit {
 public:

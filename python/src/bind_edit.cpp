@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bind_common.h"
+#include "edit/content_edits.h"
 #include "edit/document_edits.h"
 #include "edit/scenario_edit.h"
 #include "errors.h"
@@ -23,6 +24,7 @@ namespace edit = core::edit;
 namespace anim = core::anim;
 using core::Tick;
 using core::scenario::ActionSpec;
+using core::scenario::Character;
 using core::scenario::Gesture;
 using core::scenario::Marker;
 using core::scenario::Scenario;
@@ -81,12 +83,15 @@ std::string describeEdit(const edit::Edit& e)
                     return "segment tags";
                 else if constexpr (std::is_same_v<C, edit::CharacterBakeChange>)
                     return "bake";
+                else if constexpr (std::is_same_v<C, edit::LightingChange>)
+                    return "lighting";
                 else {
                     std::string element = std::is_same_v<C, edit::ActionChange>    ? "action"
                                           : std::is_same_v<C, edit::LayerChange>   ? "layer"
                                           : std::is_same_v<C, edit::MaskChange>    ? "mask"
                                           : std::is_same_v<C, edit::MarkerChange>  ? "marker"
                                           : std::is_same_v<C, edit::GestureChange> ? "gesture"
+                                          : std::is_same_v<C, edit::CharacterChange> ? "character"
                                                                                    : "clip";
                     return (!c.before ? "+" : !c.after ? "-" : "") + element;
                 }
@@ -357,6 +362,91 @@ void bindEdit(py::module_& m)
         },
         "scenario"_a, "character"_a, "path"_a,
         "Sets a character's bake file (relative to the scenario's folder; '' = no bake, unshadowed transfer).");
+
+    // ---- Characters, layers, clips and the light (content_edits.h)
+    e.def("new_character", &edit::newCharacter, "name"_a, "model"_a = "", "skeleton"_a = "hanim-25",
+          "A Character on the built-in humanoid (model '', skeleton an H-Anim level) or a glTF model (skeleton "
+          "'model' plays on its own rig), with a body and a face layer (not added: see add_character).");
+    e.def(
+        "add_character",
+        [](const Scenario& scenario, Character character) {
+            return unwrap(edit::addCharacter(scenario, std::move(character)));
+        },
+        "scenario"_a, "character"_a, "Adds a character at the end (its name made unique).");
+    e.def(
+        "remove_character", [](const Scenario& scenario, int character) { return unwrap(edit::removeCharacter(scenario, character)); },
+        "scenario"_a, "character"_a, "Removes a character.");
+    e.def(
+        "rename_character",
+        [](const Scenario& scenario, int character, const std::string& name) {
+            return unwrap(edit::renameCharacter(scenario, character, name));
+        },
+        "scenario"_a, "character"_a, "name"_a, "Renames a character (a new, non-empty name).");
+    e.def(
+        "duplicate_character",
+        [](const Scenario& scenario, int character) { return unwrap(edit::duplicateCharacter(scenario, character)); },
+        "scenario"_a, "character"_a, "A copy named 'Name 2', a metre to the original's right.");
+    e.def(
+        "set_character_body",
+        [](const Scenario& scenario, int character, const std::string& model, const std::string& skeleton) {
+            return unwrap(edit::setCharacterBody(scenario, character, model, skeleton));
+        },
+        "scenario"_a, "character"_a, "model"_a, "skeleton"_a,
+        "Another body: a glTF model ('' = the built-in humanoid) and the skeleton its motion plays on. A new model "
+        "drops the old one's segment tags and bake.");
+    e.def(
+        "set_character_placement",
+        [](const Scenario& scenario, int character, anim::Vec3 position, double heading) {
+            return unwrap(edit::setCharacterPlacement(scenario, character, position, heading));
+        },
+        "scenario"_a, "character"_a, "position"_a, "heading"_a,
+        "Where the character stands (metres) and which way it faces (degrees about +Y).");
+    e.def(
+        "add_layer",
+        [](const Scenario& scenario, int character, const std::string& name, core::scenario::LayerKind kind) {
+            return unwrap(edit::addLayer(scenario, character, name, kind));
+        },
+        "scenario"_a, "character"_a, "name"_a, "kind"_a = core::scenario::LayerKind::Body,
+        "Adds a layer at the end of the character's (its name made unique).");
+    e.def(
+        "remove_layer", [](const Scenario& scenario, const edit::LayerPath& layer) { return unwrap(edit::removeLayer(scenario, layer)); },
+        "scenario"_a, "layer"_a, "Removes a layer (not a locked one).");
+    e.def(
+        "rename_layer",
+        [](const Scenario& scenario, const edit::LayerPath& layer, const std::string& name) {
+            return unwrap(edit::renameLayer(scenario, layer, name));
+        },
+        "scenario"_a, "layer"_a, "name"_a, "Renames a layer (unique in its character).");
+    e.def(
+        "move_layer",
+        [](const Scenario& scenario, const edit::LayerPath& layer, int delta) { return unwrap(edit::moveLayer(scenario, layer, delta)); },
+        "scenario"_a, "layer"_a, "delta"_a, "Moves a layer `delta` places down (up when negative).");
+    e.def(
+        "add_clips",
+        [](const Scenario& scenario, int character, std::vector<core::scenario::ClipAsset> clips) {
+            return unwrap(edit::addClips(scenario, character, std::move(clips)));
+        },
+        "scenario"_a, "character"_a, "clips"_a,
+        "Adds clips to a character (names made unique): ClipImport.clips from thespis.plan_clip_import.");
+    e.def(
+        "replace_clip",
+        [](const Scenario& scenario, const edit::CharacterItemPath& clip, core::scenario::ClipAsset value) {
+            return unwrap(edit::replaceClip(scenario, clip, std::move(value)));
+        },
+        "scenario"_a, "clip"_a, "value"_a,
+        "Replaces a clip (options, joint mapping); a new name is followed by the actions and gestures using it.");
+    e.def(
+        "remove_clip",
+        [](const Scenario& scenario, const edit::CharacterItemPath& clip) { return unwrap(edit::removeClip(scenario, clip)); },
+        "scenario"_a, "clip"_a, "Removes a clip no action, gesture or skeleton uses.");
+    e.def(
+        "set_lighting",
+        [](const Scenario& scenario, core::scenario::LightingSpec lighting) {
+            return unwrap(edit::setLighting(scenario, std::move(lighting)));
+        },
+        "scenario"_a, "lighting"_a,
+        "Another light (thespis.LightingSpec: probe file and layout, rotation in degrees, intensity; probe '' = the "
+        "default sky).");
 }
 
 } // namespace thespis::python

@@ -1,14 +1,17 @@
-// Bindings of the scenario document (core/scenario): the plain-data model (format 2 included:
-// layer mute / solo / lock, gestures, markers, bakes), reading and writing .thespis files,
-// validation and building runnable schedules. Document objects are values: reading a list
-// field (`scenario.characters`) gives a copy, edited and assigned back. (Views into the C++
-// lists would dangle as soon as the list grows, crashing a script that kept one.)
+// Bindings of the scenario document (core/scenario): the plain-data model (formats 2 and 3:
+// layer mute / solo / lock, gestures, markers, bakes, clip import options, placement), importing
+// motion files, reading and writing .thespis files, validation and building runnable schedules.
+// Document objects are values: reading a list field (`scenario.characters`) gives a copy, edited
+// and assigned back. (Views into the C++ lists would dangle as soon as the list grows, crashing a
+// script that kept one.)
 
+#include <map>
 #include <optional>
 #include <string>
 
 #include "bind_common.h"
 #include "errors.h"
+#include "scenario/clip_import.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_io.h"
 #include "scenario/scenario_runtime.h"
@@ -63,6 +66,11 @@ void bindDocument(py::module_& m)
         .value("body", LayerKind::Body)
         .value("face", LayerKind::Face);
 
+    py::enum_<Placement>(m, "Placement", "Where an action's motion plays.")
+        .value("world", Placement::World, "as recorded, in the character's frame")
+        .value("character", Placement::Character, "its first frame where the character stands, facing its way")
+        .value("continue_", Placement::Continue, "on from where the layer's previous action leaves the body");
+
     py::enum_<ModifierKind>(m, "ModifierKind", "Kind of a modifier in an action's chain.")
         .value("time_stretch", ModifierKind::TimeStretch)
         .value("time_warp", ModifierKind::TimeWarp)
@@ -73,7 +81,8 @@ void bindDocument(py::module_& m)
         .value("trim", ModifierKind::Trim);
 
     py::class_<ClipAsset> clip(m, "ClipAsset",
-                               "A clip a character can play: a BVH file beside the scenario, or inline keyframes.");
+                               "A clip a character can play: a motion file beside the scenario (BVH, or an animation "
+                               "of a glTF file), retargeted onto the character, or inline keyframes.");
     clip.def(py::init([](std::string name, std::string file) {
                  ClipAsset asset;
                  asset.name = std::move(name);
@@ -85,6 +94,14 @@ void bindDocument(py::module_& m)
         .def_readwrite("file", &ClipAsset::file, "Path relative to the scenario file; empty for inline clips.")
         .def_readwrite("frame_rate_override", &ClipAsset::frameRateOverride, "> 0: replaces the BVH frame rate.")
         .def_readwrite("frame_rate", &ClipAsset::frameRate, "Inline clips: frames per second.")
+        .def_readwrite("animation", &ClipAsset::animation, "glTF files: the animation's name ('' = the first).")
+        .def_readwrite("unit", &ClipAsset::unit,
+                       "Files: metres per file unit (CMU 0.0564, centimetres 0.01); 0 = as the file tells.")
+        .def_readwrite("fit_ground", &ClipAsset::fitGround, "Files: stand the motion on the performer's floor.")
+        .def_readwrite("keep_calibration_frame", &ClipAsset::keepCalibrationFrame,
+                       "BVH files: keep a first frame that is a calibration pose (CMU's T-pose).")
+        .def_readwrite("mapping", &ClipAsset::mapping,
+                       "Files: file joint name → H-Anim name, replacing the automatic naming (a copy).")
         .def_readwrite("root_translation", &ClipAsset::rootTranslation,
                        "Inline clips: frames hold the translation of joints[0].")
         .def_property(
@@ -120,6 +137,8 @@ void bindDocument(py::module_& m)
         .def_readwrite("offset", &ModifierSpec::offset, "time_offset (seconds)")
         .def_readwrite("start", &ModifierSpec::start, "trim (source seconds)")
         .def_readwrite("end", &ModifierSpec::end, "trim (source seconds)")
+        .def_readwrite("root_motion", &ModifierSpec::rootMotion,
+                       "loop: each repetition starts where the last ended, as a walk goes on")
         .def("__eq__", [](const ModifierSpec& a, const ModifierSpec& b) { return a == b; });
     defExtra(modifier);
 
@@ -145,6 +164,8 @@ void bindDocument(py::module_& m)
         .def_readwrite("mask", &ActionSpec::mask, "Name of a scenario mask; empty = whole body.")
         .def_readwrite("mode", &ActionSpec::mode)
         .def_readwrite("render_outside_domain", &ActionSpec::renderOutsideDomain)
+        .def_readwrite("placement", &ActionSpec::placement,
+                       "Where its motion plays: as recorded, from the character's place, or on from the previous action.")
         .def("__eq__", [](const ActionSpec& a, const ActionSpec& b) { return a == b; })
         .def("__repr__", [](const ActionSpec& a) {
             return "<thespis.ActionSpec '" + a.name + "' clip '" + a.clip + "'>";
@@ -213,7 +234,10 @@ void bindDocument(py::module_& m)
              "name"_a = "", "skeleton"_a = "hanim-loa1")
         .def_readwrite("name", &Character::name)
         .def_readwrite("skeleton", &Character::skeleton,
-                       "'hanim-loa1', 'hanim-loa2', 'hanim-25', or 'clip:NAME' for a BVH clip's own skeleton.")
+                       "'hanim-loa1', 'hanim-loa2', 'hanim-25', 'model' for its glTF model's own rig, or 'clip:NAME' "
+                       "for a BVH clip's own skeleton.")
+        .def_readwrite("position", &Character::position, "Where it stands, metres (x, y, z).")
+        .def_readwrite("heading", &Character::heading, "Which way it faces: degrees about +Y (0 faces +Z).")
         .def("__eq__", [](const Character& a, const Character& b) { return a == b; })
         .def("__repr__", [](const Character& c) {
             return "<thespis.Character '" + c.name + "' " + std::to_string(c.clips.size()) + " clips, "
@@ -255,6 +279,8 @@ void bindDocument(py::module_& m)
                  "probe"_a = "", "layout"_a = "latlong")
         .def_readwrite("probe", &LightingSpec::probe, "Probe file relative to the scenario; '' = the default light.")
         .def_readwrite("layout", &LightingSpec::layout, "'angular', 'latlong', 'mirrorball' or 'cross'.")
+        .def_readwrite("rotation", &LightingSpec::rotation, "Degrees about the vertical axis.")
+        .def_readwrite("intensity", &LightingSpec::intensity, "A multiplier of the probe's radiance.")
         .def("__eq__", [](const LightingSpec& a, const LightingSpec& b) { return a == b; });
     defExtra(lighting);
 
@@ -315,6 +341,45 @@ void bindDocument(py::module_& m)
     scenario.def_readwrite("lighting", &Scenario::lighting, "The light probe (a LightingSpec).");
 }
 
+void bindImport(py::module_& m)
+{
+    py::class_<ClipFileReport>(m, "ClipFileReport", "What reading a motion file found.")
+        .def_readonly("format", &ClipFileReport::format, "'bvh' or 'gltf'")
+        .def_readonly("convention", &ClipFileReport::convention, "The joint naming found ('cmu', 'mixamo', …).")
+        .def_readonly("unmapped", &ClipFileReport::unmapped, "File joints that kept their own name.")
+        .def_readonly("turned_from", &ClipFileReport::turnedFrom, "How the body lay before it was stood up, or ''.")
+        .def_readonly("calibration_frame", &ClipFileReport::calibrationFrame)
+        .def_readonly("calibration_frame_dropped", &ClipFileReport::calibrationFrameDropped)
+        .def_readonly("unit", &ClipFileReport::unit, "Metres per file unit as the file tells; 0 unknown.")
+        .def_readonly("unit_name", &ClipFileReport::unitName)
+        .def_readonly("animations", &ClipFileReport::animations, "glTF: every animation in the file.")
+        .def_readonly("frame_count", &ClipFileReport::frameCount)
+        .def_readonly("frame_rate", &ClipFileReport::frameRate)
+        .def_readonly("warnings", &ClipFileReport::warnings);
+    py::class_<ClipImport>(m, "ClipImport", "A motion file's clips as an import would add them to a character.")
+        .def_property_readonly("path", [](const ClipImport& p) { return p.path; })
+        .def_readonly("clips", &ClipImport::clips, "One ClipAsset per BVH file, one per animation of a glTF file.")
+        .def_readonly("report", &ClipImport::report)
+        .def_readonly("mapping", &ClipImport::mapping, "File joint → the name it plays as (correct it, pass it back).")
+        .def_readonly("joints_moved", &ClipImport::jointsMoved, "The character's joints the file moves.")
+        .def_readonly("problem", &ClipImport::problem, "Why it cannot go on the character; '' when it can.");
+    m.def(
+        "plan_clip_import",
+        [](const std::filesystem::path& file, const std::filesystem::path& baseDir, const anim::Skeleton& skeleton,
+           const std::map<std::string, std::string>& mapping) {
+            return unwrap(withoutGil([&] { return planClipImport(file, baseDir, skeleton, mapping); }));
+        },
+        "file"_a, "base_dir"_a, "skeleton"_a, "mapping"_a = std::map<std::string, std::string>{},
+        "Reads a motion file (BVH, glTF, GLB) to import it into a character with `skeleton` (the runtime's); clip "
+        "paths are made relative to base_dir. Nothing is added: thespis.edit.add_clips adds what you keep.");
+    m.def(
+        "save_mapping",
+        [](const std::filesystem::path& path, const std::map<std::string, std::string>& mapping) {
+            unwrap(saveMapping(path, mapping));
+        },
+        "path"_a, "mapping"_a, "Writes a joint mapping file (thespis.load_mapping / the import dialog read it).");
+}
+
 void bindRuntime(py::module_& m)
 {
     py::class_<CharacterRuntime>(m, "CharacterRuntime",
@@ -327,6 +392,16 @@ void bindRuntime(py::module_& m)
         .def_readonly("layers", &CharacterRuntime::layers, "One schedule per Layer, in document order.")
         .def_readonly("action_ids", &CharacterRuntime::actionIds, "Per layer, the schedule's id of each ActionSpec.")
         .def_readonly("warnings", &CharacterRuntime::warnings)
+        .def_readonly("clip_reports", &CharacterRuntime::clipReports,
+                      "Clip name → what reading its file found (thespis.ClipFileReport).")
+        .def(
+            "evaluate_body",
+            [](const CharacterRuntime& c, double seconds) {
+                std::vector<float> frame = c.skeleton.restFrame();
+                c.evaluateBody(seconds, frame);
+                return toArray<float>(frame);
+            },
+            "seconds"_a, "The body frame at `seconds`, placed where the character stands (NumPy floats).")
         .def("__repr__", [](const CharacterRuntime& c) {
             return "<thespis.CharacterRuntime '" + c.name + "' " + std::to_string(c.layers.size()) + " layers>";
         });
@@ -359,6 +434,7 @@ void bindScenario(py::module_& m)
 
     bindDocument(m);
     bindRuntime(m);
+    bindImport(m);
 
     m.def(
         "parse_scenario", [](const std::string& text) { return unwrap(withoutGil([&] { return parseScenario(text); })); },

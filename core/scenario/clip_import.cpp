@@ -1,0 +1,75 @@
+#include "scenario/clip_import.h"
+
+#include <algorithm>
+
+#include "anim/retarget.h"
+#include "util/file_io.h"
+
+namespace thespis::core::scenario {
+
+namespace {
+
+std::string lowered(std::string text)
+{
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return text;
+}
+
+} // namespace
+
+bool isMotionFile(const std::filesystem::path& path)
+{
+    const std::string extension = lowered(path.extension().string());
+    return extension == ".bvh" || extension == ".gltf" || extension == ".glb";
+}
+
+Result<ClipImport> planClipImport(const std::filesystem::path& file, const std::filesystem::path& baseDir,
+                                  const anim::Skeleton& skeleton, const std::map<std::string, std::string>& mapping)
+{
+    if (!isMotionFile(file))
+        return makeError(ErrorCode::NotOurFormat, file.filename().string()
+                                                      + " is not a motion file Thespis reads (BVH, glTF or GLB).");
+    const std::filesystem::path absolute = std::filesystem::absolute(file);
+    ClipAsset asset;
+    asset.name = file.stem().string();
+    asset.file = absolute.lexically_relative(std::filesystem::absolute(baseDir)).generic_string();
+    if (asset.file.empty())
+        asset.file = absolute.generic_string();
+    asset.mapping = mapping;
+    auto read = readClipFile(asset, baseDir);
+    if (!read)
+        return read.error();
+
+    ClipImport plan;
+    plan.path = file;
+    plan.report = read->report;
+    for (const anim::Joint& joint : read->skeleton.joints())
+        plan.mapping[joint.sourceName.empty() ? joint.name : joint.sourceName] = joint.name;
+    if (read->report.format == "gltf") {
+        for (const std::string& animation : read->report.animations) {
+            ClipAsset clip = asset;
+            clip.name = animation;
+            clip.animation = animation;
+            plan.clips.push_back(std::move(clip));
+        }
+    } else {
+        plan.clips.push_back(asset);
+    }
+    plan.jointsMoved = anim::FrameRetarget(read->skeleton, skeleton).mappedJointCount();
+    if (plan.jointsMoved == 0)
+        plan.problem = file.filename().string() + " moves none of the character's joints: its joints ("
+                       + std::to_string(read->skeleton.jointCount()) + ") have no name the character's skeleton has. "
+                       + "Correct the joint mapping, or import it into a character with another skeleton.";
+    return plan;
+}
+
+Result<void> saveMapping(const std::filesystem::path& path, const std::map<std::string, std::string>& mapping)
+{
+    std::string text = "# Thespis joint mapping: file joint name, then the H-Anim name it plays as.\n";
+    for (const auto& [joint, name] : mapping)
+        if (!name.empty() && joint != name)
+            text += joint + "  " + name + "\n";
+    return writeFileAtomically(path, text);
+}
+
+} // namespace thespis::core::scenario
