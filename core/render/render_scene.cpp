@@ -42,8 +42,11 @@ osg::ref_ptr<osg::Geometry> makeGround(osg::Uniform* groundColor)
     return ground;
 }
 
-osg::ref_ptr<osg::Geometry> makeBackground(const lighting::LightProbe& probe, int width)
+osg::ref_ptr<osg::Geometry> makeBackground(const lighting::LightProbe& probe, int width, double degrees, double intensity)
 {
+    // The light from world direction d was the probe's from d turned back.
+    const double half = -degrees * std::numbers::pi / 360.0;
+    const anim::Quatd back{0.0, std::sin(half), 0.0, std::cos(half)};
     // Resample to lat-long once, so the shader has a single mapping whatever the probe's layout.
     const int height = std::max(width / 2, 1);
     osg::ref_ptr<osg::Image> image = new osg::Image;
@@ -54,8 +57,10 @@ osg::ref_ptr<osg::Geometry> makeBackground(const lighting::LightProbe& probe, in
         for (int x = 0; x < width; ++x) {
             anim::Vec3d direction;
             lighting::directionOfPixel(lighting::ProbeLayout::LatLong, width, height, x, y, direction);
-            const std::array<float, 3> radiance = probe.radiance(direction);
-            std::copy(radiance.begin(), radiance.end(), pixels + 3 * (std::size_t(y) * std::size_t(width) + std::size_t(x)));
+            const std::array<float, 3> radiance = probe.radiance(anim::rotate(back, direction));
+            float* pixel = pixels + 3 * (std::size_t(y) * std::size_t(width) + std::size_t(x));
+            for (int c = 0; c < 3; ++c)
+                pixel[c] = float(radiance[std::size_t(c)] * intensity);
         }
     osg::ref_ptr<osg::Texture2D> texture = new osg::Texture2D(image.get());
     texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
@@ -206,10 +211,10 @@ void RenderScene::setGroundVisible(bool visible)
 
 bool RenderScene::groundVisible() const { return m_root->containsNode(m_ground.get()); }
 
-void RenderScene::setBackgroundProbe(const lighting::LightProbe& probe, int width)
+void RenderScene::setBackgroundProbe(const lighting::LightProbe& probe, int width, double degrees, double intensity)
 {
     clearBackgroundProbe();
-    m_background = makeBackground(probe, std::max(width, 2));
+    m_background = makeBackground(probe, std::max(width, 2), degrees, intensity);
     m_root->addChild(m_background.get());
 }
 

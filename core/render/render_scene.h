@@ -68,7 +68,8 @@ public:
     void setBackgroundColor(const std::array<float, 3>& color) { m_backgroundColor = color; }
     const std::array<float, 3>& backgroundColor() const { return m_backgroundColor; }
     /// Shows a probe behind everything, resampled to a width × width/2 lat-long texture.
-    void setBackgroundProbe(const lighting::LightProbe& probe, int width = 512);
+    /// `degrees` and `intensity` turn and scale it as lighting::turnedLight() does the light.
+    void setBackgroundProbe(const lighting::LightProbe& probe, int width = 512, double degrees = 0, double intensity = 1);
     void clearBackgroundProbe();
     bool hasBackgroundProbe() const;
 

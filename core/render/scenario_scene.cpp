@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "lighting/probe.h"
+#include "lighting/probe_preview.h"
 #include "render/shaders.h"
 #include "scenario/scenario_character.h"
 #include "scene/foot_soles.h"
@@ -63,9 +64,10 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
         auto projected = light->project(probe->image());
         if (!projected)
             return makeError(projected.error().code, "lighting.probe: " + projected.error().message);
-        self->m_scene->setLight(*projected);
+        const scenario::LightingSpec& spec = scenario.lighting;
+        self->m_scene->setLight(lighting::turnedLight(*projected, spec.rotation, spec.intensity));
         if (options.probeBackground)
-            self->m_scene->setBackgroundProbe(*probe);
+            self->m_scene->setBackgroundProbe(*probe, 512, spec.rotation, spec.intensity);
     }
 
     for (std::size_t i = 0; i < scenario.characters.size(); ++i) {
