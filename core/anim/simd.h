@@ -4,6 +4,7 @@
 // per joint; the loops transpose four or eight joints at a time into one vector per component,
 // so that dot products and accumulations are vertical operations.
 
+#include <cstddef>
 #include <cmath>
 #include <cstring>
 #if defined(__SSE__)
@@ -33,7 +34,11 @@ inline void store(float* p, V v)
 template <class V = F4>
 inline V splat(float x)
 {
-    return V{} + x;
+    // A broadcast, not V{} + x: 0 + (−0) is +0, which would lose a sign-bit mask.
+    V v;
+    for (std::size_t i = 0; i < sizeof v / sizeof x; ++i)
+        v[i] = x;
+    return v;
 }
 template <class V>
 inline V max(V a, V b)

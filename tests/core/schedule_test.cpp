@@ -71,6 +71,34 @@ TEST(BlendingSchedule, EqualWeightsAverageRotations)
     EXPECT_NEAR(angle(rot(out, 0), Quat::fromAxisAngle({0, 0, 1}, 0.6f)), 0.0, 1e-6);
 }
 
+// The same through the eight-joint blocks of the vectorized blend: every joint, every lane, the
+// second rotation stored with the opposite sign (as two layers' root rotations often are).
+TEST(BlendingSchedule, EqualWeightsAverageOppositeSignsInEveryLane)
+{
+    constexpr int Joints = 19; // two blocks of eight and three left over
+    const auto layout = makeLayout(Joints, false);
+    std::vector<float> valuesA, valuesB;
+    std::vector<Quat> expected;
+    for (int j = 0; j < Joints; ++j) {
+        const Vec3 tilt{float(j % 3), 1.0f, float(j % 5) - 2.0f};
+        const Vec3 axis = tilt * (1.0f / std::sqrt(tilt.x * tilt.x + tilt.y * tilt.y + tilt.z * tilt.z));
+        const Quat a = Quat::fromAxisAngle(axis, 0.1f * float(j)), b = Quat::fromAxisAngle(axis, 0.1f * float(j) + 0.4f);
+        valuesA.insert(valuesA.end(), {a.x, a.y, a.z, a.w});
+        valuesB.insert(valuesB.end(), {-b.x, -b.y, -b.z, -b.w});
+        expected.push_back(Quat::fromAxisAngle(axis, 0.1f * float(j) + 0.2f));
+    }
+    BlendingAction first = action(*KeyframeClip::create(layout, 1.0, valuesA));
+    BlendingAction second = action(*KeyframeClip::create(layout, 1.0, valuesB));
+    first.renderOutsideDomain = second.renderOutsideDomain = true;
+    BlendingSchedule schedule(layout);
+    ASSERT_TRUE(schedule.addAction(first));
+    ASSERT_TRUE(schedule.addAction(second));
+    std::vector<float> out(layout->floatCount());
+    schedule.evaluate(0.0, out);
+    for (int j = 0; j < Joints; ++j)
+        EXPECT_NEAR(angle(rot(out, j), expected[j]), 0.0, 1e-5) << "joint " << j;
+}
+
 TEST(BlendingSchedule, FadingWeightReachesRestPoseWithoutAPop)
 {
     const auto layout = makeLayout(3);
