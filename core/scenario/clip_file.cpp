@@ -226,9 +226,33 @@ Result<std::shared_ptr<const ModelRig>> AssetCache::modelRig(const std::filesyst
     return rig;
 }
 
+Result<AssetCache::ClipPtr> AssetCache::retargeted(const std::string& key, const std::function<Result<ClipPtr>()>& make)
+{
+    if (const auto it = m_retargeted.find(key); it != m_retargeted.end())
+        return it->second;
+    auto made = make();
+    if (!made)
+        return made.error();
+    constexpr std::size_t kKept = 64;
+    if (m_retargetedOrder.size() >= kKept) {
+        m_retargeted.erase(m_retargetedOrder.front());
+        m_retargetedOrder.erase(m_retargetedOrder.begin());
+    }
+    m_retargeted[key] = *made;
+    m_retargetedOrder.push_back(key);
+    return made;
+}
+
+long long AssetCache::stampOf(const std::filesystem::path& path)
+{
+    return modifiedTime(path).time_since_epoch().count();
+}
+
 void AssetCache::clear()
 {
     m_entries.clear();
+    m_retargeted.clear();
+    m_retargetedOrder.clear();
 }
 
 } // namespace thespis::core::scenario

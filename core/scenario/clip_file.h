@@ -6,6 +6,7 @@
 // editor rebuilding the runtime after every edit reads each file once.
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -67,6 +68,13 @@ public:
     Result<std::shared_ptr<const ClipFile>> clipFile(const ClipAsset& asset, const std::filesystem::path& baseDir);
     /// readModelRig(), likewise.
     Result<std::shared_ptr<const ModelRig>> modelRig(const std::filesystem::path& path);
+    /// A clip retargeted onto a character, kept under `key` (the runtime makes it from the file,
+    /// the options and the skeleton, with the files' modification times); `make` makes it when
+    /// it is not kept. The last 64 are kept.
+    using ClipPtr = std::shared_ptr<const anim::KeyframeClip>;
+    Result<ClipPtr> retargeted(const std::string& key, const std::function<Result<ClipPtr>()>& make);
+    /// The modification time of a file as a number for such keys (0 when it cannot be read).
+    static long long stampOf(const std::filesystem::path& path);
     /// True when the asset's file, as it is on disk now, is in the cache.
     bool holds(const ClipAsset& asset, const std::filesystem::path& baseDir) const;
     void clear();
@@ -74,6 +82,8 @@ public:
 private:
     struct Entry;
     std::map<std::string, std::unique_ptr<Entry>> m_entries; // by key: path and the read options
+    std::map<std::string, ClipPtr> m_retargeted;
+    std::vector<std::string> m_retargetedOrder; // oldest first
 };
 
 } // namespace thespis::core::scenario

@@ -29,10 +29,10 @@ Result<ClipImport> planClipImport(const std::filesystem::path& file, const std::
     if (!isMotionFile(file))
         return makeError(ErrorCode::NotOurFormat, file.filename().string()
                                                       + " is not a motion file Thespis reads (BVH, glTF or GLB).");
-    const std::filesystem::path absolute = std::filesystem::absolute(file);
+    const std::filesystem::path absolute = std::filesystem::absolute(file).lexically_normal();
     ClipAsset asset;
     asset.name = file.stem().string();
-    asset.file = absolute.lexically_relative(std::filesystem::absolute(baseDir)).generic_string();
+    asset.file = absolute.lexically_relative(std::filesystem::absolute(baseDir).lexically_normal()).generic_string();
     if (asset.file.empty())
         asset.file = absolute.generic_string();
     asset.mapping = mapping;

@@ -164,7 +164,7 @@ private:
 
     // Reads a clip from its BVH file or its inline keyframes (not yet on the character's layout).
     std::optional<SourceClip> loadClip(const ClipAsset& asset, const std::string& where,
-                                       std::vector<std::string>& warnings)
+                                       std::vector<std::string>& warnings, std::vector<std::string>& clipWarnings)
     {
         SourceClip source;
         source.asset = &asset;
@@ -188,6 +188,7 @@ private:
             if (!file.report.unmapped.empty())
                 warnings.push_back(where + ": " + std::to_string(file.report.unmapped.size())
                                    + " joints of the file kept their own names (not H-Anim): " + joinNames(file.report.unmapped) + ".");
+            clipWarnings.resize(warnings.size(), asset.name);
             source.clip = file.clip;
             source.file = *read;
             return source;
@@ -289,12 +290,25 @@ private:
         options.retarget.sourceUnit = source.asset->unit > 0 ? source.asset->unit : source.file->report.unit;
         options.fitGround = source.asset->fitGround;
         options.retarget.targetSoles = m_soles;
-        auto made = anim::retargetClip(*source.clip, rig, skeleton, options);
+        // Kept between builds: the file as read, the options and the skeleton (with its body).
+        std::string key = "retarget\n" + (m_baseDir / source.asset->file).lexically_normal().string() + "\n"
+                          + std::to_string(AssetCache::stampOf(m_baseDir / source.asset->file)) + "\n"
+                          + source.asset->animation + "\n" + std::to_string(source.asset->frameRateOverride) + "\n"
+                          + std::to_string(options.retarget.sourceUnit) + (options.fitGround ? " fit" : " keep")
+                          + (source.asset->keepCalibrationFrame ? " calibration" : "") + "\n" + m_skeletonKey;
+        for (const auto& [joint, name] : source.asset->mapping)
+            key += "\n" + joint + "=" + name;
+        auto made = m_cache->retargeted(key, [&]() -> Result<AssetCache::ClipPtr> {
+            auto clip = anim::retargetClip(*source.clip, rig, skeleton, options);
+            if (!clip)
+                return clip.error();
+            return AssetCache::ClipPtr(clip->clip);
+        });
         if (!made) {
             problem(ErrorCode::InvalidSchedule, where + ": " + made.error().message);
             return nullptr;
         }
-        return made->clip;
+        return *made;
     }
 
     // The clip on `layout`; caches per layout kind. Null (and a problem) when the clip shares no
@@ -507,11 +521,13 @@ private:
                 problem(ErrorCode::InvalidSchedule, where + ": two clips have this name.");
                 continue;
             }
-            if (auto loaded = loadClip(asset, where, runtime.warnings))
+            if (auto loaded = loadClip(asset, where, runtime.warnings, runtime.warningClips))
                 sources.emplace(asset.name, std::move(*loaded));
         }
 
         m_soles.clear();
+        m_skeletonKey = character.skeleton + "\n" + character.model + "\n"
+                        + (character.model.empty() ? std::string() : std::to_string(AssetCache::stampOf(m_baseDir / character.model)));
         auto skeleton = resolveSkeleton(character, who, sources);
         if (!skeleton)
             return std::nullopt;
@@ -538,10 +554,12 @@ private:
             auto onSkeleton = onLayout(source, runtime.skeleton.frameLayout(), rest, who + ", clip " + quote(name), &dropped);
             if (!onSkeleton)
                 continue; // no body joint: fine for a face clip, an error if a body layer plays it
-            if (!dropped.empty())
+            if (!dropped.empty()) {
                 runtime.warnings.push_back(who + ", clip " + quote(name) + ": " + std::to_string(dropped.size())
                                            + " of its joints are not in the skeleton and are left out: "
                                            + joinNames(dropped) + ".");
+                runtime.warningClips.resize(runtime.warnings.size(), name);
+            }
             runtime.clips.emplace(name, std::move(onSkeleton));
         }
 
@@ -630,6 +648,7 @@ private:
     std::filesystem::path m_baseDir;
     AssetCache m_ownCache; // when the caller keeps none
     std::vector<anim::BodyMeasure::SolePoint> m_soles; // the character's model's, when it plays on its rig
+    std::string m_skeletonKey; // what the character's skeleton and soles are made from
     AssetCache* m_cache = nullptr;
     std::map<std::string, std::shared_ptr<const anim::JointMask>> m_masks;
 };

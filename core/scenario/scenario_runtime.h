@@ -36,6 +36,7 @@ struct CharacterRuntime {
     std::vector<std::shared_ptr<anim::BlendingSchedule>> layers; ///< per Layer, same order
     std::vector<std::vector<anim::ActionId>> actionIds; ///< per layer, per ActionSpec
     std::vector<std::string> warnings;                  ///< e.g. unmapped BVH joints
+    std::vector<std::string> warningClips;              ///< per warning, the clip it is about ("": none)
     /// What reading each file clip found, by clip name (for the studio's import report).
     std::map<std::string, ClipFileReport> clipReports;
 
