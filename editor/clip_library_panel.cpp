@@ -1,8 +1,9 @@
 #include "editor/clip_library_panel.h"
 
-#include <QMimeData>
+#include <QDropEvent>
 
 #include "editor/document.h"
+#include "widgets/dropped_files.h"
 #include "widgets/timeline_view.h"
 
 namespace thespis::editor {
@@ -13,10 +14,11 @@ ClipLibraryPanel::ClipLibraryPanel(QWidget* parent) : QTreeWidget(parent)
     setColumnCount(2);
     setHeaderLabels({tr("Clip"), tr("Source")});
     setDragEnabled(true);
-    setDragDropMode(QAbstractItemView::DragOnly);
+    setAcceptDrops(true);
+    setDragDropMode(QAbstractItemView::DragDrop);
     setSelectionMode(QAbstractItemView::SingleSelection);
     setRootIsDecorated(true);
-    setToolTip(tr("Drag a clip onto a track of its character to add an action"));
+    setToolTip(tr("Drag a clip onto a track of its character to add an action; drop BVH or glTF files here to import them"));
 }
 
 void ClipLibraryPanel::setDocument(Document* document)
@@ -36,6 +38,7 @@ void ClipLibraryPanel::refresh()
         return;
     for (const auto& character : m_document->scenario().characters) {
         auto* group = new QTreeWidgetItem(this, {QString::fromStdString(character.name)});
+        group->setData(0, Qt::UserRole, topLevelItemCount() - 1);
         group->setFlags(Qt::ItemIsEnabled);
         for (const auto& clip : character.clips) {
             auto* item = new QTreeWidgetItem(group, {QString::fromStdString(clip.name),
@@ -60,6 +63,36 @@ QTreeWidgetItem* ClipLibraryPanel::clipItem(const QString& character, const QStr
                 return group->child(k);
     }
     return nullptr;
+}
+
+void ClipLibraryPanel::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (!widgets::droppedFiles(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+    else
+        QTreeWidget::dragEnterEvent(event);
+}
+
+void ClipLibraryPanel::dragMoveEvent(QDragMoveEvent* event)
+{
+    if (!widgets::droppedFiles(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+    else
+        QTreeWidget::dragMoveEvent(event);
+}
+
+void ClipLibraryPanel::dropEvent(QDropEvent* event)
+{
+    const QStringList files = widgets::droppedFiles(event->mimeData());
+    if (files.isEmpty()) {
+        event->ignore(); // a clip dragged within the library goes nowhere
+        return;
+    }
+    event->acceptProposedAction();
+    const QTreeWidgetItem* item = itemAt(event->position().toPoint());
+    if (item && item->parent())
+        item = item->parent();
+    emit filesDropped(files, item ? item->data(0, Qt::UserRole).toInt() : -1);
 }
 
 QStringList ClipLibraryPanel::mimeTypes() const

@@ -1,7 +1,8 @@
 #pragma once
 // ClipLibraryPanel: the clips each character can play, grouped by character. Dragging a clip onto
 // a timeline track of that character creates an action playing it (widgets::TimelineView takes
-// the drop as widgets::TimelineView::ClipMimeType with the clip's name).
+// the drop as widgets::TimelineView::ClipMimeType with the clip's name). Motion files dropped on
+// it from the file manager are to be imported into the character they land on.
 
 #include <QTreeWidget>
 
@@ -17,9 +18,17 @@ public:
     /// The item of a character's clip, or null (tests start drags from it).
     QTreeWidgetItem* clipItem(const QString& character, const QString& clip) const;
 
+signals:
+    /// Files dropped from the file manager, on a character's group or clip (its index), or
+    /// elsewhere (-1).
+    void filesDropped(const QStringList& files, int character);
+
 protected:
     QMimeData* mimeData(const QList<QTreeWidgetItem*>& items) const override;
     QStringList mimeTypes() const override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dragMoveEvent(QDragMoveEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
     void refresh();

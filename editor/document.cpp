@@ -87,6 +87,18 @@ QStringList Document::warnings() const
     return list;
 }
 
+QList<Document::Message> Document::messages() const
+{
+    QList<Message> list;
+    for (std::size_t c = 0; c < m_runtime.characters.size(); ++c) {
+        const core::scenario::CharacterRuntime& character = m_runtime.characters[c];
+        for (std::size_t w = 0; w < character.warnings.size(); ++w)
+            list.push_back({fromUtf8(character.warnings[w]), int(c),
+                            w < character.warningClips.size() ? fromUtf8(character.warningClips[w]) : QString()});
+    }
+    return list;
+}
+
 double Document::previewDuration() const
 {
     return m_runtime.duration > 0 ? m_runtime.duration : kOpenEndedPreviewSeconds;

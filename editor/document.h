@@ -57,6 +57,13 @@ public:
     QString scenarioName() const;
     /// Problems that did not stop loading (e.g. BVH joints with no H-Anim counterpart).
     QStringList warnings() const;
+    /// The same with what each is about, for the Messages panel.
+    struct Message {
+        QString text;
+        int character = -1; ///< index of the character it is about, or -1
+        QString clip;       ///< the clip it is about, or empty
+    };
+    QList<Message> messages() const;
 
     /// Length of the timeline in seconds (the runtime's duration).
     double duration() const { return m_runtime.duration; }

@@ -7,12 +7,15 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QSignalBlocker>
+#include <QSpinBox>
 #include <QStackedWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 #include "edit/document_edits.h"
+#include "editor/character_properties.h"
 #include "editor/document.h"
 #include "editor/qt_conversions.h"
 
@@ -108,6 +111,20 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent)
     m_mask->setObjectName(QStringLiteral("actionMask"));
     m_outsideDomain = new QCheckBox(tr("Hold the first and last pose outside the action"), actionPage);
     m_outsideDomain->setObjectName(QStringLiteral("actionOutsideDomain"));
+    m_placement = new QComboBox(actionPage);
+    m_placement->setObjectName(QStringLiteral("actionPlacement"));
+    m_placement->addItem(tr("Where it was recorded"), int(core::scenario::Placement::World));
+    m_placement->addItem(tr("Where the character stands"), int(core::scenario::Placement::Character));
+    m_placement->addItem(tr("Where the previous action leaves it"), int(core::scenario::Placement::Continue));
+    m_placement->setToolTip(tr("Where the motion's first frame puts the body on the floor (and which way it faces)"));
+    m_repeat = new QSpinBox(actionPage);
+    m_repeat->setObjectName(QStringLiteral("actionRepeat"));
+    m_repeat->setRange(0, 1000);
+    m_repeat->setSpecialValueText(tr("forever"));
+    m_repeat->setSuffix(tr(" ×"));
+    m_repeat->setKeyboardTracking(false);
+    m_rootMotion = new QCheckBox(tr("Each time on from where it ended (walks on)"), actionPage);
+    m_rootMotion->setObjectName(QStringLiteral("actionRootMotion"));
     m_length = new QLabel(actionPage);
     m_fades = new QLabel(actionPage);
     m_modifiers = new QLabel(actionPage);
@@ -118,11 +135,17 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent)
     form->addRow(tr("Start:"), m_start);
     form->addRow(tr("Length:"), m_length);
     form->addRow(tr("Fades:"), m_fades);
+    form->addRow(tr("Starts:"), m_placement);
+    form->addRow(tr("Plays:"), m_repeat);
+    form->addRow(QString(), m_rootMotion);
     form->addRow(tr("Blend mode:"), m_mode);
     form->addRow(tr("Body part:"), m_mask);
     form->addRow(QString(), m_outsideDomain);
     form->addRow(tr("Modifiers:"), m_modifiers);
     m_pages->addWidget(actionPage);
+    m_characterPage = new CharacterProperties(m_pages);
+    m_pages->addWidget(m_characterPage);
+    connect(m_characterPage, &CharacterProperties::problem, this, &PropertiesPanel::problem);
 
     connect(m_name, &QLineEdit::editingFinished, this, [this] {
         const std::string name = m_name->text().trimmed().toStdString();
@@ -144,6 +167,12 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent)
         editAction(tr("Change Outside Domain"), [&](ActionSpec& spec) { spec.renderOutsideDomain = on; });
     });
     connect(m_start, &QDoubleSpinBox::valueChanged, this, &PropertiesPanel::onStartEdited);
+    connect(m_placement, &QComboBox::activated, this, [this] {
+        const auto placement = core::scenario::Placement(m_placement->currentData().toInt());
+        editAction(tr("Change Where the Action Starts"), [&](ActionSpec& spec) { spec.placement = placement; });
+    });
+    connect(m_repeat, &QSpinBox::valueChanged, this, &PropertiesPanel::onRepeatEdited);
+    connect(m_rootMotion, &QCheckBox::toggled, this, &PropertiesPanel::onRepeatEdited);
     refresh();
 }
 
@@ -180,6 +209,27 @@ template <typename Change> void PropertiesPanel::editAction(const QString& text,
     }
 }
 
+void PropertiesPanel::onRepeatEdited()
+{
+    // The action's loop: the first Loop modifier (added in front, wrapping the clip; taken
+    // away when it plays once).
+    const int times = m_repeat->value();
+    const bool rootMotion = m_rootMotion->isChecked();
+    editAction(tr("Change How Often the Action Plays"), [&](ActionSpec& spec) {
+        auto loop = std::find_if(spec.modifiers.begin(), spec.modifiers.end(),
+                                 [](const ModifierSpec& m) { return m.kind == ModifierKind::Loop; });
+        if (times == 1) {
+            if (loop != spec.modifiers.end())
+                spec.modifiers.erase(loop);
+            return;
+        }
+        if (loop == spec.modifiers.end())
+            loop = spec.modifiers.insert(spec.modifiers.begin(), ModifierSpec{.kind = ModifierKind::Loop});
+        loop->count = times;
+        loop->rootMotion = rootMotion;
+    });
+}
+
 void PropertiesPanel::onStartEdited()
 {
     if (m_refreshing || !m_document || !m_action)
@@ -196,13 +246,23 @@ void PropertiesPanel::onStartEdited()
     }
 }
 
+void PropertiesPanel::setCharacter(std::optional<int> character)
+{
+    m_character = character;
+    refresh();
+}
+
 void PropertiesPanel::refresh()
 {
     m_refreshing = true;
-    if (m_document && m_action && actionAt(m_document->scenario(), *m_action))
+    if (m_document && m_action && actionAt(m_document->scenario(), *m_action)) {
         showAction();
-    else
+    } else if (m_document && m_character && std::size_t(*m_character) < m_document->scenario().characters.size()) {
+        m_pages->setCurrentWidget(m_characterPage);
+        m_characterPage->show(m_document, *m_character);
+    } else {
         showScenario();
+    }
     m_refreshing = false;
 }
 
@@ -221,7 +281,8 @@ void PropertiesPanel::showScenario()
     QString file = m_document->filePath().isEmpty() ? tr("not saved yet") : m_document->filePath().toHtmlEscaped();
     m_scenarioSummary->setText(
         tr("<b>%1</b><br>File: %2<br>%3, %4, %5 markers<br>Length: %6<br><br>"
-           "<i>Select an action on the timeline to see and edit its properties.</i>")
+           "<i>Select an action on the timeline, or a character in the scenario outline, to see and edit its "
+           "properties.</i>")
             .arg(m_document->scenarioName().toHtmlEscaped(), file,
                  tr("%n character(s)", nullptr, int(scenario.characters.size())),
                  tr("%n action(s)", nullptr, actions))
@@ -256,6 +317,12 @@ void PropertiesPanel::showAction()
         m_mask->addItem(fromUtf8(mask.name), fromUtf8(mask.name));
     m_mask->setCurrentIndex(std::max(0, m_mask->findData(fromUtf8(spec.mask))));
     m_outsideDomain->setChecked(spec.renderOutsideDomain);
+    m_placement->setCurrentIndex(std::max(0, m_placement->findData(int(spec.placement))));
+    const auto loop = std::find_if(spec.modifiers.begin(), spec.modifiers.end(),
+                                   [](const ModifierSpec& m) { return m.kind == ModifierKind::Loop; });
+    m_repeat->setValue(loop == spec.modifiers.end() ? 1 : loop->count);
+    m_rootMotion->setChecked(loop != spec.modifiers.end() && loop->rootMotion);
+    m_rootMotion->setEnabled(editable && loop != spec.modifiers.end());
 
     const auto span = core::edit::actionSpan(scenario, m_document->runtime(), *m_action);
     if (!span)
@@ -280,7 +347,8 @@ void PropertiesPanel::showAction()
     m_modifiers->setText(modifiers.isEmpty() ? tr("none") : modifiers.join(QStringLiteral(", ")));
 
     for (QWidget* field : {static_cast<QWidget*>(m_name), static_cast<QWidget*>(m_clip), static_cast<QWidget*>(m_start),
-                           static_cast<QWidget*>(m_mode), static_cast<QWidget*>(m_mask), static_cast<QWidget*>(m_outsideDomain)})
+                           static_cast<QWidget*>(m_mode), static_cast<QWidget*>(m_mask), static_cast<QWidget*>(m_outsideDomain),
+                           static_cast<QWidget*>(m_placement), static_cast<QWidget*>(m_repeat)})
         field->setEnabled(editable);
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // PropertiesPanel: the fields of the action selected on the timeline — name, clip, start time,
-// blend mode, joint mask, whether it renders outside its domain — each editable as one undoable
-// command, plus what it is made of (length, fades, modifiers) for reading. With no action
-// selected it describes the scenario (file, characters, length) and says how to select one.
+// where its motion starts, how often it plays, blend mode, joint mask, whether it renders outside
+// its domain — each editable as one undoable command, plus what it is made of (length, fades,
+// modifiers) for reading. With a character selected in the outline instead, the character's
+// (CharacterProperties); with nothing selected it describes the scenario and says how to select.
 
 #include <QWidget>
 
@@ -15,10 +16,12 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
+class QSpinBox;
 class QStackedWidget;
 
 namespace thespis::editor {
 
+class CharacterProperties;
 class Document;
 
 class PropertiesPanel : public QWidget {
@@ -30,6 +33,9 @@ public:
     /// The action whose properties are shown (the timeline's current one), or none.
     void setAction(std::optional<core::edit::ActionPath> action);
     std::optional<core::edit::ActionPath> action() const { return m_action; }
+    /// The character whose properties are shown when no action is, or none.
+    void setCharacter(std::optional<int> character);
+    CharacterProperties* characterPage() const { return m_characterPage; }
 
     QLineEdit* nameEdit() const { return m_name; }
     QComboBox* clipChoice() const { return m_clip; }
@@ -37,6 +43,9 @@ public:
     QComboBox* modeChoice() const { return m_mode; }
     QComboBox* maskChoice() const { return m_mask; }
     QCheckBox* outsideDomainCheck() const { return m_outsideDomain; }
+    QComboBox* placementChoice() const { return m_placement; }
+    QSpinBox* repeatEdit() const { return m_repeat; }
+    QCheckBox* rootMotionCheck() const { return m_rootMotion; }
 
 signals:
     /// An edit was refused; the message says why.
@@ -49,9 +58,11 @@ private:
     // Pushes the current action with `change` applied as one command named `text`.
     template <typename Change> void editAction(const QString& text, Change change);
     void onStartEdited();
+    void onRepeatEdited();
 
     Document* m_document = nullptr;
     std::optional<core::edit::ActionPath> m_action;
+    std::optional<int> m_character;
     bool m_refreshing = false; // set while fields are filled from the document: not user edits
 
     QStackedWidget* m_pages = nullptr;
@@ -63,6 +74,10 @@ private:
     QComboBox* m_mode = nullptr;
     QComboBox* m_mask = nullptr;
     QCheckBox* m_outsideDomain = nullptr;
+    QComboBox* m_placement = nullptr;
+    QSpinBox* m_repeat = nullptr;
+    QCheckBox* m_rootMotion = nullptr;
+    CharacterProperties* m_characterPage = nullptr;
     QLabel* m_length = nullptr;
     QLabel* m_fades = nullptr;
     QLabel* m_modifiers = nullptr;

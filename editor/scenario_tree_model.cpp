@@ -172,6 +172,25 @@ const ScenarioTreeModel::Node* ScenarioTreeModel::nodeOf(const QModelIndex& inde
     return &m_nodes[std::size_t(index.internalId())];
 }
 
+std::optional<ScenarioTreeModel::Location> ScenarioTreeModel::locationOf(const QModelIndex& index) const
+{
+    const Node* node = nodeOf(index);
+    if (!node)
+        return std::nullopt;
+    return Location{node->kind, node->character, node->layer, node->action};
+}
+
+QModelIndex ScenarioTreeModel::indexOf(int character, int layer) const
+{
+    for (std::size_t n = 0; n < m_nodes.size(); ++n) {
+        const Node& node = m_nodes[n];
+        const bool wanted = layer < 0 ? node.kind == NodeKind::Character : node.kind == NodeKind::Layer && node.layer == layer;
+        if (wanted && node.character == character)
+            return createIndex(node.row, 0, quintptr(n));
+    }
+    return {};
+}
+
 QModelIndex ScenarioTreeModel::index(int row, int column, const QModelIndex& parent) const
 {
     if (column < 0 || column >= ColumnCount || row < 0)

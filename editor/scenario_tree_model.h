@@ -9,6 +9,7 @@
 #include <QAbstractItemModel>
 #include <QIcon>
 
+#include <optional>
 #include <vector>
 
 #include "anim/blending_params.h"
@@ -36,6 +37,16 @@ public:
     explicit ScenarioTreeModel(QObject* parent = nullptr);
 
     void setDocument(const Document* document);
+
+    /// What a row is: a character, a layer of it or an action of that layer (indices into the
+    /// document; -1 where the row is above that level).
+    struct Location {
+        NodeKind kind = NodeKind::Character;
+        int character = -1, layer = -1, action = -1;
+    };
+    std::optional<Location> locationOf(const QModelIndex& index) const;
+    /// The row of a character (layer -1) or of one of its layers.
+    QModelIndex indexOf(int character, int layer = -1) const;
     /// Updates which actions are marked as playing; emits dataChanged only for rows that change.
     void setTime(double seconds);
 

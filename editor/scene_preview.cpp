@@ -3,6 +3,8 @@
 #include <QColor>
 #include <QVector3D>
 
+#include <algorithm>
+
 #include "editor/document.h"
 #include "editor/qt_conversions.h"
 #include "render/gl_context.h"
@@ -86,9 +88,17 @@ core::Result<void> ScenePreview::updateDocument(const Document* document)
         m_viewport->update();
         return {};
     }
-    // Other bodies (a bake, tags, a model): rebuilt where the user is looking, at the same time.
+    // Other bodies (a bake, tags, a model): rebuilt where the user is looking, at the same time;
+    // characters come or go: framed anew, so that every one is in view.
     const double time = m_scene ? m_scene->time() : 0.0;
-    auto rebuilt = build(document, m_scene == nullptr);
+    bool sameCast = m_scene != nullptr && document;
+    if (sameCast) {
+        const std::vector<BodySource> next = bodySources(document->scenario());
+        sameCast = next.size() == m_bodySources.size()
+                   && std::equal(next.begin(), next.end(), m_bodySources.begin(),
+                                 [](const BodySource& a, const BodySource& b) { return a.name == b.name; });
+    }
+    auto rebuilt = build(document, !sameCast);
     if (rebuilt)
         setTime(time);
     return rebuilt;

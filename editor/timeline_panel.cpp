@@ -134,6 +134,10 @@ TimelinePanel::TimelinePanel(QWidget* parent) : QWidget(parent)
         if (m_document)
             report(m_document->edit(core::edit::removeMarker(m_document->scenario(), index), tr("Remove Marker")));
     });
+    connect(m_view, &widgets::TimelineView::filesDropRequested, this, [this](int track, qint64 time, const QStringList& files) {
+        if (track >= 0 && std::size_t(track) < m_tracks.size())
+            emit filesDropped(m_tracks[std::size_t(track)], core::Tick(time), files);
+    });
     connect(m_view, &widgets::TimelineView::clipDropRequested, this, [this](int track, qint64 time, const QString& clip) {
         if (!m_document || track < 0 || std::size_t(track) >= m_tracks.size())
             return;
@@ -249,6 +253,14 @@ std::vector<ActionPath> TimelinePanel::pathsOf(const QList<int>& ids) const
             paths.push_back(m_clipPaths[std::size_t(id)]);
     std::sort(paths.begin(), paths.end());
     return paths;
+}
+
+std::optional<ActionPath> TimelinePanel::currentAction() const
+{
+    const std::vector<ActionPath> selected = selectedActions();
+    if (selected.empty())
+        return std::nullopt;
+    return selected.front();
 }
 
 std::vector<ActionPath> TimelinePanel::selectedActions() const

@@ -38,6 +38,8 @@ public:
     widgets::TimelineView* view() const { return m_view; }
     /// The actions selected on the timeline, in timeline order.
     std::vector<core::edit::ActionPath> selectedActions() const;
+    /// The first of them, or none.
+    std::optional<core::edit::ActionPath> currentAction() const;
     void selectActions(const std::vector<core::edit::ActionPath>& actions);
     /// The clip id the view shows for an action (tests drive the view with it), or -1.
     int clipId(const core::edit::ActionPath& action) const;
@@ -55,6 +57,9 @@ signals:
     /// The first selected action (the curve editor shows it), or none.
     void currentActionChanged(std::optional<core::edit::ActionPath> action);
     void actionActivated(core::edit::ActionPath action);
+    /// Files from the file manager dropped on a layer's track at `time`: to import into its
+    /// character, the first playing there.
+    void filesDropped(core::edit::LayerPath layer, core::Tick time, const QStringList& files);
     void problem(const QString& message);
 
 private:

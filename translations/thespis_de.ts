@@ -264,6 +264,192 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     </message>
 </context>
 <context>
+    <name>thespis::editor::CharacterDialog</name>
+    <message>
+        <source>Add Character</source>
+        <translation>Figur hinzufügen</translation>
+    </message>
+    <message>
+        <source>The built-in humanoid</source>
+        <translation>Der eingebaute Humanoide</translation>
+    </message>
+    <message>
+        <source>H-Anim LOA 1 (18 joints)</source>
+        <translation>H-Anim LOA 1 (18 Gelenke)</translation>
+    </message>
+    <message>
+        <source>H-Anim, the paper&apos;s 25 joints (spine, neck, clavicles)</source>
+        <translation>H-Anim, die 25 Gelenke aus dem Paper (Wirbelsäule, Hals, Schlüsselbeine)</translation>
+    </message>
+    <message>
+        <source>H-Anim LOA 2 (71 joints, with fingers)</source>
+        <translation>H-Anim LOA 2 (71 Gelenke, mit Fingern)</translation>
+    </message>
+    <message>
+        <source>A glTF model</source>
+        <translation>Ein glTF-Modell</translation>
+    </message>
+    <message>
+        <source>No model chosen.</source>
+        <translation>Kein Modell gewählt.</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Name:</translation>
+    </message>
+    <message>
+        <source>Choose a glTF Model</source>
+        <translation>glTF-Modell auswählen</translation>
+    </message>
+    <message>
+        <source>glTF models (*.gltf *.glb)</source>
+        <translation>glTF-Modelle (*.gltf *.glb)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used: %2</source>
+        <translation>%1 kann nicht verwendet werden: %2</translation>
+    </message>
+    <message>
+        <source>Actor</source>
+        <translation>Darsteller</translation>
+    </message>
+    <message numerus="yes">
+        <source>Import its %n animation(s) as clips</source>
+        <translation>
+            <numerusform>%n Animation des Modells als Clip importieren</numerusform>
+            <numerusform>%n Animationen des Modells als Clips importieren</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::CharacterProperties</name>
+    <message>
+        <source>Choose Model…</source>
+        <translation>Modell wählen…</translation>
+    </message>
+    <message>
+        <source>Built-in Humanoid</source>
+        <translation>Eingebauter Humanoide</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Which way the character faces: 0° looks along +Z, 90° along +X</source>
+        <translation>Blickrichtung der Figur: Bei 0° blickt sie entlang +Z, bei 90° entlang +X</translation>
+    </message>
+    <message>
+        <source>Character:</source>
+        <translation>Figur:</translation>
+    </message>
+    <message>
+        <source>Body:</source>
+        <translation>Körper:</translation>
+    </message>
+    <message>
+        <source>Motion plays on:</source>
+        <translation>Bewegung läuft auf:</translation>
+    </message>
+    <message>
+        <source>Stands at:</source>
+        <translation>Steht bei:</translation>
+    </message>
+    <message>
+        <source>Faces:</source>
+        <translation>Blickrichtung:</translation>
+    </message>
+    <message>
+        <source>Has:</source>
+        <translation>Enthält:</translation>
+    </message>
+    <message>
+        <source>Rename Character</source>
+        <translation>Figur umbenennen</translation>
+    </message>
+    <message>
+        <source>Change Skeleton</source>
+        <translation>Skelett ändern</translation>
+    </message>
+    <message>
+        <source>Use the Built-in Humanoid</source>
+        <translation>Eingebauten Humanoiden verwenden</translation>
+    </message>
+    <message>
+        <source>Choose a glTF Model</source>
+        <translation>glTF-Modell auswählen</translation>
+    </message>
+    <message>
+        <source>glTF models (*.gltf *.glb)</source>
+        <translation>glTF-Modelle (*.gltf *.glb)</translation>
+    </message>
+    <message>
+        <source>Change Model</source>
+        <translation>Modell ändern</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Move Character</source>
+        <translation>Figur verschieben</translation>
+    </message>
+    <message>
+        <source>The built-in humanoid</source>
+        <translation>Der eingebaute Humanoide</translation>
+    </message>
+    <message>
+        <source>H-Anim LOA 1 (18 joints)</source>
+        <translation>H-Anim LOA 1 (18 Gelenke)</translation>
+    </message>
+    <message>
+        <source>H-Anim, the paper&apos;s 25 joints</source>
+        <translation>H-Anim, die 25 Gelenke aus dem Paper</translation>
+    </message>
+    <message>
+        <source>H-Anim LOA 2 (71 joints)</source>
+        <translation>H-Anim LOA 2 (71 Gelenke)</translation>
+    </message>
+    <message>
+        <source>The model&apos;s own rig</source>
+        <translation>Das eigene Rig des Modells</translation>
+    </message>
+    <message>
+        <source>The skeleton of clip %1</source>
+        <translation>Das Skelett von Clip %1</translation>
+    </message>
+    <message>
+        <source>%1, %2, %3</source>
+        <translation>%1, %2, %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n layer(s)</source>
+        <translation>
+            <numerusform>%n Ebene</numerusform>
+            <numerusform>%n Ebenen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n clip(s)</source>
+        <translation>
+            <numerusform>%n Clip</numerusform>
+            <numerusform>%n Clips</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n action(s)</source>
+        <translation>
+            <numerusform>%n Aktion</numerusform>
+            <numerusform>%n Aktionen</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::ClipLibraryPanel</name>
     <message>
         <source>Clip</source>
@@ -274,16 +460,16 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <translation>Quelle</translation>
     </message>
     <message>
-        <source>Drag a clip onto a track of its character to add an action</source>
-        <translation>Ziehen Sie einen Clip auf eine Spur seiner Figur, um eine Aktion hinzuzufügen</translation>
-    </message>
-    <message>
         <source>keyframes in the scenario</source>
         <translation>Keyframes im Szenario</translation>
     </message>
     <message>
         <source>Drag onto a track of %1</source>
         <translation>Auf eine Spur von %1 ziehen</translation>
+    </message>
+    <message>
+        <source>Drag a clip onto a track of its character to add an action; drop BVH or glTF files here to import them</source>
+        <translation>Ziehen Sie einen Clip auf eine Spur seiner Figur, um eine Aktion hinzuzufügen; legen Sie BVH- oder glTF-Dateien hier ab, um sie zu importieren</translation>
     </message>
 </context>
 <context>
@@ -652,6 +838,186 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     </message>
 </context>
 <context>
+    <name>thespis::editor::ImportMotionDialog</name>
+    <message>
+        <source>CMU (MotionBuilder names)</source>
+        <translation>CMU (MotionBuilder-Namen)</translation>
+    </message>
+    <message>
+        <source>CMU (3ds Max names)</source>
+        <translation>CMU (3ds-Max-Namen)</translation>
+    </message>
+    <message>
+        <source>your mapping</source>
+        <translation>Ihre Zuordnung</translation>
+    </message>
+    <message>
+        <source>none recognised</source>
+        <translation>keine erkannt</translation>
+    </message>
+    <message>
+        <source>found from the rig</source>
+        <translation>aus dem Rig ermittelt</translation>
+    </message>
+    <message>
+        <source>Import Motion</source>
+        <translation>Bewegung importieren</translation>
+    </message>
+    <message>
+        <source>File and clips</source>
+        <translation>Datei und Clips</translation>
+    </message>
+    <message>
+        <source>What was found</source>
+        <translation>Gefundener Inhalt</translation>
+    </message>
+    <message>
+        <source>Joint in the file</source>
+        <translation>Gelenk in der Datei</translation>
+    </message>
+    <message>
+        <source>Plays as (H-Anim name)</source>
+        <translation>Spielt als (H-Anim-Name)</translation>
+    </message>
+    <message>
+        <source>Type the H-Anim joint a file joint should drive (l_hip, vl5, skullbase …); leave it empty, or the file&apos;s own name, to leave the joint out. Then Apply Mapping.</source>
+        <translation>Geben Sie das H-Anim-Gelenk ein, das ein Gelenk der Datei steuern soll (l_hip, vl5, skullbase …); lassen Sie das Feld leer oder den Namen aus der Datei stehen, um das Gelenk auszulassen. Dann „Zuordnung anwenden“.</translation>
+    </message>
+    <message>
+        <source>Apply Mapping</source>
+        <translation>Zuordnung anwenden</translation>
+    </message>
+    <message>
+        <source>Load Mapping…</source>
+        <translation>Zuordnung laden…</translation>
+    </message>
+    <message>
+        <source>Save Mapping…</source>
+        <translation>Zuordnung speichern…</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importieren</translation>
+    </message>
+    <message>
+        <source>Import into:</source>
+        <translation>Importieren in:</translation>
+    </message>
+    <message>
+        <source>Load Joint Mapping</source>
+        <translation>Gelenkzuordnung laden</translation>
+    </message>
+    <message>
+        <source>Joint mappings (*.map *.txt);;All files (*)</source>
+        <translation>Gelenkzuordnungen (*.map *.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Save Joint Mapping</source>
+        <translation>Gelenkzuordnung speichern</translation>
+    </message>
+    <message>
+        <source>Joint mappings (*.map)</source>
+        <translation>Gelenkzuordnungen (*.map)</translation>
+    </message>
+    <message>
+        <source>There is no character to import into: add one first (Character ▸ Add Character…).</source>
+        <translation>Es gibt keine Figur, in die importiert werden kann: Fügen Sie zuerst eine hinzu (Figur ▸ Figur hinzufügen…).</translation>
+    </message>
+    <message>
+        <source>cannot be read</source>
+        <translation>nicht lesbar</translation>
+    </message>
+    <message>
+        <source>moves none of the character&apos;s joints</source>
+        <translation>bewegt keines der Gelenke der Figur</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1, %n frame(s) at %2 fps</source>
+        <translation>
+            <numerusform>%1, %n Bild bei %2 B/s</numerusform>
+            <numerusform>%1, %n Bilder bei %2 B/s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>glTF</source>
+        <translation>glTF</translation>
+    </message>
+    <message>
+        <source>BVH</source>
+        <translation>BVH</translation>
+    </message>
+    <message>
+        <source>animation</source>
+        <translation>Animation</translation>
+    </message>
+    <message>
+        <source>No files to import.</source>
+        <translation>Keine Dateien zum Importieren.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1 cannot be read&lt;/b&gt;: %2&lt;br&gt;Nothing of it is imported.</source>
+        <translation>&lt;b&gt;%1 ist nicht lesbar&lt;/b&gt;: %2&lt;br&gt;Nichts daraus wird importiert.</translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;%1&lt;/b&gt;: %2, %n frame(s) at %3 fps.</source>
+        <translation>
+            <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2, %n Bild bei %3 B/s.</numerusform>
+            <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2, %n Bilder bei %3 B/s.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Joint names: %1; it moves %n of the character&apos;s joints.</source>
+        <translation>
+            <numerusform>Gelenknamen: %1; die Datei bewegt %n Gelenk der Figur.</numerusform>
+            <numerusform>Gelenknamen: %1; die Datei bewegt %n Gelenke der Figur.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Unit: %1. The motion is resized to the character by the length of the legs.</source>
+        <translation>Einheit: %1. Die Bewegung wird anhand der Beinlänge an die Größe der Figur angepasst.</translation>
+    </message>
+    <message>
+        <source>The body lay %1 in the file: it is stood up (+Y up, facing +Z).</source>
+        <translation>In der Datei lag der Körper anders (%1): Er wird aufgerichtet (+Y nach oben, Blick nach +Z).</translation>
+    </message>
+    <message>
+        <source>Its first frame is a calibration pose (a T-pose): it is left out.</source>
+        <translation>Das erste Bild ist eine Kalibrierpose (eine T-Pose): Es wird ausgelassen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more</source>
+        <translation>
+            <numerusform>%n weiteres</numerusform>
+            <numerusform>%n weitere</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n joint(s) kept their own names and move nothing of an H-Anim body: %1.</source>
+        <translation>
+            <numerusform>%n Gelenk hat seinen eigenen Namen behalten und bewegt nichts an einem H-Anim-Körper: %1.</numerusform>
+            <numerusform>%n Gelenke haben ihre eigenen Namen behalten und bewegen nichts an einem H-Anim-Körper: %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Joint mapping of %1 (%n joint(s)):</source>
+        <translation>
+            <numerusform>Gelenkzuordnung von %1 (%n Gelenk):</numerusform>
+            <numerusform>Gelenkzuordnung von %1 (%n Gelenke):</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;The mapping file cannot be read&lt;/b&gt;: %1</source>
+        <translation>&lt;b&gt;Die Zuordnungsdatei ist nicht lesbar&lt;/b&gt;: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Import %n Clip(s)</source>
+        <translation>
+            <numerusform>%n Clip importieren</numerusform>
+            <numerusform>%n Clips importieren</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::JointMaskPanel</name>
     <message>
         <source>The mask to edit; actions that name it all change with it</source>
@@ -780,6 +1146,100 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source>Delete Mask %1</source>
         <translation>Maske %1 löschen</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::LightingDialog</name>
+    <message>
+        <source>Lighting</source>
+        <translation>Beleuchtung</translation>
+    </message>
+    <message>
+        <source>No probe: the default sky</source>
+        <translation>Keine Sonde: der Standardhimmel</translation>
+    </message>
+    <message>
+        <source>A light probe (HDR or EXR)</source>
+        <translation>Eine Lichtsonde (HDR oder EXR)</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Latitude–longitude</source>
+        <translation>Breite–Länge</translation>
+    </message>
+    <message>
+        <source>Angular map (mirrored ball, unwrapped)</source>
+        <translation>Winkelkarte (Spiegelkugel, abgewickelt)</translation>
+    </message>
+    <message>
+        <source>Mirror ball (a photograph)</source>
+        <translation>Spiegelkugel (ein Foto)</translation>
+    </message>
+    <message>
+        <source>Vertical cross</source>
+        <translation>Vertikales Kreuz</translation>
+    </message>
+    <message>
+        <source>Layout:</source>
+        <translation>Anordnung:</translation>
+    </message>
+    <message>
+        <source>Turned about the vertical:</source>
+        <translation>Gedreht um die Senkrechte:</translation>
+    </message>
+    <message>
+        <source>Intensity:</source>
+        <translation>Intensität:</translation>
+    </message>
+    <message>
+        <source>The probe</source>
+        <translation>Die Sonde</translation>
+    </message>
+    <message>
+        <source>The light the characters receive</source>
+        <translation>Das Licht, das die Figuren erhalten</translation>
+    </message>
+    <message>
+        <source>Set Light</source>
+        <translation>Licht festlegen</translation>
+    </message>
+    <message>
+        <source>Choose a Light Probe</source>
+        <translation>Lichtsonde auswählen</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr)</source>
+        <translation>HDR-Bilder (*.hdr *.exr)</translation>
+    </message>
+    <message>
+        <source>No file chosen.</source>
+        <translation>Keine Datei gewählt.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used as a light probe: %2</source>
+        <translation>%1 kann nicht als Lichtsonde verwendet werden: %2</translation>
+    </message>
+    <message>
+        <source>Choose a probe file.</source>
+        <translation>Wählen Sie eine Sondendatei.</translation>
+    </message>
+    <message>
+        <source>The default sky</source>
+        <translation>Der Standardhimmel</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::MessagesPanel</name>
+    <message>
+        <source>Double-click a message to show what it is about</source>
+        <translation>Doppelklicken Sie auf eine Meldung, um anzuzeigen, worauf sie sich bezieht</translation>
+    </message>
+    <message>
+        <source>Nothing to report.</source>
+        <translation>Keine Meldungen.</translation>
     </message>
 </context>
 <context>
@@ -916,10 +1376,6 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>not saved yet</source>
         <translation>noch nicht gespeichert</translation>
     </message>
-    <message>
-        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;File: %2&lt;br&gt;%3, %4, %5 markers&lt;br&gt;Length: %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Select an action on the timeline to see and edit its properties.&lt;/i&gt;</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Datei: %2&lt;br&gt;%3, %4, %5 Marker&lt;br&gt;Länge: %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Wählen Sie eine Aktion auf der Zeitleiste aus, um ihre Eigenschaften anzuzeigen und zu bearbeiten.&lt;/i&gt;</translation>
-    </message>
     <message numerus="yes">
         <source>%n character(s)</source>
         <translation>
@@ -972,6 +1428,54 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source>none</source>
         <translation>keine</translation>
+    </message>
+    <message>
+        <source>Where it was recorded</source>
+        <translation>Am Ort der Aufnahme</translation>
+    </message>
+    <message>
+        <source>Where the character stands</source>
+        <translation>Am Standort der Figur</translation>
+    </message>
+    <message>
+        <source>Where the previous action leaves it</source>
+        <translation>Wo die vorige Aktion die Figur hinterlässt</translation>
+    </message>
+    <message>
+        <source>Where the motion&apos;s first frame puts the body on the floor (and which way it faces)</source>
+        <translation>Wo das erste Bild der Bewegung den Körper auf den Boden stellt (und in welche Richtung er blickt)</translation>
+    </message>
+    <message>
+        <source>forever</source>
+        <translation>endlos</translation>
+    </message>
+    <message>
+        <source> ×</source>
+        <translation> ×</translation>
+    </message>
+    <message>
+        <source>Each time on from where it ended (walks on)</source>
+        <translation>Jedes Mal von dort weiter, wo sie endete (läuft weiter)</translation>
+    </message>
+    <message>
+        <source>Starts:</source>
+        <translation>Beginnt:</translation>
+    </message>
+    <message>
+        <source>Plays:</source>
+        <translation>Spielt:</translation>
+    </message>
+    <message>
+        <source>Change Where the Action Starts</source>
+        <translation>Startort der Aktion ändern</translation>
+    </message>
+    <message>
+        <source>Change How Often the Action Plays</source>
+        <translation>Wiederholungen der Aktion ändern</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;File: %2&lt;br&gt;%3, %4, %5 markers&lt;br&gt;Length: %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Select an action on the timeline, or a character in the scenario outline, to see and edit its properties.&lt;/i&gt;</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Datei: %2&lt;br&gt;%3, %4, %5 Marker&lt;br&gt;Länge: %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Wählen Sie eine Aktion auf der Zeitleiste oder eine Figur in der Szenario-Übersicht aus, um ihre Eigenschaften anzuzeigen und zu bearbeiten.&lt;/i&gt;</translation>
     </message>
 </context>
 <context>
@@ -1490,6 +1994,156 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
     </message>
 </context>
 <context>
+    <name>thespis::studio::ContentActions</name>
+    <message>
+        <source>&amp;Import Motion…</source>
+        <translation>Bewegung &amp;importieren…</translation>
+    </message>
+    <message>
+        <source>Add BVH motion capture or glTF animations as clips of a character</source>
+        <translation>BVH-Motion-Capture oder glTF-Animationen als Clips einer Figur hinzufügen</translation>
+    </message>
+    <message>
+        <source>&amp;Add Character…</source>
+        <translation>Figur &amp;hinzufügen…</translation>
+    </message>
+    <message>
+        <source>Add a character on the built-in humanoid or a glTF model</source>
+        <translation>Eine Figur auf dem eingebauten Humanoiden oder einem glTF-Modell hinzufügen</translation>
+    </message>
+    <message>
+        <source>&amp;Duplicate Character</source>
+        <translation>Figur &amp;duplizieren</translation>
+    </message>
+    <message>
+        <source>A copy of the current character, a metre to its right</source>
+        <translation>Eine Kopie der aktuellen Figur, einen Meter rechts von ihr</translation>
+    </message>
+    <message>
+        <source>Re&amp;name Character…</source>
+        <translation>Figur &amp;umbenennen…</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Character</source>
+        <translation>Figur &amp;entfernen</translation>
+    </message>
+    <message>
+        <source>Add &amp;Body Layer</source>
+        <translation>&amp;Körperebene hinzufügen</translation>
+    </message>
+    <message>
+        <source>A layer of body actions on top of the current character&apos;s</source>
+        <translation>Eine Ebene mit Körperaktionen über denen der aktuellen Figur</translation>
+    </message>
+    <message>
+        <source>Add &amp;Face Layer</source>
+        <translation>&amp;Gesichtsebene hinzufügen</translation>
+    </message>
+    <message>
+        <source>A layer of facial animation (MPEG-4 FAPs)</source>
+        <translation>Eine Ebene mit Gesichtsanimation (MPEG-4-FAPs)</translation>
+    </message>
+    <message>
+        <source>Rena&amp;me Layer…</source>
+        <translation>Ebene u&amp;mbenennen…</translation>
+    </message>
+    <message>
+        <source>Move Layer &amp;Up</source>
+        <translation>Ebene nach &amp;oben verschieben</translation>
+    </message>
+    <message>
+        <source>Move Layer Do&amp;wn</source>
+        <translation>Ebene nach u&amp;nten verschieben</translation>
+    </message>
+    <message>
+        <source>Remove &amp;Layer</source>
+        <translation>Ebene ent&amp;fernen</translation>
+    </message>
+    <message>
+        <source>&amp;Lighting…</source>
+        <translation>Be&amp;leuchtung…</translation>
+    </message>
+    <message>
+        <source>Choose the light probe, turn it and set its intensity</source>
+        <translation>Die Lichtsonde auswählen, drehen und ihre Intensität festlegen</translation>
+    </message>
+    <message>
+        <source>Duplicate Character</source>
+        <translation>Figur duplizieren</translation>
+    </message>
+    <message>
+        <source>Remove Character</source>
+        <translation>Figur entfernen</translation>
+    </message>
+    <message>
+        <source>Add Body Layer</source>
+        <translation>Körperebene hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add Face Layer</source>
+        <translation>Gesichtsebene hinzufügen</translation>
+    </message>
+    <message>
+        <source>Move Layer Up</source>
+        <translation>Ebene nach oben verschieben</translation>
+    </message>
+    <message>
+        <source>Move Layer Down</source>
+        <translation>Ebene nach unten verschieben</translation>
+    </message>
+    <message>
+        <source>Remove Layer</source>
+        <translation>Ebene entfernen</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Import Motion</source>
+        <translation>Bewegung importieren</translation>
+    </message>
+    <message>
+        <source>Motion (*.bvh *.gltf *.glb);;BVH motion capture (*.bvh);;glTF (*.gltf *.glb);;All files (*)</source>
+        <translation>Bewegung (*.bvh *.gltf *.glb);;BVH-Motion-Capture (*.bvh);;glTF (*.gltf *.glb);;Alle Dateien (*)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Import %n Clip(s)</source>
+        <translation>
+            <numerusform>%n Clip importieren</numerusform>
+            <numerusform>%n Clips importieren</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Imported %1 into %2.</source>
+        <translation>%1 in %2 importiert.</translation>
+    </message>
+    <message>
+        <source>Actor</source>
+        <translation>Darsteller</translation>
+    </message>
+    <message>
+        <source>Add Character</source>
+        <translation>Figur hinzufügen</translation>
+    </message>
+    <message>
+        <source>Rename Character</source>
+        <translation>Figur umbenennen</translation>
+    </message>
+    <message>
+        <source>New name:</source>
+        <translation>Neuer Name:</translation>
+    </message>
+    <message>
+        <source>Rename Layer</source>
+        <translation>Ebene umbenennen</translation>
+    </message>
+    <message>
+        <source>Change Lighting</source>
+        <translation>Beleuchtung ändern</translation>
+    </message>
+</context>
+<context>
     <name>thespis::studio::MainWindow</name>
     <message>
         <source>No scenario is open.
@@ -1615,13 +2269,6 @@ Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
         <source>, %1 s long. Press Space to play.</source>
         <translation>, %1 s lang. Leertaste spielt ab.</translation>
     </message>
-    <message numerus="yes">
-        <source>%n warning(s), see the terminal.</source>
-        <translation>
-            <numerusform>%n Warnung, siehe Terminal.</numerusform>
-            <numerusform>%n Warnungen, siehe Terminal.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Open Scenario</source>
         <translation>Szenario öffnen</translation>
@@ -1725,10 +2372,6 @@ Der Reiter Skelette zeigt die Animation; thespis-cli render zeichnet die Szene o
     <message>
         <source>&amp;New</source>
         <translation>N&amp;eu</translation>
-    </message>
-    <message>
-        <source>Start a new scenario with one character on the built-in humanoid</source>
-        <translation>Ein neues Szenario mit einer Figur auf dem eingebauten Humanoiden beginnen</translation>
     </message>
     <message>
         <source>&amp;Save</source>
@@ -1865,6 +2508,49 @@ Der Reiter Skelette zeigt die Animation; thespis-cli render zeichnet die Szene o
     <message>
         <source>Main Toolbar</source>
         <translation>Hauptwerkzeugleiste</translation>
+    </message>
+    <message>
+        <source>Start a new scenario: empty, or with one character standing</source>
+        <translation>Ein neues Szenario beginnen: leer oder mit einer stehenden Figur</translation>
+    </message>
+    <message>
+        <source>&amp;Character</source>
+        <translation>&amp;Figur</translation>
+    </message>
+    <message>
+        <source>Messages</source>
+        <translation>Meldungen</translation>
+    </message>
+    <message>
+        <source>Messages (%1)</source>
+        <translation>Meldungen (%1)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s): see Messages.</source>
+        <translation>
+            <numerusform>%n Warnung: siehe Meldungen.</numerusform>
+            <numerusform>%n Warnungen: siehe Meldungen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>New Scenario</source>
+        <translation>Neues Szenario</translation>
+    </message>
+    <message>
+        <source>What should the new scenario start with?</source>
+        <translation>Womit soll das neue Szenario beginnen?</translation>
+    </message>
+    <message>
+        <source>Either way, File ▸ Import Motion… brings in motion capture, Character ▸ Add Character… more characters, and View ▸ Lighting… a light probe.</source>
+        <translation>In beiden Fällen holen Sie mit Datei ▸ Bewegung importieren… Motion-Capture-Daten, mit Figur ▸ Figur hinzufügen… weitere Figuren und mit Ansicht ▸ Beleuchtung… eine Lichtsonde hinzu.</translation>
+    </message>
+    <message>
+        <source>One Character, Standing</source>
+        <translation>Eine stehende Figur</translation>
+    </message>
+    <message>
+        <source>Empty</source>
+        <translation>Leer</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,40 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>thespis::editor::CharacterDialog</name>
+    <message numerus="yes">
+        <source>Import its %n animation(s) as clips</source>
+        <translation>
+            <numerusform>Import its %n animation as a clip</numerusform>
+            <numerusform>Import its %n animations as clips</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::CharacterProperties</name>
+    <message numerus="yes">
+        <source>%n layer(s)</source>
+        <translation>
+            <numerusform>%n layer</numerusform>
+            <numerusform>%n layers</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n clip(s)</source>
+        <translation>
+            <numerusform>%n clip</numerusform>
+            <numerusform>%n clips</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n action(s)</source>
+        <translation>
+            <numerusform>%n action</numerusform>
+            <numerusform>%n actions</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::CurvePanel</name>
     <message numerus="yes">
         <source>Move %n Curve Key(s)</source>
@@ -18,6 +52,58 @@
         <translation>
             <numerusform>Remove %n Gesture</numerusform>
             <numerusform>Remove %n Gestures</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::ImportMotionDialog</name>
+    <message numerus="yes">
+        <source>%1, %n frame(s) at %2 fps</source>
+        <translation>
+            <numerusform>%1, %n frame at %2 fps</numerusform>
+            <numerusform>%1, %n frames at %2 fps</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;%1&lt;/b&gt;: %2, %n frame(s) at %3 fps.</source>
+        <translation>
+            <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2, %n frame at %3 fps.</numerusform>
+            <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2, %n frames at %3 fps.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Joint names: %1; it moves %n of the character&apos;s joints.</source>
+        <translation>
+            <numerusform>Joint names: %1; it moves %n of the character&apos;s joints.</numerusform>
+            <numerusform>Joint names: %1; it moves %n of the character&apos;s joints.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more</source>
+        <translation>
+            <numerusform>%n more</numerusform>
+            <numerusform>%n more</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n joint(s) kept their own names and move nothing of an H-Anim body: %1.</source>
+        <translation>
+            <numerusform>%n joint kept its own name and moves nothing of an H-Anim body: %1.</numerusform>
+            <numerusform>%n joints kept their own names and move nothing of an H-Anim body: %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Joint mapping of %1 (%n joint(s)):</source>
+        <translation>
+            <numerusform>Joint mapping of %1 (%n joint):</numerusform>
+            <numerusform>Joint mapping of %1 (%n joints):</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Import %n Clip(s)</source>
+        <translation>
+            <numerusform>Import %n Clip</numerusform>
+            <numerusform>Import %n Clips</numerusform>
         </translation>
     </message>
 </context>
@@ -118,6 +204,16 @@
     </message>
 </context>
 <context>
+    <name>thespis::studio::ContentActions</name>
+    <message numerus="yes">
+        <source>Import %n Clip(s)</source>
+        <translation>
+            <numerusform>Import %n Clip</numerusform>
+            <numerusform>Import %n Clips</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::studio::MainWindow</name>
     <message numerus="yes">
         <source>Opened %1: %n character(s)</source>
@@ -134,10 +230,10 @@
         </translation>
     </message>
     <message numerus="yes">
-        <source>%n warning(s), see the terminal.</source>
+        <source>%n warning(s): see Messages.</source>
         <translation>
-            <numerusform>%n warning, see the terminal.</numerusform>
-            <numerusform>%n warnings, see the terminal.</numerusform>
+            <numerusform>%n warning: see Messages.</numerusform>
+            <numerusform>%n warnings: see Messages.</numerusform>
         </translation>
     </message>
 </context>

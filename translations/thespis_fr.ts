@@ -264,6 +264,192 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     </message>
 </context>
 <context>
+    <name>thespis::editor::CharacterDialog</name>
+    <message>
+        <source>Add Character</source>
+        <translation>Ajouter un personnage</translation>
+    </message>
+    <message>
+        <source>The built-in humanoid</source>
+        <translation>L’humanoïde intégré</translation>
+    </message>
+    <message>
+        <source>H-Anim LOA 1 (18 joints)</source>
+        <translation>H-Anim LOA 1 (18 articulations)</translation>
+    </message>
+    <message>
+        <source>H-Anim, the paper&apos;s 25 joints (spine, neck, clavicles)</source>
+        <translation>H-Anim, les 25 articulations de l’article (colonne, cou, clavicules)</translation>
+    </message>
+    <message>
+        <source>H-Anim LOA 2 (71 joints, with fingers)</source>
+        <translation>H-Anim LOA 2 (71 articulations, avec les doigts)</translation>
+    </message>
+    <message>
+        <source>A glTF model</source>
+        <translation>Un modèle glTF</translation>
+    </message>
+    <message>
+        <source>No model chosen.</source>
+        <translation>Aucun modèle choisi.</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Parcourir…</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Nom :</translation>
+    </message>
+    <message>
+        <source>Choose a glTF Model</source>
+        <translation>Choisir un modèle glTF</translation>
+    </message>
+    <message>
+        <source>glTF models (*.gltf *.glb)</source>
+        <translation>Modèles glTF (*.gltf *.glb)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used: %2</source>
+        <translation>Impossible d’utiliser %1 : %2</translation>
+    </message>
+    <message>
+        <source>Actor</source>
+        <translation>Acteur</translation>
+    </message>
+    <message numerus="yes">
+        <source>Import its %n animation(s) as clips</source>
+        <translation>
+            <numerusform>Importer %n animation du modèle comme clip</numerusform>
+            <numerusform>Importer les %n animations du modèle comme clips</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::CharacterProperties</name>
+    <message>
+        <source>Choose Model…</source>
+        <translation>Choisir un modèle…</translation>
+    </message>
+    <message>
+        <source>Built-in Humanoid</source>
+        <translation>Humanoïde intégré</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Which way the character faces: 0° looks along +Z, 90° along +X</source>
+        <translation>Orientation du personnage : à 0° il regarde vers +Z, à 90° vers +X</translation>
+    </message>
+    <message>
+        <source>Character:</source>
+        <translation>Personnage :</translation>
+    </message>
+    <message>
+        <source>Body:</source>
+        <translation>Corps :</translation>
+    </message>
+    <message>
+        <source>Motion plays on:</source>
+        <translation>Mouvement joué sur :</translation>
+    </message>
+    <message>
+        <source>Stands at:</source>
+        <translation>Placé en :</translation>
+    </message>
+    <message>
+        <source>Faces:</source>
+        <translation>Orientation :</translation>
+    </message>
+    <message>
+        <source>Has:</source>
+        <translation>Contient :</translation>
+    </message>
+    <message>
+        <source>Rename Character</source>
+        <translation>Renommer le personnage</translation>
+    </message>
+    <message>
+        <source>Change Skeleton</source>
+        <translation>Modifier le squelette</translation>
+    </message>
+    <message>
+        <source>Use the Built-in Humanoid</source>
+        <translation>Utiliser l’humanoïde intégré</translation>
+    </message>
+    <message>
+        <source>Choose a glTF Model</source>
+        <translation>Choisir un modèle glTF</translation>
+    </message>
+    <message>
+        <source>glTF models (*.gltf *.glb)</source>
+        <translation>Modèles glTF (*.gltf *.glb)</translation>
+    </message>
+    <message>
+        <source>Change Model</source>
+        <translation>Modifier le modèle</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>Move Character</source>
+        <translation>Déplacer le personnage</translation>
+    </message>
+    <message>
+        <source>The built-in humanoid</source>
+        <translation>L’humanoïde intégré</translation>
+    </message>
+    <message>
+        <source>H-Anim LOA 1 (18 joints)</source>
+        <translation>H-Anim LOA 1 (18 articulations)</translation>
+    </message>
+    <message>
+        <source>H-Anim, the paper&apos;s 25 joints</source>
+        <translation>H-Anim, les 25 articulations de l’article</translation>
+    </message>
+    <message>
+        <source>H-Anim LOA 2 (71 joints)</source>
+        <translation>H-Anim LOA 2 (71 articulations)</translation>
+    </message>
+    <message>
+        <source>The model&apos;s own rig</source>
+        <translation>Le rig propre au modèle</translation>
+    </message>
+    <message>
+        <source>The skeleton of clip %1</source>
+        <translation>Le squelette du clip %1</translation>
+    </message>
+    <message>
+        <source>%1, %2, %3</source>
+        <translation>%1, %2, %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n layer(s)</source>
+        <translation>
+            <numerusform>%n couche</numerusform>
+            <numerusform>%n couches</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n clip(s)</source>
+        <translation>
+            <numerusform>%n clip</numerusform>
+            <numerusform>%n clips</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n action(s)</source>
+        <translation>
+            <numerusform>%n action</numerusform>
+            <numerusform>%n actions</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::ClipLibraryPanel</name>
     <message>
         <source>Clip</source>
@@ -274,16 +460,16 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <translation>Source</translation>
     </message>
     <message>
-        <source>Drag a clip onto a track of its character to add an action</source>
-        <translation>Faites glisser un clip sur une piste de son personnage pour ajouter une action</translation>
-    </message>
-    <message>
         <source>keyframes in the scenario</source>
         <translation>clés dans le scénario</translation>
     </message>
     <message>
         <source>Drag onto a track of %1</source>
         <translation>Faire glisser sur une piste de %1</translation>
+    </message>
+    <message>
+        <source>Drag a clip onto a track of its character to add an action; drop BVH or glTF files here to import them</source>
+        <translation>Faites glisser un clip sur une piste de son personnage pour ajouter une action ; déposez ici des fichiers BVH ou glTF pour les importer</translation>
     </message>
 </context>
 <context>
@@ -652,6 +838,186 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     </message>
 </context>
 <context>
+    <name>thespis::editor::ImportMotionDialog</name>
+    <message>
+        <source>CMU (MotionBuilder names)</source>
+        <translation>CMU (noms MotionBuilder)</translation>
+    </message>
+    <message>
+        <source>CMU (3ds Max names)</source>
+        <translation>CMU (noms 3ds Max)</translation>
+    </message>
+    <message>
+        <source>your mapping</source>
+        <translation>votre correspondance</translation>
+    </message>
+    <message>
+        <source>none recognised</source>
+        <translation>aucun reconnu</translation>
+    </message>
+    <message>
+        <source>found from the rig</source>
+        <translation>déduits du rig</translation>
+    </message>
+    <message>
+        <source>Import Motion</source>
+        <translation>Importer un mouvement</translation>
+    </message>
+    <message>
+        <source>File and clips</source>
+        <translation>Fichier et clips</translation>
+    </message>
+    <message>
+        <source>What was found</source>
+        <translation>Contenu trouvé</translation>
+    </message>
+    <message>
+        <source>Joint in the file</source>
+        <translation>Articulation du fichier</translation>
+    </message>
+    <message>
+        <source>Plays as (H-Anim name)</source>
+        <translation>Joue le rôle de (nom H-Anim)</translation>
+    </message>
+    <message>
+        <source>Type the H-Anim joint a file joint should drive (l_hip, vl5, skullbase …); leave it empty, or the file&apos;s own name, to leave the joint out. Then Apply Mapping.</source>
+        <translation>Saisissez l’articulation H-Anim que doit animer une articulation du fichier (l_hip, vl5, skullbase …) ; laissez le champ vide, ou le nom propre au fichier, pour écarter l’articulation. Puis «&#xa0;Appliquer la correspondance&#xa0;».</translation>
+    </message>
+    <message>
+        <source>Apply Mapping</source>
+        <translation>Appliquer la correspondance</translation>
+    </message>
+    <message>
+        <source>Load Mapping…</source>
+        <translation>Charger une correspondance…</translation>
+    </message>
+    <message>
+        <source>Save Mapping…</source>
+        <translation>Enregistrer la correspondance…</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importer</translation>
+    </message>
+    <message>
+        <source>Import into:</source>
+        <translation>Importer dans :</translation>
+    </message>
+    <message>
+        <source>Load Joint Mapping</source>
+        <translation>Charger une correspondance d’articulations</translation>
+    </message>
+    <message>
+        <source>Joint mappings (*.map *.txt);;All files (*)</source>
+        <translation>Correspondances d’articulations (*.map *.txt);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Save Joint Mapping</source>
+        <translation>Enregistrer la correspondance d’articulations</translation>
+    </message>
+    <message>
+        <source>Joint mappings (*.map)</source>
+        <translation>Correspondances d’articulations (*.map)</translation>
+    </message>
+    <message>
+        <source>There is no character to import into: add one first (Character ▸ Add Character…).</source>
+        <translation>Il n’y a aucun personnage dans lequel importer : ajoutez-en d’abord un (Personnage ▸ Ajouter un personnage…).</translation>
+    </message>
+    <message>
+        <source>cannot be read</source>
+        <translation>illisible</translation>
+    </message>
+    <message>
+        <source>moves none of the character&apos;s joints</source>
+        <translation>n’anime aucune articulation du personnage</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1, %n frame(s) at %2 fps</source>
+        <translation>
+            <numerusform>%1, %n image à %2 i/s</numerusform>
+            <numerusform>%1, %n images à %2 i/s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>glTF</source>
+        <translation>glTF</translation>
+    </message>
+    <message>
+        <source>BVH</source>
+        <translation>BVH</translation>
+    </message>
+    <message>
+        <source>animation</source>
+        <translation>animation</translation>
+    </message>
+    <message>
+        <source>No files to import.</source>
+        <translation>Aucun fichier à importer.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1 cannot be read&lt;/b&gt;: %2&lt;br&gt;Nothing of it is imported.</source>
+        <translation>&lt;b&gt;%1 est illisible&lt;/b&gt; : %2&lt;br&gt;Rien n’en est importé.</translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;%1&lt;/b&gt;: %2, %n frame(s) at %3 fps.</source>
+        <translation>
+            <numerusform>&lt;b&gt;%1&lt;/b&gt; : %2, %n image à %3 i/s.</numerusform>
+            <numerusform>&lt;b&gt;%1&lt;/b&gt; : %2, %n images à %3 i/s.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Joint names: %1; it moves %n of the character&apos;s joints.</source>
+        <translation>
+            <numerusform>Noms des articulations : %1 ; le fichier anime %n articulation du personnage.</numerusform>
+            <numerusform>Noms des articulations : %1 ; le fichier anime %n articulations du personnage.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Unit: %1. The motion is resized to the character by the length of the legs.</source>
+        <translation>Unité : %1. Le mouvement est mis à l’échelle du personnage d’après la longueur des jambes.</translation>
+    </message>
+    <message>
+        <source>The body lay %1 in the file: it is stood up (+Y up, facing +Z).</source>
+        <translation>Dans le fichier, le corps était orienté autrement (%1) : il est redressé (+Y vers le haut, face à +Z).</translation>
+    </message>
+    <message>
+        <source>Its first frame is a calibration pose (a T-pose): it is left out.</source>
+        <translation>La première image est une pose de calibrage (une pose en T) : elle est omise.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more</source>
+        <translation>
+            <numerusform>%n autre</numerusform>
+            <numerusform>%n autres</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n joint(s) kept their own names and move nothing of an H-Anim body: %1.</source>
+        <translation>
+            <numerusform>%n articulation a gardé son propre nom et n’anime rien d’un corps H-Anim : %1.</numerusform>
+            <numerusform>%n articulations ont gardé leur propre nom et n’animent rien d’un corps H-Anim : %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Joint mapping of %1 (%n joint(s)):</source>
+        <translation>
+            <numerusform>Correspondance des articulations de %1 (%n articulation) :</numerusform>
+            <numerusform>Correspondance des articulations de %1 (%n articulations) :</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;The mapping file cannot be read&lt;/b&gt;: %1</source>
+        <translation>&lt;b&gt;Le fichier de correspondance est illisible&lt;/b&gt; : %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Import %n Clip(s)</source>
+        <translation>
+            <numerusform>Importer %n clip</numerusform>
+            <numerusform>Importer %n clips</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::JointMaskPanel</name>
     <message>
         <source>The mask to edit; actions that name it all change with it</source>
@@ -780,6 +1146,100 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source>Delete Mask %1</source>
         <translation>Supprimer le masque %1</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::LightingDialog</name>
+    <message>
+        <source>Lighting</source>
+        <translation>Éclairage</translation>
+    </message>
+    <message>
+        <source>No probe: the default sky</source>
+        <translation>Aucune sonde : le ciel par défaut</translation>
+    </message>
+    <message>
+        <source>A light probe (HDR or EXR)</source>
+        <translation>Une sonde de lumière (HDR ou EXR)</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Parcourir…</translation>
+    </message>
+    <message>
+        <source>Latitude–longitude</source>
+        <translation>Latitude–longitude</translation>
+    </message>
+    <message>
+        <source>Angular map (mirrored ball, unwrapped)</source>
+        <translation>Carte angulaire (sphère miroir, dépliée)</translation>
+    </message>
+    <message>
+        <source>Mirror ball (a photograph)</source>
+        <translation>Sphère miroir (une photographie)</translation>
+    </message>
+    <message>
+        <source>Vertical cross</source>
+        <translation>Croix verticale</translation>
+    </message>
+    <message>
+        <source>Layout:</source>
+        <translation>Disposition :</translation>
+    </message>
+    <message>
+        <source>Turned about the vertical:</source>
+        <translation>Rotation autour de la verticale :</translation>
+    </message>
+    <message>
+        <source>Intensity:</source>
+        <translation>Intensité :</translation>
+    </message>
+    <message>
+        <source>The probe</source>
+        <translation>La sonde</translation>
+    </message>
+    <message>
+        <source>The light the characters receive</source>
+        <translation>La lumière que reçoivent les personnages</translation>
+    </message>
+    <message>
+        <source>Set Light</source>
+        <translation>Définir l’éclairage</translation>
+    </message>
+    <message>
+        <source>Choose a Light Probe</source>
+        <translation>Choisir une sonde de lumière</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr)</source>
+        <translation>Images HDR (*.hdr *.exr)</translation>
+    </message>
+    <message>
+        <source>No file chosen.</source>
+        <translation>Aucun fichier choisi.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used as a light probe: %2</source>
+        <translation>Impossible d’utiliser %1 comme sonde de lumière : %2</translation>
+    </message>
+    <message>
+        <source>Choose a probe file.</source>
+        <translation>Choisissez un fichier de sonde.</translation>
+    </message>
+    <message>
+        <source>The default sky</source>
+        <translation>Le ciel par défaut</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::MessagesPanel</name>
+    <message>
+        <source>Double-click a message to show what it is about</source>
+        <translation>Double-cliquez sur un message pour afficher ce qu’il concerne</translation>
+    </message>
+    <message>
+        <source>Nothing to report.</source>
+        <translation>Rien à signaler.</translation>
     </message>
 </context>
 <context>
@@ -916,10 +1376,6 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>not saved yet</source>
         <translation>pas encore enregistré</translation>
     </message>
-    <message>
-        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;File: %2&lt;br&gt;%3, %4, %5 markers&lt;br&gt;Length: %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Select an action on the timeline to see and edit its properties.&lt;/i&gt;</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Fichier : %2&lt;br&gt;%3, %4, %5 marqueurs&lt;br&gt;Durée : %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Sélectionnez une action sur la ligne temporelle pour voir et modifier ses propriétés.&lt;/i&gt;</translation>
-    </message>
     <message numerus="yes">
         <source>%n character(s)</source>
         <translation>
@@ -972,6 +1428,54 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source>none</source>
         <translation>aucun</translation>
+    </message>
+    <message>
+        <source>Where it was recorded</source>
+        <translation>Là où il a été enregistré</translation>
+    </message>
+    <message>
+        <source>Where the character stands</source>
+        <translation>Là où se tient le personnage</translation>
+    </message>
+    <message>
+        <source>Where the previous action leaves it</source>
+        <translation>Là où l’action précédente le laisse</translation>
+    </message>
+    <message>
+        <source>Where the motion&apos;s first frame puts the body on the floor (and which way it faces)</source>
+        <translation>Où la première image du mouvement place le corps au sol (et dans quelle direction il regarde)</translation>
+    </message>
+    <message>
+        <source>forever</source>
+        <translation>sans fin</translation>
+    </message>
+    <message>
+        <source> ×</source>
+        <translation> ×</translation>
+    </message>
+    <message>
+        <source>Each time on from where it ended (walks on)</source>
+        <translation>Reprend chaque fois là où il s’est arrêté (continue d’avancer)</translation>
+    </message>
+    <message>
+        <source>Starts:</source>
+        <translation>Commence :</translation>
+    </message>
+    <message>
+        <source>Plays:</source>
+        <translation>Joue :</translation>
+    </message>
+    <message>
+        <source>Change Where the Action Starts</source>
+        <translation>Modifier le point de départ de l’action</translation>
+    </message>
+    <message>
+        <source>Change How Often the Action Plays</source>
+        <translation>Modifier le nombre de répétitions de l’action</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;File: %2&lt;br&gt;%3, %4, %5 markers&lt;br&gt;Length: %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Select an action on the timeline, or a character in the scenario outline, to see and edit its properties.&lt;/i&gt;</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Fichier : %2&lt;br&gt;%3, %4, %5 marqueurs&lt;br&gt;Durée : %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Sélectionnez une action sur la ligne temporelle, ou un personnage dans le plan du scénario, pour voir et modifier ses propriétés.&lt;/i&gt;</translation>
     </message>
 </context>
 <context>
@@ -1490,6 +1994,156 @@ Un point vert signale une action jouée à l’instant courant.</translation>
     </message>
 </context>
 <context>
+    <name>thespis::studio::ContentActions</name>
+    <message>
+        <source>&amp;Import Motion…</source>
+        <translation>&amp;Importer un mouvement…</translation>
+    </message>
+    <message>
+        <source>Add BVH motion capture or glTF animations as clips of a character</source>
+        <translation>Ajouter de la capture de mouvement BVH ou des animations glTF comme clips d’un personnage</translation>
+    </message>
+    <message>
+        <source>&amp;Add Character…</source>
+        <translation>&amp;Ajouter un personnage…</translation>
+    </message>
+    <message>
+        <source>Add a character on the built-in humanoid or a glTF model</source>
+        <translation>Ajouter un personnage sur l’humanoïde intégré ou sur un modèle glTF</translation>
+    </message>
+    <message>
+        <source>&amp;Duplicate Character</source>
+        <translation>&amp;Dupliquer le personnage</translation>
+    </message>
+    <message>
+        <source>A copy of the current character, a metre to its right</source>
+        <translation>Une copie du personnage courant, un mètre à sa droite</translation>
+    </message>
+    <message>
+        <source>Re&amp;name Character…</source>
+        <translation>Re&amp;nommer le personnage…</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Character</source>
+        <translation>&amp;Supprimer le personnage</translation>
+    </message>
+    <message>
+        <source>Add &amp;Body Layer</source>
+        <translation>Ajouter une couche de &amp;corps</translation>
+    </message>
+    <message>
+        <source>A layer of body actions on top of the current character&apos;s</source>
+        <translation>Une couche d’actions du corps par-dessus celles du personnage courant</translation>
+    </message>
+    <message>
+        <source>Add &amp;Face Layer</source>
+        <translation>Ajouter une couche de &amp;visage</translation>
+    </message>
+    <message>
+        <source>A layer of facial animation (MPEG-4 FAPs)</source>
+        <translation>Une couche d’animation faciale (FAP MPEG-4)</translation>
+    </message>
+    <message>
+        <source>Rena&amp;me Layer…</source>
+        <translation>Renommer &amp;la couche…</translation>
+    </message>
+    <message>
+        <source>Move Layer &amp;Up</source>
+        <translation>&amp;Monter la couche</translation>
+    </message>
+    <message>
+        <source>Move Layer Do&amp;wn</source>
+        <translation>Desc&amp;endre la couche</translation>
+    </message>
+    <message>
+        <source>Remove &amp;Layer</source>
+        <translation>Supprimer la c&amp;ouche</translation>
+    </message>
+    <message>
+        <source>&amp;Lighting…</source>
+        <translation>É&amp;clairage…</translation>
+    </message>
+    <message>
+        <source>Choose the light probe, turn it and set its intensity</source>
+        <translation>Choisir la sonde de lumière, la faire pivoter et régler son intensité</translation>
+    </message>
+    <message>
+        <source>Duplicate Character</source>
+        <translation>Dupliquer le personnage</translation>
+    </message>
+    <message>
+        <source>Remove Character</source>
+        <translation>Supprimer le personnage</translation>
+    </message>
+    <message>
+        <source>Add Body Layer</source>
+        <translation>Ajouter une couche de corps</translation>
+    </message>
+    <message>
+        <source>Add Face Layer</source>
+        <translation>Ajouter une couche de visage</translation>
+    </message>
+    <message>
+        <source>Move Layer Up</source>
+        <translation>Monter la couche</translation>
+    </message>
+    <message>
+        <source>Move Layer Down</source>
+        <translation>Descendre la couche</translation>
+    </message>
+    <message>
+        <source>Remove Layer</source>
+        <translation>Supprimer la couche</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>Import Motion</source>
+        <translation>Importer un mouvement</translation>
+    </message>
+    <message>
+        <source>Motion (*.bvh *.gltf *.glb);;BVH motion capture (*.bvh);;glTF (*.gltf *.glb);;All files (*)</source>
+        <translation>Mouvement (*.bvh *.gltf *.glb);;Capture de mouvement BVH (*.bvh);;glTF (*.gltf *.glb);;Tous les fichiers (*)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Import %n Clip(s)</source>
+        <translation>
+            <numerusform>Importer %n clip</numerusform>
+            <numerusform>Importer %n clips</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Imported %1 into %2.</source>
+        <translation>Importé dans %2 : %1.</translation>
+    </message>
+    <message>
+        <source>Actor</source>
+        <translation>Acteur</translation>
+    </message>
+    <message>
+        <source>Add Character</source>
+        <translation>Ajouter un personnage</translation>
+    </message>
+    <message>
+        <source>Rename Character</source>
+        <translation>Renommer le personnage</translation>
+    </message>
+    <message>
+        <source>New name:</source>
+        <translation>Nouveau nom :</translation>
+    </message>
+    <message>
+        <source>Rename Layer</source>
+        <translation>Renommer la couche</translation>
+    </message>
+    <message>
+        <source>Change Lighting</source>
+        <translation>Modifier l’éclairage</translation>
+    </message>
+</context>
+<context>
     <name>thespis::studio::MainWindow</name>
     <message>
         <source>No scenario is open.
@@ -1615,13 +2269,6 @@ Utilisez Fichier ▸ Ouvrir… (Ctrl+O) pour ouvrir un fichier .thespis.</transl
         <source>, %1 s long. Press Space to play.</source>
         <translation>, %1 s. Espace pour lancer la lecture.</translation>
     </message>
-    <message numerus="yes">
-        <source>%n warning(s), see the terminal.</source>
-        <translation>
-            <numerusform>%n avertissement, voir le terminal.</numerusform>
-            <numerusform>%n avertissements, voir le terminal.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Open Scenario</source>
         <translation>Ouvrir un scénario</translation>
@@ -1725,10 +2372,6 @@ L’onglet Squelettes montre l’animation ; thespis-cli render dessine la scèn
     <message>
         <source>&amp;New</source>
         <translation>&amp;Nouveau</translation>
-    </message>
-    <message>
-        <source>Start a new scenario with one character on the built-in humanoid</source>
-        <translation>Commencer un nouveau scénario avec un personnage sur l’humanoïde intégré</translation>
     </message>
     <message>
         <source>&amp;Save</source>
@@ -1865,6 +2508,49 @@ L’onglet Squelettes montre l’animation ; thespis-cli render dessine la scèn
     <message>
         <source>Main Toolbar</source>
         <translation>Barre d’outils principale</translation>
+    </message>
+    <message>
+        <source>Start a new scenario: empty, or with one character standing</source>
+        <translation>Commencer un nouveau scénario : vide, ou avec un personnage debout</translation>
+    </message>
+    <message>
+        <source>&amp;Character</source>
+        <translation>&amp;Personnage</translation>
+    </message>
+    <message>
+        <source>Messages</source>
+        <translation>Messages</translation>
+    </message>
+    <message>
+        <source>Messages (%1)</source>
+        <translation>Messages (%1)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s): see Messages.</source>
+        <translation>
+            <numerusform>%n avertissement : voir Messages.</numerusform>
+            <numerusform>%n avertissements : voir Messages.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>New Scenario</source>
+        <translation>Nouveau scénario</translation>
+    </message>
+    <message>
+        <source>What should the new scenario start with?</source>
+        <translation>Par quoi le nouveau scénario doit-il commencer ?</translation>
+    </message>
+    <message>
+        <source>Either way, File ▸ Import Motion… brings in motion capture, Character ▸ Add Character… more characters, and View ▸ Lighting… a light probe.</source>
+        <translation>Dans les deux cas, Fichier ▸ Importer un mouvement… ajoute de la capture de mouvement, Personnage ▸ Ajouter un personnage… d’autres personnages, et Affichage ▸ Éclairage… une sonde de lumière.</translation>
+    </message>
+    <message>
+        <source>One Character, Standing</source>
+        <translation>Un personnage debout</translation>
+    </message>
+    <message>
+        <source>Empty</source>
+        <translation>Vide</translation>
     </message>
 </context>
 <context>

@@ -9,6 +9,7 @@
 #include <QHelpEvent>
 #include <QKeyEvent>
 #include <QLinearGradient>
+#include <QFileInfo>
 #include <QMenu>
 #include <QMimeData>
 #include <QMouseEvent>
@@ -21,6 +22,8 @@
 
 #include <algorithm>
 #include <cmath>
+
+#include "widgets/dropped_files.h"
 
 namespace thespis::widgets {
 
@@ -1259,13 +1262,24 @@ bool TimelineView::updateDrop(const QPoint& pos, const QMimeData*, Qt::KeyboardM
     return valid;
 }
 
+namespace {
+
+bool acceptsDrop(const QMimeData* mime)
+{
+    return mime && (mime->hasFormat(QLatin1String(TimelineView::ClipMimeType)) || !droppedFiles(mime).isEmpty());
+}
+
+} // namespace
+
 void TimelineView::dragEnterEvent(QDragEnterEvent* event)
 {
-    if (!event->mimeData() || !event->mimeData()->hasFormat(QLatin1String(ClipMimeType))) {
+    if (!acceptsDrop(event->mimeData())) {
         event->ignore();
         return;
     }
-    m_dropName = QString::fromUtf8(event->mimeData()->data(QLatin1String(ClipMimeType)));
+    const QStringList files = droppedFiles(event->mimeData());
+    m_dropName = files.isEmpty() ? QString::fromUtf8(event->mimeData()->data(QLatin1String(ClipMimeType)))
+                                 : QFileInfo(files.front()).completeBaseName();
     buildSnapTargets(nullptr, -1, true);
     updateDrop(event->position().toPoint(), event->mimeData(), event->modifiers());
     event->acceptProposedAction(); // accepted even over the header, so that moves keep coming
@@ -1273,7 +1287,7 @@ void TimelineView::dragEnterEvent(QDragEnterEvent* event)
 
 void TimelineView::dragMoveEvent(QDragMoveEvent* event)
 {
-    if (!event->mimeData() || !event->mimeData()->hasFormat(QLatin1String(ClipMimeType))) {
+    if (!acceptsDrop(event->mimeData())) {
         event->ignore();
         return;
     }
@@ -1293,11 +1307,14 @@ void TimelineView::dragLeaveEvent(QDragLeaveEvent* event)
 
 void TimelineView::dropEvent(QDropEvent* event)
 {
-    const bool ours = event->mimeData() && event->mimeData()->hasFormat(QLatin1String(ClipMimeType));
+    const bool ours = acceptsDrop(event->mimeData());
     if (ours && updateDrop(event->position().toPoint(), event->mimeData(), event->modifiers())) {
         event->acceptProposedAction();
-        emit clipDropRequested(m_dropTrack, m_dropTime,
-                               QString::fromUtf8(event->mimeData()->data(QLatin1String(ClipMimeType))));
+        if (const QStringList files = droppedFiles(event->mimeData()); !files.isEmpty())
+            emit filesDropRequested(m_dropTrack, m_dropTime, files);
+        else
+            emit clipDropRequested(m_dropTrack, m_dropTime,
+                                   QString::fromUtf8(event->mimeData()->data(QLatin1String(ClipMimeType))));
     } else {
         event->ignore();
     }

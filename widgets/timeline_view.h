@@ -183,6 +183,8 @@ signals:
     void markerRemoveRequested(int index);
     /// A drop of ClipMimeType data on a lane that is not locked, at the snapped time.
     void clipDropRequested(int track, qint64 time, const QString& clipName);
+    /// Files dropped from the file manager on a lane that is not locked, at the snapped time.
+    void filesDropRequested(int track, qint64 time, const QStringList& files);
     /// Double-click on a clip.
     void clipActivated(int id);
 

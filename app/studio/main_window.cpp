@@ -2,19 +2,15 @@
 
 #include <QAction>
 #include <QActionGroup>
-#include <QCheckBox>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
-#include <QFileDialog>
-#include <QFileInfo>
 #include <QFrame>
-#include <QHeaderView>
 #include <QLabel>
+#include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QScreen>
 #include <QSettings>
 #include <QUndoGroup>
 #include <QUndoStack>
@@ -33,10 +29,11 @@
 #include "editor/bake_panel.h"
 #include "editor/clip_library_panel.h"
 #include "editor/curve_panel.h"
-#include "editor/error_dialog.h"
 #include "editor/gesticon_panel.h"
 #include "editor/joint_mask_panel.h"
+#include "editor/messages_panel.h"
 #include "editor/properties_panel.h"
+#include "content_actions.h"
 #include "preferences_dialog.h"
 #include "editor/scenario_tree_model.h"
 #include "editor/segment_panel.h"
@@ -51,8 +48,6 @@ namespace {
 // Framing samples the whole timeline this often (seconds); 10 Hz catches every pose extreme
 // a person could see without costing noticeable time at load.
 constexpr double kBoundsSampleStep = 0.1;
-constexpr int kMaxRecentFiles = 8;
-const QString kRecentFilesKey = QStringLiteral("recentFiles");
 const QString kWindowStateKey = QStringLiteral("mainWindow/state");
 const QString kWindowGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kFrameRateKey = QStringLiteral("playback/frameRate");
@@ -129,8 +124,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 
     createActions();
     createShadingActions();
+    m_content = new ContentActions(*this);
+    connect(m_content, &ContentActions::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     createOutlineDock();
     createEditorDocks();
+    createMessagesDock();
     createMenus();
     createToolBar();
     createStatusBar();
@@ -171,8 +169,9 @@ MainWindow::~MainWindow()
 void MainWindow::createActions()
 {
     m_newAction = new QAction(tr("&New"), this);
+    m_newAction->setObjectName(QStringLiteral("newScenario"));
     m_newAction->setShortcut(QKeySequence::New);
-    m_newAction->setStatusTip(tr("Start a new scenario with one character on the built-in humanoid"));
+    m_newAction->setStatusTip(tr("Start a new scenario: empty, or with one character standing"));
     connect(m_newAction, &QAction::triggered, this, &MainWindow::onNew);
 
     m_saveAction = new QAction(tr("&Save"), this);
@@ -297,6 +296,10 @@ void MainWindow::createToolBar()
     // Lighting of the 3D view: PRT, Phong or unlit, as in View.
     bar->addActions(m_shadingGroup->actions());
     bar->addAction(m_homeViewAction);
+    bar->addSeparator();
+    bar->addAction(m_content->importMotionAction());
+    bar->addAction(m_content->addCharacterAction());
+    bar->addAction(m_content->lightingAction());
 }
 
 void MainWindow::createMenus()
@@ -308,6 +311,8 @@ void MainWindow::createMenus()
     m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
     updateRecentMenu();
     file->addAction(m_reloadAction);
+    file->addSeparator();
+    file->addAction(m_content->importMotionAction());
     file->addSeparator();
     file->addAction(m_saveAction);
     file->addAction(m_saveAsAction);
@@ -332,6 +337,11 @@ void MainWindow::createMenus()
                             m_timeline->deleteAction(), m_timeline->rippleDeleteAction(), m_timeline->splitAction()})
         addAction(action);
 
+    QMenu* character = menuBar()->addMenu(tr("&Character"));
+    character->setObjectName(QStringLiteral("characterMenu"));
+    m_content->fillCharacterMenu(character);
+    connect(character, &QMenu::aboutToShow, m_content, &ContentActions::updateEnabled);
+
     QMenu* playback = menuBar()->addMenu(tr("&Playback"));
     playback->addAction(m_playPauseAction);
     playback->addAction(m_toStartAction);
@@ -344,6 +354,7 @@ void MainWindow::createMenus()
     view->addSection(tr("Scene"));
     view->addActions(m_shadingGroup->actions());
     view->addAction(m_groundAction);
+    view->addAction(m_content->lightingAction());
     view->addAction(m_homeViewAction);
     view->addSection(tr("Stick figures"));
     view->addActions(m_projectionGroup->actions());
@@ -351,6 +362,7 @@ void MainWindow::createMenus()
     for (QDockWidget* dock : m_editorDocks)
         view->addAction(dock->toggleViewAction());
     view->addAction(m_outlineDock->toggleViewAction());
+    view->addAction(m_messagesDock->toggleViewAction());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_aboutAction);
@@ -392,90 +404,6 @@ void MainWindow::createShadingActions()
     addAction(m_homeViewAction);
 }
 
-void MainWindow::createOutlineDock()
-{
-    m_outlineDock = new QDockWidget(tr("Scenario"), this);
-    m_outlineDock->setObjectName(QStringLiteral("outlineDock"));
-    m_outlineDock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
-    m_outline = new QTreeView(m_outlineDock);
-    m_outline->setObjectName(QStringLiteral("outlineView"));
-    m_outline->setModel(m_model);
-    m_outline->setAlternatingRowColors(true);
-    m_outline->setUniformRowHeights(true);
-    m_outline->setAllColumnsShowFocus(true);
-    m_outline->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_outline->header()->setStretchLastSection(false);
-    m_outline->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_outlineDock->toggleViewAction()->setText(tr("Scenario &Outline"));
-    m_outlineDock->setWidget(m_outline);
-    addDockWidget(Qt::LeftDockWidgetArea, m_outlineDock);
-}
-
-void MainWindow::createEditorDocks()
-{
-    auto dock = [this](const QString& title, const QString& name, QWidget* content, Qt::DockWidgetArea area) {
-        auto* d = new QDockWidget(title, this);
-        d->setObjectName(name);
-        d->setWidget(content);
-        addDockWidget(area, d);
-        m_editorDocks.push_back(d);
-        return d;
-    };
-    m_timeline = new editor::TimelinePanel(this);
-    m_curves = new editor::CurvePanel(this);
-    m_masks = new editor::JointMaskPanel(this);
-    m_library = new editor::ClipLibraryPanel(this);
-    m_properties = new editor::PropertiesPanel(this);
-    m_gesticon = new editor::GesticonPanel(this);
-    m_gesticon->setClock(m_clock);
-    m_segments = new editor::SegmentPanel(this);
-    m_bake = new editor::BakePanel(this);
-    m_bake->prtPreviewCheck()->setEnabled(m_preview != nullptr);
-    connect(m_bake, &editor::BakePanel::prtPreviewToggled, this,
-            [this](bool prt) { setShading(prt ? core::render::Shading::Prt : core::render::Shading::Phong); });
-    if (m_preview) {
-        m_gesticon->setScenePreview(m_preview);
-        m_segments->setScenePreview(m_preview);
-    }
-    m_timeline->addAction(m_stepBackAction);
-    m_timeline->addAction(m_stepForwardAction);
-    QDockWidget* timelineDock = dock(tr("Timeline"), QStringLiteral("timelineDock"), m_timeline, Qt::BottomDockWidgetArea);
-    QDockWidget* curveDock = dock(tr("Curve Editor"), QStringLiteral("curveDock"), m_curves, Qt::BottomDockWidgetArea);
-    tabifyDockWidget(timelineDock, curveDock);
-    timelineDock->raise();
-    QDockWidget* propertiesDock = dock(tr("Properties"), QStringLiteral("propertiesDock"), m_properties, Qt::RightDockWidgetArea);
-    QDockWidget* maskDock = dock(tr("Joint Mask"), QStringLiteral("maskDock"), m_masks, Qt::RightDockWidgetArea);
-    tabifyDockWidget(propertiesDock, maskDock);
-    QDockWidget* segmentsDock = dock(tr("Segments"), QStringLiteral("segmentsDock"), m_segments, Qt::RightDockWidgetArea);
-    tabifyDockWidget(maskDock, segmentsDock);
-    QDockWidget* bakeDock = dock(tr("Bake"), QStringLiteral("bakeDock"), m_bake, Qt::RightDockWidgetArea);
-    tabifyDockWidget(segmentsDock, bakeDock);
-    propertiesDock->raise();
-    QDockWidget* libraryDock = dock(tr("Clip Library"), QStringLiteral("clipLibraryDock"), m_library, Qt::LeftDockWidgetArea);
-    tabifyDockWidget(m_outlineDock, libraryDock);
-    QDockWidget* gesticonDock = dock(tr("Gesticon"), QStringLiteral("gesticonDock"), m_gesticon, Qt::LeftDockWidgetArea);
-    tabifyDockWidget(libraryDock, gesticonDock);
-    m_outlineDock->raise();
-
-    connect(m_timeline, &editor::TimelinePanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
-    connect(m_curves, &editor::CurvePanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
-    connect(m_masks, &editor::JointMaskPanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
-    connect(m_properties, &editor::PropertiesPanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
-    connect(m_timeline, &editor::TimelinePanel::seekRequested, m_clock, &editor::PlaybackClock::seek);
-    connect(m_timeline, &editor::TimelinePanel::currentActionChanged, this,
-            [this](std::optional<core::edit::ActionPath> action) {
-                m_curves->setAction(action);
-                m_properties->setAction(action);
-                if (action && m_document) {
-                    const auto& spec = m_document->scenario().characters[std::size_t(action->character)]
-                                           .layers[std::size_t(action->layer)].actions[std::size_t(action->action)];
-                    if (!spec.mask.empty())
-                        m_masks->showMask(QString::fromStdString(spec.mask));
-                }
-            });
-    connect(m_timeline, &editor::TimelinePanel::actionActivated, this, [curveDock] { curveDock->raise(); });
-}
-
 void MainWindow::createStatusBar()
 {
     m_fileLabel = new QLabel(this);
@@ -486,20 +414,6 @@ void MainWindow::createStatusBar()
     m_fpsLabel->setMinimumWidth(m_fpsLabel->fontMetrics().horizontalAdvance(tr("Preview: 000 fps")) + 8);
     statusBar()->addPermanentWidget(m_fileLabel);
     statusBar()->addPermanentWidget(m_fpsLabel);
-}
-
-bool MainWindow::openScenario(const QString& path)
-{
-    core::Result<std::unique_ptr<editor::Document>> document = editor::Document::open(path);
-    if (!document) {
-        editor::showError(this, document.error(),
-                          tr("Could not open “%1”.").arg(QFileInfo(path).fileName()));
-        statusBar()->showMessage(tr("Could not open %1").arg(QDir::toNativeSeparators(path)), 10000);
-        return false;
-    }
-    setDocument(std::move(*document));
-    addRecentFile(m_document->filePath());
-    return true;
 }
 
 void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
@@ -536,41 +450,7 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
         m_autosaver->setDocument(m_document.get());
     }
 
-    std::vector<widgets::PoseFigure> figures;
-    bool haveBounds = false;
-    QVector3D low, high;
-    if (m_document) {
-        const double duration = m_document->previewDuration();
-        m_samplers.reserve(m_document->runtime().characters.size());
-        for (const core::scenario::CharacterRuntime& character : m_document->runtime().characters) {
-            editor::PoseSampler& sampler = m_samplers.emplace_back(character);
-            figures.push_back(sampler.figure(widgets::figureColor(int(figures.size()))));
-            const auto [characterLow, characterHigh] = sampler.sweepBounds(duration, kBoundsSampleStep);
-            low = haveBounds ? QVector3D(std::min(low.x(), characterLow.x()), std::min(low.y(), characterLow.y()),
-                                         std::min(low.z(), characterLow.z()))
-                             : characterLow;
-            high = haveBounds ? QVector3D(std::max(high.x(), characterHigh.x()), std::max(high.y(), characterHigh.y()),
-                                          std::max(high.z(), characterHigh.z()))
-                              : characterHigh;
-            haveBounds = true;
-        }
-    }
-    m_poseView->setFigures(std::move(figures));
-    // H-Anim skeletons are in metres; a skeleton taken from a BVH file keeps the file's unit,
-    // which BVH does not name.
-    bool metres = true;
-    if (m_document)
-        for (const core::scenario::Character& character : m_document->scenario().characters)
-            metres = metres && !character.skeleton.starts_with("clip:");
-    m_poseView->setLengthUnit(metres ? tr("m", "metres") : tr("units", "length unit of a BVH file"));
-    if (haveBounds)
-        m_poseView->setSceneBounds(low, high);
-    else
-        m_poseView->clearSceneBounds();
-    if (m_document && m_document->runtime().characters.empty())
-        m_poseView->setPlaceholderText(tr("This scenario has no characters yet."));
-    else
-        m_poseView->setPlaceholderText(tr("No scenario is open.\nUse File ▸ Open… (Ctrl+O) to open a .thespis file."));
+    refreshFigures(true);
 
     m_model->setDocument(m_document.get());
     m_outline->expandAll();
@@ -606,11 +486,9 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
                               .arg(m_document->fileName()) +
                           tr(", %n action(s)", nullptr, actions) +
                           tr(", %1 s long. Press Space to play.").arg(m_document->previewDuration(), 0, 'f', 1);
-        const QStringList warnings = m_document->warnings() + (m_preview ? m_preview->warnings() : QStringList());
-        for (const QString& warning : warnings)
-            qWarning("%s", qPrintable(warning));
-        if (!warnings.isEmpty())
-            summary += QLatin1Char(' ') + tr("%n warning(s), see the terminal.", nullptr, int(warnings.size()));
+        refreshMessages();
+        if (const int warnings = m_messages->count() - (m_messages->item(0)->flags() == Qt::NoItemFlags ? 1 : 0); warnings > 0)
+            summary += QLatin1Char(' ') + tr("%n warning(s): see Messages.", nullptr, warnings);
         statusBar()->showMessage(sceneProblem.isEmpty() ? summary : sceneProblem);
     } else {
         m_fileLabel->clear();
@@ -619,28 +497,7 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
     }
     onPlayingChanged(m_clock->isPlaying());
     updateTitle();
-}
-
-void MainWindow::onOpen()
-{
-    const QString start = m_document && !m_document->filePath().isEmpty()
-                              ? QFileInfo(m_document->filePath()).absolutePath()
-                              : QString();
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Scenario"), start,
-                                                      tr("Thespis scenarios (*.thespis);;All files (*)"));
-    if (!path.isEmpty())
-        openScenario(path);
-}
-
-void MainWindow::onReload()
-{
-    if (!m_document || m_document->filePath().isEmpty())
-        return;
-    // A copy: opening replaces the document that owns the path.
-    const QString path = m_document->filePath();
-    const double time = m_clock->time();
-    if (openScenario(path))
-        m_clock->seek(time);
+    m_content->updateEnabled();
 }
 
 void MainWindow::onAbout()
@@ -736,6 +593,49 @@ void MainWindow::updateTitle()
     m_fileLabel->setToolTip(QDir::toNativeSeparators(m_document->filePath()));
 }
 
+void MainWindow::refreshFigures(bool frame)
+{
+    rebuildSamplers();
+    m_figureKeys.clear();
+    if (m_document)
+        for (const core::scenario::Character& character : m_document->scenario().characters)
+            m_figureKeys.emplace_back(character.name, character.skeleton);
+    std::vector<widgets::PoseFigure> figures;
+    bool haveBounds = false;
+    QVector3D low, high;
+    if (m_document) {
+        const double duration = m_document->previewDuration();
+        for (editor::PoseSampler& sampler : m_samplers) {
+            figures.push_back(sampler.figure(widgets::figureColor(int(figures.size()))));
+            const auto [characterLow, characterHigh] = sampler.sweepBounds(duration, kBoundsSampleStep);
+            low = haveBounds ? QVector3D(std::min(low.x(), characterLow.x()), std::min(low.y(), characterLow.y()),
+                                         std::min(low.z(), characterLow.z()))
+                             : characterLow;
+            high = haveBounds ? QVector3D(std::max(high.x(), characterHigh.x()), std::max(high.y(), characterHigh.y()),
+                                          std::max(high.z(), characterHigh.z()))
+                              : characterHigh;
+            haveBounds = true;
+        }
+    }
+    m_poseView->setFigures(std::move(figures));
+    // H-Anim skeletons are in metres; a skeleton taken from a BVH file keeps the file's unit,
+    // which BVH does not name.
+    bool metres = true;
+    if (m_document)
+        for (const core::scenario::Character& character : m_document->scenario().characters)
+            metres = metres && !character.skeleton.starts_with("clip:");
+    m_poseView->setLengthUnit(metres ? tr("m", "metres") : tr("units", "length unit of a BVH file"));
+    if (haveBounds && frame)
+        m_poseView->setSceneBounds(low, high);
+    else if (!haveBounds)
+        m_poseView->clearSceneBounds();
+    if (m_document && m_document->runtime().characters.empty())
+        m_poseView->setPlaceholderText(tr("This scenario has no characters yet."));
+    else
+        m_poseView->setPlaceholderText(tr("No scenario is open.\nUse File ▸ Open… (Ctrl+O) to open a .thespis file."));
+
+}
+
 void MainWindow::rebuildSamplers()
 {
     // The samplers point into the runtime, which an edit replaces.
@@ -749,90 +649,29 @@ void MainWindow::rebuildSamplers()
 
 void MainWindow::onDocumentEdited()
 {
-    rebuildSamplers();
+    // Characters added, removed or given another skeleton: new stick figures, framed anew.
+    std::vector<std::pair<std::string, std::string>> figures;
+    for (const core::scenario::Character& character : m_document->scenario().characters)
+        figures.emplace_back(character.name, character.skeleton);
+    if (figures != m_figureKeys)
+        refreshFigures(true);
+    else
+        rebuildSamplers();
+    // The outline is rebuilt: the same character or layer stays selected.
+    const auto location = m_model->locationOf(m_outline->currentIndex());
     m_model->setDocument(m_document.get());
     m_outline->expandAll();
+    if (location)
+        if (const QModelIndex index = m_model->indexOf(location->character, location->layer); index.isValid())
+            m_outline->setCurrentIndex(index);
+    refreshMessages();
+    m_content->updateEnabled();
     if (m_preview)
         if (auto updated = m_preview->updateDocument(m_document.get()); !updated)
             statusBar()->showMessage(tr("The 3D view is empty: %1").arg(QString::fromStdString(updated.error().message)));
     m_clock->setDuration(m_document->previewDuration());
     m_transport->setDuration(m_clock->duration());
     onTimeChanged(m_clock->time());
-}
-
-void MainWindow::onNew()
-{
-    if (!maybeSave())
-        return;
-    core::scenario::Scenario scenario;
-    scenario.name = tr("New scenario").toStdString();
-    scenario.duration = 10 * core::TicksPerSecond;
-    core::scenario::Character actor;
-    actor.name = tr("Actor").toStdString();
-    actor.skeleton = "hanim-25";
-    core::scenario::Layer body;
-    body.name = "body";
-    core::scenario::Layer face;
-    face.name = "face";
-    face.kind = core::scenario::LayerKind::Face;
-    actor.layers = {body, face};
-    scenario.characters.push_back(actor);
-    auto document = editor::Document::fromScenario(std::move(scenario), QDir::homePath());
-    if (!document) {
-        editor::showError(this, document.error(), tr("Could not start a new scenario."));
-        return;
-    }
-    setDocument(std::move(*document));
-}
-
-bool MainWindow::save()
-{
-    if (!m_document)
-        return false;
-    if (m_document->filePath().isEmpty())
-        return onSaveAs();
-    return saveAs(m_document->filePath());
-}
-
-bool MainWindow::saveAs(const QString& path)
-{
-    if (!m_document)
-        return false;
-    if (auto saved = m_document->saveAs(path); !saved) {
-        editor::showError(this, saved.error(), tr("Could not save “%1”.").arg(QFileInfo(path).fileName()));
-        return false;
-    }
-    m_autosaver->discard();
-    addRecentFile(m_document->filePath());
-    m_reloadAction->setEnabled(true);
-    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(m_document->filePath())), 5000);
-    updateTitle();
-    return true;
-}
-
-bool MainWindow::onSaveAs()
-{
-    if (!m_document)
-        return false;
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Scenario As"), m_document->filePath(),
-                                                tr("Thespis scenarios (*.thespis)"));
-    if (path.isEmpty())
-        return false;
-    if (!path.endsWith(QStringLiteral(".thespis")))
-        path += QStringLiteral(".thespis");
-    return saveAs(path);
-}
-
-bool MainWindow::maybeSave()
-{
-    if (!m_document || !m_document->isModified())
-        return true;
-    const auto answer = QMessageBox::question(this, tr("Unsaved Changes"),
-                                              tr("“%1” has changes that are not saved. Save them?").arg(m_document->fileName()),
-                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
-    if (answer == QMessageBox::Save)
-        return save();
-    return answer == QMessageBox::Discard;
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
@@ -846,60 +685,6 @@ void MainWindow::closeEvent(QCloseEvent* event)
     settings.setValue(kWindowStateKey, saveState());
     m_autosaver->discard(); // a clean close: nothing to recover
     event->accept();
-}
-
-void MainWindow::addRecentFile(const QString& path)
-{
-    QSettings settings;
-    QStringList files = settings.value(kRecentFilesKey).toStringList();
-    files.removeAll(path);
-    files.prepend(path);
-    while (files.size() > kMaxRecentFiles)
-        files.removeLast();
-    settings.setValue(kRecentFilesKey, files);
-    updateRecentMenu();
-}
-
-void MainWindow::updateRecentMenu()
-{
-    if (!m_recentMenu)
-        return;
-    m_recentMenu->clear();
-    const QStringList files = QSettings().value(kRecentFilesKey).toStringList();
-    for (const QString& file : files)
-        m_recentMenu->addAction(QFileInfo(file).fileName(), this, [this, file] {
-            if (maybeSave())
-                openScenario(file);
-        })->setStatusTip(QDir::toNativeSeparators(file));
-    m_recentMenu->setEnabled(!files.isEmpty());
-}
-
-bool MainWindow::offerRecovery()
-{
-    const QList<editor::Autosaver::Recovery> found = editor::Autosaver::pendingRecoveries();
-    if (found.isEmpty())
-        return false;
-    const editor::Autosaver::Recovery& newest = found.front();
-    const QString name = newest.originalPath.isEmpty() ? tr("an unsaved scenario") : QFileInfo(newest.originalPath).fileName();
-    const auto answer = QMessageBox::question(
-        this, tr("Recover Unsaved Work"),
-        tr("Thespis Studio did not close properly. Recover the changes to %1 autosaved at %2?")
-            .arg(name, QLocale().toString(newest.savedAt.toLocalTime(), QLocale::ShortFormat)),
-        QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
-    bool recovered = false;
-    if (answer == QMessageBox::Yes) {
-        auto document = editor::Document::recover(newest.recoveryFile, newest.originalPath, newest.baseDir);
-        if (document) {
-            setDocument(std::move(*document));
-            statusBar()->showMessage(tr("Recovered %1; save it to keep it.").arg(name));
-            recovered = true;
-        } else {
-            editor::showError(this, document.error(), tr("Could not recover %1.").arg(name));
-        }
-    }
-    for (const editor::Autosaver::Recovery& recovery : found)
-        editor::Autosaver::removeRecovery(recovery);
-    return recovered;
 }
 
 } // namespace thespis::studio

@@ -2,7 +2,9 @@
 // MainWindow: the studio's window. Shows one scenario posed at the playback clock's time: the
 // characters' bodies lit with PRT in a 3D viewport (first tab) and their skeletons as stick
 // figures (second tab), the transport bar, and docks for the timeline, the curve editor, the
-// joint-mask editor, the clip library and the scenario outline. Owns the open Document, the
+// joint-mask editor, the clip library, the scenario outline and the messages. Bringing content
+// in (import, characters, layers, light) is ContentActions'; file handling is in
+// main_window_files.cpp. Owns the open Document, the
 // clock, the 3D preview, one PoseSampler per character and the autosaver; File and Edit menus
 // (new / open / save / recent, undo / redo); the dock layout is kept in QSettings.
 
@@ -10,6 +12,7 @@
 #include <QMainWindow>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "editor/document.h"
@@ -29,6 +32,7 @@ class QTreeView;
 
 namespace thespis::editor {
 class Autosaver;
+class MessagesPanel;
 class ClipLibraryPanel;
 class CurvePanel;
 class BakePanel;
@@ -46,6 +50,8 @@ class TransportBar;
 }
 
 namespace thespis::studio {
+
+class ContentActions;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -79,6 +85,20 @@ public:
     editor::Autosaver* autosaver() const { return m_autosaver; }
     QAction* undoAction() const { return m_undoAction; }
     QAction* redoAction() const { return m_redoAction; }
+    ContentActions* contentActions() const { return m_content; }
+    editor::MessagesPanel* messagesPanel() const { return m_messages; }
+
+    /// The character the Character menu and imports act on: the one selected in the outline
+    /// (or owning the selected layer or action), else the timeline's current action's, else the
+    /// first; -1 without characters.
+    int currentCharacter() const;
+    /// The layer selected in the outline, else the timeline's current action's, else none.
+    std::optional<core::edit::LayerPath> currentLayer() const;
+    /// Selects a character in the outline (and shows its properties).
+    void selectCharacter(int character);
+    /// Where the import file dialog opens (the last folder imported from).
+    QString importFolder() const;
+    void setImportFolder(const QString& folder);
 
     /// Saves to the document's file, asking for one when it has none; false when not saved.
     bool save();
@@ -88,6 +108,9 @@ public:
     bool offerRecovery();
     /// Adds `path` to the top of File ▸ Open Recent.
     void addRecentFile(const QString& path);
+    /// Starts a scenario never saved: empty, or with one character on the built-in humanoid
+    /// standing in an idle (File ▸ New's two starting points).
+    void newScenario(bool withCharacter);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -104,6 +127,10 @@ private:
     bool maybeSave();
     void onDocumentEdited();
     void rebuildSamplers();
+    // The stick figures of the Skeletons view, one per character; `frame` also frames the view.
+    void refreshFigures(bool frame);
+    void refreshMessages();
+    void createMessagesDock();
     void createStatusBar();
     void createShadingActions();
     void onOpen();
@@ -119,6 +146,7 @@ private:
     // The samplers point into the document's runtime: declared after it, destroyed before it.
     std::unique_ptr<editor::Document> m_document;
     std::vector<editor::PoseSampler> m_samplers;
+    std::vector<std::pair<std::string, std::string>> m_figureKeys; // name and skeleton of each figure shown
 
     editor::PlaybackClock* m_clock = nullptr;
     editor::ScenarioTreeModel* m_model = nullptr;
@@ -138,6 +166,9 @@ private:
     editor::SegmentPanel* m_segments = nullptr;
     editor::BakePanel* m_bake = nullptr;
     editor::Autosaver* m_autosaver = nullptr;
+    editor::MessagesPanel* m_messages = nullptr;
+    QDockWidget* m_messagesDock = nullptr;
+    ContentActions* m_content = nullptr;
     QList<QDockWidget*> m_editorDocks;
     QMenu* m_recentMenu = nullptr;
     QUndoGroup* m_undoGroup = nullptr; // the open document's undo stack, behind Edit ▸ Undo / Redo
