@@ -10,6 +10,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QStyle>
 #include <QTableWidget>
@@ -55,7 +56,7 @@ ImportMotionDialog::ImportMotionDialog(const Document& document, QStringList fil
 {
     setObjectName(QStringLiteral("importMotionDialog"));
     setWindowTitle(tr("Import Motion"));
-    resize(900, 560);
+    resize(960, 620);
 
     m_character = new QComboBox(this);
     m_character->setObjectName(QStringLiteral("importCharacter"));
@@ -94,13 +95,23 @@ ImportMotionDialog::ImportMotionDialog(const Document& document, QStringList fil
     mappingButtons->addStretch(1);
     mappingButtons->addWidget(m_loadMapping);
     mappingButtons->addWidget(m_saveMapping);
-    auto* right = new QWidget(this);
-    auto* rightLayout = new QVBoxLayout(right);
-    rightLayout->setContentsMargins(0, 0, 0, 0);
-    rightLayout->addWidget(m_report);
-    rightLayout->addWidget(m_mappingTitle);
-    rightLayout->addWidget(m_mapping, 1);
-    rightLayout->addLayout(mappingButtons);
+    // The report above the mapping, scrolling when a file has much to tell (MakeHuman's 22
+    // joints without H-Anim names); the user moves the boundary.
+    auto* reportScroll = new QScrollArea(this);
+    reportScroll->setWidget(m_report);
+    reportScroll->setWidgetResizable(true);
+    reportScroll->setFrameShape(QFrame::NoFrame);
+    auto* mappingPart = new QWidget(this);
+    auto* mappingLayout = new QVBoxLayout(mappingPart);
+    mappingLayout->setContentsMargins(0, 0, 0, 0);
+    mappingLayout->addWidget(m_mappingTitle);
+    mappingLayout->addWidget(m_mapping, 1);
+    mappingLayout->addLayout(mappingButtons);
+    auto* right = new QSplitter(Qt::Vertical, this);
+    right->addWidget(reportScroll);
+    right->addWidget(mappingPart);
+    right->setChildrenCollapsible(false);
+    right->setSizes({190, 400});
     auto* splitter = new QSplitter(this);
     splitter->addWidget(m_files);
     splitter->addWidget(right);
@@ -259,8 +270,18 @@ void ImportMotionDialog::showSelected()
     lines << tr("<b>%1</b>: %2, %n frame(s) at %3 fps.", nullptr, report.frameCount)
                  .arg(name, report.format == "gltf" ? tr("glTF") : tr("BVH"))
                  .arg(report.frameRate, 0, 'g', 4);
+    const auto listed = [](const std::vector<std::string>& names) {
+        QStringList shown;
+        for (std::size_t i = 0; i < names.size() && i < 12; ++i)
+            shown << escaped(fromUtf8(names[i]));
+        if (names.size() > 12)
+            shown << tr("%n more", nullptr, int(names.size() - 12));
+        return shown.join(QStringLiteral(", "));
+    };
     lines << tr("Joint names: %1; it moves %n of the character's joints.", nullptr, plan.jointsMoved)
                  .arg(conventionName(report.convention));
+    if (!plan.unmoved.empty() && plan.jointsMoved > 0)
+        lines << tr("The character's joints it leaves at rest: %1.").arg(listed(plan.unmoved));
     if (!report.unitName.empty())
         lines << tr("Unit: %1. The motion is resized to the character by the length of the legs.")
                      .arg(escaped(fromUtf8(report.unitName)));
@@ -268,16 +289,13 @@ void ImportMotionDialog::showSelected()
         lines << tr("The body lay %1 in the file: it is stood up (+Y up, facing +Z).").arg(escaped(fromUtf8(report.turnedFrom)));
     if (report.calibrationFrameDropped)
         lines << tr("Its first frame is a calibration pose (a T-pose): it is left out.");
-    if (!report.unmapped.empty()) {
-        QStringList unmapped;
-        for (std::size_t i = 0; i < report.unmapped.size() && i < 12; ++i)
-            unmapped << escaped(fromUtf8(report.unmapped[i]));
-        if (report.unmapped.size() > 12)
-            unmapped << tr("%n more", nullptr, int(report.unmapped.size() - 12));
-        lines << tr("%n joint(s) kept their own names and move nothing of an H-Anim body: %1.", nullptr,
-                    int(report.unmapped.size()))
-                     .arg(unmapped.join(QStringLiteral(", ")));
-    }
+    if (!report.unmapped.empty())
+        lines << tr("%n joint(s) have no H-Anim name and keep their own: %1.", nullptr, int(report.unmapped.size()))
+                     .arg(listed(report.unmapped));
+    if (!plan.movingNothing.empty())
+        lines << tr("Of these, %n move(s) nothing of this character (neither they nor a joint below them is in its "
+                    "skeleton): %1.", nullptr, int(plan.movingNothing.size()))
+                     .arg(listed(plan.movingNothing));
     if (!plan.problem.empty())
         lines << QStringLiteral("<span style='color:#b00020'>%1</span>").arg(escaped(fromUtf8(plan.problem)));
     m_report->setText(lines.join(QStringLiteral("<br>")));

@@ -992,13 +992,6 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         </translation>
     </message>
     <message numerus="yes">
-        <source>%n joint(s) kept their own names and move nothing of an H-Anim body: %1.</source>
-        <translation>
-            <numerusform>%n Gelenk hat seinen eigenen Namen behalten und bewegt nichts an einem H-Anim-Körper: %1.</numerusform>
-            <numerusform>%n Gelenke haben ihre eigenen Namen behalten und bewegen nichts an einem H-Anim-Körper: %1.</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
         <source>Joint mapping of %1 (%n joint(s)):</source>
         <translation>
             <numerusform>Gelenkzuordnung von %1 (%n Gelenk):</numerusform>
@@ -1014,6 +1007,24 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <translation>
             <numerusform>%n Clip importieren</numerusform>
             <numerusform>%n Clips importieren</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The character&apos;s joints it leaves at rest: %1.</source>
+        <translation>Gelenke der Figur, die in Ruhe bleiben: %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n joint(s) have no H-Anim name and keep their own: %1.</source>
+        <translation>
+            <numerusform>%n Gelenk hat keinen H-Anim-Namen und behält seinen eigenen: %1.</numerusform>
+            <numerusform>%n Gelenke haben keinen H-Anim-Namen und behalten ihren eigenen: %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Of these, %n move(s) nothing of this character (neither they nor a joint below them is in its skeleton): %1.</source>
+        <translation>
+            <numerusform>Davon bewegt %n nichts an dieser Figur (weder es noch ein Gelenk darunter ist in ihrem Skelett): %1.</numerusform>
+            <numerusform>Davon bewegen %n nichts an dieser Figur (weder sie noch ein Gelenk darunter sind in ihrem Skelett): %1.</numerusform>
         </translation>
     </message>
 </context>

@@ -86,13 +86,6 @@
         </translation>
     </message>
     <message numerus="yes">
-        <source>%n joint(s) kept their own names and move nothing of an H-Anim body: %1.</source>
-        <translation>
-            <numerusform>%n joint kept its own name and moves nothing of an H-Anim body: %1.</numerusform>
-            <numerusform>%n joints kept their own names and move nothing of an H-Anim body: %1.</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
         <source>Joint mapping of %1 (%n joint(s)):</source>
         <translation>
             <numerusform>Joint mapping of %1 (%n joint):</numerusform>
@@ -104,6 +97,20 @@
         <translation>
             <numerusform>Import %n Clip</numerusform>
             <numerusform>Import %n Clips</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n joint(s) have no H-Anim name and keep their own: %1.</source>
+        <translation>
+            <numerusform>%n joint has no H-Anim name and keeps its own: %1.</numerusform>
+            <numerusform>%n joints have no H-Anim name and keep their own: %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Of these, %n move(s) nothing of this character (neither they nor a joint below them is in its skeleton): %1.</source>
+        <translation>
+            <numerusform>Of these, %n moves nothing of this character (neither it nor a joint below it is in its skeleton): %1.</numerusform>
+            <numerusform>Of these, %n move nothing of this character (neither they nor a joint below them is in its skeleton): %1.</numerusform>
         </translation>
     </message>
 </context>

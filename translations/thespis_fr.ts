@@ -992,13 +992,6 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         </translation>
     </message>
     <message numerus="yes">
-        <source>%n joint(s) kept their own names and move nothing of an H-Anim body: %1.</source>
-        <translation>
-            <numerusform>%n articulation a gardé son propre nom et n’anime rien d’un corps H-Anim : %1.</numerusform>
-            <numerusform>%n articulations ont gardé leur propre nom et n’animent rien d’un corps H-Anim : %1.</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
         <source>Joint mapping of %1 (%n joint(s)):</source>
         <translation>
             <numerusform>Correspondance des articulations de %1 (%n articulation) :</numerusform>
@@ -1014,6 +1007,24 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <translation>
             <numerusform>Importer %n clip</numerusform>
             <numerusform>Importer %n clips</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The character&apos;s joints it leaves at rest: %1.</source>
+        <translation>Articulations du personnage laissées au repos : %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n joint(s) have no H-Anim name and keep their own: %1.</source>
+        <translation>
+            <numerusform>%n articulation n’a pas de nom H-Anim et garde le sien : %1.</numerusform>
+            <numerusform>%n articulations n’ont pas de nom H-Anim et gardent le leur : %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Of these, %n move(s) nothing of this character (neither they nor a joint below them is in its skeleton): %1.</source>
+        <translation>
+            <numerusform>Parmi elles, %n ne bouge rien de ce personnage (ni elle ni une articulation en dessous n’est dans son squelette) : %1.</numerusform>
+            <numerusform>Parmi elles, %n ne bougent rien de ce personnage (ni elles ni une articulation en dessous ne sont dans son squelette) : %1.</numerusform>
         </translation>
     </message>
 </context>

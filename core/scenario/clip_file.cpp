@@ -128,6 +128,24 @@ bool isGltf(const std::filesystem::path& path)
 
 } // namespace
 
+std::vector<std::string> unmappedJointsMovingNothing(const ClipFile& file, const anim::Skeleton& target)
+{
+    const auto& joints = file.skeleton.joints();
+    std::vector<char> reaches(joints.size(), 0);
+    for (std::size_t j = joints.size(); j-- > 0;) { // children come after their parents
+        reaches[j] = reaches[j] || target.find(joints[j].name) >= 0;
+        if (joints[j].parent >= 0)
+            reaches[std::size_t(joints[j].parent)] |= reaches[j];
+    }
+    std::vector<std::string> lost;
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+        const std::string& fileName = joints[j].sourceName.empty() ? joints[j].name : joints[j].sourceName;
+        if (!reaches[j] && std::find(file.report.unmapped.begin(), file.report.unmapped.end(), fileName) != file.report.unmapped.end())
+            lost.push_back(fileName);
+    }
+    return lost;
+}
+
 Result<ClipFile> readClipFile(const ClipAsset& asset, const std::filesystem::path& baseDir)
 {
     const std::filesystem::path path = baseDir / asset.file;

@@ -43,6 +43,12 @@ struct ClipFile {
     ClipFileReport report;
 };
 
+/// The file's joints that kept their own names (report.unmapped) and move nothing of a character
+/// whose skeleton is `target`: neither they nor any joint below them is in it. A joint between
+/// mapped ones (CMU's LHipJoint) is not among them: the retarget carries its turn to the joints
+/// below.
+std::vector<std::string> unmappedJointsMovingNothing(const ClipFile& file, const anim::Skeleton& target);
+
 /// Reads `asset.file` (relative to `baseDir`) with the asset's options: frame rate, calibration
 /// frame, joint mapping and, for glTF, which animation. Errors name the file and what is wrong
 /// (a BVH line, a missing animation and the ones there are).

@@ -56,6 +56,10 @@ Result<ClipImport> planClipImport(const std::filesystem::path& file, const std::
         plan.clips.push_back(asset);
     }
     plan.jointsMoved = anim::FrameRetarget(read->skeleton, skeleton).mappedJointCount();
+    plan.movingNothing = unmappedJointsMovingNothing(*read, skeleton);
+    for (const anim::Joint& joint : skeleton.joints())
+        if (read->skeleton.find(joint.name) < 0)
+            plan.unmoved.push_back(joint.name);
     if (plan.jointsMoved == 0)
         plan.problem = file.filename().string() + " moves none of the character's joints: its joints ("
                        + std::to_string(read->skeleton.jointCount()) + ") have no name the character's skeleton has. "

@@ -27,6 +27,10 @@ struct ClipImport {
     /// user corrects; set as ClipAsset::mapping it replaces the automatic naming.
     std::map<std::string, std::string> mapping;
     int jointsMoved = 0;             ///< the character's joints the file moves
+    std::vector<std::string> unmoved; ///< the character's joints it does not (they keep their rest)
+    /// Joints without an H-Anim name whose motion reaches nothing of the character
+    /// (unmappedJointsMovingNothing): worth a look at the mapping.
+    std::vector<std::string> movingNothing;
     /// Why the clips cannot go on the character (empty: they can): e.g. no joint in common.
     std::string problem;
 };

@@ -163,8 +163,7 @@ private:
     }
 
     // Reads a clip from its BVH file or its inline keyframes (not yet on the character's layout).
-    std::optional<SourceClip> loadClip(const ClipAsset& asset, const std::string& where,
-                                       std::vector<std::string>& warnings, std::vector<std::string>& clipWarnings)
+    std::optional<SourceClip> loadClip(const ClipAsset& asset, const std::string& where)
     {
         SourceClip source;
         source.asset = &asset;
@@ -185,10 +184,6 @@ private:
                 return std::nullopt;
             }
             const ClipFile& file = **read;
-            if (!file.report.unmapped.empty())
-                warnings.push_back(where + ": " + std::to_string(file.report.unmapped.size())
-                                   + " joints of the file kept their own names (not H-Anim): " + joinNames(file.report.unmapped) + ".");
-            clipWarnings.resize(warnings.size(), asset.name);
             source.clip = file.clip;
             source.file = *read;
             return source;
@@ -521,7 +516,7 @@ private:
                 problem(ErrorCode::InvalidSchedule, where + ": two clips have this name.");
                 continue;
             }
-            if (auto loaded = loadClip(asset, where, runtime.warnings, runtime.warningClips))
+            if (auto loaded = loadClip(asset, where))
                 sources.emplace(asset.name, std::move(*loaded));
         }
 
@@ -542,6 +537,12 @@ private:
         for (const auto& [name, source] : sources) {
             if (source.file) {
                 runtime.clipReports[name] = source.file->report;
+                if (const auto lost = unmappedJointsMovingNothing(*source.file, runtime.skeleton); !lost.empty()) {
+                    runtime.warnings.push_back(who + ", clip " + quote(name) + ": " + std::to_string(lost.size())
+                                               + " joints of the file have no H-Anim name and move nothing of the character: "
+                                               + joinNames(lost) + ".");
+                    runtime.warningClips.resize(runtime.warnings.size(), name);
+                }
                 const auto& joints = source.file->skeleton.joints();
                 if (std::none_of(joints.begin(), joints.end(),
                                  [&](const anim::Joint& j) { return runtime.skeleton.find(j.name) >= 0; }))

@@ -362,6 +362,9 @@ void bindImport(py::module_& m)
         .def_readonly("report", &ClipImport::report)
         .def_readonly("mapping", &ClipImport::mapping, "File joint → the name it plays as (correct it, pass it back).")
         .def_readonly("joints_moved", &ClipImport::jointsMoved, "The character's joints the file moves.")
+        .def_readonly("unmoved", &ClipImport::unmoved, "The character's joints the file does not move.")
+        .def_readonly("moving_nothing", &ClipImport::movingNothing,
+                      "Joints without an H-Anim name whose motion reaches nothing of the character.")
         .def_readonly("problem", &ClipImport::problem, "Why it cannot go on the character; '' when it can.");
     m.def(
         "plan_clip_import",

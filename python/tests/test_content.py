@@ -38,6 +38,9 @@ def test_build_a_scenario_from_nothing_and_undo_it(tmp_path):
     assert walk.report.unit_name.startswith("CMU")
     assert walk.problem == ""
     assert walk.mapping["LeftUpLeg"] == "l_hip"
+    # CMU's LHipJoint and RHipJoint have no H-Anim name, but the legs below them carry their turn.
+    assert walk.report.unmapped == ["LHipJoint", "RHipJoint"]
+    assert walk.moving_nothing == []
     assert [clip.name for clip in walk.clips] == ["02_01"]
     assert not walk.clips[0].file.startswith("/")  # relative to the scenario's folder
     steps.append(apply(scenario, edit.add_clips(scenario, 0, walk.clips)))
@@ -46,6 +49,10 @@ def test_build_a_scenario_from_nothing_and_undo_it(tmp_path):
                                     runtime.characters[1].skeleton)
     assert "Walking" in [clip.animation for clip in gltf.clips]
     assert len(gltf.clips) == 14
+    assert gltf.moving_nothing == []  # on its own rig every joint plays
+    on_walker = thespis.plan_clip_import(SHARED_DATA / "characters/RobotExpressive/RobotExpressive.glb", tmp_path,
+                                         runtime.characters[0].skeleton)
+    assert on_walker.moving_nothing == ["PoleTarget.L", "PoleTarget.R"]  # the rig's IK targets
     steps.append(apply(scenario, edit.add_clips(scenario, 1, [c for c in gltf.clips if c.name == "Walking"])))
 
     for character, clip in ((0, "02_01"), (1, "Walking")):

@@ -327,6 +327,29 @@ TEST(ScenarioMocap, TheCharacterStandsWhereItIsPut)
     EXPECT_LT(joints[std::size_t(c.skeleton.find("l_hip"))].z, joints[std::size_t(c.skeleton.find("r_hip"))].z - 0.1);
 }
 
+// What a file brings is told only when it matters: a joint without an H-Anim name whose motion
+// reaches nothing of the character (MakeHuman's jaw and eyes on a humanoid), not CMU's hip
+// joints (the legs below carry their turn) nor a model's own joints played on its own rig.
+TEST(ScenarioMocap, WarnsOfJointsThatMoveNothingOnly)
+{
+    const auto warningsOf = [](const Scenario& s) {
+        auto built = buildRuntime(s, sharedData());
+        EXPECT_TRUE(built.ok()) << built.error().message;
+        return built.ok() ? built->characters.at(0).warnings : std::vector<std::string>{};
+    };
+    EXPECT_EQ(warningsOf(oneClip(kBodies[0], "mocap/cmu/02_01.bvh")), std::vector<std::string>{});
+    EXPECT_EQ(warningsOf(oneClip(kBodies[1], "characters/RobotExpressive/RobotExpressive.glb", "Walking")),
+              std::vector<std::string>{});
+    const auto makeHuman = warningsOf(oneClip(kBodies[0], "mocap/makehuman/walk1.bvh"));
+    ASSERT_EQ(makeHuman.size(), 1u);
+    EXPECT_NE(makeHuman[0].find("clip \"motion\": 18 joints of the file have no H-Anim name and move nothing"),
+              std::string::npos) << makeHuman[0];
+    EXPECT_NE(makeHuman[0].find("Jaw"), std::string::npos);
+    const auto robotOnHumanoid = warningsOf(oneClip(kBodies[0], "characters/RobotExpressive/RobotExpressive.glb", "Walking"));
+    ASSERT_EQ(robotOnHumanoid.size(), 1u);
+    EXPECT_NE(robotOnHumanoid[0].find("PoleTarget.L, PoleTarget.R"), std::string::npos) << robotOnHumanoid[0];
+}
+
 // Bad files are refused with the reader's words, naming the file; nothing plays half.
 TEST(ScenarioMocap, BadClipFilesSayWhatAndWhere)
 {

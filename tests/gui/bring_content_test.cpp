@@ -18,6 +18,7 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSlider>
 #include <QStandardPaths>
@@ -202,6 +203,8 @@ void BringContentTest::fromNothingToARenderedScenarioAndBack()
     m_window->properties()->characterPage()->headingEdit()->setValue(-30.0);
     QCOMPARE(document->scenario().characters[1].position.x, 2.5f);
     QCOMPARE(document->scenario().characters[1].heading, -30.0);
+    QApplication::processEvents();
+    saveScreenshot(m_window.get(), QStringLiteral("content_2_placed_robot.png"));
 
     // File ▸ Import Motion… into the walker: the file dialog picks two CMU files, the report
     // shows what was found, Import adds both.
@@ -274,7 +277,7 @@ void BringContentTest::fromNothingToARenderedScenarioAndBack()
     auto reread = core::scenario::loadScenario(path.toStdString());
     QVERIFY(reread.ok());
     QVERIFY(*reread == saved);
-    QVERIFY(m_window->messagesPanel()->count() >= 1); // what the files brought (joints left unmapped …)
+    QVERIFY(m_window->messagesPanel()->count() >= 1); // what the robot's model brought (its IK feet …)
 
     // Render headless from the saved file: everyone on the ground, at their own size.
     auto scene = core::render::ScenarioScene::create(*reread, m_dir.path().toStdString());
@@ -333,7 +336,7 @@ void BringContentTest::aBrokenFileAddsNothingAndAMappingCanBeCorrected()
     const core::scenario::Scenario before = document->scenario();
 
     whenModal<editor::ImportMotionDialog>([broken](editor::ImportMotionDialog* dialog) {
-        QCOMPARE(dialog->fileTree()->topLevelItemCount(), 2);
+        QCOMPARE(dialog->fileTree()->topLevelItemCount(), 3);
         // The broken file: its reader's words, nothing to import from it.
         dialog->fileTree()->setCurrentItem(dialog->fileTree()->topLevelItem(0));
         QVERIFY2(dialog->reportLabel()->text().contains(QStringLiteral("broken.bvh, line 4")),
@@ -345,27 +348,51 @@ void BringContentTest::aBrokenFileAddsNothingAndAMappingCanBeCorrected()
             if (table->item(row, 0)->text() == QStringLiteral("LeftArm"))
                 table->item(row, 1)->setText(QString());
         dialog->applyMappingButton()->click();
+        // The file's LeftArm keeps its name; the character's left shoulder is left at rest.
         QVERIFY(dialog->reportLabel()->text().contains(QStringLiteral("LeftArm")));
+        QVERIFY2(dialog->reportLabel()->text().contains(QRegularExpression(QStringLiteral("leaves at rest: [^<]*l_shoulder"))),
+                 qPrintable(dialog->reportLabel()->text()));
         QVERIFY(dialog->saveMapping(QFileInfo(broken).dir().filePath(QStringLiteral("wave.map"))));
         saveScreenshot(dialog, QStringLiteral("content_8_broken_and_mapping.png"));
-        QCOMPARE(dialog->clipNames(), QStringList{QStringLiteral("141_16")});
+        // MakeHuman's walk: its jaw, tongue and eyes move nothing of a 25-joint body.
+        dialog->fileTree()->setCurrentItem(dialog->fileTree()->topLevelItem(2));
+        QVERIFY2(dialog->reportLabel()->text().contains(QStringLiteral("nothing of this character")),
+                 qPrintable(dialog->reportLabel()->text()));
+        QCOMPARE(dialog->clipNames(), (QStringList{QStringLiteral("141_16"), QStringLiteral("walk1")}));
         dialog->importButton()->click();
     });
-    QVERIFY(m_window->contentActions()->importFiles({broken, shared(QStringLiteral("mocap/cmu/141_16.bvh"))}, 0));
+    QVERIFY(m_window->contentActions()->importFiles(
+        {broken, shared(QStringLiteral("mocap/cmu/141_16.bvh")), shared(QStringLiteral("mocap/makehuman/walk1.bvh"))}, 0));
     const auto& clips = document->scenario().characters[0].clips;
-    QCOMPARE(clips.back().name, std::string("141_16"));
-    QVERIFY(!clips.back().mapping.empty());
-    QVERIFY(clips.back().mapping.count("LeftArm") == 0);
-    QCOMPARE(int(clips.size()), int(before.characters[0].clips.size()) + 1);
+    QCOMPARE(int(clips.size()), int(before.characters[0].clips.size()) + 2);
+    const core::scenario::ClipAsset& wave = clips[clips.size() - 2];
+    QCOMPARE(wave.name, std::string("141_16"));
+    QVERIFY(!wave.mapping.empty());
+    QVERIFY(wave.mapping.count("LeftArm") == 0);
     QVERIFY(QFile::exists(m_dir.filePath(QStringLiteral("wave.map"))));
     // The Messages dock tells what the file brought, and shows its clip on a double-click.
     editor::MessagesPanel* messages = m_window->messagesPanel();
-    QVERIFY(messages->count() >= 1);
-    QVERIFY(messages->item(0)->text().contains(QStringLiteral("141_16")));
+    QCOMPARE(messages->count(), 1);
+    QVERIFY2(messages->item(0)->text().contains(QStringLiteral("clip \"walk1\": 18 joints")),
+             qPrintable(messages->item(0)->text()));
     emit messages->itemActivated(messages->item(0));
     qobject_cast<QDockWidget*>(messages->parentWidget())->raise();
     QApplication::processEvents();
     saveScreenshot(m_window.get(), QStringLiteral("content_9_messages.png"));
+
+    // A probe that cannot be read keeps the one before and says why; the light is unchanged.
+    const core::scenario::LightingSpec light = document->scenario().lighting;
+    whenModal<editor::LightingDialog>([broken](editor::LightingDialog* dialog) {
+        QVERIFY(dialog->setProbeFile(shared(QStringLiteral("probes/polyhaven_1k/venice_sunset_1k.hdr"))));
+        QVERIFY(!dialog->setProbeFile(broken));
+        QVERIFY(dialog->lighting().probe.ends_with("venice_sunset_1k.hdr"));
+        QVERIFY2(dialog->messageLabel()->text().contains(QStringLiteral("broken.bvh")),
+                 qPrintable(dialog->messageLabel()->text()));
+        QVERIFY(!dialog->probePicture()->pixmap().isNull());
+        dialog->reject();
+    });
+    m_window->contentActions()->lightingAction()->trigger();
+    QVERIFY(document->scenario().lighting == light);
 }
 
 void BringContentTest::filesDroppedOnATrackImportAndPlayThere()
