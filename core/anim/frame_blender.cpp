@@ -150,7 +150,7 @@ template <bool First>
             const F8 ax = load<F8>(a), ay = load<F8>(a + 8), az = load<F8>(a + 16), aw = load<F8>(a + 24);
             // Align with the sum so far, so that q and −q (the same rotation) add up, not cancel.
             const F8 d = (ax * x + ay * y) + (az * z + aw * qw);
-            const F8 s = (F8)((I8)weight ^ ((d < 0.0f) & signBit));
+            const F8 s = (F8)((I8)weight ^ ((I8)d & signBit)); // weight with d's sign
             store(a, ax + s * x);
             store(a + 8, ay + s * y);
             store(a + 16, az + s * z);

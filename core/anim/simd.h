@@ -4,7 +4,6 @@
 // per joint; the loops transpose four or eight joints at a time into one vector per component,
 // so that dot products and accumulations are vertical operations.
 
-#include <cstddef>
 #include <cmath>
 #include <cstring>
 #if defined(__SSE__)
@@ -34,11 +33,8 @@ inline void store(float* p, V v)
 template <class V = F4>
 inline V splat(float x)
 {
-    // A broadcast, not V{} + x: 0 + (−0) is +0, which would lose a sign-bit mask.
-    V v;
-    for (std::size_t i = 0; i < sizeof v / sizeof x; ++i)
-        v[i] = x;
-    return v;
+    // x − 0 is x for every x; V{} + x is not: 0 + (−0) is +0, which would lose a sign-bit mask.
+    return x - V{};
 }
 template <class V>
 inline V max(V a, V b)
