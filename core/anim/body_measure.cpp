@@ -85,11 +85,11 @@ BodyMeasure measureBody(const Skeleton& skeleton)
                 forward = d * (1.0 / l);
             }
         }
-        const double legs = measure.hasLegs() ? measure.legLength : 1.0;
-        const double heel = length > 0 ? 0.35 * length : 0.08 * legs;
+        const double leg = measure.hasLegs() ? measure.legLength : 1.0;
+        const double heel = length > 0 ? 0.35 * length : 0.08 * leg;
         measure.soles.push_back({ankle, {-forward.x * heel, floor - at.y, -forward.z * heel}});
         if (length == 0)
-            measure.soles.push_back({ankle, {forward.x * 0.2 * legs, floor - at.y, forward.z * 0.2 * legs}});
+            measure.soles.push_back({ankle, {forward.x * 0.2 * leg, floor - at.y, forward.z * 0.2 * leg}});
     }
     std::vector<double> heights(measure.soles.size());
     for (std::size_t k = 0; k < heights.size(); ++k)
