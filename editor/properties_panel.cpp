@@ -279,15 +279,19 @@ void PropertiesPanel::showScenario()
         for (const auto& layer : character.layers)
             actions += int(layer.actions.size());
     QString file = m_document->filePath().isEmpty() ? tr("not saved yet") : m_document->filePath().toHtmlEscaped();
+    // An empty scenario says where to begin.
+    const QString hint = scenario.characters.empty()
+                             ? tr("<i>No characters yet: Character ▸ Add Character… adds one, then File ▸ Import "
+                                  "Motion… brings in its motion capture.</i>")
+                             : tr("<i>Select an action on the timeline, or a character in the scenario outline, to "
+                                  "see and edit its properties.</i>");
     m_scenarioSummary->setText(
-        tr("<b>%1</b><br>File: %2<br>%3, %4, %5 markers<br>Length: %6<br><br>"
-           "<i>Select an action on the timeline, or a character in the scenario outline, to see and edit its "
-           "properties.</i>")
+        tr("<b>%1</b><br>File: %2<br>%3, %4, %5 markers<br>Length: %6<br><br>%7")
             .arg(m_document->scenarioName().toHtmlEscaped(), file,
                  tr("%n character(s)", nullptr, int(scenario.characters.size())),
                  tr("%n action(s)", nullptr, actions))
             .arg(scenario.markers.size())
-            .arg(seconds(m_document->duration())));
+            .arg(seconds(m_document->duration()), hint));
 }
 
 void PropertiesPanel::showAction()

@@ -1485,8 +1485,16 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <translation>Wiederholungen der Aktion ändern</translation>
     </message>
     <message>
-        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;File: %2&lt;br&gt;%3, %4, %5 markers&lt;br&gt;Length: %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Select an action on the timeline, or a character in the scenario outline, to see and edit its properties.&lt;/i&gt;</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Datei: %2&lt;br&gt;%3, %4, %5 Marker&lt;br&gt;Länge: %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Wählen Sie eine Aktion auf der Zeitleiste oder eine Figur in der Szenario-Übersicht aus, um ihre Eigenschaften anzuzeigen und zu bearbeiten.&lt;/i&gt;</translation>
+        <source>&lt;i&gt;No characters yet: Character ▸ Add Character… adds one, then File ▸ Import Motion… brings in its motion capture.&lt;/i&gt;</source>
+        <translation>&lt;i&gt;Noch keine Figuren: Figur ▸ Figur hinzufügen… fügt eine hinzu, dann bringt Datei ▸ Bewegung importieren… ihre Motion-Capture-Daten.&lt;/i&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;i&gt;Select an action on the timeline, or a character in the scenario outline, to see and edit its properties.&lt;/i&gt;</source>
+        <translation>&lt;i&gt;Wählen Sie eine Aktion auf der Zeitleiste oder eine Figur in der Szenario-Übersicht aus, um ihre Eigenschaften anzuzeigen und zu bearbeiten.&lt;/i&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;File: %2&lt;br&gt;%3, %4, %5 markers&lt;br&gt;Length: %6&lt;br&gt;&lt;br&gt;%7</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Datei: %2&lt;br&gt;%3, %4, %5 Marker&lt;br&gt;Länge: %6&lt;br&gt;&lt;br&gt;%7</translation>
     </message>
 </context>
 <context>

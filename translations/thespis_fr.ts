@@ -1485,8 +1485,16 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <translation>Modifier le nombre de répétitions de l’action</translation>
     </message>
     <message>
-        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;File: %2&lt;br&gt;%3, %4, %5 markers&lt;br&gt;Length: %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Select an action on the timeline, or a character in the scenario outline, to see and edit its properties.&lt;/i&gt;</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Fichier : %2&lt;br&gt;%3, %4, %5 marqueurs&lt;br&gt;Durée : %6&lt;br&gt;&lt;br&gt;&lt;i&gt;Sélectionnez une action sur la ligne temporelle, ou un personnage dans le plan du scénario, pour voir et modifier ses propriétés.&lt;/i&gt;</translation>
+        <source>&lt;i&gt;No characters yet: Character ▸ Add Character… adds one, then File ▸ Import Motion… brings in its motion capture.&lt;/i&gt;</source>
+        <translation>&lt;i&gt;Aucun personnage pour l’instant : Personnage ▸ Ajouter un personnage… en ajoute un, puis Fichier ▸ Importer un mouvement… apporte sa capture de mouvement.&lt;/i&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;i&gt;Select an action on the timeline, or a character in the scenario outline, to see and edit its properties.&lt;/i&gt;</source>
+        <translation>&lt;i&gt;Sélectionnez une action sur la ligne temporelle, ou un personnage dans le plan du scénario, pour voir et modifier ses propriétés.&lt;/i&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;File: %2&lt;br&gt;%3, %4, %5 markers&lt;br&gt;Length: %6&lt;br&gt;&lt;br&gt;%7</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Fichier : %2&lt;br&gt;%3, %4, %5 marqueurs&lt;br&gt;Durée : %6&lt;br&gt;&lt;br&gt;%7</translation>
     </message>
 </context>
 <context>
