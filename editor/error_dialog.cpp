@@ -23,6 +23,7 @@ QString errorTitle(core::ErrorCode code)
     case core::ErrorCode::NotOurFormat: return localized(QT_TRANSLATE_NOOP("thespis::editor::ErrorDialog", "Not a Thespis file"));
     case core::ErrorCode::CorruptData: return localized(QT_TRANSLATE_NOOP("thespis::editor::ErrorDialog", "The file is damaged"));
     case core::ErrorCode::NewerVersion: return localized(QT_TRANSLATE_NOOP("thespis::editor::ErrorDialog", "Made by a newer Thespis"));
+    case core::ErrorCode::NotFound: return localized(QT_TRANSLATE_NOOP("thespis::editor::ErrorDialog", "Not found"));
     case core::ErrorCode::InvalidArgument: return localized(QT_TRANSLATE_NOOP("thespis::editor::ErrorDialog", "Invalid value"));
     case core::ErrorCode::InvalidSchedule: return localized(QT_TRANSLATE_NOOP("thespis::editor::ErrorDialog", "The schedule cannot be built"));
     case core::ErrorCode::IoError: return localized(QT_TRANSLATE_NOOP("thespis::editor::ErrorDialog", "Reading or writing failed"));

@@ -139,6 +139,17 @@ bool BlendingSchedule::cutOffAction(ActionId id, double at, double fadeDuration)
     return true;
 }
 
+bool BlendingSchedule::restoreAction(ActionId id)
+{
+    Entry* entry = find(id);
+    if (!entry)
+        return false;
+    entry->cutOffAt = std::numeric_limits<double>::infinity();
+    entry->cutOffFade = 0;
+    touch();
+    return true;
+}
+
 Result<void> BlendingSchedule::setActionStart(ActionId id, double start)
 {
     Entry* entry = find(id);

@@ -59,6 +59,9 @@ public:
     /// Fades the action out over `fadeDuration` seconds starting at time `at` (a cubic fade),
     /// after which it is finished. False when there is no such action.
     bool cutOffAction(ActionId id, double at, double fadeDuration);
+    /// Takes back a cut-off: the action plays to its natural end again. False when there is no
+    /// such action.
+    bool restoreAction(ActionId id);
     /// Changes an action's start time / parameters (re-sorting, re-resolving the mask).
     Result<void> setActionStart(ActionId id, double start);
     Result<void> setActionParams(ActionId id, BlendingParams params);

@@ -304,7 +304,7 @@ FrameRetarget::FrameRetarget(const Skeleton& from, const Skeleton& to, const Ret
             m_targetFeetRest = float(toBody.footRestHeight);
             m_sourceSoftness = float(fromBody.footSoftness);
             m_targetSoftness = float(toBody.footSoftness);
-            const auto addSoles = [&](const BodyMeasure& body, const Skeleton& skeleton, int from, std::vector<ChainStep>& steps,
+            const auto addSoles = [&](const BodyMeasure& body, const Skeleton& skeleton, int firstJoint, std::vector<ChainStep>& steps,
                                       std::vector<Sole>& soles) {
                 std::map<int, std::pair<std::uint32_t, std::uint32_t>> chains;
                 for (const BodyMeasure::SolePoint& sole : body.soles) {
@@ -312,7 +312,7 @@ FrameRetarget::FrameRetarget(const Skeleton& from, const Skeleton& to, const Ret
                     if (added) {
                         const std::vector<int> chain = chainFromRoot(skeleton, sole.joint);
                         it->second.first = std::uint32_t(steps.size());
-                        for (auto k = std::find(chain.begin(), chain.end(), from); k != chain.end(); ++k)
+                        for (auto k = std::find(chain.begin(), chain.end(), firstJoint); k != chain.end(); ++k)
                             steps.push_back(chainStep(skeleton, *k));
                         it->second.second = std::uint32_t(steps.size());
                     }

@@ -47,7 +47,7 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
     if (!runtime)
         return runtime.error();
     std::unique_ptr<ScenarioScene> self(new ScenarioScene);
-    self->m_runtime = std::move(runtime).value();
+    self->m_stage = std::make_shared<runtime::Stage>(std::move(runtime).value());
     self->m_scene = std::make_unique<RenderScene>(options.skinningThreads);
 
     if (!scenario.lighting.probe.empty()) {
@@ -74,7 +74,7 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
         auto body = scenario::loadCharacterBody(scenario, i, baseDir);
         if (!body)
             return body.error();
-        const scenario::CharacterRuntime* characterRuntime = self->m_runtime.findCharacter(scenario.characters[i].name);
+        const scenario::CharacterRuntime* characterRuntime = self->runtime().findCharacter(scenario.characters[i].name);
         if (!characterRuntime)
             return makeError(ErrorCode::Internal, "The runtime lost character \"" + scenario.characters[i].name + "\".");
         for (const std::string& warning : body->warnings)
@@ -100,6 +100,7 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
             return makeError(node.error().code, scenario.characters[i].name + ": " + node.error().message,
                              node.error().detail);
         Performer performer;
+        performer.name = scenario.characters[i].name;
         performer.runtime = characterRuntime;
         performer.node = *node;
         // The body's own soles (from its mesh) stay on the floor where the animation's feet are.
@@ -112,13 +113,23 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
             self->m_warnings.push_back(scenario.characters[i].name + ": its body shares only " +
                                        std::to_string(performer.retarget.mappedJointCount()) +
                                        " joint names with its animation skeleton, so it will hardly move.");
-        performer.scheduleFrame = characterRuntime->skeleton.restFrame();
         performer.bodyFrame = shared->skeleton.restFrame();
         performer.bodyLayout = shared->skeleton.frameLayout();
         self->m_performers.push_back(std::move(performer));
     }
+    self->attachPerformers();
     self->setTime(0.0);
     return self;
+}
+
+void ScenarioScene::attachPerformers()
+{
+    m_poses = m_stage->makePoseSet();
+    m_performerPose.clear();
+    for (Performer& performer : m_performers) {
+        performer.runtime = runtime().findCharacter(performer.name);
+        m_performerPose.push_back(int(performer.runtime - runtime().characters.data()));
+    }
 }
 
 Result<void> ScenarioScene::setRuntime(scenario::ScenarioRuntime runtime)
@@ -132,21 +143,27 @@ Result<void> ScenarioScene::setRuntime(scenario::ScenarioRuntime runtime)
             return makeError(ErrorCode::InvalidArgument,
                              "Character \"" + next.name + "\" changed its skeleton: the scene must be rebuilt.");
     }
-    m_runtime = std::move(runtime);
-    for (std::size_t i = 0; i < m_performers.size(); ++i)
-        m_performers[i].runtime = &m_runtime.characters[i];
+    m_stage = std::make_shared<runtime::Stage>(std::move(runtime));
+    attachPerformers();
     setTime(m_time);
     return {};
 }
 
 void ScenarioScene::setTime(double seconds)
 {
+    m_stage->evaluate(secondsToTicks(seconds), m_poses);
+    setPoses(m_poses);
     m_time = seconds;
-    for (Performer& performer : m_performers) {
+}
+
+void ScenarioScene::setPoses(const runtime::PoseSet& poses)
+{
+    m_time = ticksToSeconds(poses.time);
+    for (std::size_t i = 0; i < m_performers.size(); ++i) {
+        Performer& performer = m_performers[i];
+        const std::vector<float>& frame = poses.characters[std::size_t(m_performerPose[i])].body;
         // Placed after retargeting: a body of another size must not scale where it stands.
-        if (performer.runtime->body)
-            performer.runtime->body->evaluate(seconds, performer.scheduleFrame);
-        performer.retarget.apply(performer.scheduleFrame, performer.bodyFrame);
+        performer.retarget.apply(frame, performer.bodyFrame);
         performer.runtime->place(*performer.bodyLayout, performer.bodyFrame);
         performer.node->setPose(performer.bodyFrame);
     }

@@ -1,9 +1,11 @@
 #pragma once
 // A scenario made drawable: its runtime (schedules), each character's body (scenario_character.h)
 // in a RenderScene, the schedule's frames retargeted onto each body's skeleton, and the light
-// from the scenario's probe (or the scene's default light). setTime poses every character for a
-// time on the timeline; the CLI's `render`, the studio's viewport and the picture tests all
-// draw through it, so they show the same thing.
+// from the scenario's probe (or the scene's default light). It plays through a runtime::Stage,
+// so live actions and scripts show: setTime evaluates the stage and poses every character, or
+// setPoses poses them from a PoseSet evaluated elsewhere (a Player). The CLI's `render` and
+// `run`, the studio's viewport and the picture tests all draw through it, so they show the same
+// thing.
 
 #include <filesystem>
 #include <map>
@@ -14,6 +16,7 @@
 #include "anim/retarget.h"
 #include "lighting/transfer_bake.h"
 #include "render/render_scene.h"
+#include "runtime/stage.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_runtime.h"
 #include "util/error.h"
@@ -44,18 +47,24 @@ public:
 
     RenderScene& scene() { return *m_scene; }
     const RenderScene& scene() const { return *m_scene; }
-    const scenario::ScenarioRuntime& runtime() const { return m_runtime; }
-    double duration() const { return m_runtime.duration; }
+    const scenario::ScenarioRuntime& runtime() const { return m_stage->runtime(); }
+    /// The stage the scene plays: scripts and the live runtime activate actions on it.
+    runtime::Stage& stage() { return *m_stage; }
+    const std::shared_ptr<runtime::Stage>& sharedStage() const { return m_stage; }
+    double duration() const { return runtime().duration; }
     /// Things worth telling the user (unmapped joints, characters whose skeleton shares few
     /// joints with their body, bake files left out); one sentence each.
     const std::vector<std::string>& warnings() const { return m_warnings; }
 
-    /// Plays a new runtime of the same scenario (after an edit): the characters and their
-    /// skeletons must be the same; otherwise an error says so and the scene must be rebuilt.
+    /// Plays a new runtime of the same scenario (after an edit) on a new stage (live actions
+    /// end): the characters and their skeletons must be the same; otherwise an error says so
+    /// and the scene must be rebuilt.
     Result<void> setRuntime(scenario::ScenarioRuntime runtime);
 
-    /// Poses every character at `seconds` on the timeline (no allocation).
+    /// Evaluates the stage at `seconds` and poses every character (no allocation).
     void setTime(double seconds);
+    /// Poses every character from poses the stage gave (its character order).
+    void setPoses(const runtime::PoseSet& poses);
     double time() const { return m_time; }
     /// The bounds of every character over the whole timeline (sampled at 10 Hz), for a camera
     /// that keeps everyone in view while the scenario plays. Leaves the scene at time().
@@ -65,13 +74,18 @@ private:
     ScenarioScene() = default;
 
     struct Performer {
+        std::string name;
         const scenario::CharacterRuntime* runtime = nullptr;
         CharacterNode* node = nullptr;
         anim::FrameRetarget retarget;
         anim::FrameLayoutPtr bodyLayout;
-        std::vector<float> scheduleFrame, bodyFrame;
+        std::vector<float> bodyFrame;
     };
-    scenario::ScenarioRuntime m_runtime;
+    void attachPerformers();
+
+    std::shared_ptr<runtime::Stage> m_stage;
+    runtime::PoseSet m_poses;
+    std::vector<int> m_performerPose; // per performer, its character's index in the stage
     std::unique_ptr<RenderScene> m_scene;
     std::vector<Performer> m_performers;
     std::vector<std::string> m_warnings;

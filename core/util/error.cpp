@@ -9,6 +9,7 @@ const char* errorCodeName(ErrorCode code)
     case ErrorCode::NotOurFormat: return "not a supported format";
     case ErrorCode::CorruptData: return "corrupt data";
     case ErrorCode::NewerVersion: return "newer version";
+    case ErrorCode::NotFound: return "not found";
     case ErrorCode::InvalidArgument: return "invalid argument";
     case ErrorCode::InvalidSchedule: return "invalid schedule";
     case ErrorCode::IoError: return "input/output error";

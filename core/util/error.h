@@ -14,6 +14,7 @@ enum class ErrorCode {
     NotOurFormat,   ///< the file is not of the format the reader handles
     CorruptData,    ///< our format, but malformed (message names line or field)
     NewerVersion,   ///< written by a newer Thespis
+    NotFound,       ///< a named thing (character, action, asset) does not exist; the message lists what does
     InvalidArgument,///< a caller passed values that break a documented rule
     InvalidSchedule,///< a schedule or action cannot be built as asked
     IoError,        ///< reading or writing failed part way

@@ -131,5 +131,6 @@ void bindScene(py::module_& m);    // thespis.scene: character meshes, segments,
 void bindLighting(py::module_& m); // thespis.lighting: SH, probes, the transfer bake
 void bindRender(py::module_& m);   // thespis.render: headless pictures of scenarios
 void bindEdit(py::module_& m);     // thespis.edit: the studio's undoable scenario edits
+void bindRuntime(py::module_& m);  // thespis.runtime: clocks, the Stage, the animation service
 
 } // namespace thespis::python

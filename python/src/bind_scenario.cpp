@@ -383,7 +383,7 @@ void bindImport(py::module_& m)
         "path"_a, "mapping"_a, "Writes a joint mapping file (thespis.load_mapping / the import dialog read it).");
 }
 
-void bindRuntime(py::module_& m)
+void bindScenarioRuntime(py::module_& m)
 {
     py::class_<CharacterRuntime>(m, "CharacterRuntime",
                                  "A character ready to play: skeleton, loaded clips and its nested schedules.")
@@ -436,7 +436,7 @@ void bindScenario(py::module_& m)
     m.attr("SCENARIO_EXTENSION") = std::string(FileExtension);
 
     bindDocument(m);
-    bindRuntime(m);
+    bindScenarioRuntime(m);
     bindImport(m);
 
     m.def(

@@ -19,6 +19,7 @@ PyObject* exceptionType(ErrorCode code)
     case ErrorCode::NotOurFormat:
     case ErrorCode::CorruptData:
     case ErrorCode::NewerVersion: return g_formatError;
+    case ErrorCode::NotFound: return PyExc_KeyError;
     case ErrorCode::InvalidArgument:
     case ErrorCode::InvalidSchedule: return PyExc_ValueError;
     case ErrorCode::IoError: return PyExc_OSError;
@@ -52,6 +53,7 @@ void bindErrors(py::module_& m)
         .value("not_our_format", ErrorCode::NotOurFormat)
         .value("corrupt_data", ErrorCode::CorruptData)
         .value("newer_version", ErrorCode::NewerVersion)
+        .value("not_found", ErrorCode::NotFound)
         .value("invalid_argument", ErrorCode::InvalidArgument)
         .value("invalid_schedule", ErrorCode::InvalidSchedule)
         .value("io_error", ErrorCode::IoError)

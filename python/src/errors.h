@@ -2,6 +2,7 @@
 // The one place where core's Result errors become Python exceptions (STYLE.md §9):
 //   FileNotFound                             → FileNotFoundError
 //   NotOurFormat, CorruptData, NewerVersion  → thespis.FormatError (a ValueError)
+//   NotFound                                 → KeyError
 //   InvalidArgument, InvalidSchedule         → ValueError
 //   IoError                                  → OSError
 //   Cancelled                                → thespis.Cancelled (a KeyboardInterrupt)

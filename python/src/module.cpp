@@ -17,4 +17,5 @@ PYBIND11_MODULE(_thespis, m)
     thespis::python::bindLighting(m);
     thespis::python::bindRender(m);
     thespis::python::bindEdit(m);
+    thespis::python::bindRuntime(m);
 }

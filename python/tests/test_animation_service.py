@@ -1,6 +1,9 @@
-"""The paper's scripting style (§4.5): activate, cut off and wait for actions over a clock."""
+"""The paper's animation service (§4.5, core/runtime bound as thespis.runtime): activate, cut off
+and wait for actions over a clock, with the paper's method names and Pythonic aliases."""
 
 import math
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -45,8 +48,7 @@ def test_paper_script_timing(service):
     end = anim.wait_until_action_finished_body("Creon", "idle")
     assert end == pytest.approx(cut_at + 3.0)
     assert anim.is_action_finished_body("Creon", "idle")
-    schedule = anim.body_schedule("Creon")
-    np.testing.assert_allclose(anim.evaluate_body("Creon"), schedule.rest_pose, atol=1e-6)
+    np.testing.assert_allclose(anim.evaluate_body("Creon"), walk.skeleton.rest_frame(), atol=1e-6)
 
 
 def test_activated_actions_play_from_the_clock_time(service):
@@ -105,3 +107,77 @@ def test_service_from_the_demo_runtime():
     frame = anim.evaluate_body(first.name, 0.5)
     assert frame.shape == (runtime.characters[0].skeleton.frame_layout.float_count,)
     assert np.all(np.isfinite(frame))
+
+
+def demo_service(clock=None):
+    scenario = thespis.load_scenario(demo_scenario())
+    runtime = thespis.build_runtime(scenario, demo_scenario().parent)
+    return AnimationService.from_runtime(runtime, clock), runtime
+
+
+def test_the_papers_script_runs_as_written():
+    """§4.5's Antigone/Creon script with the demo's action names, on a manual clock."""
+    animService, runtime = demo_service()
+    Antigone, Creon = "Antigone", "Creon"
+    animService.initPlayerScope_face(False)
+    animService.start_player()
+    animService.activateAction_body(Antigone, "antigone_idle")
+    animService.activateAction_body(Creon, "creon_wave")
+    reached = animService.waitUntilActionFinished_body(Creon, "creon_wave", -1.0)
+    wave_length = runtime.characters[0].clips["wave"].domain.duration
+    assert reached == pytest.approx(wave_length - 1.0)
+    animService.activateAction_body(Creon, "creon_nod")
+    assert animService.cutOffAction_body(Antigone, "antigone_idle", 3.0)
+    animService.activateAction_body(Antigone, "antigone_wave")
+    end = animService.waitUntilActionFinished_body(Antigone, "antigone_wave", -1.0)
+    animService.activateAction_body(Antigone, "antigone_idle")
+    animService.stop_player()
+    assert end > reached
+    assert animService.is_playing_body(Antigone, "antigone_idle")
+    # The face track is off: Creon's face stays neutral although his blinks are authored.
+    assert not np.any(animService.evaluate_face(Creon))
+
+
+def test_unknown_characters_are_named_with_the_known_ones():
+    anim, _ = demo_service()
+    with pytest.raises(KeyError, match="Ismene.*Creon, Antigone"):
+        anim.activateAction_body("Ismene", "creon_idle")
+    assert isinstance(thespis.ErrorCode.not_found, thespis.ErrorCode)
+
+
+def test_a_wait_on_an_external_clock_follows_the_driver_and_stops_on_request():
+    clock = thespis.ExternalClock()
+    anim, _ = demo_service(clock)
+    anim.activate_action_body("Creon", "creon_wave")
+    done = []
+    waiter = threading.Thread(target=lambda: done.append(anim.wait_until_action_finished_body("Creon", "creon_wave")))
+    waiter.start()
+    time.sleep(0.05)
+    assert not done
+    clock.set_time(100.0)
+    waiter.join(5)
+    assert done and done[0] < 100.0
+    failures = []
+
+    def wait_for_ever():
+        try:
+            anim.wait(3600.0)
+        except thespis.Cancelled as e:
+            failures.append(e)
+
+    stuck = threading.Thread(target=wait_for_ever)
+    stuck.start()
+    time.sleep(0.05)
+    anim.request_stop()
+    stuck.join(5)
+    assert not stuck.is_alive() and failures
+
+
+def test_a_live_action_fades_in_over_the_authored_motion():
+    anim, runtime = demo_service()
+    anim.clock.advance(2.5)
+    before = anim.evaluate_body("Creon")
+    anim.activate_action_body("Creon", "nod")
+    np.testing.assert_allclose(anim.evaluate_body("Creon"), before, atol=1e-5)
+    nod = runtime.characters[0].clips["nod"].evaluate(0.5)
+    assert np.abs(anim.evaluate_body("Creon", 3.0) - nod).max() < 1e-4

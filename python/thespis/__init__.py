@@ -1,7 +1,9 @@
 """Thespis: the MIRAnim blending engine, scenario documents and PRT lighting, from Python.
 
-Everything here comes from the compiled core (``thespis._thespis``); the pure-Python helpers
-(``AnimationService``) follow the scripting style of the paper (§4.5). Times are seconds as
+Everything here comes from the compiled core (``thespis._thespis``). ``thespis.runtime`` (also
+re-exported here: ``AnimationService``, ``Stage``, the clocks) is the paper's animation service
+(§4.5), with its method names (``activateAction_body``, ``waitUntilActionFinished_body``) and
+Pythonic aliases. Times are seconds as
 floats in the engine, integer ticks in documents. Frames are NumPy float32 arrays laid out as
 ``FrameLayout`` says: every rotation (x, y, z, w), then translations (x, y, z), then scalars.
 
@@ -21,17 +23,19 @@ import sys as _sys
 
 from . import _thespis
 from ._thespis import *  # noqa: F401,F403  (the public API is the compiled module's)
-from ._thespis import __version__, bvh, edit, hanim, lighting, render, scene  # noqa: F401
+from ._thespis import __version__, bvh, edit, hanim, lighting, render, runtime, scene  # noqa: F401
 from ._thespis import Cancelled, FormatError  # noqa: F401
-from .animation_service import AnimationService, ManualClock, RealTimeClock  # noqa: F401
+
+AnimationService, Stage = runtime.AnimationService, runtime.Stage
+ExternalClock, ManualClock, RealTimeClock = runtime.ExternalClock, runtime.ManualClock, runtime.RealTimeClock
 
 # The compiled submodules are attributes of _thespis; registering them also makes
 # `import thespis.edit` (and `from thespis.scene import ...`) work.
-for _name in ("bvh", "edit", "hanim", "lighting", "render", "scene"):
+for _name in ("bvh", "edit", "hanim", "lighting", "render", "runtime", "scene"):
     _sys.modules[f"{__name__}.{_name}"] = getattr(_thespis, _name)
 del _name
 
 __all__ = sorted(
     [name for name in dir(_thespis) if not name.startswith("_")]
-    + ["AnimationService", "ManualClock", "RealTimeClock"]
+    + ["AnimationService", "ExternalClock", "ManualClock", "RealTimeClock", "Stage"]
 )

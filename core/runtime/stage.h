@@ -1,0 +1,165 @@
+#pragma once
+// Stage (paper §3, §4.5, §5.3): the live side of the animation service. Per character and track
+// (body, face) it plays, bottom to top:
+//   1. the open-ended synthesizers put in its slots (idle motion), blended together;
+//   2. its authored schedule (the scenario's layers, from a ScenarioRuntime), over them by how
+//      much it drives each joint (its coverage);
+//   3. the live Normalized actions activated at run time, blended together, over that by their
+//      coverage: an action activated while the scenario plays fades in over it, and the
+//      motion never jumps;
+//   4. the live Override and Additive actions, on top, like gestures.
+// With nothing live and no synthesizer, a track is exactly its authored schedule. An action is
+// named: a clip of the character, an action of its scenario (source and blending parameters),
+// or one defined with defineAction().
+//
+// Every method locks the stage, so a script thread may activate actions while a player thread
+// evaluates. evaluate() is the one place schedules are evaluated: once per tick for everyone.
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "anim/blending_schedule.h"
+#include "runtime/pose_set.h"
+#include "scenario/scenario_runtime.h"
+#include "util/error.h"
+#include "util/tick.h"
+
+namespace thespis::core::runtime {
+
+enum class Track { Body, Face };
+
+/// What an action plays: a blendable with its blending parameters.
+struct ActionTemplate {
+    anim::BlendablePtr source;
+    anim::BlendingParams params;
+    bool renderOutsideDomain = false;
+};
+
+struct ActivateOptions {
+    /// Replaces the action's weight curve when given.
+    std::optional<anim::Curve> weight;
+    /// Seconds over which the action fades in over what plays, when its own weight curve does
+    /// not start at 0 already (0: at once).
+    double fadeIn = 0.25;
+};
+
+class Stage {
+public:
+    /// An empty stage (characters come from addCharacter()).
+    Stage() = default;
+    /// Every character of a built scenario with its authored schedules; its clips (constant
+    /// weight) and its named scenario actions (with their parameters, which win over a clip of
+    /// the same name) are the actions it can play live.
+    explicit Stage(scenario::ScenarioRuntime runtime);
+    Stage(const Stage&) = delete;
+    Stage& operator=(const Stage&) = delete;
+
+    /// The scenario the stage was made from (empty for a stage built by hand).
+    const scenario::ScenarioRuntime& runtime() const { return m_runtime; }
+
+    /// Adds a character with nothing authored. Error: the name is taken.
+    Result<int> addCharacter(std::string name, const anim::Skeleton& skeleton);
+    int characterCount() const;
+    std::vector<std::string> characterNames() const;
+    /// Index of the character, or −1.
+    int findCharacter(const std::string& name) const;
+
+    /// Names (or renames) an action the character can play on a track.
+    Result<void> defineAction(const std::string& character, Track track, const std::string& action,
+                              ActionTemplate source);
+    /// Sorted names of the actions the character can play on a track.
+    Result<std::vector<std::string>> actionNames(const std::string& character, Track track) const;
+    /// Puts an open-ended synthesizer in a named slot under the character's authored motion
+    /// (null empties the slot).
+    Result<void> setSynthesizer(const std::string& character, Track track, const std::string& slot,
+                                anim::BlendablePtr source);
+    /// Turns a track off for every character (paper: initPlayerScope_face(False)): it is no
+    /// longer evaluated and stays at its rest pose.
+    void setTrackEnabled(Track track, bool enabled);
+
+    /// Starts the named action at `at`; returns its id in the live schedule.
+    Result<anim::ActionId> activateAction(const std::string& character, Track track, const std::string& action,
+                                          Tick at, const ActivateOptions& options = {});
+    /// Fades the latest live activation of the action out over `fadeSeconds` from `at`, or,
+    /// when it was not activated live, the authored action of that name playing at `at`.
+    /// False when neither plays then.
+    Result<bool> cutOffAction(const std::string& character, Track track, const std::string& action, Tick at,
+                              double fadeSeconds);
+    /// Removes the latest live activation at once; false when there is none.
+    Result<bool> removeAction(const std::string& character, Track track, const std::string& action);
+    /// True when the action (live, else authored) has started by `at` and not finished.
+    Result<bool> isPlaying(const std::string& character, Track track, const std::string& action, Tick at) const;
+    /// When the action (live, else authored) ends, in seconds on the stage's time: ∞ when it
+    /// never does. Error when it was never activated and is not authored.
+    Result<double> actionEnd(const std::string& character, Track track, const std::string& action) const;
+    /// Seconds from `at` until the action ends (0 when it has; ∞ when it never does).
+    Result<double> timeUntilFinished(const std::string& character, Track track, const std::string& action,
+                                     Tick at) const;
+    /// Removes every live action and empties every synthesizer slot (a script starts over).
+    void resetLive();
+
+    /// A pose set sized for this stage (evaluate() then allocates nothing).
+    PoseSet makePoseSet() const;
+    /// Poses every character at `t`. Live actions finished by `t` are dropped.
+    void evaluate(Tick t, PoseSet& out);
+    /// How many times evaluate() ran.
+    std::uint64_t ticks() const;
+
+private:
+    /// An action that plays or played: live (in `live` for Normalized actions, in `layered` for
+    /// the others) or authored (in a layer). A live action dropped once finished keeps its end.
+    struct Activation {
+        anim::BlendingSchedule* schedule = nullptr; // null once dropped
+        anim::ActionId id = 0;
+        double start = 0, end = 0;                  // seconds; `end` is kept when dropped
+        double endTime() const { return schedule ? schedule->endTime(id) : end; }
+        bool finished(double t) const { return !schedule || schedule->isFinished(id, t); }
+    };
+    class HeldFrame;
+    struct TrackState {
+        std::shared_ptr<const anim::BlendingSchedule> authored; // null: nothing authored
+        std::vector<std::shared_ptr<anim::BlendingSchedule>> authoredLayers;
+        std::shared_ptr<anim::BlendingSchedule> synthesizers; // 1. open-ended, Normalized
+        std::shared_ptr<anim::BlendingSchedule> live;         // 3. live Normalized actions
+        std::shared_ptr<anim::BlendingSchedule> layered;      // 4. what plays below, then live layered actions
+        std::shared_ptr<HeldFrame> below;                     // the frame of 1–3, played first in `layered`
+        std::map<std::string, ActionTemplate> library;
+        std::map<std::string, Activation> latest; // by action name
+        std::vector<Activation> superseded;       // earlier activations still playing
+        std::map<std::string, anim::ActionId> synthSlots;
+        int liveCount = 0, layeredCount = 0;     // live actions in `live` and `layered`
+        std::vector<float> scratch, coverage;    // a frame and its coverage, for 2 and 3
+    };
+    struct Performer {
+        std::string name;
+        TrackState body, face;
+    };
+
+    Result<void> initPerformer(Performer& performer, const anim::Skeleton& skeleton,
+                               std::shared_ptr<const anim::BlendingSchedule> body,
+                               std::shared_ptr<const anim::BlendingSchedule> face);
+    Result<Performer*> find(const std::string& character);
+    Result<const Performer*> find(const std::string& character) const;
+    static TrackState& state(Performer& performer, Track track);
+    static const TrackState& state(const Performer& performer, Track track);
+    /// The live activation, else the authored action of that name (latest started by `at`).
+    std::optional<Activation> lookUp(const TrackState& track, const std::string& action, Tick at) const;
+    static void drop(TrackState& track, Activation& activation);
+    static void dropFinished(TrackState& track, double seconds);
+    void evaluateTrack(TrackState& track, double seconds, std::vector<float>& out) const;
+
+    mutable std::mutex m_mutex;
+    std::shared_ptr<const anim::FrameBlender> m_blender = anim::defaultBlender();
+    scenario::ScenarioRuntime m_runtime;
+    std::vector<Performer> m_performers;
+    std::vector<Activation> m_authoredCuts; // authored actions cut off live (resetLive restores them)
+    bool m_bodyEnabled = true, m_faceEnabled = true;
+    std::uint64_t m_ticks = 0;
+};
+
+} // namespace thespis::core::runtime

@@ -1,0 +1,86 @@
+// The live runtime's tick (core/runtime/stage.h).
+//
+// StageTick/C: C characters on H-Anim 25-joint bodies, each with 4 authored actions (2 s
+//   keyframed clips with cubic fades, looping over their domain) and one live action activated
+//   at run time (so every character plays through the stage's live path); one Stage::evaluate
+//   per iteration at a new time. Reports ns per character per tick and allocations per tick.
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include "allocation_counter.h"
+#include "anim/hanim.h"
+#include "anim/keyframe_clip.h"
+#include "runtime/stage.h"
+
+using namespace thespis::core;
+using namespace thespis::core::anim;
+
+namespace {
+
+std::shared_ptr<KeyframeClip> randomWalkClip(const Skeleton& skeleton, std::mt19937& rng)
+{
+    const FrameLayoutPtr& layout = skeleton.frameLayout();
+    std::normal_distribution<float> gaussian;
+    std::vector<float> data;
+    std::vector<Quat> previous(std::size_t(layout->rotationCount()), Quat{0, 0, 0, 1});
+    for (int k = 0; k < 61; ++k) { // 2 s at 30 keys/s
+        for (auto& q : previous) {
+            q = normalize(q * normalize(Quat{0.03f * gaussian(rng), 0.03f * gaussian(rng), 0.03f * gaussian(rng), 1.0f}));
+            data.insert(data.end(), {q.x, q.y, q.z, q.w});
+        }
+        for (int t = 0; t < layout->translationCount(); ++t)
+            data.insert(data.end(), {0.01f * float(k), 0.95f, 0.0f});
+    }
+    return std::move(KeyframeClip::create(layout, 30.0, std::move(data))).value();
+}
+
+void StageTick(benchmark::State& state)
+{
+    const int characters = int(state.range(0));
+    const Skeleton& skeleton = hanim::skeleton(hanim::Level::Subset25);
+    std::mt19937 rng(11);
+    scenario::ScenarioRuntime runtime;
+    for (int c = 0; c < characters; ++c) {
+        scenario::CharacterRuntime character;
+        character.name = "character" + std::to_string(c);
+        character.skeleton = skeleton;
+        character.body = std::make_shared<BlendingSchedule>(skeleton);
+        character.face = std::make_shared<BlendingSchedule>(FrameLayout::mpeg4Face());
+        for (int a = 0; a < 4; ++a) {
+            BlendingAction action;
+            action.name = "action" + std::to_string(a);
+            action.source = randomWalkClip(skeleton, rng);
+            action.params.weight = Curve::cubicFade(0.5, 0.5);
+            action.start = 0.3 * a;
+            action.renderOutsideDomain = true;
+            (void)character.body->addAction(std::move(action));
+        }
+        character.clips["gesture"] = randomWalkClip(skeleton, rng);
+        runtime.characters.push_back(std::move(character));
+    }
+    runtime::Stage stage(std::move(runtime));
+    for (int c = 0; c < characters; ++c) {
+        auto made = stage.defineAction("character" + std::to_string(c), runtime::Track::Body, "gesture",
+                                       {stage.runtime().characters[std::size_t(c)].clips.at("gesture"), {}, true});
+        (void)made;
+        (void)stage.activateAction("character" + std::to_string(c), runtime::Track::Body, "gesture", secondsToTicks(0.1));
+    }
+    runtime::PoseSet poses = stage.makePoseSet();
+    Tick t = secondsToTicks(1.0);
+    const Tick step = ticksPerFrame(60);
+    stage.evaluate(t, poses);
+    const long before = thespis::test::allocationCount();
+    for (auto _ : state) {
+        t += step;
+        stage.evaluate(t, poses);
+        benchmark::DoNotOptimize(poses.characters.back().body.data());
+    }
+    state.counters["ns/character"] = benchmark::Counter(double(characters) * double(state.iterations()),
+                                                        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["allocs/tick"] = double(thespis::test::allocationCount() - before) / double(state.iterations());
+}
+
+} // namespace
+
+BENCHMARK(StageTick)->Arg(2)->Arg(10)->Arg(100);

@@ -1,0 +1,334 @@
+// The live runtime (core/runtime): Stage semantics, the animation service's waits, the clocks
+// and the threaded Player, on the demo scenario and on real CMU captures.
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "anim/bvh.h"
+#include "runtime/animation_service.h"
+#include "runtime/player.h"
+#include "runtime/stage.h"
+#include "scenario/scenario_io.h"
+#include "anim_test_support.h"
+#include "test_support.h"
+
+namespace thespis::test {
+namespace {
+
+using core::Tick;
+using core::secondsToTicks;
+using namespace core::runtime;
+
+std::shared_ptr<Stage> demoStage()
+{
+    auto scenario = core::scenario::loadScenario(resources("demo.thespis"));
+    EXPECT_TRUE(scenario) << core::describe(scenario.error());
+    auto runtime = core::scenario::buildRuntime(*scenario, resources());
+    EXPECT_TRUE(runtime) << core::describe(runtime.error());
+    return std::make_shared<Stage>(std::move(runtime).value());
+}
+
+/// Largest angle (radians) between the rotations of two frames of `layout`.
+double maxAngle(const FrameLayout& layout, std::span<const float> a, std::span<const float> b)
+{
+    double worst = 0;
+    for (int r = 0; r < layout.rotationCount(); ++r) {
+        const std::size_t o = std::size_t(r) * 4;
+        worst = std::max(worst, angle(Quat{a[o], a[o + 1], a[o + 2], a[o + 3]}, Quat{b[o], b[o + 1], b[o + 2], b[o + 3]}));
+    }
+    return worst;
+}
+
+std::vector<float> authoredBody(const Stage& stage, int character, double seconds)
+{
+    const auto& runtime = stage.runtime().characters[std::size_t(character)];
+    std::vector<float> frame = runtime.skeleton.restFrame();
+    runtime.body->evaluate(seconds, frame);
+    return frame;
+}
+
+TEST(Stage, WithNothingLiveItPlaysTheAuthoredSchedulesExactly)
+{
+    auto stage = demoStage();
+    PoseSet poses = stage->makePoseSet();
+    ASSERT_EQ(poses.characters.size(), 2u);
+    for (const double t : {0.0, 0.7, 1.9, 3.3, 6.0}) {
+        stage->evaluate(secondsToTicks(t), poses);
+        for (int c = 0; c < 2; ++c)
+            EXPECT_EQ(poses.characters[std::size_t(c)].body, authoredBody(*stage, c, t)) << "t = " << t;
+    }
+    // The face track is played too (Creon blinks).
+    const auto& face = stage->runtime().characters[0].face;
+    std::vector<float> expected = neutralFrame(*FrameLayout::mpeg4Face());
+    face->evaluate(2.0, expected);
+    stage->evaluate(secondsToTicks(2.0), poses);
+    EXPECT_EQ(poses.characters[0].face, expected);
+}
+
+TEST(Stage, ALiveActionFadesInOverWhatPlaysWithoutAJump)
+{
+    auto stage = demoStage();
+    const auto& creon = stage->runtime().characters[0];
+    const FrameLayout& layout = *creon.skeleton.frameLayout();
+    PoseSet poses = stage->makePoseSet();
+    const Tick at = secondsToTicks(2.5);
+    ASSERT_TRUE(stage->activateAction("Creon", Track::Body, "nod", at)); // a clip: constant weight
+    // At the moment it starts, the pose is what was playing; a frame later it has barely moved.
+    stage->evaluate(at, poses);
+    EXPECT_LT(maxAngle(layout, poses.characters[0].body, authoredBody(*stage, 0, 2.5)), 1e-4);
+    // A frame later it has moved by the fade's first step (cubic over 0.25 s: 1.3 %) of the
+    // way to the clip, not more.
+    stage->evaluate(at + core::ticksPerFrame(60), poses);
+    const std::vector<float> before = authoredBody(*stage, 0, 2.5 + 1.0 / 60);
+    std::vector<float> nod = creon.skeleton.restFrame();
+    creon.clips.at("nod")->evaluate(1.0 / 60, nod);
+    EXPECT_LT(maxAngle(layout, poses.characters[0].body, before), 0.015 * maxAngle(layout, nod, before));
+    // Once faded in (0.25 s), the live clip has taken over entirely.
+    creon.clips.at("nod")->evaluate(0.5, nod);
+    stage->evaluate(at + secondsToTicks(0.5), poses);
+    EXPECT_LT(maxAngle(layout, poses.characters[0].body, nod), 1e-4);
+    EXPECT_GT(maxAngle(layout, authoredBody(*stage, 0, 3.0), nod), 0.05) << "the test needs a visible difference";
+    // Antigone is untouched.
+    EXPECT_EQ(poses.characters[1].body, authoredBody(*stage, 1, 3.0));
+}
+
+TEST(Stage, CutOffInTheMiddleOfAFadeInEndsAfterItsFade)
+{
+    auto stage = demoStage();
+    ActivateOptions slow;
+    slow.weight = Curve::cubicFade(1.0, 0.0);
+    ASSERT_TRUE(stage->activateAction("Creon", Track::Body, "nod", secondsToTicks(1.0), slow));
+    ASSERT_TRUE(*stage->cutOffAction("Creon", Track::Body, "nod", secondsToTicks(1.5), 0.5));
+    EXPECT_DOUBLE_EQ(*stage->actionEnd("Creon", Track::Body, "nod"), 2.0);
+    EXPECT_TRUE(*stage->isPlaying("Creon", Track::Body, "nod", secondsToTicks(1.9)));
+    EXPECT_FALSE(*stage->isPlaying("Creon", Track::Body, "nod", secondsToTicks(2.0)));
+    EXPECT_DOUBLE_EQ(*stage->timeUntilFinished("Creon", Track::Body, "nod", secondsToTicks(1.75)), 0.25);
+    PoseSet poses = stage->makePoseSet();
+    stage->evaluate(secondsToTicks(2.0), poses);
+    EXPECT_EQ(poses.characters[0].body, authoredBody(*stage, 0, 2.0)); // gone: exactly the authored pose
+    // Nothing left to cut.
+    EXPECT_FALSE(*stage->cutOffAction("Creon", Track::Body, "nod", secondsToTicks(2.5), 0.5));
+}
+
+TEST(Stage, RemoveEndsALiveActionAtOnce)
+{
+    auto stage = demoStage();
+    ASSERT_TRUE(stage->activateAction("Creon", Track::Body, "nod", 0, {.fadeIn = 0}));
+    EXPECT_TRUE(*stage->removeAction("Creon", Track::Body, "nod"));
+    EXPECT_FALSE(*stage->removeAction("Creon", Track::Body, "nod"));
+    PoseSet poses = stage->makePoseSet();
+    stage->evaluate(secondsToTicks(0.4), poses);
+    EXPECT_EQ(poses.characters[0].body, authoredBody(*stage, 0, 0.4));
+}
+
+TEST(Stage, ALiveGestureWithAMaskMovesOnlyItsJoints)
+{
+    // creon_wave is an Override action on the right arm: live, it plays over the idle.
+    auto stage = demoStage();
+    const auto& creon = stage->runtime().characters[0];
+    const FrameLayout& layout = *creon.skeleton.frameLayout();
+    const double start = 6.0; // after the authored wave
+    ASSERT_TRUE(stage->activateAction("Creon", Track::Body, "creon_wave", secondsToTicks(start)));
+    PoseSet poses = stage->makePoseSet();
+    stage->evaluate(secondsToTicks(start + 1.0), poses);
+    const std::vector<float> idle = authoredBody(*stage, 0, start + 1.0);
+    const int elbow = layout.find("r_elbow", ElementKind::Rotation), knee = layout.find("l_knee", ElementKind::Rotation);
+    ASSERT_GE(elbow, 0);
+    ASSERT_GE(knee, 0);
+    const auto rotation = [](std::span<const float> f, int r) {
+        return Quat{f[std::size_t(r) * 4], f[std::size_t(r) * 4 + 1], f[std::size_t(r) * 4 + 2], f[std::size_t(r) * 4 + 3]};
+    };
+    EXPECT_GT(angle(rotation(poses.characters[0].body, elbow), rotation(idle, elbow)), 0.1);
+    EXPECT_LT(angle(rotation(poses.characters[0].body, knee), rotation(idle, knee)), 1e-5);
+}
+
+TEST(Stage, CuttingOffAnAuthoredActionIsUndoneByAReset)
+{
+    auto stage = demoStage();
+    const std::vector<float> uncut = authoredBody(*stage, 1, 3.0);
+    ASSERT_TRUE(*stage->cutOffAction("Antigone", Track::Body, "antigone_idle", secondsToTicks(1.0), 1.0));
+    PoseSet poses = stage->makePoseSet();
+    stage->evaluate(secondsToTicks(3.0), poses);
+    EXPECT_NE(poses.characters[1].body, uncut);
+    EXPECT_FALSE(*stage->isPlaying("Antigone", Track::Body, "antigone_idle", secondsToTicks(2.5)));
+    stage->resetLive();
+    EXPECT_TRUE(*stage->isPlaying("Antigone", Track::Body, "antigone_idle", secondsToTicks(2.5)));
+    stage->evaluate(secondsToTicks(3.0), poses);
+    EXPECT_EQ(poses.characters[1].body, uncut);
+}
+
+TEST(Stage, UnknownNamesAreNamedWithTheKnownOnes)
+{
+    auto stage = demoStage();
+    auto noCharacter = stage->activateAction("Ismene", Track::Body, "nod", 0);
+    ASSERT_FALSE(noCharacter);
+    EXPECT_EQ(noCharacter.error().code, core::ErrorCode::NotFound);
+    EXPECT_NE(noCharacter.error().message.find("Ismene"), std::string::npos);
+    EXPECT_NE(noCharacter.error().message.find("Creon, Antigone"), std::string::npos);
+    auto noAction = stage->activateAction("Creon", Track::Body, "dance", 0);
+    ASSERT_FALSE(noAction);
+    EXPECT_NE(noAction.error().message.find("dance"), std::string::npos);
+    EXPECT_NE(noAction.error().message.find("creon_idle"), std::string::npos);
+    EXPECT_NE(noAction.error().message.find("nod"), std::string::npos);
+    auto neverPlayed = stage->actionEnd("Creon", Track::Body, "nod");
+    ASSERT_FALSE(neverPlayed);
+}
+
+TEST(Stage, AFaceTrackTurnedOffStaysNeutral)
+{
+    auto stage = demoStage();
+    stage->setTrackEnabled(Track::Face, false);
+    PoseSet poses = stage->makePoseSet();
+    stage->evaluate(secondsToTicks(2.0), poses);
+    EXPECT_EQ(poses.characters[0].face, neutralFrame(*FrameLayout::mpeg4Face()));
+}
+
+/// A blendable that counts its evaluations.
+class CountingClip final : public BlendableObject {
+public:
+    explicit CountingClip(std::shared_ptr<const KeyframeClip> clip) : m_clip(std::move(clip)) {}
+    const FrameLayoutPtr& layout() const override { return m_clip->layout(); }
+    TimeDomain domain() const override { return m_clip->domain(); }
+    void evaluate(double t, std::span<float> out) const override
+    {
+        ++count;
+        m_clip->evaluate(t, out);
+    }
+    mutable std::atomic<int> count{0};
+
+private:
+    std::shared_ptr<const KeyframeClip> m_clip;
+};
+
+TEST(Stage, EverySourceIsEvaluatedOncePerTick)
+{
+    auto walk = core::anim::bvh::load(sharedData("mocap/cmu/02_01.bvh"));
+    ASSERT_TRUE(walk) << core::describe(walk.error());
+    core::scenario::ScenarioRuntime runtime;
+    core::scenario::CharacterRuntime performer;
+    performer.name = "Walker";
+    performer.skeleton = walk->skeleton;
+    performer.body = std::make_shared<BlendingSchedule>(walk->skeleton);
+    performer.face = std::make_shared<BlendingSchedule>(FrameLayout::mpeg4Face());
+    auto authored = std::make_shared<CountingClip>(walk->clip);
+    BlendingAction action;
+    action.source = authored;
+    action.renderOutsideDomain = true;
+    ASSERT_TRUE(performer.body->addAction(action));
+    runtime.characters.push_back(std::move(performer));
+    Stage stage(std::move(runtime));
+    auto live = std::make_shared<CountingClip>(walk->clip);
+    ASSERT_TRUE(stage.defineAction("Walker", Track::Body, "walk", {live, {}, true}));
+    ASSERT_TRUE(stage.activateAction("Walker", Track::Body, "walk", secondsToTicks(0.5)));
+    PoseSet poses = stage.makePoseSet();
+    for (int f = 0; f < 120; ++f)
+        stage.evaluate(f * core::ticksPerFrame(60), poses);
+    EXPECT_EQ(authored->count, 120);
+    EXPECT_EQ(live->count, 120 - 30); // from 0.5 s on
+    EXPECT_EQ(stage.ticks(), 120u);
+}
+
+TEST(AnimationService, WaitsUntilSecondsBeforeTheEndOnAManualClock)
+{
+    auto stage = demoStage();
+    auto clock = std::make_shared<ManualClock>();
+    std::vector<std::pair<Tick, Tick>> jumps;
+    clock->setJumpHook([&](Tick from, Tick to) {
+        jumps.emplace_back(from, to);
+        return true;
+    });
+    AnimationService anim(stage, clock);
+    ASSERT_TRUE(clock->advance(secondsToTicks(1.0)));
+    ASSERT_TRUE(anim.activateAction("Creon", Track::Body, "creon_wave"));
+    const double waveLength = stage->runtime().characters[0].clips.at("wave")->domain().duration();
+    auto reached = anim.waitUntilActionFinished("Creon", Track::Body, "creon_wave", -1.0);
+    ASSERT_TRUE(reached) << core::describe(reached.error());
+    EXPECT_EQ(*reached, secondsToTicks(1.0 + waveLength - 1.0));
+    EXPECT_EQ(clock->now(), *reached);
+    ASSERT_EQ(jumps.size(), 2u);
+    EXPECT_EQ(jumps[1], std::make_pair(secondsToTicks(1.0), *reached));
+    EXPECT_TRUE(*anim.isPlaying("Creon", Track::Body, "creon_wave"));
+    // A looping idle never ends: waiting for it is refused with a reason.
+    ASSERT_TRUE(anim.activateAction("Creon", Track::Body, "creon_idle"));
+    auto never = anim.waitUntilActionFinished("Creon", Track::Body, "creon_idle", 0.0);
+    ASSERT_FALSE(never);
+    EXPECT_NE(never.error().message.find("never ends"), std::string::npos);
+}
+
+TEST(AnimationService, StopEndsAWaitInProgress)
+{
+    auto stage = demoStage();
+    auto clock = std::make_shared<ExternalClock>();
+    AnimationService anim(stage, clock);
+    std::jthread stopper([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        anim.requestStop();
+    });
+    auto waited = anim.wait(3600.0);
+    ASSERT_FALSE(waited);
+    EXPECT_EQ(waited.error().code, core::ErrorCode::Cancelled);
+}
+
+TEST(Clock, ExternalClockWakesWaitsItReaches)
+{
+    ExternalClock clock;
+    std::atomic<bool> woke = false;
+    std::jthread waiter([&] { woke = clock.waitUntil(secondsToTicks(2.0), {}); });
+    clock.setTime(secondsToTicks(1.0));
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    EXPECT_FALSE(woke);
+    clock.setTime(secondsToTicks(2.0));
+    waiter.join();
+    EXPECT_TRUE(woke);
+    EXPECT_FALSE(clock.waitUntil(secondsToTicks(3.0), {}, std::chrono::milliseconds(5)));
+}
+
+TEST(Clock, RealTimeClockMovesOnAndWaits)
+{
+    RealTimeClock clock(secondsToTicks(10.0));
+    const Tick start = clock.now();
+    EXPECT_GE(start, secondsToTicks(10.0));
+    EXPECT_TRUE(clock.waitUntil(start + secondsToTicks(0.02), {}));
+    EXPECT_GE(clock.now(), start + secondsToTicks(0.02));
+    std::stop_source stop;
+    stop.request_stop();
+    EXPECT_FALSE(clock.waitUntil(start + secondsToTicks(100.0), stop.get_token()));
+}
+
+TEST(Player, ThreadedPosesEqualManualOnesAtTheSameTicks)
+{
+    auto threaded = demoStage();
+    auto manual = demoStage();
+    auto clock = std::make_shared<ExternalClock>();
+    Player player(threaded, clock, {.rate = 500});
+    player.start();
+    PoseSet expected = manual->makePoseSet(), published = threaded->makePoseSet();
+    std::uint64_t seen = 0;
+    for (int step = 0; step <= 40; ++step) {
+        const Tick t = secondsToTicks(0.15 * step);
+        if (step == 10) { // a live action, activated on both at the same tick
+            ASSERT_TRUE(threaded->activateAction("Antigone", Track::Body, "nod", t));
+            ASSERT_TRUE(manual->activateAction("Antigone", Track::Body, "nod", t));
+        }
+        clock->setTime(t);
+        // Wait for a pose set of this tick (the player may publish the previous one first).
+        do {
+            seen = player.mailbox().waitNewer(seen, std::chrono::seconds(5));
+            ASSERT_GT(player.mailbox().takeNewer(published, 0), 0u);
+        } while (published.time != t);
+        manual->evaluate(t, expected);
+        for (std::size_t c = 0; c < expected.characters.size(); ++c) {
+            EXPECT_EQ(published.characters[c].body, expected.characters[c].body) << "t = " << t;
+            EXPECT_EQ(published.characters[c].face, expected.characters[c].face) << "t = " << t;
+        }
+    }
+    player.stop();
+    EXPECT_FALSE(player.isRunning());
+}
+
+} // namespace
+} // namespace thespis::test
