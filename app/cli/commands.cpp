@@ -15,6 +15,9 @@ const std::vector<Command>& commands()
         {bakeMotionSpec(), &runBakeMotion},
         {bakeSpec(), &runBake},
         {renderSpec(), &runRender},
+#ifdef THESPIS_WITH_PYTHON
+        {runSpec(), &runRun},
+#endif
         {infoSpec(), &runInfo},
     };
     return all;

@@ -32,6 +32,10 @@ CommandSpec renderSpec();
 int runRender(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec infoSpec();
 int runInfo(const CommandSpec& spec, const ParsedArguments& arguments);
+#ifdef THESPIS_WITH_PYTHON
+CommandSpec runSpec();
+int runRun(const CommandSpec& spec, const ParsedArguments& arguments);
+#endif
 
 // Shared helpers.
 

@@ -121,6 +121,9 @@ auto withoutGil(Work&& work)
     return work();
 }
 
+/// Fills the `_thespis` module (module.cpp's extension and the embedded one).
+void defineModule(py::module_& m);
+
 void bindErrors(py::module_& m);
 void bindFrames(py::module_& m); // FrameLayout, TimeDomain, Blendable (bind_anim.cpp)
 void bindAnim(py::module_& m);   // curves, masks, clips, modifiers, schedules

@@ -196,7 +196,29 @@ void bindRuntime(py::module_& m)
                 c.advance(secondsToTicks(seconds));
                 return ticksToSeconds(c.now());
             },
-            "seconds"_a, "Moves forward; returns the new time.");
+            "seconds"_a, "Moves forward; returns the new time.")
+        .def(
+            "set_jump_hook",
+            [](ManualClock& c, py::object hook) {
+                if (hook.is_none()) {
+                    c.setJumpHook({});
+                    return;
+                }
+                // Called by waits (GIL released) before each jump; False or an exception stops the wait.
+                c.setJumpHook([hook = std::make_shared<py::object>(std::move(hook))](core::Tick from, core::Tick to) {
+                    py::gil_scoped_acquire gil;
+                    try {
+                        const py::object keep = (*hook)(ticksToSeconds(from), ticksToSeconds(to));
+                        return keep.is_none() || keep.cast<bool>();
+                    } catch (py::error_already_set& error) {
+                        error.discard_as_unraisable("thespis.ManualClock jump hook");
+                        return false;
+                    }
+                });
+            },
+            "hook"_a,
+            "hook(from_seconds, to_seconds) is called before each jump forward (e.g. to record or render what "
+            "happens in between); returning False stops the wait. None removes it.");
     py::class_<RealTimeClock, Clock, std::shared_ptr<RealTimeClock>>(r, "RealTimeClock",
                                                                       "Wall-clock seconds since it was made.")
         .def(py::init([](double start) { return std::make_shared<RealTimeClock>(secondsToTicks(start)); }),

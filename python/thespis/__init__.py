@@ -21,7 +21,13 @@ not our format, malformed data naming the line or field, or a newer version), ``
 
 import sys as _sys
 
-from . import _thespis
+# Inside the studio or `thespis-cli run`, the compiled module is built into the program.
+if "_thespis" in _sys.builtin_module_names:
+    import _thespis
+
+    _sys.modules[__name__ + "._thespis"] = _thespis
+else:
+    from . import _thespis
 from ._thespis import *  # noqa: F401,F403  (the public API is the compiled module's)
 from ._thespis import __version__, bvh, edit, hanim, lighting, render, runtime, scene  # noqa: F401
 from ._thespis import Cancelled, FormatError  # noqa: F401

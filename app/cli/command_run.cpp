@@ -1,0 +1,168 @@
+// thespis-cli run: plays a scenario with a Python script (the paper's §4.5 scripts) headless.
+// The script runs on a manual clock: each of its waits jumps the clock forward, and every frame
+// of --frames that falls in the jump is rendered first, so the pictures show the scenario and
+// the script's live actions exactly as a player at those times would.
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "cancel.h"
+#include "commands.h"
+#include "exit_codes.h"
+#include "progress.h"
+#include "runtime/animation_service.h"
+#include "scenario/scenario_runtime.h"
+#include "scene_render.h"
+#include "script_runner.h"
+
+namespace thespis::cli {
+
+CommandSpec runSpec()
+{
+    CommandSpec spec;
+    spec.name = "run";
+    spec.summary = "Play a scenario with a Python script (animService, as in the paper), rendering frames headless.";
+    spec.positionals = {"SCENARIO"};
+    spec.options = {
+        {"script", "S.py", "the script to run: it sees `animService` (also `anim`) and `thespis`", true},
+        {"frames", "A:B", "render frames A to B (inclusive) at --fps into --out while the script plays"},
+        {"out", "DIR/", "the folder of the frames (frame_NNNNN.png)"},
+        {"fps", "N", "frame rate of --frames (default 30)"},
+    };
+    for (OptionSpec& option : pictureOptions())
+        spec.options.push_back(std::move(option));
+    spec.options.push_back({"quiet", "", "no progress and no summary"});
+    spec.description =
+        "Time is simulated: a wait in the script (waitUntilActionFinished_body, wait) moves the clock at once,\n"
+        "after the frames up to that time are rendered; frames after the script's end show what it left playing.\n"
+        "Without --frames the script just runs (its prints go to the terminal).\n"
+        "Exit status: 0 done, 2 bad command line, 3 unreadable scenario or script, or the script raised\n"
+        "(its traceback is printed), 4 a frame could not be written, 130 cancelled.";
+    return spec;
+}
+
+int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
+{
+    const std::filesystem::path scenarioPath = arguments.positionals[0];
+    const std::filesystem::path scriptPath = *arguments.value("script");
+    const bool quiet = arguments.has("quiet");
+    int exitCode = ExitOk;
+    std::optional<FrameRange> frames;
+    if (const auto text = arguments.value("frames")) {
+        frames = parseFrameRange(*text);
+        if (!frames)
+            return usageError(spec, "--frames must be FIRST:LAST frame numbers (0 ≤ FIRST ≤ LAST), not '" + *text + "'");
+        if (!arguments.has("out"))
+            return usageError(spec, "--frames needs --out DIR/");
+    } else if (arguments.has("out") || arguments.has("fps")) {
+        return usageError(spec, "--out and --fps need --frames");
+    }
+    const auto fps = frameRateOption(spec, arguments, exitCode);
+    if (exitCode != ExitOk)
+        return exitCode;
+
+    std::ifstream file(scriptPath, std::ios::binary);
+    if (!file) {
+        printError(spec.name, "cannot read the script " + scriptPath.string() + ".");
+        return ExitInvalidInput;
+    }
+    std::ostringstream source;
+    source << file.rdbuf();
+
+    // The stage: the rendered scene's, or one of its own when nothing is rendered.
+    SceneRender picture;
+    std::shared_ptr<core::runtime::Stage> stage;
+    std::filesystem::path outDir;
+    if (frames) {
+        outDir = *arguments.value("out");
+        if (std::error_code ec; !std::filesystem::is_directory(outDir, ec) && !std::filesystem::create_directories(outDir, ec)) {
+            printError(spec.name, "cannot create the folder " + outDir.string() + ": " + ec.message() + ".");
+            return ExitFailure;
+        }
+        if (const int status = prepareSceneRender(spec, arguments, scenarioPath, quiet, picture); status != ExitOk)
+            return status;
+        stage = picture.scene->sharedStage();
+    } else {
+        const auto document = loadScenarioReporting(spec.name, scenarioPath);
+        if (!document)
+            return ExitInvalidInput;
+        auto runtime = core::scenario::buildRuntime(*document, scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path());
+        if (!runtime) {
+            printError(spec.name, runtime.error());
+            return ExitInvalidInput;
+        }
+        stage = std::make_shared<core::runtime::Stage>(std::move(runtime).value());
+    }
+
+    installInterruptHandlers();
+    script::ScriptRunner runner;
+    auto clock = std::make_shared<core::runtime::ManualClock>();
+    auto service = std::make_shared<core::runtime::AnimationService>(stage, clock);
+    const long count = frames ? frames->last - frames->first + 1 : 0;
+    ProgressReporter progress(stderr, "run", "frames", count, quiet || !frames);
+    long next = frames ? frames->first : 0;
+    int renderStatus = ExitOk;
+    // Renders every frame before `until` (all that are left when until is max).
+    const auto renderUntil = [&](core::Tick until) {
+        for (; frames && next <= frames->last; ++next) {
+            const double seconds = double(next) / *fps;
+            if (core::secondsToTicks(seconds) >= until || interrupted())
+                break;
+            picture.scene->setTime(seconds);
+            renderStatus = picture.write(spec.name, outDir / frameFileName(next));
+            if (renderStatus != ExitOk)
+                return false;
+            progress.update(next - frames->first + 1);
+        }
+        return !interrupted();
+    };
+    clock->setJumpHook([&](core::Tick, core::Tick to) {
+        if (renderUntil(to))
+            return true;
+        runner.stop();
+        return false;
+    });
+    // Ctrl-C also ends a script that computes without waiting.
+    std::jthread watcher([&](std::stop_token stop) {
+        while (!stop.stop_requested() && !interrupted())
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        if (interrupted())
+            runner.stop();
+    });
+    // Unbuffered, so that a script's prints show as they happen, also through a pipe.
+    const auto sink = [](script::Stream stream, std::string_view text) {
+        std::FILE* out = stream == script::Stream::Out ? stdout : stderr;
+        std::fwrite(text.data(), 1, text.size(), out);
+        std::fflush(out);
+    };
+    auto ran = runner.run(source.str(), scriptPath.filename().string(), service, sink);
+    watcher.request_stop();
+    if (ran && renderStatus == ExitOk)
+        renderUntil(std::numeric_limits<core::Tick>::max());
+    if (renderStatus != ExitOk) {
+        progress.abandon();
+        return renderStatus;
+    }
+    if (interrupted() || (!ran && ran.error().code == core::ErrorCode::Cancelled)) {
+        progress.abandon();
+        std::fprintf(stderr, "thespis-cli run: cancelled%s.\n",
+                     frames ? (" after " + std::to_string(next - frames->first) + " of " + std::to_string(count) + " frames").c_str() : "");
+        return ExitCancelled;
+    }
+    if (!ran) {
+        progress.abandon();
+        printError(spec.name, ran.error().message);
+        return ExitInvalidInput;
+    }
+    progress.finish();
+    if (!quiet)
+        std::printf("Ran %s on %s: the script ended at %.3f s%s.\n", scriptPath.filename().string().c_str(),
+                    scenarioPath.filename().string().c_str(), core::ticksToSeconds(clock->now()),
+                    frames ? (", " + std::to_string(count) + " frames rendered into " + outDir.string()).c_str() : "");
+    return ExitOk;
+}
+
+} // namespace thespis::cli

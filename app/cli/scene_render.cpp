@@ -1,0 +1,187 @@
+#include "scene_render.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "commands.h"
+#include "exit_codes.h"
+#include "lighting/transfer_bake.h"
+
+namespace thespis::cli {
+namespace {
+
+namespace render = core::render;
+
+struct Size {
+    int width = 1280, height = 720;
+};
+
+std::optional<Size> parseSize(const std::string& text)
+{
+    const auto x = text.find('x');
+    if (x == std::string::npos)
+        return std::nullopt;
+    const auto width = parseNumber(std::string_view(text).substr(0, x));
+    const auto height = parseNumber(std::string_view(text).substr(x + 1));
+    if (!width || !height || *width != std::floor(*width) || *height != std::floor(*height) || *width < 1 ||
+        *height < 1 || *width > 16384 || *height > 16384)
+        return std::nullopt;
+    return Size{int(*width), int(*height)};
+}
+
+std::optional<double> angleOption(const CommandSpec& spec, const ParsedArguments& arguments, const std::string& name,
+                                  double fallback, int& exitCode)
+{
+    const auto text = arguments.value(name);
+    if (!text)
+        return fallback;
+    const auto value = parseNumber(*text);
+    if (!value || !std::isfinite(*value) || std::abs(*value) > 360) {
+        exitCode = usageError(spec, "--" + name + " must be an angle in degrees (−360 to 360), not '" + *text + "'");
+        return std::nullopt;
+    }
+    return *value;
+}
+
+} // namespace
+
+std::optional<FrameRange> parseFrameRange(const std::string& text)
+{
+    const auto colon = text.find(':');
+    if (colon == std::string::npos)
+        return std::nullopt;
+    const auto first = parseNumber(std::string_view(text).substr(0, colon));
+    const auto last = parseNumber(std::string_view(text).substr(colon + 1));
+    if (!first || !last || *first != std::floor(*first) || *last != std::floor(*last) || *first < 0 || *last < *first ||
+        *last > 10'000'000)
+        return std::nullopt;
+    return FrameRange{long(*first), long(*last)};
+}
+
+std::optional<double> frameRateOption(const CommandSpec& spec, const ParsedArguments& arguments, int& exitCode)
+{
+    const auto text = arguments.value("fps");
+    if (!text)
+        return 30.0;
+    const auto value = parseNumber(*text);
+    if (!value || !(*value > 0) || *value > 1000) {
+        exitCode = usageError(spec, "--fps must be a frame rate above 0 (at most 1000), not '" + *text + "'");
+        return std::nullopt;
+    }
+    return *value;
+}
+
+std::vector<OptionSpec> pictureOptions()
+{
+    return {
+        {"size", "WxH", "picture size in pixels (default 1280x720)"},
+        {"shading", "prt|phong|unlit", "PRT lighting (paper §6), Phong for comparison, or albedo only (default prt)"},
+        {"bake", "FILE", "baked transfer (thespis-cli bake) for the character; without it PRT is unshadowed (DU)"},
+        {"character", "NAME", "the character --bake belongs to (needed when the scenario has several)"},
+        {"skinning", "lbs|dqs", "linear blend or dual-quaternion skinning (default lbs)"},
+        {"azimuth", "DEGREES", "camera direction around the vertical: 0 in front, 90 from the character's left (default 20)"},
+        {"elevation", "DEGREES", "camera height above the horizon (default 8)"},
+        {"no-ground", "", "leave out the ground disc"},
+        {"probe-background", "", "draw the scenario's light probe behind the characters"},
+        {"samples", "N", "multisampling samples per pixel (default 4, 0 for none)"},
+    };
+}
+
+int SceneRender::write(const std::string& command, const std::filesystem::path& file)
+{
+    if (auto drawn = renderer->render(scene->scene(), view, image); !drawn) {
+        printError(command, drawn.error());
+        return ExitFailure;
+    }
+    if (auto written = render::writePng(file, image); !written) {
+        printError(command, written.error());
+        return ExitFailure;
+    }
+    return ExitOk;
+}
+
+int prepareSceneRender(const CommandSpec& spec, const ParsedArguments& arguments,
+                       const std::filesystem::path& scenarioPath, bool quiet, SceneRender& out)
+{
+    int exitCode = ExitOk;
+    Size size;
+    if (const auto text = arguments.value("size")) {
+        const auto parsed = parseSize(*text);
+        if (!parsed)
+            return usageError(spec, "--size must be WIDTHxHEIGHT in pixels (1 to 16384 each), e.g. 1280x720, not '" + *text + "'");
+        size = *parsed;
+    }
+    const auto shading = choiceOption(spec, arguments, "shading", render::Shading::Prt, render::parseShading, exitCode);
+    const auto skinning = choiceOption(spec, arguments, "skinning", core::scene::SkinningMethod::Linear,
+                                       core::scene::parseSkinningMethod, exitCode);
+    const auto samples = integerOption(spec, arguments, "samples", 0, 16, exitCode).value_or(4);
+    const auto azimuth = angleOption(spec, arguments, "azimuth", 20.0, exitCode);
+    const auto elevation = angleOption(spec, arguments, "elevation", 8.0, exitCode);
+    if (exitCode != ExitOk)
+        return exitCode;
+    if (arguments.has("character") && !arguments.has("bake"))
+        return usageError(spec, "--character needs --bake");
+
+    const auto document = loadScenarioReporting(spec.name, scenarioPath);
+    if (!document)
+        return ExitInvalidInput;
+    render::ScenarioSceneOptions options;
+    options.skinning = *skinning;
+    options.probeBackground = arguments.has("probe-background");
+    if (const auto bakePath = arguments.value("bake")) {
+        std::string name;
+        if (const auto character = arguments.value("character")) {
+            name = *character;
+        } else if (document->characters.size() == 1) {
+            name = document->characters.front().name;
+        } else {
+            return usageError(spec, "the scenario has several characters; name the one --bake belongs to with --character");
+        }
+        if (!document->findCharacter(name)) {
+            printError(spec.name, "the scenario has no character named '" + name + "'.");
+            return ExitInvalidInput;
+        }
+        auto bake = core::lighting::readBakeFile(*bakePath);
+        if (!bake) {
+            printError(spec.name, bake.error());
+            return ExitInvalidInput;
+        }
+        options.bakes[name] = std::make_shared<const core::lighting::TransferBake>(std::move(bake).value());
+    }
+    const std::filesystem::path baseDir = scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path();
+    auto scenarioScene = render::ScenarioScene::create(*document, baseDir, options);
+    if (!scenarioScene) {
+        printError(spec.name, scenarioScene.error());
+        if (arguments.has("bake"))
+            std::fprintf(stderr, "thespis-cli %s: a bake fits a character's body when it was made with "
+                                 "'thespis-cli bake %s --character NAME'.\n", spec.name.c_str(), scenarioPath.string().c_str());
+        return ExitInvalidInput;
+    }
+    out.scene = std::move(scenarioScene).value();
+    if (!quiet)
+        for (const std::string& warning : out.scene->warnings())
+            std::fprintf(stderr, "thespis-cli %s: warning: %s\n", spec.name.c_str(), warning.c_str());
+    out.scene->scene().setShading(*shading);
+    out.scene->scene().setGroundVisible(!arguments.has("no-ground"));
+    auto renderer = render::OffscreenRenderer::create(size.width, size.height, int(samples));
+    if (!renderer) {
+        printError(spec.name, renderer.error());
+        return ExitFailure;
+    }
+    out.renderer = std::move(renderer).value();
+    out.width = size.width;
+    out.height = size.height;
+    out.shading = *shading;
+    out.view = render::frameBounds(out.scene->boundsOverTimeline(), *azimuth, *elevation,
+                                   double(size.width) / size.height);
+    return ExitOk;
+}
+
+std::string frameFileName(long frame)
+{
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05ld.png", frame);
+    return name;
+}
+
+} // namespace thespis::cli

@@ -1,0 +1,53 @@
+#pragma once
+// ScriptRunner: runs the paper's Python scripts (§4.5) inside the studio and `thespis-cli run`,
+// with the same `thespis` module python3 imports built in. A script sees `animService` (also
+// `anim`): the AnimationService of the stage it plays on, and `thespis`. Its output goes to a
+// sink (the studio's console, the terminal); an exception ends it with its traceback written
+// there and an error naming the file and line. stop(), from any thread, ends a running script:
+// its waits return at once and Python code gets KeyboardInterrupt.
+//
+// Python is started once per process, the first time a runner is made, and the GIL is released
+// so that any thread may run scripts (one at a time per runner).
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <string_view>
+
+#include "runtime/animation_service.h"
+#include "util/error.h"
+
+namespace thespis::script {
+
+enum class Stream { Out, Err };
+using OutputSink = std::function<void(Stream stream, std::string_view text)>;
+
+class ScriptRunner {
+public:
+    ScriptRunner();
+    ~ScriptRunner();
+    ScriptRunner(const ScriptRunner&) = delete;
+    ScriptRunner& operator=(const ScriptRunner&) = delete;
+
+    /// Runs `source` to its end in the calling thread. `fileName` names it in tracebacks.
+    /// Errors: the script raised (message "S.py, line N: NameError: …"), or was stopped
+    /// (Cancelled).
+    core::Result<void> run(const std::string& source, const std::string& fileName,
+                           std::shared_ptr<core::runtime::AnimationService> service, const OutputSink& sink);
+    /// Ends the script running in run(), if any (any thread).
+    void stop();
+    bool isRunning() const { return m_running; }
+
+private:
+    std::mutex m_mutex; // guards the service and thread id while a script starts or stops
+    std::shared_ptr<core::runtime::AnimationService> m_service;
+    unsigned long m_threadId = 0;
+    std::atomic<bool> m_running = false, m_stopping = false;
+};
+
+/// The Python version the program embeds ("3.11.2"); starts Python if needed.
+std::string pythonVersion();
+
+} // namespace thespis::script
