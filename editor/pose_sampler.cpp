@@ -60,6 +60,15 @@ void PoseSampler::sample(double seconds)
     computeWorldPositions();
 }
 
+void PoseSampler::setFrame(std::span<const float> frame)
+{
+    if (frame.size() != m_frame.size())
+        return;
+    std::copy(frame.begin(), frame.end(), m_frame.begin());
+    m_character->place(*m_character->skeleton.frameLayout(), m_frame);
+    computeWorldPositions();
+}
+
 void PoseSampler::computeWorldPositions()
 {
     m_character->skeleton.worldTransforms(m_frame, m_world, m_orientation);

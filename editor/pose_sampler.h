@@ -22,6 +22,10 @@ public:
 
     /// Evaluates the body schedule at `seconds` and updates positions(). No allocation.
     void sample(double seconds);
+    /// Takes a body frame evaluated elsewhere (a Stage's, on this skeleton's layout, before
+    /// placement) and updates positions(). Frames of another size are ignored. No allocation.
+    void setFrame(std::span<const float> frame);
+    const std::string& name() const { return m_character->name; }
     /// World position of every joint of the character's skeleton (skeleton units, H-Anim axes).
     std::span<const QVector3D> positions() const { return m_positions; }
     /// The last frame sampled (the skeleton's layout).

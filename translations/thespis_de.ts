@@ -643,6 +643,10 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
+    <message>
+        <source>Not found</source>
+        <translation>Nicht gefunden</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::GesticonModel</name>
@@ -1710,6 +1714,61 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
     </message>
 </context>
 <context>
+    <name>thespis::editor::ScriptPanel</name>
+    <message>
+        <source>What the script prints, and its errors, show here.</source>
+        <translation>Was das Skript ausgibt, und seine Fehler, erscheinen hier.</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Ausführen</translation>
+    </message>
+    <message>
+        <source>Run the script on the scenario shown, while it plays (Ctrl+Return)</source>
+        <translation>Das Skript auf dem gezeigten Szenario ausführen, während es abspielt (Strg+Eingabe)</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Anhalten</translation>
+    </message>
+    <message>
+        <source>Stop the script now, even in a wait</source>
+        <translation>Das Skript sofort anhalten, auch während es wartet</translation>
+    </message>
+    <message>
+        <source>Clear Output</source>
+        <translation>Ausgabe leeren</translation>
+    </message>
+    <message>
+        <source>The scenario was rebuilt, so the script was stopped.</source>
+        <translation>Das Szenario wurde neu aufgebaut, daher wurde das Skript angehalten.</translation>
+    </message>
+    <message>
+        <source>Running…</source>
+        <translation>Läuft…</translation>
+    </message>
+    <message>
+        <source>— Run at %1 s —</source>
+        <translation>— Gestartet bei %1 s —</translation>
+    </message>
+    <message>
+        <source>Stopping…</source>
+        <translation>Wird angehalten…</translation>
+    </message>
+    <message>
+        <source>Finished.</source>
+        <translation>Fertig.</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>Angehalten.</translation>
+    </message>
+    <message>
+        <source>Open a scenario to run scripts on it.</source>
+        <translation>Öffnen Sie ein Szenario, um Skripte darauf auszuführen.</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::SegmentPanel</name>
     <message>
         <source>The character whose body segments are tagged</source>
@@ -2570,6 +2629,18 @@ Der Reiter Skelette zeigt die Animation; thespis-cli render zeichnet die Szene o
     <message>
         <source>Empty</source>
         <translation>Leer</translation>
+    </message>
+    <message>
+        <source>Script</source>
+        <translation>Skript</translation>
+    </message>
+    <message>
+        <source>The script ran to its end.</source>
+        <translation>Das Skript ist bis zum Ende gelaufen.</translation>
+    </message>
+    <message>
+        <source>Script: %1</source>
+        <translation>Skript: %1</translation>
     </message>
 </context>
 <context>

@@ -643,6 +643,10 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>Error</source>
         <translation>Erreur</translation>
     </message>
+    <message>
+        <source>Not found</source>
+        <translation>Introuvable</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::GesticonModel</name>
@@ -1710,6 +1714,61 @@ Un point vert signale une action jouée à l’instant courant.</translation>
     </message>
 </context>
 <context>
+    <name>thespis::editor::ScriptPanel</name>
+    <message>
+        <source>What the script prints, and its errors, show here.</source>
+        <translation>Ce que le script affiche, et ses erreurs, apparaissent ici.</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Exécuter</translation>
+    </message>
+    <message>
+        <source>Run the script on the scenario shown, while it plays (Ctrl+Return)</source>
+        <translation>Exécuter le script sur le scénario affiché, pendant la lecture (Ctrl+Entrée)</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Arrêter</translation>
+    </message>
+    <message>
+        <source>Stop the script now, even in a wait</source>
+        <translation>Arrêter le script tout de suite, même pendant une attente</translation>
+    </message>
+    <message>
+        <source>Clear Output</source>
+        <translation>Effacer la sortie</translation>
+    </message>
+    <message>
+        <source>The scenario was rebuilt, so the script was stopped.</source>
+        <translation>Le scénario a été reconstruit : le script a donc été arrêté.</translation>
+    </message>
+    <message>
+        <source>Running…</source>
+        <translation>En cours…</translation>
+    </message>
+    <message>
+        <source>— Run at %1 s —</source>
+        <translation>— Lancé à %1 s —</translation>
+    </message>
+    <message>
+        <source>Stopping…</source>
+        <translation>Arrêt…</translation>
+    </message>
+    <message>
+        <source>Finished.</source>
+        <translation>Terminé.</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>Arrêté.</translation>
+    </message>
+    <message>
+        <source>Open a scenario to run scripts on it.</source>
+        <translation>Ouvrez un scénario pour y exécuter des scripts.</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::SegmentPanel</name>
     <message>
         <source>The character whose body segments are tagged</source>
@@ -2570,6 +2629,18 @@ L’onglet Squelettes montre l’animation ; thespis-cli render dessine la scèn
     <message>
         <source>Empty</source>
         <translation>Vide</translation>
+    </message>
+    <message>
+        <source>Script</source>
+        <translation>Script</translation>
+    </message>
+    <message>
+        <source>The script ran to its end.</source>
+        <translation>Le script s’est exécuté jusqu’au bout.</translation>
+    </message>
+    <message>
+        <source>Script: %1</source>
+        <translation>Script : %1</translation>
     </message>
 </context>
 <context>

@@ -32,6 +32,9 @@
 #include "editor/gesticon_panel.h"
 #include "editor/joint_mask_panel.h"
 #include "editor/messages_panel.h"
+#ifdef THESPIS_WITH_PYTHON
+#include "editor/script_panel.h"
+#endif
 #include "editor/properties_panel.h"
 #include "content_actions.h"
 #include "preferences_dialog.h"
@@ -129,6 +132,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     createOutlineDock();
     createEditorDocks();
     createMessagesDock();
+    createScriptDock();
     createMenus();
     createToolBar();
     createStatusBar();
@@ -363,6 +367,8 @@ void MainWindow::createMenus()
         view->addAction(dock->toggleViewAction());
     view->addAction(m_outlineDock->toggleViewAction());
     view->addAction(m_messagesDock->toggleViewAction());
+    if (m_scriptDock)
+        view->addAction(m_scriptDock->toggleViewAction());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_aboutAction);
@@ -458,6 +464,7 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
     if (m_preview)
         if (auto built = m_preview->setDocument(m_document.get()); !built)
             sceneProblem = tr("The 3D view is empty: %1").arg(QString::fromStdString(built.error().message));
+    updateScriptStage();
 
     const bool open = m_document != nullptr;
     m_transport->setEnabled(open);
@@ -514,12 +521,23 @@ void MainWindow::onAbout()
 
 void MainWindow::onTimeChanged(double seconds)
 {
-    for (std::size_t i = 0; i < m_samplers.size(); ++i) {
-        m_samplers[i].sample(seconds);
-        m_poseView->setFigurePositions(int(i), m_samplers[i].positions());
-    }
+#ifdef THESPIS_WITH_PYTHON
+    m_script->setTime(seconds); // before the stage is evaluated, so a waiting script acts on time
+#endif
     if (m_preview)
         m_preview->setTime(seconds);
+    // The skeleton view shows the poses the 3D view's stage gave this tick (live actions
+    // included), so nothing is evaluated twice; without a 3D view it samples the schedules.
+    const core::render::ScenarioScene* scene = m_preview ? m_preview->scene() : nullptr;
+    for (std::size_t i = 0; i < m_samplers.size(); ++i) {
+        const bool fromStage = scene && i < scene->poses().characters.size() &&
+                               scene->runtime().characters[i].name == m_samplers[i].name();
+        if (fromStage)
+            m_samplers[i].setFrame(scene->poses().characters[i].body);
+        else
+            m_samplers[i].sample(seconds);
+        m_poseView->setFigurePositions(int(i), m_samplers[i].positions());
+    }
     m_transport->setTime(seconds);
     m_model->setTime(seconds);
     m_timeline->setTime(seconds);
@@ -669,6 +687,7 @@ void MainWindow::onDocumentEdited()
     if (m_preview)
         if (auto updated = m_preview->updateDocument(m_document.get()); !updated)
             statusBar()->showMessage(tr("The 3D view is empty: %1").arg(QString::fromStdString(updated.error().message)));
+    updateScriptStage();
     m_clock->setDuration(m_document->previewDuration());
     m_transport->setDuration(m_clock->duration());
     onTimeChanged(m_clock->time());

@@ -33,6 +33,7 @@ class QTreeView;
 namespace thespis::editor {
 class Autosaver;
 class MessagesPanel;
+class ScriptPanel;
 class ClipLibraryPanel;
 class CurvePanel;
 class BakePanel;
@@ -131,6 +132,9 @@ private:
     void refreshFigures(bool frame);
     void refreshMessages();
     void createMessagesDock();
+    void createScriptDock();
+    /// Hands the Script dock the stage the 3D view plays (none without a scene).
+    void updateScriptStage();
     void createStatusBar();
     void createShadingActions();
     void onOpen();
@@ -168,6 +172,8 @@ private:
     editor::Autosaver* m_autosaver = nullptr;
     editor::MessagesPanel* m_messages = nullptr;
     QDockWidget* m_messagesDock = nullptr;
+    editor::ScriptPanel* m_script = nullptr; // null when built without Python
+    QDockWidget* m_scriptDock = nullptr;
     ContentActions* m_content = nullptr;
     QList<QDockWidget*> m_editorDocks;
     QMenu* m_recentMenu = nullptr;

@@ -20,6 +20,9 @@
 #include "editor/gesticon_panel.h"
 #include "editor/joint_mask_panel.h"
 #include "editor/messages_panel.h"
+#ifdef THESPIS_WITH_PYTHON
+#include "editor/script_panel.h"
+#endif
 #include "editor/properties_panel.h"
 #include "editor/qt_conversions.h"
 #include "editor/scenario_tree_model.h"
@@ -86,6 +89,34 @@ void MainWindow::createMessagesDock()
         }
         selectCharacter(character);
     });
+}
+
+void MainWindow::createScriptDock()
+{
+#ifdef THESPIS_WITH_PYTHON
+    m_script = new editor::ScriptPanel(this);
+    m_scriptDock = new QDockWidget(tr("Script"), this);
+    m_scriptDock->setObjectName(QStringLiteral("scriptDock"));
+    m_scriptDock->setWidget(m_script);
+    addDockWidget(Qt::BottomDockWidgetArea, m_scriptDock);
+    tabifyDockWidget(m_messagesDock, m_scriptDock);
+    m_editorDocks.front()->raise();
+    connect(m_script, &editor::ScriptPanel::playRequested, this, [this] {
+        if (!m_clock->isPlaying())
+            m_clock->play();
+    });
+    connect(m_script, &editor::ScriptPanel::finished, this, [this](const QString& message) {
+        statusBar()->showMessage(message.isEmpty() ? tr("The script ran to its end.") : tr("Script: %1").arg(message), 8000);
+    });
+#endif
+}
+
+void MainWindow::updateScriptStage()
+{
+#ifdef THESPIS_WITH_PYTHON
+    core::render::ScenarioScene* scene = m_preview ? m_preview->scene() : nullptr;
+    m_script->setStage(scene ? scene->sharedStage() : nullptr);
+#endif
 }
 
 void MainWindow::refreshMessages()

@@ -143,7 +143,8 @@ Result<void> ScenarioScene::setRuntime(scenario::ScenarioRuntime runtime)
             return makeError(ErrorCode::InvalidArgument,
                              "Character \"" + next.name + "\" changed its skeleton: the scene must be rebuilt.");
     }
-    m_stage = std::make_shared<runtime::Stage>(std::move(runtime));
+    if (auto played = m_stage->setRuntime(std::move(runtime)); !played)
+        return played.error();
     attachPerformers();
     setTime(m_time);
     return {};

@@ -56,15 +56,17 @@ public:
     /// joints with their body, bake files left out); one sentence each.
     const std::vector<std::string>& warnings() const { return m_warnings; }
 
-    /// Plays a new runtime of the same scenario (after an edit) on a new stage (live actions
-    /// end): the characters and their skeletons must be the same; otherwise an error says so
-    /// and the scene must be rebuilt.
+    /// Plays a new runtime of the same scenario (after an edit) on the same stage, so live
+    /// actions play on: the characters and their skeletons must be the same; otherwise an
+    /// error says so and the scene must be rebuilt.
     Result<void> setRuntime(scenario::ScenarioRuntime runtime);
 
     /// Evaluates the stage at `seconds` and poses every character (no allocation).
     void setTime(double seconds);
     /// Poses every character from poses the stage gave (its character order).
     void setPoses(const runtime::PoseSet& poses);
+    /// The poses setTime() evaluated last (the stage's character order).
+    const runtime::PoseSet& poses() const { return m_poses; }
     double time() const { return m_time; }
     /// The bounds of every character over the whole timeline (sampled at 10 Hz), for a camera
     /// that keeps everyone in view while the scenario plays. Leaves the scene at time().

@@ -84,18 +84,48 @@ Stage::Stage(scenario::ScenarioRuntime runtime) : m_runtime(std::move(runtime))
         [[maybe_unused]] const Result<void> made =
             initPerformer(performer, character.skeleton, character.body, character.face);
         assert(made);
-        for (const auto& [name, clip] : character.clips)
-            performer.body.library[name] = ActionTemplate{clip, {}, false};
-        for (std::size_t l = 0; l < character.layers.size(); ++l) {
-            BlendingSchedule& layer = *character.layers[l];
-            TrackState& track = *layer.layout() == *character.skeleton.frameLayout() ? performer.body : performer.face;
-            track.authoredLayers.push_back(character.layers[l]);
-            for (const ActionId id : character.actionIds[l])
-                if (const BlendingAction* action = layer.action(id); action && !action->name.empty())
-                    track.library[action->name] = ActionTemplate{action->source, action->params, action->renderOutsideDomain};
-        }
+        fillLibrary(performer, character);
         m_performers.push_back(std::move(performer));
     }
+}
+
+void Stage::fillLibrary(Performer& performer, scenario::CharacterRuntime& character)
+{
+    for (TrackState* track : {&performer.body, &performer.face}) {
+        track->library.clear();
+        track->authoredLayers.clear();
+    }
+    performer.body.authored = character.body;
+    performer.face.authored = character.face;
+    for (const auto& [name, clip] : character.clips)
+        performer.body.library[name] = ActionTemplate{clip, {}, false};
+    for (std::size_t l = 0; l < character.layers.size(); ++l) {
+        BlendingSchedule& layer = *character.layers[l];
+        TrackState& track = *layer.layout() == *character.skeleton.frameLayout() ? performer.body : performer.face;
+        track.authoredLayers.push_back(character.layers[l]);
+        for (const ActionId id : character.actionIds[l])
+            if (const BlendingAction* action = layer.action(id); action && !action->name.empty())
+                track.library[action->name] = ActionTemplate{action->source, action->params, action->renderOutsideDomain};
+    }
+}
+
+Result<void> Stage::setRuntime(scenario::ScenarioRuntime runtime)
+{
+    const std::lock_guard lock(m_mutex);
+    if (runtime.characters.size() != m_performers.size())
+        return makeError(ErrorCode::InvalidArgument, "The scenario's characters changed: the stage must be rebuilt.");
+    for (std::size_t i = 0; i < m_performers.size(); ++i) {
+        const scenario::CharacterRuntime& next = runtime.characters[i];
+        if (next.name != m_performers[i].name ||
+            !(*next.skeleton.frameLayout() == *m_performers[i].body.live->layout()))
+            return makeError(ErrorCode::InvalidArgument,
+                             "Character \"" + next.name + "\" changed: the stage must be rebuilt.");
+    }
+    m_authoredCuts.clear(); // they were cut in the old schedules
+    m_runtime = std::move(runtime);
+    for (std::size_t i = 0; i < m_performers.size(); ++i)
+        fillLibrary(m_performers[i], m_runtime.characters[i]); // live actions play on
+    return {};
 }
 
 Result<void> Stage::initPerformer(Performer& performer, const anim::Skeleton& skeleton,
@@ -106,11 +136,11 @@ Result<void> Stage::initPerformer(Performer& performer, const anim::Skeleton& sk
     const std::pair<TrackState*, std::shared_ptr<const BlendingSchedule>> tracks[] = {{&performer.body, body},
                                                                                         {&performer.face, face}};
     for (auto [track, authored] : tracks) {
+        track->authored = std::move(authored);
         const auto make = [&] {
             return track == &performer.body ? std::make_shared<BlendingSchedule>(skeleton)
                                             : std::make_shared<BlendingSchedule>(faceLayout);
         };
-        track->authored = std::move(authored);
         track->synthesizers = make();
         track->live = make();
         track->layered = make();

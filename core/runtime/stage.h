@@ -61,6 +61,9 @@ public:
 
     /// The scenario the stage was made from (empty for a stage built by hand).
     const scenario::ScenarioRuntime& runtime() const { return m_runtime; }
+    /// Plays new authored schedules of the same characters (after an edit of the scenario),
+    /// keeping what plays live. Errors when the characters or their skeletons differ.
+    Result<void> setRuntime(scenario::ScenarioRuntime runtime);
 
     /// Adds a character with nothing authored. Error: the name is taken.
     Result<int> addCharacter(std::string name, const anim::Skeleton& skeleton);
@@ -140,6 +143,7 @@ private:
         TrackState body, face;
     };
 
+    static void fillLibrary(Performer& performer, scenario::CharacterRuntime& character);
     Result<void> initPerformer(Performer& performer, const anim::Skeleton& skeleton,
                                std::shared_ptr<const anim::BlendingSchedule> body,
                                std::shared_ptr<const anim::BlendingSchedule> face);

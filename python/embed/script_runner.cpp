@@ -32,9 +32,23 @@ void ensurePython()
                 sys.attr("path").attr("insert")(0, buildTree.string());
             sys.attr("argv") = py::make_tuple("thespis");
         }
+        py::detail::get_internals(); // made here, with the GIL, not first in a worker thread
         PyEval_SaveThread(); // held by no one until a script runs; never taken back (Python lives on)
     });
 }
+
+/// Holds the GIL in any thread, with Python's own per-thread state (threads the program made
+/// get one the first time).
+class GilHolder {
+public:
+    GilHolder() : m_state(PyGILState_Ensure()) {}
+    ~GilHolder() { PyGILState_Release(m_state); }
+    GilHolder(const GilHolder&) = delete;
+    GilHolder& operator=(const GilHolder&) = delete;
+
+private:
+    PyGILState_STATE m_state;
+};
 
 /// A file-like object whose write() hands text to the sink.
 py::object writer(const OutputSink& sink, Stream stream)
@@ -73,7 +87,7 @@ ScriptRunner::~ScriptRunner() { stop(); }
 core::Result<void> ScriptRunner::run(const std::string& source, const std::string& fileName,
                                      std::shared_ptr<core::runtime::AnimationService> service, const OutputSink& sink)
 {
-    py::gil_scoped_acquire gil;
+    GilHolder gil;
     {
         const std::lock_guard lock(m_mutex);
         m_service = service;
@@ -134,7 +148,7 @@ void ScriptRunner::stop()
     }
     // Python code gets KeyboardInterrupt at its next instruction. run() changes m_running and
     // the thread id only while it holds the GIL, so this is the same script.
-    py::gil_scoped_acquire gil;
+    GilHolder gil;
     if (m_running && m_threadId == thread)
         PyThreadState_SetAsyncExc(thread, PyExc_KeyboardInterrupt);
 }
@@ -142,7 +156,7 @@ void ScriptRunner::stop()
 std::string pythonVersion()
 {
     ensurePython();
-    py::gil_scoped_acquire gil;
+    GilHolder gil;
     return py::str(py::module_::import("platform").attr("python_version")());
 }
 

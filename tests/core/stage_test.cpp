@@ -161,6 +161,27 @@ TEST(Stage, CuttingOffAnAuthoredActionIsUndoneByAReset)
     EXPECT_EQ(poses.characters[1].body, uncut);
 }
 
+TEST(Stage, AnEditedScenarioPlaysOnWithItsLiveActions)
+{
+    auto stage = demoStage();
+    ASSERT_TRUE(stage->activateAction("Antigone", Track::Body, "nod", secondsToTicks(1.0)));
+    // The scenario edited: Creon's idle starts a second later.
+    auto scenario = core::scenario::loadScenario(resources("demo.thespis"));
+    ASSERT_TRUE(scenario);
+    scenario->characters[0].layers[0].actions[0].start += core::TicksPerSecond;
+    auto edited = core::scenario::buildRuntime(*scenario, resources());
+    ASSERT_TRUE(edited);
+    ASSERT_TRUE(stage->setRuntime(std::move(edited).value()));
+    EXPECT_TRUE(*stage->isPlaying("Antigone", Track::Body, "nod", secondsToTicks(1.5)));
+    PoseSet poses = stage->makePoseSet();
+    stage->evaluate(secondsToTicks(0.5), poses);
+    EXPECT_EQ(poses.characters[0].body, authoredBody(*stage, 0, 0.5)); // the new schedule plays
+    // Another cast cannot be swapped in.
+    auto other = core::scenario::buildRuntime(core::scenario::Scenario{}, resources());
+    ASSERT_TRUE(other);
+    EXPECT_FALSE(stage->setRuntime(std::move(other).value()));
+}
+
 TEST(Stage, UnknownNamesAreNamedWithTheKnownOnes)
 {
     auto stage = demoStage();

@@ -1,0 +1,144 @@
+// The Script dock on the real window (paper §4.5: scripts drive the animation service while the
+// simulation runs): the paper's Antigone/Creon script runs while the view plays and its live
+// actions show in the 3D view; Stop ends a script stuck in a wait or in an endless loop while
+// the view plays on; an error shows its traceback and puts the cursor on its line.
+
+#include <QDockWidget>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTest>
+
+#include "editor/playback_clock.h"
+#include "editor/scene_preview.h"
+#include "editor/script_panel.h"
+#include "main_window.h"
+#include "render/scenario_scene.h"
+
+using namespace thespis;
+using core::runtime::Track;
+
+namespace {
+
+QString demoPath() { return QStringLiteral(THESPIS_RESOURCES "/demo.thespis"); }
+
+void saveScreenshot(QWidget* widget, const QString& name)
+{
+    QDir().mkpath(QStringLiteral(THESPIS_SCREENSHOT_DIR));
+    QVERIFY(widget->grab().save(QStringLiteral(THESPIS_SCREENSHOT_DIR "/") + name));
+}
+
+} // namespace
+
+class ScriptDockTest : public QObject {
+    Q_OBJECT
+private slots:
+    void init();
+    void cleanup();
+    void thePapersScriptPlaysWhileTheViewPlays();
+    void stopEndsAScriptStuckInAWaitAndTheViewPlaysOn();
+    void stopEndsAnEndlessLoop();
+    void anErrorShowsItsTracebackAndLine();
+
+private:
+    editor::ScriptPanel* panel() const { return m_window->findChild<editor::ScriptPanel*>(); }
+    QPushButton* button(const char* name) const { return panel()->findChild<QPushButton*>(QLatin1String(name)); }
+    std::unique_ptr<studio::MainWindow> m_window;
+};
+
+void ScriptDockTest::init()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings().clear();
+    m_window = std::make_unique<studio::MainWindow>();
+    m_window->resize(1500, 950);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QVERIFY(m_window->openScenario(demoPath()));
+    QVERIFY(panel());
+    auto* dock = m_window->findChild<QDockWidget*>(QStringLiteral("scriptDock"));
+    QVERIFY(dock);
+    dock->raise();
+    QVERIFY(button("runScript")->isEnabled());
+    QVERIFY(!button("stopScript")->isEnabled());
+}
+
+void ScriptDockTest::cleanup() { m_window.reset(); }
+
+void ScriptDockTest::thePapersScriptPlaysWhileTheViewPlays()
+{
+    // The dock opens with the paper's script (resources/scripts/antigone_creon.py).
+    QVERIFY(panel()->source().contains(QLatin1String("animService.waitUntilActionFinished_body(Creon, \"creon_wave\", -1.0)")));
+    QVERIFY(!m_window->clock()->isPlaying());
+    QTest::mouseClick(button("runScript"), Qt::LeftButton);
+    QVERIFY(panel()->isRunning());
+    QVERIFY(m_window->clock()->isPlaying()); // Run plays the view: the script's waits need time
+    QVERIFY(button("stopScript")->isEnabled());
+
+    // Antigone's wave is live (her authored wave comes later): the 3D view's stage plays it
+    // while the script waits for it.
+    core::render::ScenarioScene* scene = m_window->scenePreview()->scene();
+    QVERIFY(scene);
+    bool sawLiveWave = false;
+    QTRY_VERIFY_WITH_TIMEOUT((sawLiveWave = sawLiveWave || *scene->stage().isPlaying(
+                                  "Antigone", Track::Body, "antigone_wave",
+                                  core::secondsToTicks(m_window->clock()->time())),
+                              !panel()->isRunning()),
+                             20000);
+    QVERIFY(sawLiveWave);
+    QVERIFY2(panel()->output().contains(QLatin1String("Antigone answered Creon at")), qPrintable(panel()->output()));
+    QCOMPARE(panel()->findChild<QLabel*>(QStringLiteral("scriptStatus"))->text(), QStringLiteral("Finished."));
+    saveScreenshot(m_window.get(), QStringLiteral("script_dock.png"));
+}
+
+void ScriptDockTest::stopEndsAScriptStuckInAWaitAndTheViewPlaysOn()
+{
+    panel()->setSource(QStringLiteral("anim.activateAction_body('Creon', 'creon_wave')\nprint('waiting')\nanim.wait(1000)\nprint('never')\n"));
+    QTest::mouseClick(button("runScript"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(panel()->output().contains(QLatin1String("waiting")), 5000);
+    QVERIFY(panel()->isRunning());
+    QTest::mouseClick(button("stopScript"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isRunning(), 5000);
+    QVERIFY(!panel()->output().contains(QLatin1String("never")));
+    QCOMPARE(panel()->findChild<QLabel*>(QStringLiteral("scriptStatus"))->text(), QStringLiteral("Stopped."));
+    // The view was never held up: it plays on after the stop.
+    QVERIFY(m_window->clock()->isPlaying());
+    const double before = m_window->clock()->time();
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->clock()->time() > before, 2000);
+    QVERIFY(button("runScript")->isEnabled());
+}
+
+void ScriptDockTest::stopEndsAnEndlessLoop()
+{
+    panel()->setSource(QStringLiteral("print('looping')\nwhile True:\n    pass\n"));
+    QTest::mouseClick(button("runScript"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(panel()->output().contains(QLatin1String("looping")), 5000);
+    // The window stays responsive while the loop spins in its thread.
+    const double before = m_window->clock()->time();
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->clock()->time() > before, 2000);
+    QTest::mouseClick(button("stopScript"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isRunning(), 5000);
+}
+
+void ScriptDockTest::anErrorShowsItsTracebackAndLine()
+{
+    panel()->setSource(QStringLiteral("anim.activateAction_body('Creon', 'creon_wave')\n\nanim.activateAction_body('Creon', 'creon_dance')\n"));
+    QString message;
+    connect(panel(), &editor::ScriptPanel::finished, this, [&message](const QString& m) { message = m; });
+    QTest::mouseClick(button("runScript"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isRunning(), 5000);
+    QVERIFY2(message.startsWith(QLatin1String("script.py, line 3: KeyError")), qPrintable(message));
+    QVERIFY(message.contains(QLatin1String("creon_dance")) && message.contains(QLatin1String("creon_idle")));
+    QVERIFY(panel()->output().contains(QLatin1String("Traceback")));
+    auto* editorView = panel()->findChild<QPlainTextEdit*>(QStringLiteral("scriptEditor"));
+    QCOMPARE(editorView->textCursor().blockNumber(), 2);
+    saveScreenshot(m_window.get(), QStringLiteral("script_dock_error.png"));
+    // The stage plays on: the action activated before the error is live.
+    QVERIFY(*m_window->scenePreview()->scene()->stage().isPlaying(
+        "Creon", Track::Body, "creon_wave", core::secondsToTicks(m_window->clock()->time())));
+}
+
+QTEST_MAIN(ScriptDockTest)
+#include "script_dock_test.moc"
