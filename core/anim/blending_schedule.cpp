@@ -319,7 +319,10 @@ void BlendingSchedule::evaluateInto(double t, std::span<float> out, std::span<fl
             continue;
         const BlendingParams& params = entry.action.params;
         const double local = t - entry.action.start;
-        double weight = params.weight.evaluate(local, entry.duration);
+        // An action that renders outside its domain has no end for its curves: a fade-out or
+        // release would otherwise stop it at its source's end, defeating the flag.
+        const double span = entry.action.renderOutsideDomain ? std::numeric_limits<double>::infinity() : entry.duration;
+        double weight = params.weight.evaluate(local, span);
         if (t > entry.cutOffAt)
             weight *= entry.cutOffFade > 0 ? 1.0 - smoothStep((t - entry.cutOffAt) / entry.cutOffFade) : 0.0;
         if (!(weight > 0))
@@ -333,7 +336,7 @@ void BlendingSchedule::evaluateInto(double t, std::span<float> out, std::span<fl
         else
             source.evaluate(source.domain().start + local, frame);
         if (!params.scale.isIdentity()) {
-            const double scale = params.scale.evaluate(local, entry.duration);
+            const double scale = params.scale.evaluate(local, span);
             if (scale != 1.0)
                 scaleFrame(*m_layout, m_rest, float(scale), frame);
         }

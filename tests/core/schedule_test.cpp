@@ -45,6 +45,33 @@ TEST(BlendingSchedule, SingleActionAtFullWeightEqualsItsSource)
     }
 }
 
+TEST(BlendingSchedule, RenderingOutsideTheDomainHoldsThroughAnyFadeOrRelease)
+{
+    // A held pose (or a synthesizer) must not be ended by its weight curve's fade-out at its
+    // source's end: with the flag, the curves have no end; cut-off is what ends it.
+    const auto layout = makeLayout(3);
+    const auto clip = makeTurningClip(layout, 1.0, 30, 1.2f);
+    std::vector<float> last(layout->floatCount()), out(layout->floatCount());
+    clip->evaluate(1.0, last);
+    for (const Curve& weight : {Curve::cubicFade(0.2, 0.0), Curve::cubicFade(0.2, 0.4),
+                                Curve::linearAdsr(0.1, 0.1, 1.0, 0.3), Curve::cubicAdsr(0.1, 0.1, 1.0, 0.0)}) {
+        BlendingSchedule schedule(layout);
+        BlendingAction held = action(clip, 0.0, weight);
+        held.renderOutsideDomain = true;
+        auto id = schedule.addAction(held);
+        ASSERT_TRUE(id);
+        for (const double t : {1.0, 1.5, 10.0}) {
+            schedule.evaluate(t, out);
+            for (std::size_t k = 0; k < out.size(); ++k)
+                ASSERT_NEAR(out[k], last[k], 1e-5) << "t=" << t << " k=" << k;
+        }
+        EXPECT_FALSE(schedule.isFinished(*id, 10.0));
+        ASSERT_TRUE(schedule.cutOffAction(*id, 10.0, 0.5));
+        schedule.evaluate(10.5, out);
+        EXPECT_EQ(out, neutralFrame(*layout)); // cut off: gone, rest pose
+    }
+}
+
 TEST(BlendingSchedule, UndrivenJointsKeepTheRestPose)
 {
     const Skeleton& skeleton = hanim::skeleton(hanim::Level::Loa1);
