@@ -162,3 +162,30 @@ TEST(FrameCache, ReturnsIdenticalFramesAndIsInvalidatedByEdits)
     EXPECT_EQ(cached, direct);
     EXPECT_NE(cached, stale);
 }
+
+TEST(FrameCache, ACachedNestedScheduleBlendsLikeTheUncachedOne)
+{
+    // A nested schedule passes on its coverage; cached, it must too, or its parent would blend
+    // it as if it drove every joint fully (and fill in rest where it fades).
+    const auto layout = makeLayout(6);
+    auto nested = std::make_shared<BlendingSchedule>(layout);
+    BlendingAction fading{"wave", makeTurningClip(layout, 2.0, 30, 2.0f), {}, 0.0};
+    fading.params.weight = Curve::cubicFade(1.0, 1.0);
+    ASSERT_TRUE(nested->addAction(fading));
+    const auto base = makeTurningClip(layout, 2.0, 30, -1.0f, 0.4f);
+    BlendingSchedule plain(layout), cached(layout);
+    ASSERT_TRUE(plain.addAction({"base", base, {}, 0.0}));
+    ASSERT_TRUE(plain.addAction({"nested", nested, {}, 0.0}));
+    auto cache = std::make_shared<CachedBlendable>(nested, 64);
+    ASSERT_TRUE(cached.addAction({"base", base, {}, 0.0}));
+    ASSERT_TRUE(cached.addAction({"nested", cache, {}, 0.0}));
+    EXPECT_TRUE(cache->hasCoverage());
+    std::vector<float> a(layout->floatCount()), b(layout->floatCount());
+    for (int pass = 0; pass < 2; ++pass)
+        for (int f = 0; f <= 60; f += 3) {
+            plain.evaluate(f / 30.0, a);
+            cached.evaluate(f / 30.0, b);
+            ASSERT_EQ(a, b) << "t=" << f / 30.0 << " pass " << pass;
+        }
+    EXPECT_GT(cache->hits(), 0u);
+}
