@@ -285,8 +285,8 @@ def scenario():
     }
     return {
         "format": "thespis-scenario",
-        "version": 3,
-        "schema": "Scenario.3",
+        "version": 4,
+        "schema": "Scenario.4",
         "name": "Antigone, act 1 (demo)",
         "duration": ticks(12.0),
         "masks": [
@@ -296,6 +296,8 @@ def scenario():
         ],
         "characters": [creon, antigone],
         "markers": [marker("Creon greets", 1.5), marker("Antigone answers", 6.0)],
+        # The paper's §4.5 script, kept in the scenario (the Script dock lists it).
+        "scripts": [{"schema": "Script.1", "name": "antigone_creon", "source": PAPER_SCRIPT.read_text(encoding="utf-8")}],
     }
 
 
@@ -323,6 +325,9 @@ def dump(value, indent=0):
             return "[" + ", ".join(scalar(v) for v in value) + "]"
         return "[\n" + ",\n".join(inner + dump(v, indent + 2) for v in value) + "\n" + " " * indent + "]"
     return scalar(value)
+
+
+PAPER_SCRIPT = Path(__file__).resolve().parent.parent / "resources" / "scripts" / "antigone_creon.py"
 
 
 def main():

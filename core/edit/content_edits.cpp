@@ -317,4 +317,25 @@ Result<Edit> setLighting(const Scenario& scenario, LightingSpec lighting)
     return Edit(LightingChange{scenario.lighting, std::move(lighting)});
 }
 
+Result<Edit> setScript(const Scenario& scenario, const std::string& name, const std::string& source)
+{
+    if (name.empty())
+        return invalid("A script needs a name.");
+    std::vector<ScriptSpec> scripts = scenario.scripts;
+    auto it = std::find_if(scripts.begin(), scripts.end(), [&](const ScriptSpec& s) { return s.name == name; });
+    if (it == scripts.end())
+        scripts.push_back(ScriptSpec{name, source, nlohmann::json::object()});
+    else
+        it->source = source;
+    return Edit(ScriptsChange{scenario.scripts, std::move(scripts)});
+}
+
+Result<Edit> removeScript(const Scenario& scenario, const std::string& name)
+{
+    std::vector<ScriptSpec> scripts = scenario.scripts;
+    if (std::erase_if(scripts, [&](const ScriptSpec& s) { return s.name == name; }) == 0)
+        return makeError(ErrorCode::NotFound, "The scenario has no script named \"" + name + "\".");
+    return Edit(ScriptsChange{scenario.scripts, std::move(scripts)});
+}
+
 } // namespace thespis::core::edit

@@ -60,4 +60,9 @@ Result<Edit> removeClip(const scenario::Scenario& scenario, const CharacterItemP
 /// vertical axis (degrees), intensity (≥ 0).
 Result<Edit> setLighting(const scenario::Scenario& scenario, scenario::LightingSpec lighting);
 
+/// Adds the script, or replaces the source of the one of that name. Errors: an empty name.
+Result<Edit> setScript(const scenario::Scenario& scenario, const std::string& name, const std::string& source);
+/// Removes the script of that name. Errors: there is none.
+Result<Edit> removeScript(const scenario::Scenario& scenario, const std::string& name);
+
 } // namespace thespis::core::edit

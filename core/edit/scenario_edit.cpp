@@ -107,6 +107,11 @@ Result<void> applyChange(Scenario& s, const Change& change)
                     return makeError(ErrorCode::InvalidArgument, "The edit does not fit the document (the light).");
                 s.lighting = c.after;
                 return {};
+            } else if constexpr (std::is_same_v<C, ScriptsChange>) {
+                if (s.scripts != c.before)
+                    return makeError(ErrorCode::InvalidArgument, "The edit does not fit the document (the scripts).");
+                s.scripts = c.after;
+                return {};
             } else if constexpr (std::is_same_v<C, CharacterBakeChange>) {
                 Character* character = characterAt(s, c.character);
                 if (!character || character->bake != c.before)
@@ -153,6 +158,8 @@ bool samePlaceReplace(const Change& a, const Change& b)
                 return first.character == second.character;
             else if constexpr (std::is_same_v<C, LightingChange>)
                 return true;
+            else if constexpr (std::is_same_v<C, ScriptsChange>)
+                return false; // each save of a script is a step of its own
             else if constexpr (std::is_same_v<C, CharacterBakeChange>)
                 return false; // a bake is one step of its own, whatever follows it
             else

@@ -82,8 +82,14 @@ struct LightingChange {
     bool operator==(const LightingChange&) const = default;
 };
 
+/// Replaces the scenario's scripts (one added, changed or removed).
+struct ScriptsChange {
+    std::vector<scenario::ScriptSpec> before, after;
+    bool operator==(const ScriptsChange&) const = default;
+};
+
 using Change = std::variant<ActionChange, LayerChange, MaskChange, MarkerChange, GestureChange, ClipChange,
-                            SegmentTagsChange, CharacterBakeChange, CharacterChange, LightingChange>;
+                            SegmentTagsChange, CharacterBakeChange, CharacterChange, LightingChange, ScriptsChange>;
 
 class Edit {
 public:

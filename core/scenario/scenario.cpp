@@ -28,6 +28,14 @@ const Character* Scenario::findCharacter(const std::string& characterName) const
     return nullptr;
 }
 
+const ScriptSpec* Scenario::findScript(const std::string& scriptName) const
+{
+    for (const ScriptSpec& script : scripts)
+        if (script.name == scriptName)
+            return &script;
+    return nullptr;
+}
+
 const NamedMask* Scenario::findMask(const std::string& maskName) const
 {
     for (const NamedMask& mask : masks)

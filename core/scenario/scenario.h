@@ -185,6 +185,15 @@ struct Marker {
     bool operator==(const Marker&) const = default;
 };
 
+/// A Python script kept in the scenario (format 4), run in the studio's Script dock or by
+/// `thespis-cli run --script NAME` — only once the user trusts the file it came in.
+struct ScriptSpec {
+    std::string name;
+    std::string source; ///< Python source text
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const ScriptSpec&) const = default;
+};
+
 struct Scenario {
     std::string name;
     Tick duration = 0; ///< length of the scenario's timeline (0: up to the last action's end)
@@ -192,11 +201,13 @@ struct Scenario {
     std::vector<NamedMask> masks;
     LightingSpec lighting;
     std::vector<Marker> markers;       ///< format 2
+    std::vector<ScriptSpec> scripts;   ///< format 4
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const Scenario&) const = default;
 
     const Character* findCharacter(const std::string& name) const;
     const NamedMask* findMask(const std::string& name) const;
+    const ScriptSpec* findScript(const std::string& name) const;
 };
 
 /// A file path relative to folder `from`, rewritten to name the same file relative to folder `to`

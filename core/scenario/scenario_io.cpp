@@ -85,11 +85,22 @@ static Result<void> upgradeV2toV3(nlohmann::json& document)
     return {};
 }
 
+// 3 → 4: scenarios may hold scripts (an optional list); only the scenario's schema is new.
+static Result<void> upgradeV3toV4(nlohmann::json& document)
+{
+    if (document.is_object())
+        if (const auto schema = document.find("schema");
+            schema != document.end() && schema->is_string() && schema->get_ref<const std::string&>() == "Scenario.3")
+            *schema = "Scenario.4";
+    return {};
+}
+
 std::span<const UpgradeStep> upgradeSteps()
 {
     static constexpr UpgradeStep steps[] = {
         {format::Initial, "timeline state and gesticon", &upgradeV1toV2},
         {format::TimelineAndGesticon, "clip import options and placement", &upgradeV2toV3},
+        {format::ImportAndPlacement, "scripts", &upgradeV3toV4},
     };
     return steps;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Reading and writing scenario files (.thespis): JSON with
-//   {"format": "thespis-scenario", "version": N, "schema": "Scenario.3", …}
+//   {"format": "thespis-scenario", "version": N, "schema": "Scenario.4", …}
 // Readers accept every older version (upgrade steps run in order before parsing) and refuse
 // newer ones with ErrorCode::NewerVersion, never loading part of a file. Any malformed input
 // gets CorruptData naming the field path ("characters[0].layers[1].actions[2].start: expected an
@@ -25,7 +25,8 @@ enum Version : int {
     TimelineAndGesticon = 2, ///< layer mute / solo / lock, markers, the characters' gesticons
     ImportAndPlacement = 3,  ///< clip files' retarget options and glTF animations, action
                              ///< placement, loop root motion, character placement, probe rotation
-    Current = ImportAndPlacement,
+    Scripts = 4,             ///< Python scripts kept in the scenario
+    Current = Scripts,
 };
 } // namespace format
 

@@ -527,6 +527,16 @@ Marker readMarker(const json& value, const std::string& path)
     return marker;
 }
 
+ScriptSpec readScript(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "Script.1");
+    ScriptSpec script;
+    script.name = r.name();
+    script.source = r.string("source", true);
+    script.extra = r.extra();
+    return script;
+}
+
 Character readCharacter(const json& value, const std::string& path)
 {
     ObjectReader r(value, path, "Character.3");
@@ -611,7 +621,7 @@ NamedMask readMask(const json& value, const std::string& path)
 
 Scenario readScenario(const json& document)
 {
-    ObjectReader r(document, "", "Scenario.3");
+    ObjectReader r(document, "", "Scenario.4");
     r.find("format");  // checked before
     r.find("version");
     Scenario scenario;
@@ -637,6 +647,13 @@ Scenario readScenario(const json& document)
     const json& markers = r.array("markers", false);
     for (std::size_t i = 0; i < markers.size(); ++i)
         scenario.markers.push_back(readMarker(markers[i], indexed("markers", i)));
+    names.clear();
+    const json& scripts = r.array("scripts", false);
+    for (std::size_t i = 0; i < scripts.size(); ++i) {
+        scenario.scripts.push_back(readScript(scripts[i], indexed("scripts", i)));
+        if (!names.insert(scenario.scripts.back().name).second)
+            fail(indexed("scripts", i) + ".name", "another script is already named " + quote(scenario.scripts.back().name));
+    }
     scenario.extra = r.extra();
     return scenario;
 }

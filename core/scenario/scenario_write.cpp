@@ -368,7 +368,7 @@ ojson writeScenario(const Scenario& scenario)
     ojson out = ojson::object();
     out["format"] = FormatName;
     out["version"] = int(format::Current);
-    out["schema"] = "Scenario.3";
+    out["schema"] = "Scenario.4";
     out["name"] = scenario.name;
     out["duration"] = scenario.duration;
     ojson masks = ojson::array();
@@ -402,6 +402,18 @@ ojson writeScenario(const Scenario& scenario)
             markers.push_back(std::move(entry));
         }
         out["markers"] = std::move(markers);
+    }
+    if (!scenario.scripts.empty()) {
+        ojson scripts = ojson::array();
+        for (const ScriptSpec& script : scenario.scripts) {
+            ojson entry = ojson::object();
+            entry["schema"] = "Script.1";
+            entry["name"] = script.name;
+            entry["source"] = script.source;
+            appendExtra(entry, script.extra);
+            scripts.push_back(std::move(entry));
+        }
+        out["scripts"] = std::move(scripts);
     }
     appendExtra(out, scenario.extra);
     return out;

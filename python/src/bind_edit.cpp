@@ -85,6 +85,8 @@ std::string describeEdit(const edit::Edit& e)
                     return "bake";
                 else if constexpr (std::is_same_v<C, edit::LightingChange>)
                     return "lighting";
+                else if constexpr (std::is_same_v<C, edit::ScriptsChange>)
+                    return "scripts";
                 else {
                     std::string element = std::is_same_v<C, edit::ActionChange>    ? "action"
                                           : std::is_same_v<C, edit::LayerChange>   ? "layer"
@@ -447,6 +449,16 @@ void bindEdit(py::module_& m)
         "scenario"_a, "lighting"_a,
         "Another light (thespis.LightingSpec: probe file and layout, rotation in degrees, intensity; probe '' = the "
         "default sky).");
+    e.def(
+        "set_script",
+        [](const Scenario& scenario, const std::string& name, const std::string& source) {
+            return unwrap(edit::setScript(scenario, name, source));
+        },
+        "scenario"_a, "name"_a, "source"_a, "Adds the script, or replaces the source of the one of that name.");
+    e.def(
+        "remove_script",
+        [](const Scenario& scenario, const std::string& name) { return unwrap(edit::removeScript(scenario, name)); },
+        "scenario"_a, "name"_a, "Removes the script of that name (KeyError when there is none).");
 }
 
 } // namespace thespis::python

@@ -300,6 +300,15 @@ void bindDocument(py::module_& m)
         });
     defExtra(marker);
 
+    py::class_<ScriptSpec> script(m, "Script", "A Python script kept in the scenario (run it with thespis-cli run --script NAME).");
+    script.def(py::init([](std::string name, std::string source) { return ScriptSpec{std::move(name), std::move(source), nlohmann::json::object()}; }),
+               "name"_a = "", "source"_a = "")
+        .def_readwrite("name", &ScriptSpec::name)
+        .def_readwrite("source", &ScriptSpec::source)
+        .def("__eq__", [](const ScriptSpec& a, const ScriptSpec& b) { return a == b; })
+        .def("__repr__", [](const ScriptSpec& s) { return "<thespis.Script '" + s.name + "'>"; });
+    defExtra(script);
+
     py::class_<Scenario> scenario(m, "Scenario",
                                   "The scenario document (format 'thespis-scenario'): characters, masks and the "
                                   "timeline's duration in ticks. Plain data with value semantics: list fields are "
@@ -338,6 +347,7 @@ void bindDocument(py::module_& m)
     defList(scenario, "characters", &Scenario::characters, "The characters (a copy).");
     defList(scenario, "masks", &Scenario::masks, "The named joint masks (a copy).");
     defList(scenario, "markers", &Scenario::markers, "The timeline markers (a copy).");
+    defList(scenario, "scripts", &Scenario::scripts, "The scenario's Python scripts (a copy).");
     scenario.def_readwrite("lighting", &Scenario::lighting, "The light probe (a LightingSpec).");
 }
 

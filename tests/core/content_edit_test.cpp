@@ -126,5 +126,22 @@ TEST(ContentEdits, TheLight)
     EXPECT_FALSE(setLighting(s, light).ok());
 }
 
+TEST(ContentEdits, ScriptsAddReplaceRemove)
+{
+    Scenario s;
+    expectRoundTrip(s, setScript(s, "greet", "print('hello')\n"));
+    ASSERT_TRUE(setScript(s, "greet", "print('hello')\n")->apply(s).ok());
+    ASSERT_EQ(s.scripts.size(), 1u);
+    expectRoundTrip(s, setScript(s, "greet", "print('bye')\n")); // replaces the source
+    ASSERT_TRUE(setScript(s, "greet", "print('bye')\n")->apply(s).ok());
+    EXPECT_EQ(s.scripts.size(), 1u);
+    EXPECT_EQ(s.findScript("greet")->source, "print('bye')\n");
+    expectRoundTrip(s, removeScript(s, "greet"));
+    EXPECT_FALSE(setScript(s, "", "pass").ok());
+    auto missing = removeScript(s, "other");
+    ASSERT_FALSE(missing.ok());
+    EXPECT_EQ(missing.error().code, ErrorCode::NotFound);
+}
+
 } // namespace
 } // namespace thespis::core::edit

@@ -71,6 +71,7 @@ std::vector<std::string> filesIn(const fs::path& folder)
 fs::path goldenV1() { return thespis::test::testData("formats/v1/scenario.thespis"); }
 fs::path goldenV2() { return thespis::test::testData("formats/v2/scenario.thespis"); }
 fs::path goldenV3() { return thespis::test::testData("formats/v3/scenario.thespis"); }
+fs::path goldenV4() { return thespis::test::testData("formats/v4/scenario.thespis"); }
 fs::path demoPath() { return thespis::test::resources("demo.thespis"); }
 
 Scenario loadOrFail(const fs::path& path)
@@ -304,8 +305,46 @@ TEST(ScenarioGolden, LoadsVersion3ImportOptionsAndPlacement)
             for (const ModifierSpec& m : action.modifiers)
                 rootMotion = rootMotion || (m.kind == ModifierKind::Loop && m.rootMotion);
     EXPECT_TRUE(rootMotion);
+    // Written back in the current format, it reads back the same.
+    auto back = parseScenario(serializeScenario(s));
+    ASSERT_TRUE(back) << describe(back.error());
+    EXPECT_EQ(*back, s);
+}
+
+TEST(ScenarioGolden, LoadsVersion4Scripts)
+{
+    const Scenario s = loadOrFail(goldenV4());
+    ASSERT_EQ(s.scripts.size(), 1u);
+    EXPECT_EQ(s.scripts[0].name, "greet");
+    EXPECT_NE(s.scripts[0].source.find("animService.waitUntilActionFinished_body(\"Creon\", \"creon_nod\", -0.5)\n"),
+              std::string::npos);
+    EXPECT_NE(s.findScript("greet"), nullptr);
+    EXPECT_EQ(s.findScript("other"), nullptr);
     // Written back byte for byte.
-    EXPECT_EQ(serializeScenario(s), readFile(goldenV3()));
+    EXPECT_EQ(serializeScenario(s), readFile(goldenV4()));
+}
+
+TEST(ScenarioGolden, Version3UpgradesToVersion4WithoutScripts)
+{
+    Scenario v4 = loadOrFail(goldenV4());
+    v4.scripts.clear();
+    Scenario v3 = loadOrFail(goldenV3());
+    v3.name = v4.name;
+    EXPECT_EQ(v3, v4);
+}
+
+TEST(ScenarioIo, ScriptsNeedUniqueNamesAndASource)
+{
+    json doc = minimalDocument();
+    doc["scripts"] = json::array({{{"schema", "Script.1"}, {"name", "a"}, {"source", "pass"}},
+                                  {{"schema", "Script.1"}, {"name", "a"}, {"source", "pass"}}});
+    auto twice = parseJson(doc);
+    ASSERT_FALSE(twice);
+    EXPECT_NE(twice.error().message.find("scripts[1].name"), std::string::npos) << twice.error().message;
+    doc["scripts"] = json::array({{{"schema", "Script.1"}, {"name", "a"}}});
+    auto noSource = parseJson(doc);
+    ASSERT_FALSE(noSource);
+    EXPECT_NE(noSource.error().message.find("scripts[0].source"), std::string::npos) << noSource.error().message;
 }
 
 TEST(ScenarioGolden, Version2UpgradesToVersion3WithoutTheNewFields)
@@ -490,7 +529,7 @@ TEST(ScenarioIo, UnknownFieldWithAnEmptyNameSurvives)
 TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 {
     const std::string text = serializeScenario(Scenario{});
-    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 3,\n  \"schema\": \"Scenario.3\"", 0), 0u)
+    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 4,\n  \"schema\": \"Scenario.4\"", 0), 0u)
         << text;
     auto back = parseScenario(text);
     ASSERT_TRUE(back.ok());
@@ -503,12 +542,12 @@ TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 TEST(ScenarioIo, RefusesNewerVersion)
 {
     json doc = minimalDocument();
-    doc["version"] = 4;
+    doc["version"] = 5;
     auto result = parseJson(doc);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error().code, ErrorCode::NewerVersion);
     EXPECT_EQ(result.error().message,
-              "This scenario was saved by a newer Thespis (format 4). Update Thespis to open it.");
+              "This scenario was saved by a newer Thespis (format 5). Update Thespis to open it.");
 
     doc["version"] = 18446744073709551615ull;
     result = parseJson(doc);
