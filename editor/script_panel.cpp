@@ -1,6 +1,8 @@
 #include "editor/script_panel.h"
 
+#include <QComboBox>
 #include <QFile>
+#include <QInputDialog>
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -52,6 +54,16 @@ ScriptPanel::ScriptPanel(QWidget* parent) : QWidget(parent), m_clock(std::make_s
     m_stop = new QPushButton(tr("Stop"), this);
     m_stop->setObjectName(QStringLiteral("stopScript"));
     m_stop->setToolTip(tr("Stop the script now, even in a wait"));
+    m_choice = new QComboBox(this);
+    m_choice->setObjectName(QStringLiteral("scriptChoice"));
+    m_choice->setToolTip(tr("Scratch, or a script kept in the scenario"));
+    m_choice->addItem(tr("Scratch"));
+    m_choice->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    connect(m_choice, &QComboBox::currentIndexChanged, this, &ScriptPanel::onChoice);
+    m_save = new QPushButton(tr("Save to Scenario…"), this);
+    m_save->setObjectName(QStringLiteral("saveScript"));
+    m_save->setToolTip(tr("Keep this script in the scenario (saved with it, one undo step)"));
+    connect(m_save, &QPushButton::clicked, this, &ScriptPanel::onSave);
     auto* clear = new QPushButton(tr("Clear Output"), this);
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("scriptStatus"));
@@ -64,6 +76,8 @@ ScriptPanel::ScriptPanel(QWidget* parent) : QWidget(parent), m_clock(std::make_s
     connect(shortcut, &QShortcut::activated, this, &ScriptPanel::run);
 
     auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_choice);
+    buttons->addWidget(m_save);
     buttons->addWidget(m_run);
     buttons->addWidget(m_stop);
     buttons->addWidget(m_status, 1);
@@ -104,14 +118,81 @@ void ScriptPanel::setTime(double seconds) { m_clock->setTime(core::secondsToTick
 
 QString ScriptPanel::source() const { return m_editor->toPlainText(); }
 
-void ScriptPanel::setSource(const QString& source) { m_editor->setPlainText(source); }
+void ScriptPanel::setSource(const QString& source)
+{
+    m_editor->setPlainText(source);
+    m_editor->document()->setModified(true); // the user's text, not the scenario's
+}
 
 QString ScriptPanel::output() const { return m_console->toPlainText(); }
+
+void ScriptPanel::setScenarioScripts(const QStringList& names, const QStringList& sources)
+{
+    const QString shown = m_shown > 0 ? m_choice->itemText(m_shown) : QString();
+    const QSignalBlocker blocker(m_choice);
+    while (m_choice->count() > 1)
+        m_choice->removeItem(1);
+    m_choice->addItems(names);
+    m_sources = sources;
+    const int again = shown.isEmpty() ? -1 : int(names.indexOf(shown));
+    if (again >= 0) {
+        m_shown = again + 1;
+        m_choice->setCurrentIndex(m_shown);
+        if (!m_editor->document()->isModified())
+            m_editor->setPlainText(m_sources.at(again)); // the scenario's text, e.g. after undo
+    } else if (m_shown > 0) {
+        m_shown = 0; // its script went: back to Scratch, keeping the text shown as it is
+        m_choice->setCurrentIndex(0);
+    }
+}
+
+void ScriptPanel::setSaveEnabled(bool enabled) { m_save->setEnabled(enabled); }
+
+bool ScriptPanel::showScenarioScript(const QString& name)
+{
+    const int index = m_choice->findText(name);
+    if (index < 1)
+        return false;
+    m_choice->setCurrentIndex(index);
+    return true;
+}
+
+void ScriptPanel::onChoice(int index)
+{
+    if (index == m_shown || index < 0)
+        return;
+    if (m_shown == 0)
+        m_scratch = m_editor->toPlainText();
+    m_shown = index;
+    m_editor->setPlainText(index == 0 ? m_scratch : m_sources.at(index - 1));
+    m_editor->document()->setModified(false);
+}
+
+void ScriptPanel::onSave()
+{
+    QString name = m_shown > 0 ? m_choice->itemText(m_shown) : QString();
+    if (name.isEmpty()) {
+        bool ok = false;
+        name = QInputDialog::getText(this, tr("Save Script to Scenario"), tr("Name of the script:"), QLineEdit::Normal,
+                                     tr("script"), &ok)
+                   .trimmed();
+        if (!ok || name.isEmpty())
+            return;
+    }
+    emit saveRequested(name, m_editor->toPlainText());
+    if (showScenarioScript(name))
+        m_editor->document()->setModified(false);
+}
 
 void ScriptPanel::run()
 {
     if (isRunning() || !m_stage)
         return;
+    // A script as the scenario file holds it runs only once the user trusts that file.
+    if (m_shown > 0 && !m_editor->document()->isModified() && m_trustCheck && !m_trustCheck()) {
+        m_status->setText(tr("Not run: the scenario's scripts are not trusted."));
+        return;
+    }
     if (!m_runner)
         m_runner = std::make_unique<script::ScriptRunner>();
     // A script starts over: what an earlier one left playing goes.
@@ -120,13 +201,15 @@ void ScriptPanel::run()
     m_status->setText(tr("Running…"));
     append(tr("— Run at %1 s —").arg(core::ticksToSeconds(m_clock->now()), 0, 'f', 2) + QLatin1Char('\n'), false);
     const std::string source = m_editor->toPlainText().toStdString();
-    m_worker = std::thread([this, source, service] {
+    const std::string fileName = (m_shown > 0 ? m_choice->itemText(m_shown) : QStringLiteral("script")).toStdString() + ".py";
+    m_fileName = QString::fromStdString(fileName);
+    m_worker = std::thread([this, source, fileName, service] {
         const auto sink = [this](script::Stream stream, std::string_view text) {
             const QString line = QString::fromUtf8(text.data(), qsizetype(text.size()));
             QMetaObject::invokeMethod(this, [this, line, stream] { append(line, stream == script::Stream::Err); },
                                       Qt::QueuedConnection);
         };
-        const core::Result<void> result = m_runner->run(source, "script.py", service, sink);
+        const core::Result<void> result = m_runner->run(source, fileName, service, sink);
         QMetaObject::invokeMethod(this, [this, result] { onFinished(result); }, Qt::QueuedConnection);
     });
     updateButtons();
@@ -166,8 +249,8 @@ void ScriptPanel::onFinished(const core::Result<void>& result)
         message = QString::fromStdString(result.error().message);
         m_status->setText(message);
         // Put the cursor on the line the error names.
-        static const QRegularExpression lineNumber(QStringLiteral("^script\\.py, line (\\d+):"));
-        if (const auto match = lineNumber.match(message); match.hasMatch()) {
+        static const QRegularExpression lineNumber(QStringLiteral("^[^,]*\\.py, line (\\d+):"));
+        if (const auto match = lineNumber.match(message); match.hasMatch() && message.startsWith(m_fileName)) {
             const QTextBlock block = m_editor->document()->findBlockByNumber(match.captured(1).toInt() - 1);
             if (block.isValid()) {
                 QTextCursor cursor(block);

@@ -4,10 +4,13 @@
 // script's output, its errors and tracebacks. The script runs in a worker thread against the
 // Stage the 3D view plays, on a clock that follows the playhead: a wait lasts until the
 // playing view gets there, and Run starts playback. Stop ends a script at once, even one stuck in
-// a wait or in an endless loop; the GUI never waits for a script.
+// a wait or in an endless loop; the GUI never waits for a script. Scripts kept in the scenario
+// are picked from a list and saved back to it; one read from the file (and not edited since) runs
+// only once the trust check (the window's: does the user trust that file?) says yes.
 
 #include <QWidget>
 
+#include <functional>
 #include <memory>
 #include <thread>
 
@@ -15,6 +18,7 @@
 #include "runtime/stage.h"
 #include "util/error.h"
 
+class QComboBox;
 class QLabel;
 class QPlainTextEdit;
 class QPushButton;
@@ -38,7 +42,17 @@ public:
     void setTime(double seconds);
 
     QString source() const;
+    /// Puts the user's text in the editor (as if typed: it is not the scenario's).
     void setSource(const QString& source);
+    /// The scripts the scenario keeps, by name (the list shows them after "Scratch"); the one
+    /// shown stays when it is still there.
+    void setScenarioScripts(const QStringList& names, const QStringList& sources);
+    /// Save to Scenario needs an open scenario.
+    void setSaveEnabled(bool enabled);
+    /// Asked before a script read from the scenario runs; false cancels the run.
+    void setTrustCheck(std::function<bool()> check) { m_trustCheck = std::move(check); }
+    /// Shows the scenario's script of that name (false when there is none).
+    bool showScenarioScript(const QString& name);
     QString output() const;
     bool isRunning() const { return m_worker.joinable(); }
 
@@ -49,6 +63,8 @@ public slots:
 signals:
     /// A script started and needs time to pass: the view should play.
     void playRequested();
+    /// Save Script: keep `source` in the scenario as `name` (one undo step).
+    void saveRequested(const QString& name, const QString& source);
     void runningChanged(bool running);
     /// The script ended: `message` is empty when it ran to its end, else why not.
     void finished(const QString& message);
@@ -57,11 +73,20 @@ private:
     void append(const QString& text, bool error);
     void onFinished(const core::Result<void>& result);
     void updateButtons();
+    void onChoice(int index);
+    void onSave();
 
     QPlainTextEdit* m_editor = nullptr;
     QPlainTextEdit* m_console = nullptr;
     QPushButton* m_run = nullptr;
     QPushButton* m_stop = nullptr;
+    QPushButton* m_save = nullptr;
+    QComboBox* m_choice = nullptr;
+    QStringList m_sources;  // per scenario script (the list's items after Scratch)
+    QString m_scratch;      // the Scratch text while a scenario script is shown
+    int m_shown = 0;        // the list's item shown in the editor
+    std::function<bool()> m_trustCheck;
+    QString m_fileName; // the running script's name in tracebacks ("script.py", "NAME.py")
     QLabel* m_status = nullptr;
     std::shared_ptr<core::runtime::Stage> m_stage;
     std::shared_ptr<core::runtime::ExternalClock> m_clock;

@@ -1767,6 +1767,38 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
         <source>Open a scenario to run scripts on it.</source>
         <translation>Öffnen Sie ein Szenario, um Skripte darauf auszuführen.</translation>
     </message>
+    <message>
+        <source>Scratch, or a script kept in the scenario</source>
+        <translation>Entwurf, oder ein im Szenario gespeichertes Skript</translation>
+    </message>
+    <message>
+        <source>Scratch</source>
+        <translation>Entwurf</translation>
+    </message>
+    <message>
+        <source>Save to Scenario…</source>
+        <translation>Im Szenario speichern…</translation>
+    </message>
+    <message>
+        <source>Keep this script in the scenario (saved with it, one undo step)</source>
+        <translation>Dieses Skript im Szenario behalten (wird mit ihm gespeichert, ein Rückgängig-Schritt)</translation>
+    </message>
+    <message>
+        <source>Save Script to Scenario</source>
+        <translation>Skript im Szenario speichern</translation>
+    </message>
+    <message>
+        <source>Name of the script:</source>
+        <translation>Name des Skripts:</translation>
+    </message>
+    <message>
+        <source>script</source>
+        <translation>skript</translation>
+    </message>
+    <message>
+        <source>Not run: the scenario&apos;s scripts are not trusted.</source>
+        <translation>Nicht ausgeführt: den Skripten des Szenarios wird nicht vertraut.</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::SegmentPanel</name>
@@ -2641,6 +2673,26 @@ Der Reiter Skelette zeigt die Animation; thespis-cli render zeichnet die Szene o
     <message>
         <source>Script: %1</source>
         <translation>Skript: %1</translation>
+    </message>
+    <message>
+        <source>Save Script “%1”</source>
+        <translation>Skript „%1“ speichern</translation>
+    </message>
+    <message>
+        <source>Run Scripts From This File?</source>
+        <translation>Skripte aus dieser Datei ausführen?</translation>
+    </message>
+    <message>
+        <source>“%1” keeps Python scripts. A script can do anything your user account can: read, change and delete files, or use the network.
+
+Run the scenario&apos;s scripts only if you trust where this file came from. Your answer is remembered for this file as it is now.</source>
+        <translation>„%1“ enthält Python-Skripte. Ein Skript kann alles, was Ihr Benutzerkonto kann: Dateien lesen, ändern und löschen oder das Netzwerk nutzen.
+
+Führen Sie die Skripte des Szenarios nur aus, wenn Sie der Herkunft dieser Datei vertrauen. Ihre Antwort wird für diese Datei in ihrem jetzigen Zustand gespeichert.</translation>
+    </message>
+    <message>
+        <source>Trust This File and Run</source>
+        <translation>Dieser Datei vertrauen und ausführen</translation>
     </message>
 </context>
 <context>

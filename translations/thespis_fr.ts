@@ -1767,6 +1767,38 @@ Un point vert signale une action jouée à l’instant courant.</translation>
         <source>Open a scenario to run scripts on it.</source>
         <translation>Ouvrez un scénario pour y exécuter des scripts.</translation>
     </message>
+    <message>
+        <source>Scratch, or a script kept in the scenario</source>
+        <translation>Brouillon, ou un script gardé dans le scénario</translation>
+    </message>
+    <message>
+        <source>Scratch</source>
+        <translation>Brouillon</translation>
+    </message>
+    <message>
+        <source>Save to Scenario…</source>
+        <translation>Enregistrer dans le scénario…</translation>
+    </message>
+    <message>
+        <source>Keep this script in the scenario (saved with it, one undo step)</source>
+        <translation>Garder ce script dans le scénario (enregistré avec lui, une étape d’annulation)</translation>
+    </message>
+    <message>
+        <source>Save Script to Scenario</source>
+        <translation>Enregistrer le script dans le scénario</translation>
+    </message>
+    <message>
+        <source>Name of the script:</source>
+        <translation>Nom du script :</translation>
+    </message>
+    <message>
+        <source>script</source>
+        <translation>script</translation>
+    </message>
+    <message>
+        <source>Not run: the scenario&apos;s scripts are not trusted.</source>
+        <translation>Non exécuté : les scripts du scénario ne sont pas approuvés.</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::SegmentPanel</name>
@@ -2641,6 +2673,26 @@ L’onglet Squelettes montre l’animation ; thespis-cli render dessine la scèn
     <message>
         <source>Script: %1</source>
         <translation>Script : %1</translation>
+    </message>
+    <message>
+        <source>Save Script “%1”</source>
+        <translation>Enregistrer le script « %1 »</translation>
+    </message>
+    <message>
+        <source>Run Scripts From This File?</source>
+        <translation>Exécuter les scripts de ce fichier ?</translation>
+    </message>
+    <message>
+        <source>“%1” keeps Python scripts. A script can do anything your user account can: read, change and delete files, or use the network.
+
+Run the scenario&apos;s scripts only if you trust where this file came from. Your answer is remembered for this file as it is now.</source>
+        <translation>« %1 » contient des scripts Python. Un script peut faire tout ce que votre compte utilisateur peut faire : lire, modifier et supprimer des fichiers, ou utiliser le réseau.
+
+N’exécutez les scripts du scénario que si vous faites confiance à la provenance de ce fichier. Votre réponse est retenue pour ce fichier tel qu’il est maintenant.</translation>
+    </message>
+    <message>
+        <source>Trust This File and Run</source>
+        <translation>Faire confiance à ce fichier et exécuter</translation>
     </message>
 </context>
 <context>

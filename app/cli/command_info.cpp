@@ -2,6 +2,7 @@
 // their import options, layers and actions, the light, masks — read from the document alone (clips are not loaded), so it works on scenarios whose
 // BVH files are missing too.
 
+#include <algorithm>
 #include <cstdio>
 
 #include "commands.h"
@@ -115,6 +116,10 @@ int runInfo(const CommandSpec& spec, const ParsedArguments& arguments)
     for (const scenario::NamedMask& mask : document->masks)
         std::printf("Mask '%s': %zu joints, default weight %g\n", mask.name.c_str(), mask.mask.weights().size(),
                     double(mask.mask.defaultWeight()));
+    for (const scenario::ScriptSpec& script : document->scripts)
+        std::printf("Script '%s': %zu lines (thespis-cli run %s --script %s)\n", script.name.c_str(),
+                    std::size_t(std::count(script.source.begin(), script.source.end(), '\n')), path.string().c_str(),
+                    script.name.c_str());
     return ExitOk;
 }
 

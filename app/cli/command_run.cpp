@@ -27,7 +27,7 @@ CommandSpec runSpec()
     spec.summary = "Play a scenario with a Python script (animService, as in the paper), rendering frames headless.";
     spec.positionals = {"SCENARIO"};
     spec.options = {
-        {"script", "S.py", "the script to run: it sees `animService` (also `anim`) and `thespis`", true},
+        {"script", "S.py|NAME", "the script to run (a file, or a script kept in the scenario): it sees `animService` (also `anim`) and `thespis`", true},
         {"frames", "A:B", "render frames A to B (inclusive) at --fps into --out while the script plays"},
         {"out", "DIR/", "the folder of the frames (frame_NNNNN.png)"},
         {"fps", "N", "frame rate of --frames (default 30)"},
@@ -64,13 +64,32 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
     if (exitCode != ExitOk)
         return exitCode;
 
-    std::ifstream file(scriptPath, std::ios::binary);
-    if (!file) {
-        printError(spec.name, "cannot read the script " + scriptPath.string() + ".");
-        return ExitInvalidInput;
+    // A file, or else a script the scenario keeps under that name.
+    std::string source;
+    if (std::error_code ec; std::filesystem::is_regular_file(scriptPath, ec)) {
+        std::ifstream file(scriptPath, std::ios::binary);
+        std::ostringstream text;
+        text << file.rdbuf();
+        if (!file) {
+            printError(spec.name, "cannot read the script " + scriptPath.string() + ".");
+            return ExitInvalidInput;
+        }
+        source = text.str();
+    } else {
+        const auto document = loadScenarioReporting(spec.name, scenarioPath);
+        if (!document)
+            return ExitInvalidInput;
+        const core::scenario::ScriptSpec* kept = document->findScript(scriptPath.string());
+        if (!kept) {
+            std::vector<std::string> names;
+            for (const core::scenario::ScriptSpec& script : document->scripts)
+                names.push_back(script.name);
+            printError(spec.name, "there is no file " + scriptPath.string() + ", and the scenario keeps no script of that name (it has: " +
+                                      joinNames(names) + ").");
+            return ExitInvalidInput;
+        }
+        source = kept->source;
     }
-    std::ostringstream source;
-    source << file.rdbuf();
 
     // The stage: the rendered scene's, or one of its own when nothing is rendered.
     SceneRender picture;
@@ -138,7 +157,7 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
         std::fwrite(text.data(), 1, text.size(), out);
         std::fflush(out);
     };
-    auto ran = runner.run(source.str(), scriptPath.filename().string(), service, sink);
+    auto ran = runner.run(source, scriptPath.filename().string(), service, sink);
     watcher.request_stop();
     if (ran && renderStatus == ExitOk)
         renderUntil(std::numeric_limits<core::Tick>::max());

@@ -465,6 +465,7 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
         if (auto built = m_preview->setDocument(m_document.get()); !built)
             sceneProblem = tr("The 3D view is empty: %1").arg(QString::fromStdString(built.error().message));
     updateScriptStage();
+    refreshScripts();
 
     const bool open = m_document != nullptr;
     m_transport->setEnabled(open);
@@ -688,6 +689,7 @@ void MainWindow::onDocumentEdited()
         if (auto updated = m_preview->updateDocument(m_document.get()); !updated)
             statusBar()->showMessage(tr("The 3D view is empty: %1").arg(QString::fromStdString(updated.error().message)));
     updateScriptStage();
+    refreshScripts();
     m_clock->setDuration(m_document->previewDuration());
     m_transport->setDuration(m_clock->duration());
     onTimeChanged(m_clock->time());

@@ -135,6 +135,10 @@ private:
     void createScriptDock();
     /// Hands the Script dock the stage the 3D view plays (none without a scene).
     void updateScriptStage();
+    /// Hands the Script dock the scenario's scripts.
+    void refreshScripts();
+    /// True when the open scenario's file may run its scripts (asks the user once per file).
+    bool confirmScriptTrust();
     void createStatusBar();
     void createShadingActions();
     void onOpen();

@@ -8,12 +8,15 @@
 #include <QDockWidget>
 #include <QHeaderView>
 #include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTreeView>
 #include <QTreeWidget>
 
 #include "content_actions.h"
+#include "edit/content_edits.h"
 #include "editor/bake_panel.h"
 #include "editor/clip_library_panel.h"
 #include "editor/curve_panel.h"
@@ -26,6 +29,7 @@
 #include "editor/properties_panel.h"
 #include "editor/qt_conversions.h"
 #include "editor/scenario_tree_model.h"
+#include "editor/script_trust.h"
 #include "editor/segment_panel.h"
 #include "editor/timeline_panel.h"
 
@@ -105,6 +109,12 @@ void MainWindow::createScriptDock()
         if (!m_clock->isPlaying())
             m_clock->play();
     });
+    connect(m_script, &editor::ScriptPanel::saveRequested, this, [this](const QString& name, const QString& source) {
+        if (m_document)
+            (void)m_document->edit(core::edit::setScript(m_document->scenario(), name.toStdString(), source.toStdString()),
+                                   tr("Save Script “%1”").arg(name));
+    });
+    m_script->setTrustCheck([this] { return confirmScriptTrust(); });
     connect(m_script, &editor::ScriptPanel::finished, this, [this](const QString& message) {
         statusBar()->showMessage(message.isEmpty() ? tr("The script ran to its end.") : tr("Script: %1").arg(message), 8000);
     });
@@ -117,6 +127,39 @@ void MainWindow::updateScriptStage()
     core::render::ScenarioScene* scene = m_preview ? m_preview->scene() : nullptr;
     m_script->setStage(scene ? scene->sharedStage() : nullptr);
 #endif
+}
+
+void MainWindow::refreshScripts()
+{
+#ifdef THESPIS_WITH_PYTHON
+    QStringList names, sources;
+    if (m_document)
+        for (const core::scenario::ScriptSpec& script : m_document->scenario().scripts) {
+            names.push_back(QString::fromStdString(script.name));
+            sources.push_back(QString::fromStdString(script.source));
+        }
+    m_script->setScenarioScripts(names, sources);
+    m_script->setSaveEnabled(m_document != nullptr);
+#endif
+}
+
+bool MainWindow::confirmScriptTrust()
+{
+    if (!m_document || m_document->filePath().isEmpty() || editor::ScriptTrust::isTrusted(m_document->filePath()))
+        return true; // a scenario never saved holds only what the user made here
+    QMessageBox box(QMessageBox::Warning, tr("Run Scripts From This File?"),
+                    tr("“%1” keeps Python scripts. A script can do anything your user account can: read, change "
+                       "and delete files, or use the network.\n\nRun the scenario's scripts only if you trust where "
+                       "this file came from. Your answer is remembered for this file as it is now.")
+                        .arg(m_document->fileName()),
+                    QMessageBox::Cancel, this);
+    QPushButton* trust = box.addButton(tr("Trust This File and Run"), QMessageBox::AcceptRole);
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.exec();
+    if (box.clickedButton() != trust)
+        return false;
+    editor::ScriptTrust::trust(m_document->filePath());
+    return true;
 }
 
 void MainWindow::refreshMessages()

@@ -15,6 +15,7 @@
 #include <QStatusBar>
 
 #include "edit/content_edits.h"
+#include "editor/script_trust.h"
 #include "editor/autosave.h"
 #include "editor/error_dialog.h"
 #include "editor/qt_conversions.h"
@@ -133,6 +134,7 @@ bool MainWindow::saveAs(const QString& path)
         return false;
     }
     m_autosaver->discard();
+    editor::ScriptTrust::trust(m_document->filePath()); // the user's own file now
     addRecentFile(m_document->filePath());
     m_reloadAction->setEnabled(true);
     statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(m_document->filePath())), 5000);

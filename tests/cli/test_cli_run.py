@@ -88,3 +88,14 @@ def test_command_line_mistakes(tmp_path):
     ok = script(tmp_path, "pass\n")
     assert run("run", DEMO, "--script", ok, "--frames", "0:3").returncode == USAGE  # no --out
     assert run("run", DEMO, "--script", ok, "--out", tmp_path).returncode == USAGE  # no --frames
+
+
+def test_a_script_kept_in_the_scenario_runs_by_name(tmp_path):
+    result = run("run", DEMO, "--script", "antigone_creon")
+    assert result.returncode == 0, result.stderr
+    assert "Antigone answered Creon at" in result.stdout
+    info = run("info", DEMO)
+    assert "Script 'antigone_creon'" in info.stdout
+    missing = run("run", DEMO, "--script", "monologue")
+    assert missing.returncode == INVALID
+    assert "monologue" in missing.stderr and "antigone_creon" in missing.stderr

@@ -1,9 +1,19 @@
 // The Script dock on the real window (paper §4.5: scripts drive the animation service while the
 // simulation runs): the paper's Antigone/Creon script runs while the view plays and its live
 // actions show in the 3D view; Stop ends a script stuck in a wait or in an endless loop while
-// the view plays on; an error shows its traceback and puts the cursor on its line.
+// the view plays on; an error shows its traceback and puts the cursor on its line. A script kept
+// in the scenario runs only once the user trusts the file; saving one to the scenario is one undo step.
 
+#include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
+#include <QInputDialog>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QTimer>
+#include <QUndoStack>
+
+#include <functional>
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -11,6 +21,7 @@
 #include <QStandardPaths>
 #include <QTest>
 
+#include "editor/document.h"
 #include "editor/playback_clock.h"
 #include "editor/scene_preview.h"
 #include "editor/script_panel.h"
@@ -30,6 +41,30 @@ void saveScreenshot(QWidget* widget, const QString& name)
     QVERIFY(widget->grab().save(QStringLiteral(THESPIS_SCREENSHOT_DIR "/") + name));
 }
 
+// Runs `act` on the next modal dialog of type T once it is up (a user answering it).
+template <class T>
+void whenModal(std::function<void(T*)> act)
+{
+    auto* timer = new QTimer;
+    timer->setInterval(50);
+    QObject::connect(timer, &QTimer::timeout, [timer, act] {
+        if (auto* dialog = qobject_cast<T*>(QApplication::activeModalWidget())) {
+            timer->stop();
+            timer->deleteLater();
+            act(dialog);
+        }
+    });
+    timer->start();
+}
+
+QAbstractButton* buttonNamed(QMessageBox* box, const QString& text)
+{
+    for (QAbstractButton* button : box->buttons())
+        if (button->text() == text)
+            return button;
+    return nullptr;
+}
+
 } // namespace
 
 class ScriptDockTest : public QObject {
@@ -41,6 +76,8 @@ private slots:
     void stopEndsAScriptStuckInAWaitAndTheViewPlaysOn();
     void stopEndsAnEndlessLoop();
     void anErrorShowsItsTracebackAndLine();
+    void aScenarioScriptRunsOnlyOnceTheFileIsTrusted();
+    void savingAScriptToTheScenarioIsOneUndoStep();
 
 private:
     editor::ScriptPanel* panel() const { return m_window->findChild<editor::ScriptPanel*>(); }
@@ -138,6 +175,70 @@ void ScriptDockTest::anErrorShowsItsTracebackAndLine()
     // The stage plays on: the action activated before the error is live.
     QVERIFY(*m_window->scenePreview()->scene()->stage().isPlaying(
         "Creon", Track::Body, "creon_wave", core::secondsToTicks(m_window->clock()->time())));
+}
+
+void ScriptDockTest::aScenarioScriptRunsOnlyOnceTheFileIsTrusted()
+{
+    auto* choice = panel()->findChild<QComboBox*>(QStringLiteral("scriptChoice"));
+    QCOMPARE(choice->count(), 2); // Scratch, and the demo's own antigone_creon
+    QVERIFY(panel()->showScenarioScript(QStringLiteral("antigone_creon")));
+    QVERIFY(panel()->source().contains(QLatin1String("animService.activateAction_body(Antigone, \"antigone_wave\")")));
+    // Not trusted yet: the user is asked, and Cancel runs nothing.
+    bool asked = false;
+    whenModal<QMessageBox>([&](QMessageBox* box) {
+        asked = true;
+        QVERIFY(box->text().contains(QLatin1String("demo.thespis")));
+        saveScreenshot(box, QStringLiteral("script_trust.png"));
+        box->reject();
+    });
+    QTest::mouseClick(button("runScript"), Qt::LeftButton);
+    QTRY_VERIFY(asked);
+    QVERIFY(!panel()->isRunning());
+    QVERIFY(panel()->findChild<QLabel*>(QStringLiteral("scriptStatus"))->text().startsWith(QLatin1String("Not run")));
+    // Trusted: it runs, and is not asked about again.
+    asked = false;
+    whenModal<QMessageBox>([&](QMessageBox* box) {
+        asked = true;
+        QAbstractButton* trust = buttonNamed(box, QStringLiteral("Trust This File and Run"));
+        QVERIFY(trust);
+        trust->click();
+    });
+    QTest::mouseClick(button("runScript"), Qt::LeftButton);
+    QTRY_VERIFY(asked);
+    QTRY_VERIFY(panel()->isRunning());
+    QTest::mouseClick(button("stopScript"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isRunning(), 5000);
+    QTest::mouseClick(button("runScript"), Qt::LeftButton);
+    QVERIFY(panel()->isRunning()); // no question this time
+    QTest::mouseClick(button("stopScript"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isRunning(), 5000);
+}
+
+void ScriptDockTest::savingAScriptToTheScenarioIsOneUndoStep()
+{
+    editor::Document& document = *m_window->document();
+    const auto before = document.scenario().scripts;
+    panel()->setSource(QStringLiteral("anim.activateAction_body('Creon', 'creon_nod')\n"));
+    whenModal<QInputDialog>([](QInputDialog* dialog) {
+        dialog->setTextValue(QStringLiteral("greet"));
+        dialog->accept();
+    });
+    QTest::mouseClick(panel()->findChild<QPushButton*>(QStringLiteral("saveScript")), Qt::LeftButton);
+    QTRY_VERIFY(document.scenario().findScript("greet"));
+    QCOMPARE(QString::fromStdString(document.scenario().findScript("greet")->source),
+             QStringLiteral("anim.activateAction_body('Creon', 'creon_nod')\n"));
+    auto* choice = panel()->findChild<QComboBox*>(QStringLiteral("scriptChoice"));
+    QCOMPARE(choice->currentText(), QStringLiteral("greet"));
+    // A script the user wrote runs without asking (it is not the file's).
+    panel()->setSource(QStringLiteral("anim.activateAction_body('Creon', 'creon_nod')\nprint('mine')\n"));
+    QTest::mouseClick(button("runScript"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(panel()->output().contains(QLatin1String("mine")), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isRunning(), 5000);
+    document.undoStack()->undo();
+    QCOMPARE(document.scenario().scripts, before);
+    QCOMPARE(choice->count(), 2);
+    document.undoStack()->redo();
+    QVERIFY(document.scenario().findScript("greet"));
 }
 
 QTEST_MAIN(ScriptDockTest)
