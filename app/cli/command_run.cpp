@@ -14,6 +14,7 @@
 #include "exit_codes.h"
 #include "progress.h"
 #include "runtime/animation_service.h"
+#include "runtime/sound.h"
 #include "scenario/scenario_runtime.h"
 #include "scene_render.h"
 #include "script_runner.h"
@@ -31,6 +32,7 @@ CommandSpec runSpec()
         {"frames", "A:B", "render frames A to B (inclusive) at --fps into --out while the script plays"},
         {"out", "DIR/", "the folder of the frames (frame_NNNNN.png)"},
         {"fps", "N", "frame rate of --frames (default 30)"},
+        {"audio", "OUT.wav", "write the sounds the script played (voiceService, sndService) as a 16-bit WAV: over the frames, or from 0 to the script's end"},
     };
     for (OptionSpec& option : pictureOptions())
         spec.options.push_back(std::move(option));
@@ -120,6 +122,8 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
     script::ScriptRunner runner;
     auto clock = std::make_shared<core::runtime::ManualClock>();
     auto service = std::make_shared<core::runtime::AnimationService>(stage, clock);
+    const std::filesystem::path baseDir = scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path();
+    auto sound = std::make_shared<core::runtime::SoundService>(baseDir, clock);
     const long count = frames ? frames->last - frames->first + 1 : 0;
     ProgressReporter progress(stderr, "run", "frames", count, quiet || !frames);
     long next = frames ? frames->first : 0;
@@ -157,7 +161,7 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
         std::fwrite(text.data(), 1, text.size(), out);
         std::fflush(out);
     };
-    auto ran = runner.run(source, scriptPath.filename().string(), service, sink);
+    auto ran = runner.run(source, scriptPath.filename().string(), service, sink, sound);
     watcher.request_stop();
     if (ran && renderStatus == ExitOk)
         renderUntil(std::numeric_limits<core::Tick>::max());
@@ -177,6 +181,17 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
         return ExitInvalidInput;
     }
     progress.finish();
+    if (const auto audio = arguments.value("audio")) {
+        const core::Tick from = frames ? core::secondsToTicks(double(frames->first) / *fps) : 0;
+        const core::Tick to = frames ? core::secondsToTicks(double(frames->last + 1) / *fps) : clock->now();
+        if (auto written = sound->writeWav(*audio, from, to); !written) {
+            printError(spec.name, written.error());
+            return ExitFailure;
+        }
+        if (!quiet)
+            std::printf("Wrote %zu sound%s into %s (%.3f s).\n", sound->activations().size(),
+                        sound->activations().size() == 1 ? "" : "s", audio->c_str(), core::ticksToSeconds(to - from));
+    }
     if (!quiet)
         std::printf("Ran %s on %s: the script ended at %.3f s%s.\n", scriptPath.filename().string().c_str(),
                     scenarioPath.filename().string().c_str(), core::ticksToSeconds(clock->now()),

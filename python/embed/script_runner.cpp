@@ -85,7 +85,8 @@ ScriptRunner::ScriptRunner() { ensurePython(); }
 ScriptRunner::~ScriptRunner() { stop(); }
 
 core::Result<void> ScriptRunner::run(const std::string& source, const std::string& fileName,
-                                     std::shared_ptr<core::runtime::AnimationService> service, const OutputSink& sink)
+                                     std::shared_ptr<core::runtime::AnimationService> service, const OutputSink& sink,
+                                     std::shared_ptr<core::runtime::SoundService> sound)
 {
     GilHolder gil;
     {
@@ -109,6 +110,10 @@ core::Result<void> ScriptRunner::run(const std::string& source, const std::strin
         globals["thespis"] = py::module_::import("thespis");
         globals["animService"] = py::cast(service);
         globals["anim"] = globals["animService"];
+        if (sound) {
+            globals["voiceService"] = py::cast(sound);
+            globals["sndService"] = globals["voiceService"];
+        }
         py::object code = builtins.attr("compile")(source, fileName, "exec");
         builtins.attr("exec")(code, globals);
     } catch (py::error_already_set& error) {

@@ -1,7 +1,8 @@
 #pragma once
 // ScriptRunner: runs the paper's Python scripts (§4.5) inside the studio and `thespis-cli run`,
 // with the same `thespis` module python3 imports built in. A script sees `animService` (also
-// `anim`): the AnimationService of the stage it plays on, and `thespis`. Its output goes to a
+// `anim`): the AnimationService of the stage it plays on, `voiceService` (also `sndService`):
+// the sound service on the same clock, when one is given, and `thespis`. Its output goes to a
 // sink (the studio's console, the terminal); an exception ends it with its traceback written
 // there and an error naming the file and line. stop(), from any thread, ends a running script:
 // its waits return at once and Python code gets KeyboardInterrupt.
@@ -17,6 +18,7 @@
 #include <string_view>
 
 #include "runtime/animation_service.h"
+#include "runtime/sound.h"
 #include "util/error.h"
 
 namespace thespis::script {
@@ -35,7 +37,8 @@ public:
     /// Errors: the script raised (message "S.py, line N: NameError: …"), or was stopped
     /// (Cancelled).
     core::Result<void> run(const std::string& source, const std::string& fileName,
-                           std::shared_ptr<core::runtime::AnimationService> service, const OutputSink& sink);
+                           std::shared_ptr<core::runtime::AnimationService> service, const OutputSink& sink,
+                           std::shared_ptr<core::runtime::SoundService> sound = nullptr);
     /// Ends the script running in run(), if any (any thread).
     void stop();
     bool isRunning() const { return m_running; }

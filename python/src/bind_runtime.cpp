@@ -12,6 +12,7 @@
 
 #include "runtime/animation_service.h"
 #include "runtime/clock.h"
+#include "runtime/sound.h"
 #include "runtime/stage.h"
 
 namespace thespis::python {
@@ -283,6 +284,50 @@ void bindRuntime(py::module_& m)
              "Stops every wait of this service, now and later (raises thespis.Cancelled in them).");
     bindTrack(service, Track::Body, "body");
     bindTrack(service, Track::Face, "face");
+
+    py::class_<SoundService, std::shared_ptr<SoundService>>(
+        r, "SoundService",
+        "The voice and sound service: sound files (WAV, OGG, FLAC; names relative to base_dir) started at the "
+        "clock's time, in sync with the stage; mixed to a WAV headless.")
+        .def(py::init([](const std::filesystem::path& baseDir, std::shared_ptr<Clock> clock, int mixRate) {
+                 return std::make_shared<SoundService>(baseDir, clock ? clock : std::make_shared<ManualClock>(), mixRate);
+             }),
+             "base_dir"_a = std::filesystem::path("."), "clock"_a = nullptr, "mix_rate"_a = 48000)
+        .def(
+            "play",
+            [](SoundService& s, const std::string& sound, double volume, const std::string& character) {
+                return unwrap(s.play(sound, volume, character));
+            },
+            "sound"_a, "volume"_a = 1.0, "character"_a = "", "Starts the sound now; returns its activation id.")
+        .def(
+            "activateAction",
+            [](SoundService& s, const std::string& character, const std::string& sound, double volume) {
+                return unwrap(s.play(sound, volume, character));
+            },
+            "character"_a, "sound"_a, "volume"_a = 1.0, "The paper's voiceService.activateAction(character, speech, volume).")
+        .def(
+            "sndmpPlayMedia", [](SoundService& s, const std::string& sound, double volume) { return unwrap(s.play(sound, volume)); },
+            "sound"_a, "volume"_a = 1.0, "The paper's sndService.sndmpPlayMedia(sound).")
+        .def("sndmpStopMedia", &SoundService::stop, "sound"_a, "The paper's sndService.sndmpStopMedia(sound).")
+        .def("stop", &SoundService::stop, "sound"_a, "Stops the sound now; False when it does not play.")
+        .def("is_playing", &SoundService::isPlaying, "sound"_a)
+        .def("length", [](SoundService& s, const std::string& sound) { return unwrap(s.length(sound)); }, "sound"_a,
+             "Seconds.")
+        .def_property_readonly("mix_rate", &SoundService::mixRate)
+        .def(
+            "mix",
+            [](const SoundService& s, double start, double seconds) {
+                std::vector<float> out(std::size_t(std::max(seconds, 0.0) * s.mixRate()));
+                s.mix(secondsToTicks(start), out);
+                return toArray<float>(out);
+            },
+            "start"_a, "seconds"_a, "What plays from `start` for `seconds`, mono at mix_rate (NumPy floats).")
+        .def(
+            "write_wav",
+            [](const SoundService& s, const std::filesystem::path& path, double start, double end) {
+                unwrap(s.writeWav(path, secondsToTicks(start), secondsToTicks(end)));
+            },
+            "path"_a, "start"_a, "end"_a, "Writes the mix of [start, end) as a 16-bit mono WAV.");
 }
 
 } // namespace thespis::python

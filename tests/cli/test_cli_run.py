@@ -99,3 +99,27 @@ def test_a_script_kept_in_the_scenario_runs_by_name(tmp_path):
     missing = run("run", DEMO, "--script", "monologue")
     assert missing.returncode == INVALID
     assert "monologue" in missing.stderr and "antigone_creon" in missing.stderr
+
+
+def test_sounds_a_script_plays_are_mixed_into_a_wav(tmp_path):
+    import wave
+    speech = Path(os.environ.get("THESPIS_SHARED_DATA", REPO.parent / "shared" / "data")) / "speech" / "pocketsphinx" / "cards" / "001.wav"
+    talk = script(tmp_path, "\n".join([
+        "animService.wait(0.5)",
+        f"voiceService.activateAction('Creon', {str(speech)!r}, 1.0)",
+        "animService.activateAction_body('Creon', 'creon_wave')",
+        "animService.waitUntilActionFinished_body('Creon', 'creon_wave')",
+    ]) + "\n")
+    out, audio = tmp_path / "frames", tmp_path / "speech.wav"
+    result = run("run", DEMO, "--script", talk, "--frames", "0:59", "--out", out, "--audio", audio, *SMALL)
+    assert result.returncode == 0, result.stderr
+    with wave.open(str(audio)) as w:
+        assert (w.getnchannels(), w.getsampwidth(), w.getframerate()) == (1, 2, 48000)
+        assert w.getnframes() == 96000  # the 60 frames at 30 fps: 2 s
+        samples = w.readframes(w.getnframes())
+    values = [int.from_bytes(samples[i:i + 2], "little", signed=True) for i in range(0, len(samples), 2)]
+    assert max(map(abs, values[:24000])) == 0  # silence until the voice starts at 0.5 s
+    assert max(map(abs, values[24000:])) > 1000  # then the speech
+    missing = script(tmp_path, "voiceService.activateAction('Creon', 'no_such.wav', 1.0)\n", "m.py")
+    bad = run("run", DEMO, "--script", missing)
+    assert bad.returncode == INVALID and "no_such.wav" in bad.stderr

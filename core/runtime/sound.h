@@ -1,0 +1,74 @@
+#pragma once
+// The voice and sound service (paper §4.5: `voiceService.activateAction(Creon, "CreonSpeech…",
+// 1.0)`, `sndService.sndmpPlayMedia(…)`): sound files — WAV, OGG, FLAC, read with libsndfile —
+// started at the clock's time, so speech plays in sync with the stage. Headless, mix() renders
+// what plays over any span of time (the CLI writes it to a WAV next to the frames); the studio
+// plays the same activations. Sounds are named by their file, relative to the scenario's
+// folder. Every method locks, so a script thread may start sounds while another mixes.
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "runtime/clock.h"
+#include "util/error.h"
+#include "util/tick.h"
+
+namespace thespis::core::runtime {
+
+/// A sound file's samples, mixed down to mono.
+struct SoundClip {
+    int rate = 0;
+    std::vector<float> samples;
+    double duration() const { return rate > 0 ? double(samples.size()) / rate : 0.0; }
+};
+
+/// Reads a sound file (WAV, OGG Vorbis, FLAC, …). Errors name the file and what is wrong.
+Result<std::shared_ptr<const SoundClip>> loadSound(const std::filesystem::path& path);
+
+class SoundService {
+public:
+    /// Sounds are found relative to `baseDir`; mix() renders at `mixRate` samples per second.
+    SoundService(std::filesystem::path baseDir, std::shared_ptr<Clock> clock, int mixRate = 48000);
+
+    /// Starts the sound now at `volume` (1: as recorded), for `owner` (a character's name, or
+    /// empty); returns its activation id. Errors: the file cannot be read.
+    Result<int> play(const std::string& sound, double volume = 1.0, const std::string& owner = {});
+    /// Stops every activation of the sound now (false: none plays).
+    bool stop(const std::string& sound);
+    bool isPlaying(const std::string& sound) const;
+    /// Length of the sound in seconds (loads it). Errors: unreadable.
+    Result<double> length(const std::string& sound);
+
+    int mixRate() const { return m_rate; }
+    /// Mixes what plays from `from` on into `out` (out.size() samples at mixRate()), clamped
+    /// to −1…1. No allocation.
+    void mix(Tick from, std::span<float> out) const;
+    /// Writes the mix of [from, to) as a 16-bit mono WAV, atomically.
+    Result<void> writeWav(const std::filesystem::path& path, Tick from, Tick to) const;
+
+    struct Activation {
+        std::string sound, owner;
+        std::shared_ptr<const SoundClip> clip;
+        Tick start = 0, end = 0; // end: natural end, or when stopped
+        float volume = 1;
+    };
+    std::vector<Activation> activations() const;
+
+private:
+    Result<std::shared_ptr<const SoundClip>> clip(const std::string& sound);
+
+    mutable std::mutex m_mutex;
+    std::filesystem::path m_baseDir;
+    std::shared_ptr<Clock> m_clock;
+    int m_rate;
+    std::map<std::string, std::shared_ptr<const SoundClip>> m_clips;
+    std::vector<Activation> m_activations;
+};
+
+} // namespace thespis::core::runtime
