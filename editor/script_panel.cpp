@@ -1,6 +1,10 @@
 #include "editor/script_panel.h"
 
+#include <QAudioOutput>
 #include <QComboBox>
+#include <QMediaPlayer>
+#include <QUrl>
+#include <QDir>
 #include <QFile>
 #include <QInputDialog>
 #include <QFontDatabase>
@@ -114,7 +118,35 @@ void ScriptPanel::setStage(std::shared_ptr<core::runtime::Stage> stage)
     updateButtons();
 }
 
-void ScriptPanel::setTime(double seconds) { m_clock->setTime(core::secondsToTicks(seconds)); }
+void ScriptPanel::setSoundFolder(const QString& folder) { m_soundFolder = folder; }
+
+void ScriptPanel::setTime(double seconds)
+{
+    const core::Tick now = core::secondsToTicks(seconds);
+    m_clock->setTime(now);
+    // Sounds the script started since the last tick play from where they are now; ended ones go.
+    std::erase_if(m_players, [&](const auto& player) {
+        if (now < player.second)
+            return false;
+        player.first->deleteLater();
+        return true;
+    });
+    if (!m_sound)
+        return;
+    const auto activations = m_sound->activations();
+    for (; m_soundsStarted < activations.size(); ++m_soundsStarted) {
+        const auto& a = activations[m_soundsStarted];
+        const QString file = QDir(m_soundFolder).absoluteFilePath(QString::fromStdString(a.sound));
+        auto* player = new QMediaPlayer(this);
+        auto* output = new QAudioOutput(player);
+        output->setVolume(a.volume);
+        player->setAudioOutput(output);
+        player->setSource(QUrl::fromLocalFile(file));
+        player->setPosition(qint64(core::ticksToSeconds(std::max<core::Tick>(0, now - a.start)) * 1000));
+        player->play();
+        m_players.emplace_back(player, a.end);
+    }
+}
 
 QString ScriptPanel::source() const { return m_editor->toPlainText(); }
 
@@ -198,18 +230,24 @@ void ScriptPanel::run()
     // A script starts over: what an earlier one left playing goes.
     m_stage->resetLive();
     auto service = std::make_shared<core::runtime::AnimationService>(m_stage, m_clock);
+    for (const auto& player : m_players)
+        player.first->deleteLater();
+    m_players.clear();
+    m_sound = std::make_shared<core::runtime::SoundService>(m_soundFolder.toStdString(), m_clock);
+    m_soundsStarted = 0;
+    auto sound = m_sound;
     m_status->setText(tr("Running…"));
     append(tr("— Run at %1 s —").arg(core::ticksToSeconds(m_clock->now()), 0, 'f', 2) + QLatin1Char('\n'), false);
     const std::string source = m_editor->toPlainText().toStdString();
     const std::string fileName = (m_shown > 0 ? m_choice->itemText(m_shown) : QStringLiteral("script")).toStdString() + ".py";
     m_fileName = QString::fromStdString(fileName);
-    m_worker = std::thread([this, source, fileName, service] {
+    m_worker = std::thread([this, source, fileName, service, sound] {
         const auto sink = [this](script::Stream stream, std::string_view text) {
             const QString line = QString::fromUtf8(text.data(), qsizetype(text.size()));
             QMetaObject::invokeMethod(this, [this, line, stream] { append(line, stream == script::Stream::Err); },
                                       Qt::QueuedConnection);
         };
-        const core::Result<void> result = m_runner->run(source, fileName, service, sink);
+        const core::Result<void> result = m_runner->run(source, fileName, service, sink, sound);
         QMetaObject::invokeMethod(this, [this, result] { onFinished(result); }, Qt::QueuedConnection);
     });
     updateButtons();
@@ -243,6 +281,9 @@ void ScriptPanel::onFinished(const core::Result<void>& result)
     if (result) {
         m_status->setText(tr("Finished."));
     } else if (result.error().code == core::ErrorCode::Cancelled) {
+        for (const auto& player : m_players) // a stopped script's voices stop with it
+            player.first->deleteLater();
+        m_players.clear();
         message = tr("Stopped.");
         m_status->setText(message);
     } else {

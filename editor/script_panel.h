@@ -15,10 +15,13 @@
 #include <thread>
 
 #include "runtime/clock.h"
+#include "runtime/sound.h"
 #include "runtime/stage.h"
 #include "util/error.h"
 
+class QAudioOutput;
 class QComboBox;
+class QMediaPlayer;
 class QLabel;
 class QPlainTextEdit;
 class QPushButton;
@@ -38,8 +41,12 @@ public:
     /// The stage scripts play on (null: no scenario shown). A running script is stopped when
     /// the stage is replaced.
     void setStage(std::shared_ptr<core::runtime::Stage> stage);
-    /// The playhead: scripts' time.
+    /// The playhead: scripts' time. Sounds the script started play from here (Qt Multimedia).
     void setTime(double seconds);
+    /// Where the scripts' sound files are found (the scenario's folder).
+    void setSoundFolder(const QString& folder);
+    /// The sound service of the script running or run last (null before the first run).
+    std::shared_ptr<core::runtime::SoundService> soundService() const { return m_sound; }
 
     QString source() const;
     /// Puts the user's text in the editor (as if typed: it is not the scenario's).
@@ -91,6 +98,10 @@ private:
     std::shared_ptr<core::runtime::Stage> m_stage;
     std::shared_ptr<core::runtime::ExternalClock> m_clock;
     std::unique_ptr<script::ScriptRunner> m_runner; // made at the first Run (it starts Python)
+    std::shared_ptr<core::runtime::SoundService> m_sound;
+    QString m_soundFolder;
+    std::size_t m_soundsStarted = 0; // activations of m_sound already handed to a player
+    std::vector<std::pair<QMediaPlayer*, core::Tick>> m_players; // playing, with their end
     std::thread m_worker;
 };
 

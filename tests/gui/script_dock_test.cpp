@@ -78,6 +78,7 @@ private slots:
     void anErrorShowsItsTracebackAndLine();
     void aScenarioScriptRunsOnlyOnceTheFileIsTrusted();
     void savingAScriptToTheScenarioIsOneUndoStep();
+    void aVoiceStartsWithTheView();
 
 private:
     editor::ScriptPanel* panel() const { return m_window->findChild<editor::ScriptPanel*>(); }
@@ -239,6 +240,23 @@ void ScriptDockTest::savingAScriptToTheScenarioIsOneUndoStep()
     QCOMPARE(choice->count(), 2);
     document.undoStack()->redo();
     QVERIFY(document.scenario().findScript("greet"));
+}
+
+void ScriptDockTest::aVoiceStartsWithTheView()
+{
+    // The paper's voiceService on a real recording: it starts at the playhead's time (played
+    // through Qt Multimedia; the machine may have no sound device, which is not an error).
+    const QString speech = QStringLiteral(THESPIS_SHARED_DATA "/speech/pocketsphinx/cards/001.wav");
+    panel()->setSource(QStringLiteral("anim.wait(0.3)\nvoiceService.activateAction('Creon', %1, 1.0)\nprint('spoke')\n")
+                           .arg(QLatin1Char('\'') + speech + QLatin1Char('\'')));
+    QTest::mouseClick(button("runScript"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(panel()->output().contains(QLatin1String("spoke")), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isRunning(), 5000);
+    const auto activations = panel()->soundService()->activations();
+    QCOMPARE(activations.size(), std::size_t(1));
+    QCOMPARE(activations[0].owner, std::string("Creon"));
+    QVERIFY(core::ticksToSeconds(activations[0].start) >= 0.3);
+    QVERIFY(activations[0].end > activations[0].start);
 }
 
 QTEST_MAIN(ScriptDockTest)
