@@ -364,10 +364,19 @@ void BlendingSchedule::evaluateInto(double t, std::span<float> out, std::span<fl
         layered = layered || (m_contributing[i] && m_actions[i].action.params.mode != BlendMode::Normalized);
     const std::span<const BlendInput> pool(m_inputs.data(), normalized);
     const bool fillRest = coverage.empty() || layered;
-    m_blender->blend(*m_layout, pool, m_rest, out, m_totals, fillRest);
-    if (!coverage.empty())
+    if (normalized == 1 && !fillRest) {
+        // One action alone, nested: its frame is the blend (a weighted average of one), and its
+        // weights are the coverage. The common case of a layer or a live schedule playing one
+        // action; skipping the blend changes nothing but rounding.
+        std::copy_n(pool[0].values, floats, out.data());
         for (std::size_t e = 0; e < elements; ++e)
-            coverage[e] = fillRest ? 1.0f : std::min(m_totals[e], 1.0f);
+            coverage[e] = std::min(pool[0].weights[e], 1.0f);
+    } else {
+        m_blender->blend(*m_layout, pool, m_rest, out, m_totals, fillRest);
+        if (!coverage.empty())
+            for (std::size_t e = 0; e < elements; ++e)
+                coverage[e] = fillRest ? 1.0f : std::min(m_totals[e], 1.0f);
+    }
 
     for (std::size_t i = 0; i < m_actions.size(); ++i) {
         const Entry& entry = m_actions[i];
