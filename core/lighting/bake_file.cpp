@@ -1,13 +1,14 @@
-// The bake file (format version 1), little-endian, in this order:
+// The bake file (format version 2), little-endian, in this order:
 //
 //   char[8]  magic "THSPPRT\0"
-//   u32      format version (1)
+//   u32      format version (2; 1 has no geometry hash)
 //   u32      order (1 … kMaxShOrder)
 //   u32      transfer kind (0 du, 1 ds, 2 dsm)
 //   u32      rays per vertex
 //   f32      ε (metres)
 //   u64      seed
 //   u64      vertex count of the character mesh
+//   u64      geometry hash of the mesh (meshGeometryHash; format 2 on)
 //   u32      segment count, then per segment:
 //              u32 name length, name bytes (UTF-8), u32 first vertex, u32 vertex count,
 //              u64 transfer offset, u8 role (0 none, 1 receiver, 2 occluder), u8 baked (0/1)
@@ -38,7 +39,8 @@ std::size_t firstNonFinite(const std::vector<float>& values)
 }
 
 constexpr char kMagic[8] = {'T', 'H', 'S', 'P', 'P', 'R', 'T', '\0'};
-constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint32_t kFormatVersion = 2;
+constexpr std::uint32_t kFirstWithGeometryHash = 2;
 constexpr std::size_t kSegmentFixedBytes = 4 + 4 + 4 + 8 + 1 + 1; // everything but the name
 constexpr std::size_t kChecksumBytes = 4;
 
@@ -157,6 +159,7 @@ Result<TransferBake> parseBakeBytes(std::string_view data, const std::filesystem
     if (!in.u32("order", order, error) || !in.u32("transfer kind", kind, error) ||
         !in.u32("rays per vertex", rays, error) || !in.f32("epsilon", bake.epsilon, error) ||
         !in.u64("seed", bake.seed, error) || !in.u64("vertex count", bake.vertexCount, error) ||
+        (version >= kFirstWithGeometryHash && !in.u64("geometry hash", bake.geometryHash, error)) ||
         !in.u32("segment count", segmentCount, error))
         return error;
     if (order < 1 || order > std::uint32_t(kMaxShOrder))
@@ -267,6 +270,7 @@ Result<void> writeBakeFile(const std::filesystem::path& path, const TransferBake
     out.f32(bake.epsilon);
     out.u64(bake.seed);
     out.u64(bake.vertexCount);
+    out.u64(bake.geometryHash);
     out.u32(std::uint32_t(bake.segments.size()));
     for (const BakedSegment& segment : bake.segments) {
         out.u32(std::uint32_t(segment.name.size()));
@@ -290,6 +294,29 @@ Result<TransferBake> readBakeFile(const std::filesystem::path& path)
     if (!data)
         return data.error();
     return parseBakeBytes(*data, path);
+}
+
+std::uint64_t meshGeometryHash(const scene::CharacterMesh& mesh)
+{
+    // FNV-1a over the bits of every value, in a fixed order.
+    std::uint64_t hash = 0xcbf29ce484222325ULL;
+    const auto add = [&hash](std::uint64_t value) {
+        for (int i = 0; i < 8; ++i) {
+            hash ^= (value >> (8 * i)) & 0xffu;
+            hash *= 0x100000001b3ULL;
+        }
+    };
+    for (const auto* list : {&mesh.positions, &mesh.normals})
+        for (const auto& v : *list) {
+            add(std::bit_cast<std::uint32_t>(v.x));
+            add(std::bit_cast<std::uint32_t>(v.y));
+            add(std::bit_cast<std::uint32_t>(v.z));
+        }
+    for (const std::uint32_t index : mesh.indices)
+        add(index);
+    for (const scene::Segment& segment : mesh.segments)
+        add(std::uint64_t(segment.firstVertex) << 32 | segment.vertexCount);
+    return hash == 0 ? 1 : hash; // 0 means "not recorded"
 }
 
 Result<void> checkBakeMatchesMesh(const TransferBake& bake, const scene::CharacterMesh& mesh)
@@ -320,6 +347,8 @@ Result<void> checkBakeMatchesMesh(const TransferBake& bake, const scene::Charact
             return mismatch("segment \"" + segment.name + "\" was baked as " + scene::segmentRoleName(baked.role) +
                             " and is now tagged " + scene::segmentRoleName(segment.role));
     }
+    if (bake.geometryHash != 0 && bake.geometryHash != meshGeometryHash(mesh))
+        return mismatch("the mesh's shape changed since it was baked (its vertices, normals or triangles differ)");
     return {};
 }
 

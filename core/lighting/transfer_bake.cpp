@@ -431,6 +431,7 @@ Result<TransferBake> bakeTransfer(const scene::CharacterMesh& mesh, const BakeSe
     bake.epsilon = settings.epsilon;
     bake.seed = settings.seed;
     bake.vertexCount = mesh.vertexCount();
+    bake.geometryHash = meshGeometryHash(mesh);
     const std::size_t perVertex = std::size_t(settings.order) * settings.order;
     std::uint64_t bakedVertices = 0;
     for (const scene::Segment& segment : mesh.segments) {

@@ -76,6 +76,8 @@ struct TransferBake {
     float epsilon = 0;
     std::uint64_t seed = 0;
     std::uint64_t vertexCount = 0;   ///< of the whole character mesh
+    /// meshGeometryHash() of the mesh baked; 0 when unknown (bake files of format 1).
+    std::uint64_t geometryHash = 0;
     std::vector<BakedSegment> segments;
     /// order² floats per vertex of each baked segment, segment after segment, in bind frames.
     std::vector<float> transfer;
@@ -130,7 +132,11 @@ Result<void> writeBakeFile(const std::filesystem::path& path, const TransferBake
 Result<TransferBake> readBakeFile(const std::filesystem::path& path);
 /// The same reader over bytes already in memory (Python, fuzzing); `source` names them in messages.
 Result<TransferBake> parseBakeBytes(std::string_view bytes, const std::filesystem::path& source);
-/// Checks that a bake belongs to a mesh (vertex count, segment names and ranges) and says what differs.
+/// A hash of what a bake depends on in a mesh: its bind-pose positions, normals and triangles,
+/// and its segments' vertex ranges. Any moved vertex changes it.
+std::uint64_t meshGeometryHash(const scene::CharacterMesh& mesh);
+/// Checks that a bake belongs to a mesh (vertex count, segment names and ranges, its geometry
+/// when the bake recorded it, the tags a DSM bake depends on) and says what differs.
 Result<void> checkBakeMatchesMesh(const TransferBake& bake, const scene::CharacterMesh& mesh);
 
 /// Exit radiance (RGB) of a vertex under the world light L when its segment's frame has the

@@ -285,6 +285,8 @@ void bindBake(py::module_& l)
         .def_readonly("epsilon", &TransferBake::epsilon)
         .def_readonly("seed", &TransferBake::seed)
         .def_readonly("vertex_count", &TransferBake::vertexCount)
+        .def_readonly("geometry_hash", &TransferBake::geometryHash,
+                      "A hash of the baked mesh's shape (0: not recorded, bake files of format 1).")
         .def_readonly("segments", &TransferBake::segments)
         .def_property_readonly(
             "transfer",

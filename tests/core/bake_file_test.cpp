@@ -93,7 +93,7 @@ scene::CharacterMesh sampleMesh()
 
 // Byte offsets of fields in the sample file (see the layout in bake_file.cpp).
 constexpr std::size_t kVersionOffset = 8;
-constexpr std::size_t kSegmentCountOffset = 8 + 4 * 4 + 4 + 8 + 8;
+constexpr std::size_t kSegmentCountOffset = 8 + 4 * 4 + 4 + 8 + 8 + 8;
 
 void putU32(std::string& bytes, std::size_t offset, std::uint32_t value)
 {
@@ -129,6 +129,30 @@ TEST(BakeFile, RoundTripIsExact)
     EXPECT_EQ(read->vertexTransfer(7)[0], bake.transfer[(4 + 1) * 9]);
     // Only the file: no temporary left beside it.
     EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator()), 1);
+}
+
+TEST(BakeFile, Format1FilesStillReadWithoutAGeometryHash)
+{
+    // A format 1 file is a format 2 file without the geometry hash after the vertex count.
+    TempDir dir;
+    TransferBake bake = sampleBake();
+    bake.geometryHash = meshGeometryHash(sampleMesh());
+    const fs::path path = dir.path() / "robot.prt";
+    ASSERT_TRUE(writeBakeFile(path, bake).ok());
+    std::string bytes = readBytes(path);
+    bytes.erase(kSegmentCountOffset - 8, 8);
+    putU32(bytes, kVersionOffset, 1);
+    bytes.resize(bytes.size() - 4);
+    const std::uint32_t crc = crc32(bytes);
+    bytes.resize(bytes.size() + 4);
+    putU32(bytes, bytes.size() - 4, crc);
+    writeBytes(path, bytes);
+    Result<TransferBake> read = readBakeFile(path);
+    ASSERT_TRUE(read.ok()) << describe(read.error());
+    EXPECT_EQ(read->geometryHash, 0u);
+    read->geometryHash = bake.geometryHash;
+    EXPECT_EQ(*read, bake);
+    EXPECT_TRUE(checkBakeMatchesMesh(*read, sampleMesh()).ok());
 }
 
 TEST(BakeFile, EveryTruncationIsRefused)
@@ -196,7 +220,7 @@ TEST(BakeFile, NewerVersionAsksForAnUpdate)
     const fs::path path = dir.path() / "robot.prt";
     ASSERT_TRUE(writeBakeFile(path, sampleBake()).ok());
     std::string bytes = readBytes(path);
-    putU32(bytes, kVersionOffset, 2);
+    putU32(bytes, kVersionOffset, 3);
     writeBytes(path, bytes);
     Result<TransferBake> read = readBakeFile(path);
     ASSERT_FALSE(read.ok());
@@ -298,4 +322,16 @@ TEST(BakeFile, MismatchedMeshIsNamed)
     TransferBake shadowed = bake;
     shadowed.transferKind = TransferKind::DiffuseShadowed;
     EXPECT_TRUE(checkBakeMatchesMesh(shadowed, mesh).ok());
+
+    // A bake that recorded the mesh's geometry sees a moved vertex, though counts and names
+    // still match.
+    TransferBake recorded = bake;
+    recorded.geometryHash = meshGeometryHash(sampleMesh());
+    EXPECT_TRUE(checkBakeMatchesMesh(recorded, sampleMesh()).ok());
+    mesh = sampleMesh();
+    mesh.positions[4].y += 0.01f;
+    check = checkBakeMatchesMesh(recorded, mesh);
+    ASSERT_FALSE(check.ok());
+    EXPECT_NE(check.error().message.find("shape changed"), std::string::npos) << check.error().message;
+    EXPECT_NE(meshGeometryHash(mesh), recorded.geometryHash);
 }
