@@ -131,8 +131,8 @@ void ScriptPanel::setTime(double seconds)
         player.first->deleteLater();
         return true;
     });
-    if (!m_sound)
-        return;
+    if (!m_sound || m_sound->activationCount() == m_soundsStarted)
+        return; // nothing new: no copy of the list at every tick
     const auto activations = m_sound->activations();
     for (; m_soundsStarted < activations.size(); ++m_soundsStarted) {
         const auto& a = activations[m_soundsStarted];

@@ -24,9 +24,7 @@ CommandSpec renderSpec()
         {"frames", "A:B", "render frames A to B (inclusive) at --fps into DIR/frame_NNNNN.png"},
         {"fps", "N", "frame rate of --frames (default 30)"},
     };
-    for (OptionSpec& option : pictureOptions())
-        spec.options.push_back(std::move(option));
-    spec.options.push_back({"quiet", "", "no progress and no summary"});
+    addPictureOptions(spec);
     spec.description =
         "The light comes from the scenario's probe, or a default sky. Rendering uses EGL on Mesa's\n"
         "surfaceless platform, so it runs on servers and in CI; GALLIUM_DRIVER=llvmpipe forces software GL.\n"
@@ -42,11 +40,10 @@ int runRender(const CommandSpec& spec, const ParsedArguments& arguments)
     const bool quiet = arguments.has("quiet");
     int exitCode = ExitOk;
 
-    std::optional<FrameRange> frames;
-    if (const auto text = arguments.value("frames")) {
-        frames = parseFrameRange(*text);
-        if (!frames)
-            return usageError(spec, "--frames must be FIRST:LAST frame numbers (0 ≤ FIRST ≤ LAST), not '" + *text + "'");
+    const std::optional<FrameRange> frames = frameRangeOption(spec, arguments, exitCode);
+    if (exitCode != ExitOk)
+        return exitCode;
+    if (frames) {
         if (arguments.has("time"))
             return usageError(spec, "give either --time or --frames, not both");
     } else if (arguments.has("fps")) {
@@ -64,10 +61,8 @@ int runRender(const CommandSpec& spec, const ParsedArguments& arguments)
         return exitCode;
 
     if (frames) {
-        if (std::error_code ec; !std::filesystem::is_directory(outPath, ec) && !std::filesystem::create_directories(outPath, ec)) {
-            printError(spec.name, "cannot create the folder " + outPath.string() + ": " + ec.message() + ".");
-            return ExitFailure;
-        }
+        if (const int status = makeFrameFolder(spec.name, outPath); status != ExitOk)
+            return status;
     } else {
         const std::filesystem::path outDir = outPath.parent_path().empty() ? "." : outPath.parent_path();
         if (std::error_code ec; !std::filesystem::is_directory(outDir, ec)) {

@@ -34,9 +34,7 @@ CommandSpec runSpec()
         {"fps", "N", "frame rate of --frames (default 30)"},
         {"audio", "OUT.wav", "write the sounds the script played (voiceService, sndService) as a 16-bit WAV: over the frames, or from 0 to the script's end"},
     };
-    for (OptionSpec& option : pictureOptions())
-        spec.options.push_back(std::move(option));
-    spec.options.push_back({"quiet", "", "no progress and no summary"});
+    addPictureOptions(spec);
     spec.description =
         "Time is simulated: a wait in the script (waitUntilActionFinished_body, wait) moves the clock at once,\n"
         "after the frames up to that time are rendered; frames after the script's end show what it left playing.\n"
@@ -52,11 +50,10 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
     const std::filesystem::path scriptPath = *arguments.value("script");
     const bool quiet = arguments.has("quiet");
     int exitCode = ExitOk;
-    std::optional<FrameRange> frames;
-    if (const auto text = arguments.value("frames")) {
-        frames = parseFrameRange(*text);
-        if (!frames)
-            return usageError(spec, "--frames must be FIRST:LAST frame numbers (0 ≤ FIRST ≤ LAST), not '" + *text + "'");
+    const std::optional<FrameRange> frames = frameRangeOption(spec, arguments, exitCode);
+    if (exitCode != ExitOk)
+        return exitCode;
+    if (frames) {
         if (!arguments.has("out"))
             return usageError(spec, "--frames needs --out DIR/");
     } else if (arguments.has("out") || arguments.has("fps")) {
@@ -99,10 +96,8 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
     std::filesystem::path outDir;
     if (frames) {
         outDir = *arguments.value("out");
-        if (std::error_code ec; !std::filesystem::is_directory(outDir, ec) && !std::filesystem::create_directories(outDir, ec)) {
-            printError(spec.name, "cannot create the folder " + outDir.string() + ": " + ec.message() + ".");
-            return ExitFailure;
-        }
+        if (const int status = makeFrameFolder(spec.name, outDir); status != ExitOk)
+            return status;
         if (const int status = prepareSceneRender(spec, arguments, scenarioPath, quiet, picture); status != ExitOk)
             return status;
         stage = picture.scene->sharedStage();

@@ -58,6 +58,26 @@ std::optional<FrameRange> parseFrameRange(const std::string& text)
     return FrameRange{long(*first), long(*last)};
 }
 
+std::optional<FrameRange> frameRangeOption(const CommandSpec& spec, const ParsedArguments& arguments, int& exitCode)
+{
+    const auto text = arguments.value("frames");
+    if (!text)
+        return std::nullopt;
+    auto frames = parseFrameRange(*text);
+    if (!frames)
+        exitCode = usageError(spec, "--frames must be FIRST:LAST frame numbers (0 ≤ FIRST ≤ LAST), not '" + *text + "'");
+    return frames;
+}
+
+int makeFrameFolder(const std::string& command, const std::filesystem::path& folder)
+{
+    if (std::error_code ec; !std::filesystem::is_directory(folder, ec) && !std::filesystem::create_directories(folder, ec)) {
+        printError(command, "cannot create the folder " + folder.string() + ": " + ec.message() + ".");
+        return ExitFailure;
+    }
+    return ExitOk;
+}
+
 std::optional<double> frameRateOption(const CommandSpec& spec, const ParsedArguments& arguments, int& exitCode)
 {
     const auto text = arguments.value("fps");
@@ -71,9 +91,9 @@ std::optional<double> frameRateOption(const CommandSpec& spec, const ParsedArgum
     return *value;
 }
 
-std::vector<OptionSpec> pictureOptions()
+void addPictureOptions(CommandSpec& spec)
 {
-    return {
+    spec.options.insert(spec.options.end(), {
         {"size", "WxH", "picture size in pixels (default 1280x720)"},
         {"shading", "prt|phong|unlit", "PRT lighting (paper §6), Phong for comparison, or albedo only (default prt)"},
         {"bake", "FILE", "baked transfer (thespis-cli bake) for the character; without it PRT is unshadowed (DU)"},
@@ -84,7 +104,8 @@ std::vector<OptionSpec> pictureOptions()
         {"no-ground", "", "leave out the ground disc"},
         {"probe-background", "", "draw the scenario's light probe behind the characters"},
         {"samples", "N", "multisampling samples per pixel (default 4, 0 for none)"},
-    };
+        {"quiet", "", "no progress and no summary"},
+    });
 }
 
 int SceneRender::write(const std::string& command, const std::filesystem::path& file)

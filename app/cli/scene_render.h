@@ -21,12 +21,16 @@ struct FrameRange {
 };
 /// "A:B" with 0 ≤ A ≤ B.
 std::optional<FrameRange> parseFrameRange(const std::string& text);
+/// --frames, when given; a bad value prints the usage error and sets exitCode.
+std::optional<FrameRange> frameRangeOption(const CommandSpec& spec, const ParsedArguments& arguments, int& exitCode);
+/// Makes the folder a frame sequence goes into; prints why not and returns ExitFailure.
+int makeFrameFolder(const std::string& command, const std::filesystem::path& folder);
 /// --fps (default 30); on a bad value prints the usage error and sets exitCode.
 std::optional<double> frameRateOption(const CommandSpec& spec, const ParsedArguments& arguments, int& exitCode);
 
-/// The picture options: size, shading, bake and character, skinning, camera, ground, probe
-/// background, samples.
-std::vector<OptionSpec> pictureOptions();
+/// Appends the picture options (size, shading, bake and character, skinning, camera, ground,
+/// probe background, samples) and --quiet to a command's options.
+void addPictureOptions(CommandSpec& spec);
 
 struct SceneRender {
     std::unique_ptr<core::render::ScenarioScene> scene;

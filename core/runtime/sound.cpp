@@ -159,6 +159,12 @@ Result<void> SoundService::writeWav(const std::filesystem::path& path, Tick from
     return writeFileAtomically(path, bytes);
 }
 
+std::size_t SoundService::activationCount() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_activations.size();
+}
+
 std::vector<SoundService::Activation> SoundService::activations() const
 {
     const std::lock_guard lock(m_mutex);

@@ -59,6 +59,7 @@ public:
         float volume = 1;
     };
     std::vector<Activation> activations() const;
+    std::size_t activationCount() const;
 
 private:
     Result<std::shared_ptr<const SoundClip>> clip(const std::string& sound);
