@@ -22,10 +22,11 @@
 #include <filesystem>
 
 #include "edit/document_edits.h"
-#include "editor/bake_job.h"
 #include "editor/character_choice.h"
 #include "editor/document.h"
+#include "editor/job_runner.h"
 #include "editor/qt_conversions.h"
+#include "lighting/transfer_bake_job.h"
 #include "scenario/scenario_character.h"
 
 namespace thespis::editor {
@@ -82,7 +83,7 @@ void removeEmptyBakeFolder(const QString& file)
 
 } // namespace
 
-BakePanel::BakePanel(QWidget* parent) : QWidget(parent), m_job(new BakeJob(this))
+BakePanel::BakePanel(QWidget* parent) : QWidget(parent), m_job(new JobRunner(this))
 {
     setObjectName(QStringLiteral("bakePanel"));
     auto* layout = new QVBoxLayout(this);
@@ -198,8 +199,8 @@ BakePanel::BakePanel(QWidget* parent) : QWidget(parent), m_job(new BakeJob(this)
     connect(m_start, &QPushButton::clicked, this, &BakePanel::start);
     connect(m_cancel, &QPushButton::clicked, this, &BakePanel::cancel);
     connect(m_prtPreview, &QCheckBox::toggled, this, &BakePanel::prtPreviewToggled);
-    connect(m_job, &BakeJob::progress, this, &BakePanel::onProgress);
-    connect(m_job, &BakeJob::finished, this, &BakePanel::onFinished);
+    connect(m_job, &JobRunner::progress, this, &BakePanel::onProgress);
+    connect(m_job, &JobRunner::finished, this, &BakePanel::onFinished);
 
     setSettings(lighting::BakeSettings{});
     m_coefficients->setText(tr("%1 coefficients per vertex").arg(m_order->value() * m_order->value()));
@@ -345,15 +346,19 @@ void BakePanel::start()
         return;
     }
     const core::scenario::Character& character = scenario.characters[std::size_t(index)];
-    Running running{character.name, character.skeleton, character.model, character.segmentTags, *s};
+    Running running{character.name, character.skeleton, character.model, character.segmentTags, *s, *path};
     const auto vertices = qint64(body->mesh.vertexCount());
-    if (auto started = m_job->start(std::move(body->mesh), *s, *path); !started) {
+    auto job = std::make_unique<lighting::TransferBakeJob>();
+    job->mesh = std::move(body->mesh);
+    job->settings = *s;
+    job->output = toFsPath(*path);
+    if (auto started = m_job->start(std::move(job)); !started) {
         removeEmptyBakeFolder(*path);
         setStatus(fromUtf8(started.error().message), true);
         return;
     }
     m_running = std::move(running);
-    onProgress(0, vertices);
+    onProgress({}, 0, vertices);
     setStatus(tr("Baking %1: %2, order %3, %4 rays per vertex…")
                   .arg(fromUtf8(character.name), shortTransferName(s->transfer))
                   .arg(s->order)
@@ -367,28 +372,31 @@ void BakePanel::cancel()
     m_job->cancel();
 }
 
-void BakePanel::onProgress(qint64 done, qint64 total)
+void BakePanel::onProgress(const QString&, qint64 done, qint64 total)
 {
     m_progress->setRange(0, int(std::max<qint64>(total, 1)));
     m_progress->setValue(int(std::min(done, total)));
     m_progress->setFormat(tr("%p% — %1 / %2 vertices").arg(grouped(done), grouped(total)));
 }
 
-void BakePanel::onFinished(const core::Result<QString>& path)
+void BakePanel::onFinished(const core::Result<void>& result)
 {
     const std::optional<Running> running = std::move(m_running);
     m_running.reset();
     updateEnabled();
-    if (!path) {
-        removeEmptyBakeFolder(m_job->outputPath());
+    if (!running)
+        return;
+    const QString* path = &running->path;
+    if (!result) {
+        removeEmptyBakeFolder(*path);
         m_progress->setRange(0, 1);
         m_progress->setValue(0);
-        if (path.error().code == core::ErrorCode::Cancelled) {
+        if (result.error().code == core::ErrorCode::Cancelled) {
             m_progress->setFormat(tr("Cancelled"));
             setStatus(tr("Cancelled — nothing changed."), false);
         } else {
             m_progress->setFormat(tr("Failed"));
-            setStatus(tr("The bake failed: %1").arg(fromUtf8(path.error().message)), true);
+            setStatus(tr("The bake failed: %1").arg(fromUtf8(result.error().message)), true);
         }
         return;
     }
@@ -398,7 +406,7 @@ void BakePanel::onFinished(const core::Result<QString>& path)
         removeEmptyBakeFolder(*path);
         setStatus(why, true);
     };
-    if (!m_document || !running)
+    if (!m_document)
         return refuse(tr("The scenario was closed while baking; nothing changed."));
     const auto& characters = m_document->scenario().characters;
     const auto it = std::find_if(characters.begin(), characters.end(),
@@ -418,7 +426,7 @@ void BakePanel::onFinished(const core::Result<QString>& path)
         !edited)
         return refuse(tr("The bake could not be applied: %1").arg(fromUtf8(edited.error().message)));
 
-    const lighting::BakeStatistics& statistics = m_job->statistics();
+    const lighting::BakeStatistics& statistics = m_job->jobAs<lighting::TransferBakeJob>()->statistics;
     const double mrays = statistics.seconds > 0 ? double(statistics.rays) / statistics.seconds / 1e6 : 0.0;
     setStatus(tr("Last bake: %1, order %2, %3 rays per vertex — %4 s, %5 Mrays/s.")
                   .arg(shortTransferName(s.transfer))

@@ -1,13 +1,13 @@
 #pragma once
 // BakePanel: the PRT bake of the studio (paper §6). Picks a character of the document, edits the
 // bake settings (SH order, rays per vertex, transfer DU / DS / DSM, ray tracer, relaxation ε,
-// threads), runs the bake as a background BakeJob with a progress bar and Cancel, and applies the
+// threads), runs the bake as a background job (core's TransferBakeJob in a JobRunner) with a progress bar and Cancel, and applies the
 // result as ONE undoable edit that points the character at its new bake file (Character::bake,
 // written under <scenario folder>/bakes/). A cancelled or failed bake changes nothing. It says
 // which bake the character uses now, and whether that one still fits its segment tags; a
 // "Show PRT lighting" check box asks for the viewport's PRT or Phong shading.
 //
-// Owns its BakeJob. Changing or clearing the document cancels a running bake.
+// Owns its JobRunner. Changing or clearing the document cancels a running bake.
 
 #include <QPointer>
 #include <QString>
@@ -31,7 +31,7 @@ class QSpinBox;
 
 namespace thespis::editor {
 
-class BakeJob;
+class JobRunner;
 class Document;
 
 class BakePanel : public QWidget {
@@ -44,7 +44,7 @@ public:
     void setDocument(Document* document);
     Document* document() const { return m_document; }
 
-    BakeJob* job() const { return m_job; }
+    JobRunner* job() const { return m_job; }
     bool isRunning() const;
     /// Starts baking the chosen character with the settings shown. When it cannot start (bad
     /// setting, no folder to write to, body that does not load) the status line says why and
@@ -102,16 +102,17 @@ private:
         std::string skeleton, model;
         std::vector<core::scene::SegmentTag> segmentTags;
         core::lighting::BakeSettings settings;
+        QString path; ///< the bake file being written
     };
     void refreshCharacters();
     void refreshCurrentBake();
     void updateEnabled();
     void setStatus(const QString& text, bool error);
-    void onProgress(qint64 done, qint64 total);
-    void onFinished(const core::Result<QString>& path);
+    void onProgress(const QString& stage, qint64 done, qint64 total);
+    void onFinished(const core::Result<void>& result);
 
     QPointer<Document> m_document;
-    BakeJob* m_job = nullptr; // child
+    JobRunner* m_job = nullptr; // child
     std::optional<Running> m_running;
     QString m_currentBakeKey; // what refreshCurrentBake last looked at
 

@@ -21,8 +21,10 @@
 
 #include <cmath>
 
+#include "editor/job_runner.h"
 #include "editor/qt_conversions.h"
 #include "lighting/probe_preview.h"
+#include "lighting/probe_projection_job.h"
 
 namespace thespis::editor {
 
@@ -45,6 +47,8 @@ LightingDialog::LightingDialog(const QString& baseDir, const core::scenario::Lig
 {
     setObjectName(QStringLiteral("lightingDialog"));
     setWindowTitle(tr("Lighting"));
+    m_projection = new JobRunner(this);
+    connect(m_projection, &JobRunner::finished, this, &LightingDialog::onProjected);
     m_sky = new QRadioButton(tr("No probe: the default sky"), this);
     m_sky->setObjectName(QStringLiteral("skyChoice"));
     m_probeChoice = new QRadioButton(tr("A light probe (HDR or EXR)"), this);
@@ -137,49 +141,80 @@ LightingDialog::LightingDialog(const QString& baseDir, const core::scenario::Lig
     connect(m_sky, &QRadioButton::toggled, this, [this] { load(); });
 }
 
-bool LightingDialog::setProbeFile(const QString& path)
+void LightingDialog::setProbeFile(const QString& path)
 {
-    const QString before = m_probePath;
+    if (!m_fallbackPath)
+        m_fallbackPath = m_probePath;
     m_probePath = QFileInfo(path).absoluteFilePath();
-    m_probeChoice->setChecked(true);
-    if (load())
-        return true;
-    // A probe that cannot be read keeps the one before (the message stays up).
-    const QString message = m_message->text();
-    m_probePath = before;
-    load();
-    m_message->setText(message);
-    return false;
+    if (m_probeChoice->isChecked())
+        load();
+    else
+        m_probeChoice->setChecked(true); // loads, through the sky button's toggle
 }
 
-bool LightingDialog::load()
+bool LightingDialog::isLoading() const
 {
-    m_probe.reset();
-    m_message->clear();
+    return m_projection->isRunning();
+}
+
+void LightingDialog::load()
+{
     const bool wantProbe = m_probeChoice->isChecked();
     m_file->setText(m_probePath.isEmpty() ? tr("No file chosen.") : QDir::toNativeSeparators(m_probePath));
     m_layout->setEnabled(wantProbe);
-    bool ok = true;
-    if (wantProbe && !m_probePath.isEmpty()) {
-        const QString layoutName = m_layout->currentData().toString();
-        const auto layout = core::lighting::parseProbeLayout(layoutName.toStdString());
-        auto probe = core::lighting::LightProbe::load(toFsPath(m_probePath), *layout);
-        auto light = probe ? core::lighting::projectProbeFile(toFsPath(m_probePath), *layout, kLightOrder)
-                           : core::Result<core::lighting::ShRgb>(probe.error());
-        if (probe && light) {
-            m_probe = std::move(probe).value();
-            m_light = *light;
-            m_exposure = core::lighting::previewExposure(*m_probe);
-        } else {
-            const core::Error& error = probe ? light.error() : probe.error();
-            m_message->setText(tr("%1 cannot be used as a light probe: %2")
-                                   .arg(QFileInfo(m_probePath).fileName(), fromUtf8(error.message)));
-            ok = false;
-        }
+    if (m_projection->isRunning()) {
+        m_reloadWanted = true; // once the running one has stopped
+        m_projection->cancel();
+        return;
     }
-    m_ok->setEnabled(!wantProbe || m_probe.has_value());
+    m_message->clear();
+    if (!wantProbe || m_probePath.isEmpty()) {
+        m_probe.reset();
+        m_fallbackPath.reset();
+        m_ok->setEnabled(!wantProbe);
+        updatePictures();
+        return;
+    }
+    auto job = std::make_unique<core::lighting::ProbeProjectionJob>();
+    job->path = toFsPath(m_probePath);
+    job->layout = *core::lighting::parseProbeLayout(m_layout->currentData().toString().toStdString());
+    job->order = kLightOrder;
+    if (auto started = m_projection->start(std::move(job)); !started) {
+        onProjected(started);
+        return;
+    }
+    m_ok->setEnabled(false);
+    m_message->setText(tr("Reading %1 and projecting its light…").arg(QFileInfo(m_probePath).fileName()));
+}
+
+void LightingDialog::onProjected(const core::Result<void>& result)
+{
+    if (m_reloadWanted) {
+        m_reloadWanted = false;
+        load();
+        return;
+    }
+    if (result) {
+        auto* job = m_projection->jobAs<core::lighting::ProbeProjectionJob>();
+        m_probe = std::move(job->probe);
+        m_light = job->light;
+        m_exposure = core::lighting::previewExposure(*m_probe);
+        m_message->clear();
+    } else {
+        const QString message = tr("%1 cannot be used as a light probe: %2")
+                                    .arg(QFileInfo(m_probePath).fileName(), fromUtf8(result.error().message));
+        if (m_fallbackPath) {
+            m_probePath = *m_fallbackPath; // its probe and light are still loaded
+            m_file->setText(m_probePath.isEmpty() ? tr("No file chosen.") : QDir::toNativeSeparators(m_probePath));
+        } else {
+            m_probe.reset();
+        }
+        m_message->setText(message);
+    }
+    m_fallbackPath.reset();
+    m_ok->setEnabled(!m_probeChoice->isChecked() || m_probe.has_value());
     updatePictures();
-    return ok;
+    emit loaded(result.ok());
 }
 
 void LightingDialog::updatePictures()

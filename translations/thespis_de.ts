@@ -1245,6 +1245,10 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>The default sky</source>
         <translation>Der Standardhimmel</translation>
     </message>
+    <message>
+        <source>Reading %1 and projecting its light…</source>
+        <translation>%1 wird gelesen und sein Licht projiziert…</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::MessagesPanel</name>

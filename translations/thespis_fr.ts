@@ -1245,6 +1245,10 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>The default sky</source>
         <translation>Le ciel par défaut</translation>
     </message>
+    <message>
+        <source>Reading %1 and projecting its light…</source>
+        <translation>Lecture de %1 et projection de sa lumière…</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::MessagesPanel</name>

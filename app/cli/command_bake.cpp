@@ -14,7 +14,9 @@
 #include "commands.h"
 #include "exit_codes.h"
 #include "lighting/probe.h"
+#include "lighting/probe_projection_job.h"
 #include "lighting/transfer_bake.h"
+#include "lighting/transfer_bake_job.h"
 #include "progress.h"
 #include "scenario/scenario_character.h"
 #include "scene/gltf_mesh.h"
@@ -201,31 +203,27 @@ int runBake(const CommandSpec& spec, const ParsedArguments& arguments)
     }
 
     installInterruptHandlers();
-    lighting::BakeStatistics statistics;
+    lighting::TransferBakeJob job;
+    job.mesh = *mesh;
+    job.settings = settings;
+    job.output = outPath;
     ProgressReporter progress(stderr, "bake", "vertices", long(mesh->vertexCount()), quiet);
-    auto bake = lighting::bakeTransferWatched(
-        *mesh, settings, std::chrono::milliseconds(50),
-        [&](const lighting::BakeProgress& p) {
-            progress.update(long(p.verticesDone));
-            return !interrupted();
-        },
-        &statistics);
-    if (bake)
-        progress.finish();
-    else
+    const auto baked = core::runJobWatched(job, std::chrono::milliseconds(50), [&](const core::JobProgress& p) {
+        progress.update(long(p.done));
+        return !interrupted();
+    });
+    if (!baked) {
         progress.abandon();
-    if (!bake) {
-        if (bake.error().code == core::ErrorCode::Cancelled) {
+        if (baked.error().code == core::ErrorCode::Cancelled) {
             std::fprintf(stderr, "thespis-cli bake: cancelled; %s was not written.\n", outPath.string().c_str());
             return ExitCancelled;
         }
-        printError(spec.name, bake.error());
+        printError(spec.name, baked.error());
         return ExitFailure;
     }
-    if (auto written = lighting::writeBakeFile(outPath, *bake); !written) {
-        printError(spec.name, written.error());
-        return ExitFailure;
-    }
+    progress.finish();
+    const lighting::TransferBake* bake = &*job.bake;
+    const lighting::BakeStatistics& statistics = job.statistics;
     if (quiet)
         return ExitOk;
 

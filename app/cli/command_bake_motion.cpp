@@ -1,7 +1,6 @@
-// thespis-cli bake-motion: evaluates a character's body schedule at a fixed frame rate over the
-// scenario (or a part of it) and writes the frames as a BVH clip on the character's skeleton.
-// Frames are baked into memory first and written atomically at the end, so an interrupted or
-// failed bake never leaves a partial file behind.
+// thespis-cli bake-motion: runs core's MotionBakeJob (a character's body schedule evaluated at a
+// fixed frame rate, written as a BVH clip) with a progress bar; Ctrl-C stops it and nothing is
+// written.
 
 #include <chrono>
 #include <cmath>
@@ -9,22 +8,16 @@
 #include <cstdlib>
 #include <thread>
 
-#include "anim/bvh.h"
-#include "anim/keyframe_clip.h"
+#include <optional>
+
 #include "cancel.h"
 #include "commands.h"
 #include "exit_codes.h"
 #include "progress.h"
-#include "scenario/scenario_runtime.h"
+#include "scenario/motion_bake_job.h"
 
 namespace thespis::cli {
 namespace {
-
-namespace anim = core::anim;
-namespace scenario = core::scenario;
-
-// Refuse bakes whose frames would not fit comfortably in memory (1 GiB of floats).
-constexpr double MaxBakeFloats = double(1u << 28);
 
 // THESPIS_CLI_FRAME_DELAY_MS slows each frame down by that many milliseconds. It exists for the
 // tests, which need a bake long enough to interrupt and to watch its progress; 0 by default.
@@ -91,111 +84,52 @@ int runBakeMotion(const CommandSpec& spec, const ParsedArguments& arguments)
     if (outPath.extension() != ".bvh")
         return usageError(spec, "--out must name a .bvh file (only BVH output is supported), not '"
                                     + outPath.string() + "'");
-    const std::filesystem::path outDir = outPath.parent_path().empty() ? "." : outPath.parent_path();
-    if (std::error_code ec; !std::filesystem::is_directory(outDir, ec)) {
-        printError(spec.name, "cannot write " + outPath.string() + ": the folder " + outDir.string()
-                                  + " does not exist.");
-        return ExitInvalidInput;
-    }
+    if (startOption && *startOption < 0)
+        return usageError(spec, "--start must not be negative");
+    if (endOption && *endOption < startOption.value_or(0.0))
+        return usageError(spec, "--end (" + std::to_string(*endOption) + " s) is before --start ("
+                                    + std::to_string(startOption.value_or(0.0)) + " s)");
 
-    const auto document = loadScenarioReporting(spec.name, scenarioPath);
+    auto document = loadScenarioReporting(spec.name, scenarioPath);
     if (!document)
         return ExitInvalidInput;
-    if (!document->findCharacter(characterName)) {
-        std::vector<std::string> names;
-        for (const auto& character : document->characters)
-            names.push_back(character.name);
-        printError(spec.name, "the scenario " + scenarioPath.string() + " has no character named '" + characterName
-                                  + "' (its characters: " + joinNames(names) + ").");
-        return ExitInvalidInput;
-    }
-    const std::filesystem::path baseDir = scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path();
-    auto runtime = scenario::buildRuntime(*document, baseDir);
-    if (!runtime) {
-        printError(spec.name, runtime.error());
-        return ExitInvalidInput;
-    }
-    const scenario::CharacterRuntime* character = runtime->findCharacter(characterName);
-    if (!character || !character->body) {
-        printError(spec.name, "character '" + characterName + "' has no body animation to bake.");
-        return ExitInvalidInput;
-    }
+    core::scenario::MotionBakeJob job;
+    job.scenario = std::move(*document);
+    job.baseDir = scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path();
+    job.character = characterName;
+    job.output = outPath;
+    job.fps = fps;
+    job.start = startOption.value_or(0.0);
+    job.end = endOption;
+    job.frameDelay = debugFrameDelay();
 
-    const double start = startOption.value_or(0.0);
-    const double end = endOption.value_or(runtime->duration);
-    if (start < 0)
-        return usageError(spec, "--start must not be negative");
-    if (end < start)
-        return usageError(spec, "--end (" + std::to_string(end) + " s) is before --start (" + std::to_string(start)
-                                    + " s)");
-    if (!endOption && runtime->duration <= 0) {
-        printError(spec.name, "the scenario has no duration and no finite action; give the bake's length with --end.");
-        return ExitInvalidInput;
-    }
-
-    const anim::BlendingSchedule& body = *character->body;
-    const anim::FrameLayoutPtr& layout = body.layout();
-    const std::size_t floats = layout->floatCount();
-    // A small tolerance so that e.g. 8.4 s × 30 fps gives 253 frames despite rounding.
-    const double intervals = std::floor((end - start) * fps + 1e-6);
-    if ((intervals + 1) * double(floats) > MaxBakeFloats) {
-        printError(spec.name, "the bake would hold " + std::to_string(long(intervals + 1)) + " frames of "
-                                  + std::to_string(floats) + " values; lower --fps or bake a shorter range.");
-        return ExitInvalidInput;
-    }
-    const long frameCount = long(intervals) + 1;
-
-    // Bake. The frame buffer is allocated once; evaluation itself allocates nothing.
-    const auto delay = debugFrameDelay();
+    installInterruptHandlers();
     const auto began = std::chrono::steady_clock::now();
-    std::vector<float> frames(std::size_t(frameCount) * floats);
-    ProgressReporter progress(stderr, "bake-motion", "frames", frameCount, quiet);
-    for (long i = 0; i < frameCount; ++i) {
-        if (interrupted()) {
-            progress.abandon();
-            std::fprintf(stderr, "thespis-cli bake-motion: cancelled after %ld of %ld frames; %s was not written.\n",
-                         i, frameCount, outPath.string().c_str());
+    std::optional<ProgressReporter> progress; // once the frame count is known
+    const auto baked = core::runJobWatched(job, std::chrono::milliseconds(50), [&](const core::JobProgress& p) {
+        if (p.stage == core::scenario::MotionBakeJob::FramesStage) {
+            if (!progress)
+                progress.emplace(stderr, "bake-motion", "frames", long(p.total), quiet);
+            progress->update(long(p.done));
+        }
+        return !interrupted();
+    });
+    if (!baked) {
+        if (progress)
+            progress->abandon();
+        if (baked.error().code == core::ErrorCode::Cancelled) {
+            std::fprintf(stderr, "thespis-cli bake-motion: cancelled; %s was not written.\n", outPath.string().c_str());
             return ExitCancelled;
         }
-        const double t = start + double(i) / fps;
-        body.evaluate(t, std::span<float>(frames.data() + std::size_t(i) * floats, floats));
-        progress.update(i + 1);
-        if (delay.count() > 0)
-            std::this_thread::sleep_for(delay);
+        printError(spec.name, baked.error());
+        return baked.error().code == core::ErrorCode::IoError ? ExitFailure : ExitInvalidInput;
     }
-    progress.finish();
-
-    auto clip = anim::KeyframeClip::create(layout, fps, std::move(frames), characterName);
-    if (!clip) {
-        printError(spec.name, clip.error());
-        return ExitFailure;
-    }
-    std::shared_ptr<anim::KeyframeClip> onSkeleton = clip.value();
-    const anim::Skeleton& skeleton = character->skeleton;
-    if (!(*layout == *skeleton.frameLayout())) {
-        // The body schedule is built on the skeleton's layout; this keeps the writer safe if a
-        // future runtime ever differs.
-        auto remapped = anim::remapClip(*onSkeleton, skeleton.frameLayout(), skeleton.restFrame());
-        if (!remapped) {
-            printError(spec.name, remapped.error());
-            return ExitFailure;
-        }
-        onSkeleton = remapped.value();
-    }
-    if (interrupted()) {
-        std::fprintf(stderr, "thespis-cli bake-motion: cancelled; %s was not written.\n", outPath.string().c_str());
-        return ExitCancelled;
-    }
-    if (auto saved = anim::bvh::save(outPath, skeleton, *onSkeleton); !saved) {
-        printError(spec.name, saved.error());
-        return ExitFailure;
-    }
-
+    if (progress)
+        progress->finish();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
     if (!quiet)
-        std::printf("Baked %ld frames (%.3f s to %.3f s at %g fps) of '%s' to %s in %.2f s.\n", frameCount, start,
-                    start + double(frameCount - 1) / fps, fps, characterName.c_str(), outPath.string().c_str(),
-                    seconds);
+        std::printf("Baked %ld frames (%.3f s to %.3f s at %g fps) of '%s' to %s in %.2f s.\n", job.frameCount,
+                    job.start, job.lastTime, fps, characterName.c_str(), outPath.string().c_str(), seconds);
     return ExitOk;
 }
 

@@ -1,13 +1,17 @@
 // thespis-cli render: pictures of a scenario without any X server (EGL offscreen, Mesa's software
-// GL when there is no GPU): one frame at --time, or a numbered sequence with --frames.
+// GL when there is no GPU): one frame at --time, or a numbered sequence with --frames (core's
+// FrameSequenceJob, with a progress bar; Ctrl-C stops it and takes its frames back).
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "cancel.h"
 #include "commands.h"
 #include "exit_codes.h"
 #include "progress.h"
+#include "render/frame_sequence_job.h"
 #include "scene_render.h"
 
 namespace thespis::cli {
@@ -29,7 +33,7 @@ CommandSpec renderSpec()
         "The light comes from the scenario's probe, or a default sky. Rendering uses EGL on Mesa's\n"
         "surfaceless platform, so it runs on servers and in CI; GALLIUM_DRIVER=llvmpipe forces software GL.\n"
         "Exit status: 0 written, 2 bad command line, 3 unreadable scenario, bake or probe,\n"
-        "4 no OpenGL or the picture could not be written, 130 cancelled (frames written so far stay).";
+        "4 no OpenGL or the picture could not be written, 130 cancelled (the frames written are taken back).";
     return spec;
 }
 
@@ -60,53 +64,70 @@ int runRender(const CommandSpec& spec, const ParsedArguments& arguments)
     if (exitCode != ExitOk)
         return exitCode;
 
-    if (frames) {
-        if (const int status = makeFrameFolder(spec.name, outPath); status != ExitOk)
-            return status;
-    } else {
+    if (!frames) {
         const std::filesystem::path outDir = outPath.parent_path().empty() ? "." : outPath.parent_path();
         if (std::error_code ec; !std::filesystem::is_directory(outDir, ec)) {
             printError(spec.name, "cannot write " + outPath.string() + ": the folder " + outDir.string() + " does not exist.");
             return ExitInvalidInput;
         }
-    }
-
-    SceneRender picture;
-    if (const int status = prepareSceneRender(spec, arguments, scenarioPath, quiet, picture); status != ExitOk)
-        return status;
-    const char* shadingName = core::render::shadingName(picture.shading);
-
-    if (!frames) {
-        picture.scene->setTime(time);
-        if (const int status = picture.write(spec.name, outPath); status != ExitOk)
+        std::unique_ptr<core::render::ScenarioPicture> picture;
+        if (const int status = makePicture(spec, arguments, scenarioPath, quiet, picture); status != ExitOk)
+            return status;
+        picture->scene().setTime(time);
+        if (const int status = writePicture(spec.name, *picture, outPath); status != ExitOk)
             return status;
         if (!quiet)
             std::printf("Rendered %s at %.3f s (%dx%d, %s) to %s with %s.\n", scenarioPath.filename().string().c_str(),
-                        time, picture.width, picture.height, shadingName, outPath.string().c_str(),
-                        picture.renderer->glDescription().c_str());
+                        time, picture->settings().width, picture->settings().height,
+                        core::render::shadingName(picture->settings().shading), outPath.string().c_str(),
+                        picture->glDescription().c_str());
         return ExitOk;
     }
 
+    auto document = loadScenarioReporting(spec.name, scenarioPath);
+    if (!document)
+        return ExitInvalidInput;
+    core::render::FrameSequenceJob job;
+    if (const int status = readPictureSettings(spec, arguments, *document, job.picture); status != ExitOk)
+        return status;
+    job.scenario = std::move(*document);
+    job.baseDir = scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path();
+    job.first = frames->first;
+    job.last = frames->last;
+    job.fps = *fps;
+    job.folder = outPath;
+
     installInterruptHandlers();
     const long count = frames->last - frames->first + 1;
-    ProgressReporter progress(stderr, "render", "frames", count, quiet);
-    for (long frame = frames->first; frame <= frames->last; ++frame) {
-        if (interrupted()) {
-            progress.abandon();
-            std::fprintf(stderr, "thespis-cli render: cancelled after %ld of %ld frames.\n", frame - frames->first, count);
+    std::optional<ProgressReporter> progress; // once the scene is ready
+    const auto rendered = core::runJobWatched(job, std::chrono::milliseconds(50), [&](const core::JobProgress& p) {
+        if (p.stage == core::render::FrameSequenceJob::FramesStage) {
+            if (!progress) {
+                if (!quiet)
+                    for (const std::string& warning : job.warnings)
+                        std::fprintf(stderr, "thespis-cli render: warning: %s\n", warning.c_str());
+                progress.emplace(stderr, "render", "frames", count, quiet);
+            }
+            progress->update(long(p.done));
+        }
+        return !interrupted();
+    });
+    if (!rendered) {
+        if (progress)
+            progress->abandon();
+        if (rendered.error().code == core::ErrorCode::Cancelled) {
+            std::fprintf(stderr, "thespis-cli render: cancelled; no frame was kept.\n");
             return ExitCancelled;
         }
-        picture.scene->setTime(double(frame) / *fps);
-        if (const int status = picture.write(spec.name, outPath / frameFileName(frame)); status != ExitOk) {
-            progress.abandon();
-            return status;
-        }
-        progress.update(frame - frames->first + 1);
+        printSceneError(spec, arguments, scenarioPath, rendered.error());
+        return rendered.error().code == core::ErrorCode::IoError ? ExitFailure : ExitInvalidInput;
     }
-    progress.finish();
+    if (progress)
+        progress->finish();
     if (!quiet)
         std::printf("Rendered %ld frames (%ld to %ld at %g fps, %dx%d, %s) into %s.\n", count, frames->first,
-                    frames->last, *fps, picture.width, picture.height, shadingName, outPath.string().c_str());
+                    frames->last, *fps, job.picture.width, job.picture.height,
+                    core::render::shadingName(job.picture.shading), outPath.string().c_str());
     return ExitOk;
 }
 

@@ -91,16 +91,16 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
     }
 
     // The stage: the rendered scene's, or one of its own when nothing is rendered.
-    SceneRender picture;
+    std::unique_ptr<core::render::ScenarioPicture> picture;
     std::shared_ptr<core::runtime::Stage> stage;
     std::filesystem::path outDir;
     if (frames) {
         outDir = *arguments.value("out");
         if (const int status = makeFrameFolder(spec.name, outDir); status != ExitOk)
             return status;
-        if (const int status = prepareSceneRender(spec, arguments, scenarioPath, quiet, picture); status != ExitOk)
+        if (const int status = makePicture(spec, arguments, scenarioPath, quiet, picture); status != ExitOk)
             return status;
-        stage = picture.scene->sharedStage();
+        stage = picture->scene().sharedStage();
     } else {
         const auto document = loadScenarioReporting(spec.name, scenarioPath);
         if (!document)
@@ -129,8 +129,8 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
             const double seconds = double(next) / *fps;
             if (core::secondsToTicks(seconds) >= until || interrupted())
                 break;
-            picture.scene->setTime(seconds);
-            renderStatus = picture.write(spec.name, outDir / frameFileName(next));
+            picture->scene().setTime(seconds);
+            renderStatus = writePicture(spec.name, *picture, outDir / core::render::frameFileName(next));
             if (renderStatus != ExitOk)
                 return false;
             progress.update(next - frames->first + 1);

@@ -108,29 +108,16 @@ void addPictureOptions(CommandSpec& spec)
     });
 }
 
-int SceneRender::write(const std::string& command, const std::filesystem::path& file)
-{
-    if (auto drawn = renderer->render(scene->scene(), view, image); !drawn) {
-        printError(command, drawn.error());
-        return ExitFailure;
-    }
-    if (auto written = render::writePng(file, image); !written) {
-        printError(command, written.error());
-        return ExitFailure;
-    }
-    return ExitOk;
-}
-
-int prepareSceneRender(const CommandSpec& spec, const ParsedArguments& arguments,
-                       const std::filesystem::path& scenarioPath, bool quiet, SceneRender& out)
+int readPictureSettings(const CommandSpec& spec, const ParsedArguments& arguments,
+                        const core::scenario::Scenario& document, render::PictureSettings& out)
 {
     int exitCode = ExitOk;
-    Size size;
     if (const auto text = arguments.value("size")) {
         const auto parsed = parseSize(*text);
         if (!parsed)
             return usageError(spec, "--size must be WIDTHxHEIGHT in pixels (1 to 16384 each), e.g. 1280x720, not '" + *text + "'");
-        size = *parsed;
+        out.width = parsed->width;
+        out.height = parsed->height;
     }
     const auto shading = choiceOption(spec, arguments, "shading", render::Shading::Prt, render::parseShading, exitCode);
     const auto skinning = choiceOption(spec, arguments, "skinning", core::scene::SkinningMethod::Linear,
@@ -142,23 +129,23 @@ int prepareSceneRender(const CommandSpec& spec, const ParsedArguments& arguments
         return exitCode;
     if (arguments.has("character") && !arguments.has("bake"))
         return usageError(spec, "--character needs --bake");
-
-    const auto document = loadScenarioReporting(spec.name, scenarioPath);
-    if (!document)
-        return ExitInvalidInput;
-    render::ScenarioSceneOptions options;
-    options.skinning = *skinning;
-    options.probeBackground = arguments.has("probe-background");
+    out.shading = *shading;
+    out.skinning = *skinning;
+    out.samples = int(samples);
+    out.azimuth = *azimuth;
+    out.elevation = *elevation;
+    out.ground = !arguments.has("no-ground");
+    out.probeBackground = arguments.has("probe-background");
     if (const auto bakePath = arguments.value("bake")) {
         std::string name;
         if (const auto character = arguments.value("character")) {
             name = *character;
-        } else if (document->characters.size() == 1) {
-            name = document->characters.front().name;
+        } else if (document.characters.size() == 1) {
+            name = document.characters.front().name;
         } else {
             return usageError(spec, "the scenario has several characters; name the one --bake belongs to with --character");
         }
-        if (!document->findCharacter(name)) {
+        if (!document.findCharacter(name)) {
             printError(spec.name, "the scenario has no character named '" + name + "'.");
             return ExitInvalidInput;
         }
@@ -167,42 +154,51 @@ int prepareSceneRender(const CommandSpec& spec, const ParsedArguments& arguments
             printError(spec.name, bake.error());
             return ExitInvalidInput;
         }
-        options.bakes[name] = std::make_shared<const core::lighting::TransferBake>(std::move(bake).value());
+        out.bakes[name] = std::make_shared<const core::lighting::TransferBake>(std::move(bake).value());
     }
-    const std::filesystem::path baseDir = scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path();
-    auto scenarioScene = render::ScenarioScene::create(*document, baseDir, options);
-    if (!scenarioScene) {
-        printError(spec.name, scenarioScene.error());
-        if (arguments.has("bake"))
-            std::fprintf(stderr, "thespis-cli %s: a bake fits a character's body when it was made with "
-                                 "'thespis-cli bake %s --character NAME'.\n", spec.name.c_str(), scenarioPath.string().c_str());
-        return ExitInvalidInput;
-    }
-    out.scene = std::move(scenarioScene).value();
-    if (!quiet)
-        for (const std::string& warning : out.scene->warnings())
-            std::fprintf(stderr, "thespis-cli %s: warning: %s\n", spec.name.c_str(), warning.c_str());
-    out.scene->scene().setShading(*shading);
-    out.scene->scene().setGroundVisible(!arguments.has("no-ground"));
-    auto renderer = render::OffscreenRenderer::create(size.width, size.height, int(samples));
-    if (!renderer) {
-        printError(spec.name, renderer.error());
-        return ExitFailure;
-    }
-    out.renderer = std::move(renderer).value();
-    out.width = size.width;
-    out.height = size.height;
-    out.shading = *shading;
-    out.view = render::frameBounds(out.scene->boundsOverTimeline(), *azimuth, *elevation,
-                                   double(size.width) / size.height);
     return ExitOk;
 }
 
-std::string frameFileName(long frame)
+void printSceneError(const CommandSpec& spec, const ParsedArguments& arguments, const std::filesystem::path& scenarioPath,
+                     const core::Error& error)
 {
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%05ld.png", frame);
-    return name;
+    printError(spec.name, error);
+    if (arguments.has("bake"))
+        std::fprintf(stderr, "thespis-cli %s: a bake fits a character's body when it was made with "
+                             "'thespis-cli bake %s --character NAME'.\n", spec.name.c_str(), scenarioPath.string().c_str());
+}
+
+int makePicture(const CommandSpec& spec, const ParsedArguments& arguments, const std::filesystem::path& scenarioPath,
+                bool quiet, std::unique_ptr<render::ScenarioPicture>& out)
+{
+    const auto document = loadScenarioReporting(spec.name, scenarioPath);
+    if (!document)
+        return ExitInvalidInput;
+    render::PictureSettings settings;
+    if (const int status = readPictureSettings(spec, arguments, *document, settings); status != ExitOk)
+        return status;
+    const std::filesystem::path baseDir = scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path();
+    auto picture = render::ScenarioPicture::create(*document, baseDir, settings);
+    if (!picture) {
+        printSceneError(spec, arguments, scenarioPath, picture.error());
+        return picture.error().code == core::ErrorCode::IoError || picture.error().code == core::ErrorCode::Internal
+                   ? ExitFailure
+                   : ExitInvalidInput;
+    }
+    out = std::move(picture).value();
+    if (!quiet)
+        for (const std::string& warning : out->scene().warnings())
+            std::fprintf(stderr, "thespis-cli %s: warning: %s\n", spec.name.c_str(), warning.c_str());
+    return ExitOk;
+}
+
+int writePicture(const std::string& command, render::ScenarioPicture& picture, const std::filesystem::path& file)
+{
+    if (auto written = picture.writePng(file); !written) {
+        printError(command, written.error());
+        return ExitFailure;
+    }
+    return ExitOk;
 }
 
 } // namespace thespis::cli

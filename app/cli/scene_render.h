@@ -1,7 +1,6 @@
 #pragma once
-// What `render` and `run` share: the picture options, the scene built from a scenario with them,
-// the camera that frames every character over the whole timeline (so a sequence does not jump),
-// and writing the scene as it is posed into a PNG.
+// What `render` and `run` share: the picture options, read into core's PictureSettings, and the
+// picture (core/render/scenario_picture.h) made from them.
 
 #include <filesystem>
 #include <memory>
@@ -10,9 +9,7 @@
 #include <vector>
 
 #include "arguments.h"
-#include "render/camera.h"
-#include "render/offscreen_renderer.h"
-#include "render/scenario_scene.h"
+#include "render/scenario_picture.h"
 
 namespace thespis::cli {
 
@@ -32,24 +29,22 @@ std::optional<double> frameRateOption(const CommandSpec& spec, const ParsedArgum
 /// probe background, samples) and --quiet to a command's options.
 void addPictureOptions(CommandSpec& spec);
 
-struct SceneRender {
-    std::unique_ptr<core::render::ScenarioScene> scene;
-    std::unique_ptr<core::render::OffscreenRenderer> renderer;
-    core::render::CameraView view;
-    core::render::RgbaImage image;
-    int width = 1280, height = 720;
-    core::render::Shading shading = core::render::Shading::Prt;
+/// Reads the picture options into `out` (a bake is read and given to its character of
+/// `document`); prints what is wrong and returns the exit code.
+int readPictureSettings(const CommandSpec& spec, const ParsedArguments& arguments,
+                        const core::scenario::Scenario& document, core::render::PictureSettings& out);
 
-    /// Draws the scene as it is posed now into `file`; prints what failed and returns the exit code.
-    int write(const std::string& command, const std::filesystem::path& file);
-};
+/// Loads the scenario, reads the picture options and makes the picture (scene, renderer, framed
+/// camera) on this thread; prints what is wrong (and the scene's warnings unless quiet) and
+/// returns the exit code (ExitOk when `out` is ready).
+int makePicture(const CommandSpec& spec, const ParsedArguments& arguments, const std::filesystem::path& scenarioPath,
+                bool quiet, std::unique_ptr<core::render::ScenarioPicture>& out);
 
-/// Reads the picture options, loads the scenario, builds the scene and the renderer and frames
-/// the camera; prints what is wrong and returns the exit code (ExitOk when `out` is ready).
-int prepareSceneRender(const CommandSpec& spec, const ParsedArguments& arguments,
-                       const std::filesystem::path& scenarioPath, bool quiet, SceneRender& out);
+/// Draws the picture as it is posed now into `file`; prints what failed and returns the exit code.
+int writePicture(const std::string& command, core::render::ScenarioPicture& picture, const std::filesystem::path& file);
 
-/// "frame_00042.png".
-std::string frameFileName(long frame);
+/// The error of a scene that could not be made, with a hint when a bake was given.
+void printSceneError(const CommandSpec& spec, const ParsedArguments& arguments, const std::filesystem::path& scenarioPath,
+                     const core::Error& error);
 
 } // namespace thespis::cli

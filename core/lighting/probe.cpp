@@ -811,15 +811,4 @@ Result<ShRgb> ProbeProjector::project(const HdrImage& image, std::stop_token sto
     return result;
 }
 
-Result<ShRgb> projectProbeFile(const std::filesystem::path& path, ProbeLayout layout, int order)
-{
-    auto probe = LightProbe::load(path, layout);
-    if (!probe)
-        return probe.error();
-    auto projector = ProbeProjector::create(layout, probe->image().width, probe->image().height, order);
-    if (!projector)
-        return projector.error();
-    return projector->project(probe->image());
-}
-
 } // namespace thespis::core::lighting

@@ -127,7 +127,4 @@ private:
     std::shared_ptr<const Table> m_table;
 };
 
-/// One-shot: read a probe file and project it (builds a projector for its size).
-Result<ShRgb> projectProbeFile(const std::filesystem::path& path, ProbeLayout layout, int order);
-
 } // namespace thespis::core::lighting

@@ -5,11 +5,9 @@
 #include <cassert>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <memory>
 #include <mutex>
 #include <numbers>
-#include <optional>
 #include <thread>
 
 #if defined(__SSE__) || defined(__x86_64__)
@@ -535,47 +533,6 @@ Result<TransferBake> bakeTransfer(const scene::CharacterMesh& mesh, const BakeSe
         statistics->sceneSeconds = sceneSeconds;
     }
     return bake;
-}
-
-Result<TransferBake> bakeTransferWatched(const scene::CharacterMesh& mesh, const BakeSettings& settings,
-                                         std::chrono::milliseconds interval, const BakeWatcher& watch,
-                                         BakeStatistics* statistics)
-{
-    std::mutex mutex;
-    std::condition_variable wake;
-    BakeProgress latest;
-    bool finished = false;
-    std::optional<Result<TransferBake>> result;
-    std::stop_source stop;
-
-    std::jthread worker([&] {
-        auto baked = bakeTransfer(
-            mesh, settings, stop.get_token(),
-            [&](const BakeProgress& progress) {
-                const std::lock_guard lock(mutex);
-                latest = progress;
-                wake.notify_one();
-            },
-            statistics);
-        const std::lock_guard lock(mutex);
-        result.emplace(std::move(baked));
-        finished = true;
-        wake.notify_one();
-    });
-    std::unique_lock lock(mutex);
-    while (!finished) {
-        wake.wait_for(lock, interval);
-        const BakeProgress progress = latest;
-        lock.unlock(); // the watcher may take its time (a Python callback): the workers go on
-        if (!stop.stop_requested() && !watch(progress))
-            stop.request_stop();
-        lock.lock();
-    }
-    lock.unlock();
-    worker.join();
-    if (result->ok())
-        watch(latest);
-    return std::move(*result);
 }
 
 std::array<double, 3> shadeVertex(const TransferBake& bake, [[maybe_unused]] const scene::CharacterMesh& mesh,

@@ -111,18 +111,6 @@ Result<TransferBake> bakeTransfer(const scene::CharacterMesh& mesh, const BakeSe
                                   std::stop_token stop = {}, const BakeProgressCallback& progress = {},
                                   BakeStatistics* statistics = nullptr);
 
-/// Called on the calling thread of bakeTransferWatched with the latest progress; returns false to
-/// stop the bake.
-using BakeWatcher = std::function<bool(const BakeProgress&)>;
-
-/// bakeTransfer on its worker threads while the calling thread keeps control: it wakes on every
-/// progress report, and at least every `interval`, to call `watch`, so a front end can draw
-/// progress and notice Ctrl-C on its own thread (the CLI's bar, Python's callbacks and
-/// KeyboardInterrupt). `watch` returning false cancels the bake (ErrorCode::Cancelled).
-Result<TransferBake> bakeTransferWatched(const scene::CharacterMesh& mesh, const BakeSettings& settings,
-                                         std::chrono::milliseconds interval, const BakeWatcher& watch,
-                                         BakeStatistics* statistics = nullptr);
-
 /// The bake file: little-endian binary, magic "THSPPRT\0", format version, order, transfer kind,
 /// rays, ε, seed, vertex count, segment table (name, ranges, role, baked), the floats, and a
 /// CRC-32 of everything before it. Written atomically (a cancelled or failed write leaves no

@@ -4,6 +4,7 @@
 
 #include "lighting/probe.h"
 #include "lighting/probe_preview.h"
+#include "lighting/probe_projection_job.h"
 #include "render/shaders.h"
 #include "scenario/scenario_character.h"
 #include "scene/foot_soles.h"
@@ -54,20 +55,20 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
         auto layout = lighting::parseProbeLayout(scenario.lighting.layout);
         if (!layout)
             return makeError(layout.error().code, "lighting.layout: " + layout.error().message);
-        auto probe = lighting::LightProbe::load(baseDir / scenario.lighting.probe, *layout);
-        if (!probe)
-            return makeError(probe.error().code, "lighting.probe: " + probe.error().message, probe.error().detail);
-        auto light = lighting::ProbeProjector::create(*layout, probe->image().width, probe->image().height,
-                                                      options.lightOrder);
-        if (!light)
-            return makeError(light.error().code, "lighting.probe: " + light.error().message, light.error().detail);
-        auto projected = light->project(probe->image());
-        if (!projected)
-            return makeError(projected.error().code, "lighting.probe: " + projected.error().message);
+        lighting::ProbeProjectionJob projection;
+        projection.path = baseDir / scenario.lighting.probe;
+        projection.layout = *layout;
+        projection.order = options.lightOrder;
+        JobContext context;
+        if (auto projected = projection.run(context); !projected)
+            return makeError(projected.error().code, "lighting.probe: " + projected.error().message,
+                             projected.error().detail);
+        const lighting::LightProbe& probe = *projection.probe;
+        const lighting::ShRgb& light = projection.light;
         const scenario::LightingSpec& spec = scenario.lighting;
-        self->m_scene->setLight(lighting::turnedLight(*projected, spec.rotation, spec.intensity));
+        self->m_scene->setLight(lighting::turnedLight(light, spec.rotation, spec.intensity));
         if (options.probeBackground)
-            self->m_scene->setBackgroundProbe(*probe, 512, spec.rotation, spec.intensity);
+            self->m_scene->setBackgroundProbe(probe, 512, spec.rotation, spec.intensity);
     }
 
     for (std::size_t i = 0; i < scenario.characters.size(); ++i) {

@@ -14,9 +14,12 @@
 #include "bind_common.h"
 #include "errors.h"
 #include "lighting/probe.h"
+#include "lighting/probe_projection_job.h"
 #include "lighting/sh.h"
 #include "lighting/sh_rotation.h"
 #include "lighting/transfer_bake.h"
+#include "lighting/transfer_bake_job.h"
+#include "run_job.h"
 
 namespace thespis::python {
 
@@ -92,35 +95,6 @@ HdrImage imageFromArray(const py::array_t<float, py::array::c_style | py::array:
 py::array_t<float> imageToArray(const HdrImage& image)
 {
     return toArray(std::span<const float>(image.rgb), {image.height, image.width, 3});
-}
-
-/// Runs the bake through bakeTransferWatched without the GIL; every report takes the GIL to call
-/// `progress(done, total)` and to check for Ctrl-C. A Python exception (KeyboardInterrupt, or one
-/// raised by the callback) stops the bake and is raised once the workers have stopped.
-TransferBake bakeInterruptibly(const scene::CharacterMesh& mesh, const BakeSettings& settings,
-                               const py::object& progress)
-{
-    std::optional<py::error_already_set> pythonError;
-    auto bake = withoutGil([&] {
-        return bakeTransferWatched(mesh, settings, std::chrono::milliseconds(100), [&](const BakeProgress& p) {
-            py::gil_scoped_acquire gil;
-            if (pythonError)
-                return false;
-            try {
-                if (PyErr_CheckSignals() != 0)
-                    throw py::error_already_set();
-                if (!progress.is_none())
-                    progress(p.verticesDone, p.verticesTotal);
-                return true;
-            } catch (py::error_already_set& error) {
-                pythonError.emplace(std::move(error));
-                return false;
-            }
-        });
-    });
-    if (pythonError)
-        throw std::move(*pythonError);
-    return unwrap(std::move(bake));
 }
 
 void bindSphericalHarmonics(py::module_& l)
@@ -229,12 +203,18 @@ void bindProbes(py::module_& l)
         "path"_a, "pixels"_a, "Writes a (height, width, 3) array as a Radiance .hdr file (atomically).");
     l.def(
         "project_probe",
-        [](const std::filesystem::path& path, ProbeLayout layout, int order) {
+        [](const std::filesystem::path& path, ProbeLayout layout, int order, const py::object& progress) {
             checkedOrder(order);
-            return shRgbToArray(unwrap(withoutGil([&] { return projectProbeFile(path, layout, order); })));
+            ProbeProjectionJob job;
+            job.path = path;
+            job.layout = layout;
+            job.order = order;
+            runJob(job, progress);
+            return shRgbToArray(job.light);
         },
-        "path"_a, "layout"_a = ProbeLayout::LatLong, "order"_a = 3,
-        "Reads a probe file and projects it: a (3, order²) float64 array of radiance coefficients.");
+        "path"_a, "layout"_a = ProbeLayout::LatLong, "order"_a = 3, "progress"_a = py::none(),
+        "Reads a probe file and projects it: a (3, order²) float64 array of radiance coefficients. "
+        "Releases the GIL; Ctrl-C cancels and raises KeyboardInterrupt.");
     l.def(
         "project_image",
         [](const py::array_t<float, py::array::c_style | py::array::forcecast>& pixels, ProbeLayout layout, int order) {
@@ -353,8 +333,11 @@ void bindBake(py::module_& l)
             settings.epsilon = epsilon;
             settings.seed = seed;
             settings.threads = threads;
-            unwrap(validateBakeSettings(settings));
-            return bakeInterruptibly(mesh, settings, progress);
+            TransferBakeJob job;
+            job.mesh = mesh;
+            job.settings = settings;
+            runJob(job, progress);
+            return std::move(*job.bake);
         },
         "mesh"_a, py::kw_only(), "order"_a = 5, "rays"_a = 1024, "transfer"_a = "dsm", "backend"_a = "embree",
         "epsilon"_a = 1.71e-4f, "seed"_a = 1, "threads"_a = 0, "progress"_a = py::none(),

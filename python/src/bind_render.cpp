@@ -1,5 +1,6 @@
 // Bindings of core/render as the submodule thespis.render: a scenario rendered headless (EGL on
-// Mesa, no X server), as `thespis-cli render` does, into a NumPy RGBA image, and PNG output.
+// Mesa, no X server), as `thespis-cli render` does, into a NumPy RGBA image or a frame sequence
+// (the same job the CLI runs), and PNG output.
 
 #include <optional>
 #include <string>
@@ -7,15 +8,52 @@
 #include "bind_common.h"
 #include "errors.h"
 #include "lighting/transfer_bake.h"
-#include "render/offscreen_renderer.h"
-#include "render/scenario_scene.h"
+#include "render/frame_sequence_job.h"
+#include "render/scenario_picture.h"
 #include "render/shading.h"
+#include "run_job.h"
 #include "scenario/scenario_io.h"
 
 namespace thespis::python {
 
 using namespace pybind11::literals;
 namespace render = core::render;
+
+namespace {
+
+std::filesystem::path folderOf(const std::filesystem::path& scenarioPath)
+{
+    return scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path();
+}
+
+render::PictureSettings pictureSettings(const core::scenario::Scenario& document, int width, int height,
+                                        const std::string& shading,
+                                        const std::optional<core::lighting::TransferBake>& bake,
+                                        const std::optional<std::string>& character, int samples, bool ground,
+                                        double azimuth, double elevation)
+{
+    render::PictureSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.shading = unwrap(render::parseShading(shading));
+    settings.samples = samples;
+    settings.ground = ground;
+    settings.azimuth = azimuth;
+    settings.elevation = elevation;
+    if (bake) {
+        std::string name;
+        if (character)
+            name = *character;
+        else if (document.characters.size() == 1)
+            name = document.characters.front().name;
+        else
+            throw py::value_error("The scenario has several characters: say which one the bake is for (character=…).");
+        settings.bakes[name] = std::make_shared<const core::lighting::TransferBake>(*bake);
+    }
+    return settings;
+}
+
+} // namespace
 
 void bindRender(py::module_& m)
 {
@@ -25,31 +63,15 @@ void bindRender(py::module_& m)
         [](const std::filesystem::path& path, double time, int width, int height, const std::string& shading,
            const std::optional<core::lighting::TransferBake>& bake, const std::optional<std::string>& character,
            int samples, bool ground, double azimuth, double elevation) {
-            const render::Shading mode = unwrap(render::parseShading(shading));
             auto document = unwrap(core::scenario::loadScenario(path));
-            render::ScenarioSceneOptions options;
-            if (bake) {
-                std::string name;
-                if (character)
-                    name = *character;
-                else if (document.characters.size() == 1)
-                    name = document.characters.front().name;
-                else
-                    throw py::value_error("The scenario has several characters: say which one the bake is for (character=…).");
-                options.bakes[name] = std::make_shared<const core::lighting::TransferBake>(*bake);
-            }
+            const render::PictureSettings settings =
+                pictureSettings(document, width, height, shading, bake, character, samples, ground, azimuth, elevation);
             render::RgbaImage image;
             {
                 py::gil_scoped_release unlocked;
-                const std::filesystem::path baseDir = path.parent_path().empty() ? "." : path.parent_path();
-                auto scene = unwrap(render::ScenarioScene::create(document, baseDir, options));
-                scene->scene().setShading(mode);
-                scene->scene().setGroundVisible(ground);
-                auto renderer = unwrap(render::OffscreenRenderer::create(width, height, samples));
-                const render::CameraView view = render::frameBounds(scene->boundsOverTimeline(), azimuth, elevation,
-                                                                    double(width) / height);
-                scene->setTime(time);
-                unwrap(renderer->render(scene->scene(), view, image));
+                auto picture = unwrap(render::ScenarioPicture::create(document, folderOf(path), settings));
+                picture->scene().setTime(time);
+                image = *unwrap(picture->draw());
             }
             return toArray<std::uint8_t>(image.rgba, {image.height, image.width, 4});
         },
@@ -58,6 +80,31 @@ void bindRender(py::module_& m)
         "Renders a .thespis scenario at `time` seconds into a height × width × 4 uint8 array (rows from the top). "
         "shading: 'prt', 'phong' or 'unlit'; bake: a thespis.lighting.TransferBake of `character`'s body "
         "(thespis-cli bake SCENARIO --character NAME). Raises OSError when no OpenGL context can be made.");
+    r.def(
+        "render_frames",
+        [](const std::filesystem::path& path, const std::filesystem::path& folder, long first, long last, double fps,
+           int width, int height, const std::string& shading, const std::optional<core::lighting::TransferBake>& bake,
+           const std::optional<std::string>& character, int samples, bool ground, double azimuth, double elevation,
+           const py::object& progress) {
+            render::FrameSequenceJob job;
+            job.scenario = unwrap(core::scenario::loadScenario(path));
+            job.picture = pictureSettings(job.scenario, width, height, shading, bake, character, samples, ground,
+                                          azimuth, elevation);
+            job.baseDir = folderOf(path);
+            job.first = first;
+            job.last = last;
+            job.fps = fps;
+            job.folder = folder;
+            runJob(job, progress);
+            return job.warnings;
+        },
+        "path"_a, "folder"_a, "first"_a, "last"_a, py::kw_only(), "fps"_a = 30.0, "width"_a = 1280, "height"_a = 720,
+        "shading"_a = "prt", "bake"_a = py::none(), "character"_a = py::none(), "samples"_a = 4, "ground"_a = true,
+        "azimuth"_a = 20.0, "elevation"_a = 8.0, "progress"_a = py::none(),
+        "Renders frames first … last of a .thespis scenario at `fps` into folder/frame_NNNNN.png, as "
+        "`thespis-cli render --frames` does (the same job); returns the scene's warnings. Releases the GIL; "
+        "progress(done, total) is called on this thread; Ctrl-C (or an exception in progress) stops it and the "
+        "frames written are taken back.");
     r.def(
         "write_png",
         [](const std::filesystem::path& path, const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& image) {

@@ -11,7 +11,9 @@
 
 #include "bind_common.h"
 #include "errors.h"
+#include "run_job.h"
 #include "scenario/clip_import.h"
+#include "scenario/motion_bake_job.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_io.h"
 #include "scenario/scenario_runtime.h"
@@ -473,6 +475,27 @@ void bindScenario(py::module_& m)
         "scenario"_a, "base_dir"_a = std::filesystem::path("."),
         "Loads every clip (BVH files relative to base_dir, the scenario file's folder) and builds the schedules. "
         "Errors name the character, action and field.");
+    m.def(
+        "bake_motion",
+        [](const Scenario& scenario, const std::string& character, const std::filesystem::path& out,
+           const std::filesystem::path& baseDir, double fps, double start, std::optional<double> end,
+           const py::object& progress) {
+            MotionBakeJob job;
+            job.scenario = scenario;
+            job.baseDir = baseDir;
+            job.character = character;
+            job.output = out;
+            job.fps = fps;
+            job.start = start;
+            job.end = end;
+            runJob(job, progress);
+            return job.frameCount;
+        },
+        "scenario"_a, "character"_a, "out"_a, py::kw_only(), "base_dir"_a = std::filesystem::path("."),
+        "fps"_a = 30.0, "start"_a = 0.0, "end"_a = py::none(), "progress"_a = py::none(),
+        "Bakes a character's body animation into a BVH file, as `thespis-cli bake-motion` does (the same job): "
+        "frames from start to end (default: the scenario's duration) at fps; returns the number of frames. "
+        "Releases the GIL; progress(done, total); Ctrl-C stops it and nothing is written.");
     m.def(
         "validate_scenario",
         [](const Scenario& scenario, const std::filesystem::path& baseDir) {

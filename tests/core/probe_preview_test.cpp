@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "lighting/probe_preview.h"
+#include "lighting/probe_projection_job.h"
 #include "lighting/sh.h"
 #include "test_support.h"
 

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "lighting/probe.h"
+#include "lighting/probe_projection_job.h"
 #include "test_support.h"
 #include "util/file_io.h"
 

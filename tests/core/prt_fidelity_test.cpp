@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "lighting/probe.h"
+#include "lighting/probe_projection_job.h"
 #include "lighting/transfer_bake.h"
 #include "scene/gltf_mesh.h"
 #include "test_support.h"

@@ -24,6 +24,7 @@
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QSignalSpy>
 #include <QTest>
 #include <QTimer>
 #include <QTreeView>
@@ -108,6 +109,17 @@ void dropOnTrack(widgets::TimelineView* view, int track, double seconds, QMimeDa
     QApplication::sendEvent(view->viewport(), &move);
     QDropEvent drop(at, Qt::CopyAction, mime, Qt::LeftButton, {});
     QApplication::sendEvent(view->viewport(), &drop);
+}
+
+/// Chooses a probe in the Lighting dialog and waits for it to be read off the GUI thread:
+/// whether it could be used.
+bool chooseProbe(editor::LightingDialog* dialog, const QString& path)
+{
+    QSignalSpy loaded(dialog, &editor::LightingDialog::loaded);
+    dialog->setProbeFile(path);
+    if (!loaded.wait(60000))
+        return false;
+    return !dialog->isLoading() && loaded.count() == 1 && loaded.last().at(0).toBool();
 }
 
 } // namespace
@@ -256,7 +268,7 @@ void BringContentTest::fromNothingToARenderedScenarioAndBack()
 
     // View ▸ Lighting…: a probe, turned.
     whenModal<editor::LightingDialog>([](editor::LightingDialog* dialog) {
-        QVERIFY(dialog->setProbeFile(shared(QStringLiteral("probes/polyhaven_1k/venice_sunset_1k.hdr"))));
+        QVERIFY(chooseProbe(dialog, shared(QStringLiteral("probes/polyhaven_1k/venice_sunset_1k.hdr"))));
         dialog->rotationSlider()->setValue(120);
         QVERIFY(!dialog->probePicture()->pixmap().isNull());
         QVERIFY(!dialog->lightPicture()->pixmap().isNull());
@@ -383,8 +395,8 @@ void BringContentTest::aBrokenFileAddsNothingAndAMappingCanBeCorrected()
     // A probe that cannot be read keeps the one before and says why; the light is unchanged.
     const core::scenario::LightingSpec light = document->scenario().lighting;
     whenModal<editor::LightingDialog>([broken](editor::LightingDialog* dialog) {
-        QVERIFY(dialog->setProbeFile(shared(QStringLiteral("probes/polyhaven_1k/venice_sunset_1k.hdr"))));
-        QVERIFY(!dialog->setProbeFile(broken));
+        QVERIFY(chooseProbe(dialog, shared(QStringLiteral("probes/polyhaven_1k/venice_sunset_1k.hdr"))));
+        QVERIFY(!chooseProbe(dialog, broken));
         QVERIFY(dialog->lighting().probe.ends_with("venice_sunset_1k.hdr"));
         QVERIFY2(dialog->messageLabel()->text().contains(QStringLiteral("broken.bvh")),
                  qPrintable(dialog->messageLabel()->text()));

@@ -1,0 +1,121 @@
+#include "scenario/motion_bake_job.h"
+
+#include <cmath>
+#include <thread>
+
+#include "anim/bvh.h"
+#include "anim/keyframe_clip.h"
+#include "scenario/scenario_runtime.h"
+
+namespace thespis::core::scenario {
+
+namespace {
+// Refuse bakes whose frames would not fit comfortably in memory (1 GiB of floats).
+constexpr double MaxBakeFloats = double(1u << 28);
+
+std::string joinNames(const Scenario& scenario)
+{
+    std::string names;
+    for (const Character& c : scenario.characters)
+        names += (names.empty() ? "" : ", ") + c.name;
+    return names.empty() ? std::string("none") : names;
+}
+} // namespace
+
+std::string MotionBakeJob::title() const
+{
+    return "The motion bake into " + output.string();
+}
+
+Result<void> MotionBakeJob::validate() const
+{
+    if (!(fps > 0) || !std::isfinite(fps))
+        return makeError(ErrorCode::InvalidArgument, "fps must be a positive number.");
+    if (!(start >= 0))
+        return makeError(ErrorCode::InvalidArgument, "start must not be negative.");
+    if (end && !(*end >= start))
+        return makeError(ErrorCode::InvalidArgument, "end (" + std::to_string(*end) + " s) is before start ("
+                                                         + std::to_string(start) + " s).");
+    if (output.extension() != ".bvh")
+        return makeError(ErrorCode::InvalidArgument,
+                         "The output must be a .bvh file (only BVH output is supported), not '" + output.string() + "'.");
+    const std::filesystem::path folder = output.parent_path().empty() ? "." : output.parent_path();
+    if (std::error_code ec; !std::filesystem::is_directory(folder, ec))
+        return makeError(ErrorCode::FileNotFound, "Cannot write " + output.string() + ": the folder " + folder.string()
+                                                      + " does not exist.");
+    if (!scenario.findCharacter(character))
+        return makeError(ErrorCode::NotFound, "The scenario has no character named '" + character
+                                                  + "' (its characters: " + joinNames(scenario) + ").");
+    return {};
+}
+
+Result<void> MotionBakeJob::run(JobContext& context)
+{
+    frameCount = 0;
+    context.beginStage(LoadingStage);
+    auto runtime = buildRuntime(scenario, baseDir);
+    if (!runtime)
+        return runtime.error();
+    const CharacterRuntime* body = runtime->findCharacter(character);
+    if (!body || !body->body)
+        return makeError(ErrorCode::NotFound, "Character '" + character + "' has no body animation to bake.");
+    if (!end && runtime->duration <= 0)
+        return makeError(ErrorCode::InvalidArgument,
+                         "The scenario has no duration and no finite action; give the bake's end.");
+    const double last = end.value_or(runtime->duration);
+    if (last < start)
+        return makeError(ErrorCode::InvalidArgument, "The bake starts (" + std::to_string(start)
+                                                         + " s) after the scenario ends (" + std::to_string(last) + " s).");
+
+    const anim::BlendingSchedule& schedule = *body->body;
+    const anim::FrameLayoutPtr& layout = schedule.layout();
+    const std::size_t floats = layout->floatCount();
+    // A small tolerance so that e.g. 8.4 s × 30 fps gives 253 frames despite rounding.
+    const double intervals = std::floor((last - start) * fps + 1e-6);
+    if ((intervals + 1) * double(floats) > MaxBakeFloats)
+        return makeError(ErrorCode::InvalidArgument, "The bake would hold " + std::to_string(long(intervals + 1))
+                                                         + " frames of " + std::to_string(floats)
+                                                         + " values; lower the frame rate or bake a shorter range.");
+    const long count = long(intervals) + 1;
+
+    // The frame buffer is allocated once; evaluation itself allocates nothing.
+    context.beginStage(FramesStage, std::uint64_t(count));
+    std::vector<float> frames(std::size_t(count) * floats);
+    for (long i = 0; i < count; ++i) {
+        if (context.stopRequested())
+            return cancelledError(title());
+        schedule.evaluate(start + double(i) / fps, std::span<float>(frames.data() + std::size_t(i) * floats, floats));
+        context.setDone(std::uint64_t(i + 1));
+        if (frameDelay.count() > 0)
+            std::this_thread::sleep_for(frameDelay);
+    }
+
+    auto clip = anim::KeyframeClip::create(layout, fps, std::move(frames), character);
+    if (!clip)
+        return clip.error();
+    std::shared_ptr<anim::KeyframeClip> onSkeleton = clip.value();
+    const anim::Skeleton& skeleton = body->skeleton;
+    if (!(*layout == *skeleton.frameLayout())) {
+        // The body schedule is built on the skeleton's layout; this keeps the writer safe if a
+        // future runtime ever differs.
+        auto remapped = anim::remapClip(*onSkeleton, skeleton.frameLayout(), skeleton.restFrame());
+        if (!remapped)
+            return remapped.error();
+        onSkeleton = remapped.value();
+    }
+    if (context.stopRequested())
+        return cancelledError(title());
+    if (auto saved = anim::bvh::save(output, skeleton, *onSkeleton); !saved)
+        return saved;
+    frameCount = count;
+    lastTime = start + double(count - 1) / fps;
+    return {};
+}
+
+void MotionBakeJob::discardOutput()
+{
+    std::error_code ignored;
+    std::filesystem::remove(output, ignored);
+}
+
+} // namespace thespis::core::scenario

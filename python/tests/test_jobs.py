@@ -1,0 +1,62 @@
+"""Long work from Python runs the same core jobs as the CLI and the studio: progress on this
+thread, an exception in the callback (or Ctrl-C) stops the job, and a stopped job leaves no file.
+Real data: the demo scenario and a Poly Haven probe."""
+
+import numpy as np
+import pytest
+
+import thespis
+from thespis import lighting, render
+from conftest import SHARED_DATA, demo_scenario
+
+
+def test_bake_motion_writes_the_frames_it_reports(tmp_path):
+    scenario = thespis.load_scenario(demo_scenario())
+    character = scenario.characters[0].name
+    out = tmp_path / "demo.bvh"
+    reports = []
+    frames = thespis.bake_motion(scenario, character, out, base_dir=demo_scenario().parent, fps=10, end=2.0,
+                                 progress=lambda done, total: reports.append((done, total)))
+    assert frames == 21
+    assert reports and reports[-1] == (21, 21)
+    skeleton, clip, report = thespis.bvh.load(out)
+    assert clip.frame_count == 21
+
+
+def test_bake_motion_refuses_an_unknown_character(tmp_path):
+    scenario = thespis.load_scenario(demo_scenario())
+    with pytest.raises(KeyError, match="Nobody"):
+        thespis.bake_motion(scenario, "Nobody", tmp_path / "x.bvh", base_dir=demo_scenario().parent)
+    assert not (tmp_path / "x.bvh").exists()
+
+
+def test_a_stopped_frame_sequence_takes_its_frames_back(tmp_path):
+    def stop_after_two(done, total):
+        if done >= 2:
+            raise RuntimeError("enough")
+
+    folder = tmp_path / "frames"
+    try:
+        with pytest.raises(RuntimeError, match="enough"):
+            render.render_frames(demo_scenario(), folder, 0, 300, width=64, height=48, samples=0,
+                                 progress=stop_after_two)
+    except OSError as error:  # no OpenGL on this machine
+        pytest.skip(str(error))
+    assert folder.is_dir() and not any(folder.iterdir())
+
+
+def test_render_frames_writes_the_sequence(tmp_path):
+    folder = tmp_path / "frames"
+    try:
+        render.render_frames(demo_scenario(), folder, 4, 5, width=64, height=48, samples=0)
+    except OSError as error:
+        pytest.skip(str(error))
+    assert sorted(p.name for p in folder.iterdir()) == ["frame_00004.png", "frame_00005.png"]
+
+
+def test_project_probe_runs_as_a_job_with_progress():
+    reports = []
+    light = lighting.project_probe(SHARED_DATA / "probes/polyhaven_1k/venice_sunset_1k.hdr", order=3,
+                                   progress=lambda done, total: reports.append((done, total)))
+    assert light.shape == (3, 9) and np.all(np.isfinite(light)) and light[0, 0] > 0
+    assert reports and reports[-1] == (1, 1)
