@@ -339,7 +339,7 @@ void BakePanel::start()
         return;
     }
     const core::scenario::Scenario& scenario = m_document->scenario();
-    auto body = core::scenario::loadCharacterBody(scenario, std::size_t(index), toFsPath(m_document->baseDir()));
+    auto body = core::scenario::loadCharacterBody(scenario, std::size_t(index), m_document->assets());
     if (!body) {
         removeEmptyBakeFolder(*path);
         setStatus(tr("The body of the character could not be loaded: %1").arg(fromUtf8(body.error().message)), true);
@@ -472,16 +472,15 @@ void BakePanel::refreshCurrentBake()
         m_currentBake->setToolTip(tr("Bake the character to light it with shadows"));
         return;
     }
-    const std::filesystem::path base = toFsPath(m_document->baseDir());
     const QString file = QFileInfo(fromUtf8(character.bake)).fileName();
-    auto bake = lighting::readBakeFile(base / character.bake);
+    auto bake = lighting::readBakeFile(m_document->assets().path(character.bake));
     if (!bake) {
         m_currentBake->setText(tr("%1\nmissing or unreadable — lit unshadowed (DU)").arg(file));
         m_currentBake->setToolTip(fromUtf8(bake.error().message));
         m_currentBake->setStyleSheet(kWarningStyle);
         return;
     }
-    auto body = core::scenario::loadCharacterBody(scenario, std::size_t(index), base);
+    auto body = core::scenario::loadCharacterBody(scenario, std::size_t(index), m_document->assets());
     auto fits = body ? lighting::checkBakeMatchesMesh(*bake, body->mesh) : core::Result<void>(body.error());
     if (!fits) {
         m_currentBake->setText(tr("%1\nstale: it no longer fits the body or its segment tags — lit unshadowed (DU) "
@@ -495,7 +494,7 @@ void BakePanel::refreshCurrentBake()
                                .arg(file, shortTransferName(bake->transferKind))
                                .arg(bake->order)
                                .arg(grouped(bake->raysPerVertex)));
-    m_currentBake->setToolTip(QDir::toNativeSeparators(fromFsPath(base / character.bake)));
+    m_currentBake->setToolTip(QDir::toNativeSeparators(fromFsPath(m_document->assets().path(character.bake))));
 }
 
 void BakePanel::updateEnabled()

@@ -17,8 +17,8 @@ constexpr double kOpenEndedPreviewSeconds = 10.0;
 Document::Document(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime, QString filePath,
                    QString baseDir)
     : m_scenario(std::move(scenario)), m_runtime(std::move(runtime)), m_filePath(std::move(filePath)),
-      m_baseDir(std::move(baseDir)), m_undoStack(new QUndoStack(this)),
-      m_assets(std::make_unique<core::scenario::AssetCache>())
+      m_baseDir(std::move(baseDir)), m_assets(toFsPath(m_baseDir)), m_undoStack(new QUndoStack(this)),
+      m_cache(std::make_unique<core::scenario::AssetCache>())
 {
     connect(m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
 }
@@ -122,7 +122,7 @@ core::Result<void> Document::edit(core::edit::Edit edit, const QString& text, Me
     core::scenario::Scenario next = m_scenario;
     if (auto applied = edit.apply(next); !applied)
         return applied.error();
-    auto runtime = core::scenario::buildRuntime(next, toFsPath(m_baseDir), m_assets.get());
+    auto runtime = core::scenario::buildRuntime(next, m_assets, m_cache.get());
     if (!runtime)
         return runtime.error();
     m_undoStack->push(new EditCommand(*this, std::move(edit), text, merge.key, merge.finished, std::move(next),
@@ -143,7 +143,7 @@ void Document::apply(const core::edit::Edit& edit)
     core::scenario::Scenario next = m_scenario;
     auto applied = edit.apply(next);
     Q_ASSERT(applied);
-    auto runtime = core::scenario::buildRuntime(next, toFsPath(m_baseDir), m_assets.get());
+    auto runtime = core::scenario::buildRuntime(next, m_assets, m_cache.get());
     Q_ASSERT(runtime);
     if (!applied || !runtime)
         return;
@@ -179,6 +179,7 @@ core::Result<void> Document::saveAs(const QString& path)
             if (auto* command = dynamic_cast<const EditCommand*>(m_undoStack->command(i)))
                 const_cast<EditCommand*>(command)->rebasePaths(oldBase, newBase);
     m_baseDir = info.absolutePath();
+    m_assets = core::scenario::Assets(toFsPath(m_baseDir));
     setFilePath(info.absoluteFilePath());
     m_undoStack->setClean();
     return {};

@@ -51,6 +51,8 @@ public:
     QString filePath() const { return m_filePath; }
     /// The folder the scenario's relative paths (clips, models, probe) resolve in.
     QString baseDir() const { return m_baseDir; }
+    /// Where the scenario's files are found (the resolver every reader asks).
+    const core::scenario::Assets& assets() const { return m_assets; }
     /// The file's name ("demo.thespis"), or "Untitled".
     QString fileName() const;
     /// The scenario's own name, else the file's base name, else "Untitled".
@@ -110,8 +112,9 @@ private:
     core::scenario::ScenarioRuntime m_runtime;
     QString m_filePath;
     QString m_baseDir;
+    core::scenario::Assets m_assets; // m_baseDir's
     QUndoStack* m_undoStack = nullptr; // child QObject
-    std::unique_ptr<core::scenario::AssetCache> m_assets; // files the runtime reads, kept between edits
+    std::unique_ptr<core::scenario::AssetCache> m_cache; // files the runtime reads, kept between edits
 };
 
 } // namespace thespis::editor

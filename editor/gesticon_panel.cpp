@@ -504,7 +504,7 @@ void GesticonPanel::preview()
     const core::edit::ActionPath path{c, int(character.layers.size()) - 1, 0};
     const QString name = fromUtf8(gesture->name);
 
-    auto runtime = core::scenario::buildRuntime(scenario, toFsPath(m_document->baseDir()), &m_assets);
+    auto runtime = core::scenario::buildRuntime(scenario, m_document->assets(), &m_assets);
     if (!runtime) {
         showMessage(tr("Cannot preview gesture \"%1\": %2").arg(name, fromUtf8(runtime.error().message)));
         return;

@@ -184,7 +184,7 @@ void ImportMotionDialog::plan(Entry& entry)
         entry.error = tr("There is no character to import into: add one first (Character ▸ Add Character…).");
         return;
     }
-    auto planned = core::scenario::planClipImport(toFsPath(entry.path), toFsPath(m_document.baseDir()),
+    auto planned = core::scenario::planClipImport(toFsPath(entry.path), m_document.assets(),
                                                   characters[std::size_t(c)].skeleton, entry.mapping);
     if (planned)
         entry.plan = std::move(planned).value();

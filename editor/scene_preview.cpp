@@ -49,7 +49,7 @@ core::Result<void> ScenePreview::build(const Document* document, bool frameCamer
     m_scene.reset();
     if (!document)
         return {};
-    auto scene = core::render::ScenarioScene::create(document->scenario(), toFsPath(document->baseDir()));
+    auto scene = core::render::ScenarioScene::create(document->scenario(), document->assets());
     if (!scene)
         return scene.error();
     m_scene = std::move(scene).value();

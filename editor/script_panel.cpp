@@ -118,7 +118,7 @@ void ScriptPanel::setStage(std::shared_ptr<core::runtime::Stage> stage)
     updateButtons();
 }
 
-void ScriptPanel::setSoundFolder(const QString& folder) { m_soundFolder = folder; }
+void ScriptPanel::setAssets(const core::scenario::Assets& assets) { m_assets = assets; }
 
 void ScriptPanel::setTime(double seconds)
 {
@@ -136,7 +136,7 @@ void ScriptPanel::setTime(double seconds)
     const auto activations = m_sound->activations();
     for (; m_soundsStarted < activations.size(); ++m_soundsStarted) {
         const auto& a = activations[m_soundsStarted];
-        const QString file = QDir(m_soundFolder).absoluteFilePath(QString::fromStdString(a.sound));
+        const QString file = QString::fromStdString(m_assets.path(a.sound).string());
         auto* player = new QMediaPlayer(this);
         auto* output = new QAudioOutput(player);
         output->setVolume(a.volume);
@@ -233,7 +233,7 @@ void ScriptPanel::run()
     for (const auto& player : m_players)
         player.first->deleteLater();
     m_players.clear();
-    m_sound = std::make_shared<core::runtime::SoundService>(m_soundFolder.toStdString(), m_clock);
+    m_sound = std::make_shared<core::runtime::SoundService>(m_assets, m_clock);
     m_soundsStarted = 0;
     auto sound = m_sound;
     m_status->setText(tr("Running…"));

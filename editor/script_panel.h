@@ -43,8 +43,8 @@ public:
     void setStage(std::shared_ptr<core::runtime::Stage> stage);
     /// The playhead: scripts' time. Sounds the script started play from here (Qt Multimedia).
     void setTime(double seconds);
-    /// Where the scripts' sound files are found (the scenario's folder).
-    void setSoundFolder(const QString& folder);
+    /// Where the scripts' sound files are found (the scenario's assets).
+    void setAssets(const core::scenario::Assets& assets);
     /// The sound service of the script running or run last (null before the first run).
     std::shared_ptr<core::runtime::SoundService> soundService() const { return m_sound; }
 
@@ -99,7 +99,7 @@ private:
     std::shared_ptr<core::runtime::ExternalClock> m_clock;
     std::unique_ptr<script::ScriptRunner> m_runner; // made at the first Run (it starts Python)
     std::shared_ptr<core::runtime::SoundService> m_sound;
-    QString m_soundFolder;
+    core::scenario::Assets m_assets{"."};
     std::size_t m_soundsStarted = 0; // activations of m_sound already handed to a player
     std::vector<std::pair<QMediaPlayer*, core::Tick>> m_players; // playing, with their end
     std::thread m_worker;

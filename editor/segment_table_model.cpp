@@ -70,7 +70,7 @@ const SegmentTableModel::Body* SegmentTableModel::loadBody(int character)
 
     Body body;
     body.key = key;
-    auto loaded = core::scenario::loadCharacterBody(bare, std::size_t(character), toFsPath(m_document->baseDir()));
+    auto loaded = core::scenario::loadCharacterBody(bare, std::size_t(character), m_document->assets());
     if (loaded) {
         for (const core::scene::Segment& segment : loaded->mesh.segments)
             body.rows.push_back({fromUtf8(segment.name), fromUtf8(segment.joint), segment.vertexCount,

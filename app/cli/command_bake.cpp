@@ -95,8 +95,8 @@ std::optional<scene::CharacterMesh> loadCharacterMesh(const CommandSpec& spec, c
     const core::scenario::Character* character = document ? chooseCharacter(spec, arguments, *document) : nullptr;
     if (!character)
         return std::nullopt;
-    const std::filesystem::path baseDir = path.parent_path().empty() ? "." : path.parent_path();
-    auto body = core::scenario::loadCharacterBody(*document, std::size_t(character - document->characters.data()), baseDir);
+    auto body = core::scenario::loadCharacterBody(*document, std::size_t(character - document->characters.data()),
+                                                  core::scenario::Assets::besideFile(path));
     if (!body) {
         printError(spec.name, body.error());
         return std::nullopt;

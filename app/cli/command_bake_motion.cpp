@@ -95,7 +95,7 @@ int runBakeMotion(const CommandSpec& spec, const ParsedArguments& arguments)
         return ExitInvalidInput;
     core::scenario::MotionBakeJob job;
     job.scenario = std::move(*document);
-    job.baseDir = scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path();
+    job.assets = core::scenario::Assets::besideFile(scenarioPath);
     job.character = characterName;
     job.output = outPath;
     job.fps = fps;

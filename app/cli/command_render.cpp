@@ -91,7 +91,7 @@ int runRender(const CommandSpec& spec, const ParsedArguments& arguments)
     if (const int status = readPictureSettings(spec, arguments, *document, job.picture); status != ExitOk)
         return status;
     job.scenario = std::move(*document);
-    job.baseDir = scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path();
+    job.assets = core::scenario::Assets::besideFile(scenarioPath);
     job.first = frames->first;
     job.last = frames->last;
     job.fps = *fps;

@@ -105,7 +105,7 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
         const auto document = loadScenarioReporting(spec.name, scenarioPath);
         if (!document)
             return ExitInvalidInput;
-        auto runtime = core::scenario::buildRuntime(*document, scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path());
+        auto runtime = core::scenario::buildRuntime(*document, core::scenario::Assets::besideFile(scenarioPath));
         if (!runtime) {
             printError(spec.name, runtime.error());
             return ExitInvalidInput;
@@ -117,8 +117,7 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
     script::ScriptRunner runner;
     auto clock = std::make_shared<core::runtime::ManualClock>();
     auto service = std::make_shared<core::runtime::AnimationService>(stage, clock);
-    const std::filesystem::path baseDir = scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path();
-    auto sound = std::make_shared<core::runtime::SoundService>(baseDir, clock);
+    auto sound = std::make_shared<core::runtime::SoundService>(core::scenario::Assets::besideFile(scenarioPath), clock);
     const long count = frames ? frames->last - frames->first + 1 : 0;
     ProgressReporter progress(stderr, "run", "frames", count, quiet || !frames);
     long next = frames ? frames->first : 0;

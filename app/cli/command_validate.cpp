@@ -30,8 +30,8 @@ int runValidate(const CommandSpec& spec, const ParsedArguments& arguments)
     if (!scenario)
         return ExitInvalidInput;
 
-    const std::filesystem::path baseDir = path.parent_path().empty() ? "." : path.parent_path();
-    const std::vector<core::Error> problems = core::scenario::validateScenario(*scenario, baseDir);
+    const core::scenario::Assets assets = core::scenario::Assets::besideFile(path);
+    const std::vector<core::Error> problems = core::scenario::validateScenario(*scenario, assets);
     if (interrupted())
         return ExitCancelled;
     if (!problems.empty()) {
@@ -43,7 +43,7 @@ int runValidate(const CommandSpec& spec, const ParsedArguments& arguments)
         return ExitInvalidInput;
     }
 
-    auto runtime = core::scenario::buildRuntime(*scenario, baseDir);
+    auto runtime = core::scenario::buildRuntime(*scenario, assets);
     if (!runtime) {
         std::printf("%s: 1 problem\n  - %s\n", path.string().c_str(), core::describe(runtime.error()).c_str());
         printError(spec.name, path.string() + " is not valid.");

@@ -177,8 +177,7 @@ int makePicture(const CommandSpec& spec, const ParsedArguments& arguments, const
     render::PictureSettings settings;
     if (const int status = readPictureSettings(spec, arguments, *document, settings); status != ExitOk)
         return status;
-    const std::filesystem::path baseDir = scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path();
-    auto picture = render::ScenarioPicture::create(*document, baseDir, settings);
+    auto picture = render::ScenarioPicture::create(*document, core::scenario::Assets::besideFile(scenarioPath), settings);
     if (!picture) {
         printSceneError(spec, arguments, scenarioPath, picture.error());
         return picture.error().code == core::ErrorCode::IoError || picture.error().code == core::ErrorCode::Internal

@@ -126,7 +126,7 @@ void MainWindow::updateScriptStage()
 #ifdef THESPIS_WITH_PYTHON
     core::render::ScenarioScene* scene = m_preview ? m_preview->scene() : nullptr;
     m_script->setStage(scene ? scene->sharedStage() : nullptr);
-    m_script->setSoundFolder(m_document ? m_document->baseDir() : QString());
+    m_script->setAssets(m_document ? m_document->assets() : core::scenario::Assets("."));
 #endif
 }
 

@@ -29,7 +29,7 @@ Result<void> FrameSequenceJob::run(JobContext& context)
     context.beginStage(PreparingStage);
     if (std::error_code ec; !std::filesystem::is_directory(folder, ec) && !std::filesystem::create_directories(folder, ec))
         return makeError(ErrorCode::IoError, "Cannot create the folder " + folder.string() + ": " + ec.message() + ".");
-    auto made = ScenarioPicture::create(scenario, baseDir, picture);
+    auto made = ScenarioPicture::create(scenario, assets, picture);
     if (!made)
         return made.error();
     ScenarioPicture& scene = **made;

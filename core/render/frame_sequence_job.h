@@ -19,7 +19,7 @@ struct FrameSequenceJob final : Job {
     static constexpr const char* FramesStage = "Rendering frames";
 
     scenario::Scenario scenario;
-    std::filesystem::path baseDir = "."; ///< where the scenario's files are
+    scenario::Assets assets{"."}; ///< where the scenario's files are
     PictureSettings picture;
     long first = 0, last = 0; ///< frame numbers, inclusive
     double fps = 30;

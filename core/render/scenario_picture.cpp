@@ -5,14 +5,14 @@
 namespace thespis::core::render {
 
 Result<std::unique_ptr<ScenarioPicture>> ScenarioPicture::create(const scenario::Scenario& scenario,
-                                                                 const std::filesystem::path& baseDir,
+                                                                 const scenario::Assets& assets,
                                                                  const PictureSettings& settings)
 {
     ScenarioSceneOptions options;
     options.skinning = settings.skinning;
     options.probeBackground = settings.probeBackground;
     options.bakes = settings.bakes;
-    auto scene = ScenarioScene::create(scenario, baseDir, options);
+    auto scene = ScenarioScene::create(scenario, assets, options);
     if (!scene)
         return scene.error();
     auto renderer = OffscreenRenderer::create(settings.width, settings.height, settings.samples);

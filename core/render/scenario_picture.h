@@ -33,7 +33,7 @@ struct PictureSettings {
 class ScenarioPicture {
 public:
     static Result<std::unique_ptr<ScenarioPicture>> create(const scenario::Scenario& scenario,
-                                                           const std::filesystem::path& baseDir,
+                                                           const scenario::Assets& assets,
                                                            const PictureSettings& settings);
 
     ScenarioScene& scene() { return *m_scene; }

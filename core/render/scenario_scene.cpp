@@ -13,13 +13,13 @@ namespace thespis::core::render {
 
 namespace {
 
-// The bake file a character names (relative to baseDir), when it can be read and still fits its
+// The bake file a character names (an asset name), when it can be read and still fits its
 // body; otherwise the reason, one sentence.
 Result<std::shared_ptr<const lighting::TransferBake>> readCharacterBake(const std::string& file,
                                                                        const scene::CharacterMesh& body,
-                                                                       const std::filesystem::path& baseDir)
+                                                                       const scenario::Assets& assets)
 {
-    auto bake = lighting::readBakeFile(baseDir / file);
+    auto bake = lighting::readBakeFile(assets.path(file));
     if (!bake)
         return bake.error();
     if (bake->order < 1 || bake->order > shaders::kMaxTransferOrder)
@@ -41,10 +41,10 @@ std::string lowerFirst(std::string sentence)
 } // namespace
 
 Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Scenario& scenario,
-                                                             const std::filesystem::path& baseDir,
+                                                             const scenario::Assets& assets,
                                                              const ScenarioSceneOptions& options)
 {
-    auto runtime = scenario::buildRuntime(scenario, baseDir);
+    auto runtime = scenario::buildRuntime(scenario, assets);
     if (!runtime)
         return runtime.error();
     std::unique_ptr<ScenarioScene> self(new ScenarioScene);
@@ -56,7 +56,7 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
         if (!layout)
             return makeError(layout.error().code, "lighting.layout: " + layout.error().message);
         lighting::ProbeProjectionJob projection;
-        projection.path = baseDir / scenario.lighting.probe;
+        projection.path = assets.path(scenario.lighting.probe);
         projection.layout = *layout;
         projection.order = options.lightOrder;
         JobContext context;
@@ -72,7 +72,7 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
     }
 
     for (std::size_t i = 0; i < scenario.characters.size(); ++i) {
-        auto body = scenario::loadCharacterBody(scenario, i, baseDir);
+        auto body = scenario::loadCharacterBody(scenario, i, assets);
         if (!body)
             return body.error();
         const scenario::CharacterRuntime* characterRuntime = self->runtime().findCharacter(scenario.characters[i].name);
@@ -87,7 +87,7 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
         if (const auto given = options.bakes.find(spec.name); given != options.bakes.end()) {
             bake = given->second;
         } else if (!spec.bake.empty()) {
-            auto read = readCharacterBake(spec.bake, body->mesh, baseDir);
+            auto read = readCharacterBake(spec.bake, body->mesh, assets);
             if (read)
                 bake = std::move(read).value();
             else

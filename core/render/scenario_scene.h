@@ -17,6 +17,7 @@
 #include "lighting/transfer_bake.h"
 #include "render/render_scene.h"
 #include "runtime/stage.h"
+#include "scenario/asset_resolver.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_runtime.h"
 #include "util/error.h"
@@ -27,7 +28,7 @@ struct ScenarioSceneOptions {
     int skinningThreads = 0; ///< as scene::SkinningWorkers
     scene::SkinningMethod skinning = scene::SkinningMethod::Linear;
     /// Baked transfer by character name (for its body mesh). A character without one here uses
-    /// the bake file its scenario entry names (Character::bake, relative to baseDir) when that
+    /// the bake file its scenario entry names (Character::bake, an asset name) when that
     /// can be read and fits its body; otherwise, or without a file, it gets DU (and a warning
     /// says why a named file was left out).
     std::map<std::string, std::shared_ptr<const lighting::TransferBake>> bakes;
@@ -40,7 +41,7 @@ struct ScenarioSceneOptions {
 class ScenarioScene {
 public:
     static Result<std::unique_ptr<ScenarioScene>> create(const scenario::Scenario& scenario,
-                                                         const std::filesystem::path& baseDir,
+                                                         const scenario::Assets& assets,
                                                          const ScenarioSceneOptions& options = {});
     ScenarioScene(const ScenarioScene&) = delete;
     ScenarioScene& operator=(const ScenarioScene&) = delete;

@@ -40,8 +40,8 @@ Result<std::shared_ptr<const SoundClip>> loadSound(const std::filesystem::path& 
     return std::shared_ptr<const SoundClip>(std::move(clip));
 }
 
-SoundService::SoundService(std::filesystem::path baseDir, std::shared_ptr<Clock> clock, int mixRate)
-    : m_baseDir(std::move(baseDir)), m_clock(std::move(clock)), m_rate(std::max(mixRate, 1))
+SoundService::SoundService(scenario::Assets assets, std::shared_ptr<Clock> clock, int mixRate)
+    : m_assets(std::move(assets)), m_clock(std::move(clock)), m_rate(std::max(mixRate, 1))
 {
 }
 
@@ -49,9 +49,7 @@ Result<std::shared_ptr<const SoundClip>> SoundService::clip(const std::string& s
 {
     if (auto found = m_clips.find(sound); found != m_clips.end())
         return found->second;
-    const std::filesystem::path path = std::filesystem::path(sound).is_absolute() ? std::filesystem::path(sound)
-                                                                                   : m_baseDir / sound;
-    auto loaded = loadSound(path);
+    auto loaded = loadSound(m_assets.path(sound));
     if (!loaded)
         return loaded.error();
     m_clips[sound] = *loaded;

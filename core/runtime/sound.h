@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "runtime/clock.h"
+#include "scenario/asset_resolver.h"
 #include "util/error.h"
 #include "util/tick.h"
 
@@ -33,8 +34,8 @@ Result<std::shared_ptr<const SoundClip>> loadSound(const std::filesystem::path& 
 
 class SoundService {
 public:
-    /// Sounds are found relative to `baseDir`; mix() renders at `mixRate` samples per second.
-    SoundService(std::filesystem::path baseDir, std::shared_ptr<Clock> clock, int mixRate = 48000);
+    /// Sounds are assets of `assets` (a scenario's); mix() renders at `mixRate` samples per second.
+    SoundService(scenario::Assets assets, std::shared_ptr<Clock> clock, int mixRate = 48000);
 
     /// Starts the sound now at `volume` (1: as recorded), for `owner` (a character's name, or
     /// empty); returns its activation id. Errors: the file cannot be read.
@@ -65,7 +66,7 @@ private:
     Result<std::shared_ptr<const SoundClip>> clip(const std::string& sound);
 
     mutable std::mutex m_mutex;
-    std::filesystem::path m_baseDir;
+    scenario::Assets m_assets;
     std::shared_ptr<Clock> m_clock;
     int m_rate;
     std::map<std::string, std::shared_ptr<const SoundClip>> m_clips;

@@ -146,9 +146,9 @@ std::vector<std::string> unmappedJointsMovingNothing(const ClipFile& file, const
     return lost;
 }
 
-Result<ClipFile> readClipFile(const ClipAsset& asset, const std::filesystem::path& baseDir)
+Result<ClipFile> readClipFile(const ClipAsset& asset, const Assets& assets)
 {
-    const std::filesystem::path path = baseDir / asset.file;
+    const std::filesystem::path path = assets.path(asset.file);
     if (isGltf(path))
         return readGltf(asset, path);
     if (!asset.animation.empty())
@@ -179,9 +179,9 @@ struct AssetCache::Entry {
 namespace {
 
 // The file and every option that changes what is read.
-std::string keyOf(const ClipAsset& asset, const std::filesystem::path& baseDir)
+std::string keyOf(const ClipAsset& asset, const Assets& assets)
 {
-    std::string key = "clip\n" + (baseDir / asset.file).lexically_normal().string() + "\n" + asset.animation + "\n"
+    std::string key = "clip\n" + assets.path(asset.file).lexically_normal().string() + "\n" + asset.animation + "\n"
                       + std::to_string(asset.frameRateOverride) + "\n" + (asset.keepCalibrationFrame ? "keep" : "drop");
     for (const auto& [joint, name] : asset.mapping)
         key += "\n" + joint + "=" + name;
@@ -200,19 +200,19 @@ std::filesystem::file_time_type modifiedTime(const std::filesystem::path& path)
 AssetCache::AssetCache() = default;
 AssetCache::~AssetCache() = default;
 
-bool AssetCache::holds(const ClipAsset& asset, const std::filesystem::path& baseDir) const
+bool AssetCache::holds(const ClipAsset& asset, const Assets& assets) const
 {
-    const auto it = m_entries.find(keyOf(asset, baseDir));
-    return it != m_entries.end() && it->second->modified == modifiedTime(baseDir / asset.file);
+    const auto it = m_entries.find(keyOf(asset, assets));
+    return it != m_entries.end() && it->second->modified == modifiedTime(assets.path(asset.file));
 }
 
-Result<std::shared_ptr<const ClipFile>> AssetCache::clipFile(const ClipAsset& asset, const std::filesystem::path& baseDir)
+Result<std::shared_ptr<const ClipFile>> AssetCache::clipFile(const ClipAsset& asset, const Assets& assets)
 {
-    const std::string key = keyOf(asset, baseDir);
-    const auto modified = modifiedTime(baseDir / asset.file);
+    const std::string key = keyOf(asset, assets);
+    const auto modified = modifiedTime(assets.path(asset.file));
     if (const auto it = m_entries.find(key); it != m_entries.end() && it->second->modified == modified)
         return it->second->clip;
-    auto read = readClipFile(asset, baseDir);
+    auto read = readClipFile(asset, assets);
     if (!read) {
         m_entries.erase(key);
         return read.error();
@@ -259,11 +259,6 @@ Result<AssetCache::ClipPtr> AssetCache::retargeted(const std::string& key, const
     m_retargeted[key] = *made;
     m_retargetedOrder.push_back(key);
     return made;
-}
-
-long long AssetCache::stampOf(const std::filesystem::path& path)
-{
-    return modifiedTime(path).time_since_epoch().count();
 }
 
 void AssetCache::clear()

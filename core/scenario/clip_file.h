@@ -15,6 +15,7 @@
 #include "anim/body_measure.h"
 #include "anim/keyframe_clip.h"
 #include "anim/skeleton.h"
+#include "scenario/asset_resolver.h"
 #include "scenario/scenario.h"
 #include "util/error.h"
 
@@ -49,10 +50,10 @@ struct ClipFile {
 /// below.
 std::vector<std::string> unmappedJointsMovingNothing(const ClipFile& file, const anim::Skeleton& target);
 
-/// Reads `asset.file` (relative to `baseDir`) with the asset's options: frame rate, calibration
+/// Reads the asset `asset.file` from `assets` with the asset's options: frame rate, calibration
 /// frame, joint mapping and, for glTF, which animation. Errors name the file and what is wrong
 /// (a BVH line, a missing animation and the ones there are).
-Result<ClipFile> readClipFile(const ClipAsset& asset, const std::filesystem::path& baseDir);
+Result<ClipFile> readClipFile(const ClipAsset& asset, const Assets& assets);
 
 /// The rig of a glTF model, as a character with skeleton "model" plays on it, and the soles of
 /// its feet (scene/foot_soles.h), so that motion retargeted onto it keeps the model's own feet on
@@ -71,7 +72,7 @@ public:
     AssetCache& operator=(const AssetCache&) = delete;
 
     /// readClipFile(), from the cache while the file is unchanged on disk (errors are not kept).
-    Result<std::shared_ptr<const ClipFile>> clipFile(const ClipAsset& asset, const std::filesystem::path& baseDir);
+    Result<std::shared_ptr<const ClipFile>> clipFile(const ClipAsset& asset, const Assets& assets);
     /// readModelRig(), likewise.
     Result<std::shared_ptr<const ModelRig>> modelRig(const std::filesystem::path& path);
     /// A clip retargeted onto a character, kept under `key` (the runtime makes it from the file,
@@ -79,10 +80,8 @@ public:
     /// it is not kept. The last 64 are kept.
     using ClipPtr = std::shared_ptr<const anim::KeyframeClip>;
     Result<ClipPtr> retargeted(const std::string& key, const std::function<Result<ClipPtr>()>& make);
-    /// The modification time of a file as a number for such keys (0 when it cannot be read).
-    static long long stampOf(const std::filesystem::path& path);
     /// True when the asset's file, as it is on disk now, is in the cache.
-    bool holds(const ClipAsset& asset, const std::filesystem::path& baseDir) const;
+    bool holds(const ClipAsset& asset, const Assets& assets) const;
     void clear();
 
 private:

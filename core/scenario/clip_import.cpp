@@ -23,20 +23,19 @@ bool isMotionFile(const std::filesystem::path& path)
     return extension == ".bvh" || extension == ".gltf" || extension == ".glb";
 }
 
-Result<ClipImport> planClipImport(const std::filesystem::path& file, const std::filesystem::path& baseDir,
+Result<ClipImport> planClipImport(const std::filesystem::path& file, const Assets& assets,
                                   const anim::Skeleton& skeleton, const std::map<std::string, std::string>& mapping)
 {
     if (!isMotionFile(file))
         return makeError(ErrorCode::NotOurFormat, file.filename().string()
                                                       + " is not a motion file Thespis reads (BVH, glTF or GLB).");
-    const std::filesystem::path absolute = std::filesystem::absolute(file).lexically_normal();
     ClipAsset asset;
     asset.name = file.stem().string();
-    asset.file = absolute.lexically_relative(std::filesystem::absolute(baseDir).lexically_normal()).generic_string();
+    asset.file = assets.nameOf(file);
     if (asset.file.empty())
-        asset.file = absolute.generic_string();
+        asset.file = std::filesystem::absolute(file).lexically_normal().generic_string();
     asset.mapping = mapping;
-    auto read = readClipFile(asset, baseDir);
+    auto read = readClipFile(asset, assets);
     if (!read)
         return read.error();
 

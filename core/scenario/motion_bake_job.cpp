@@ -53,7 +53,7 @@ Result<void> MotionBakeJob::run(JobContext& context)
 {
     frameCount = 0;
     context.beginStage(LoadingStage);
-    auto runtime = buildRuntime(scenario, baseDir);
+    auto runtime = buildRuntime(scenario, assets);
     if (!runtime)
         return runtime.error();
     const CharacterRuntime* body = runtime->findCharacter(character);

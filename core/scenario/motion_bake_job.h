@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "scenario/asset_resolver.h"
 #include "scenario/scenario.h"
 #include "util/job.h"
 
@@ -20,7 +21,7 @@ struct MotionBakeJob final : Job {
     static constexpr const char* FramesStage = "Evaluating frames";
 
     Scenario scenario;
-    std::filesystem::path baseDir = "."; ///< where the scenario's files are
+    Assets assets{"."}; ///< where the scenario's files are
     std::string character;
     std::filesystem::path output; ///< a .bvh file
     double fps = 30;

@@ -29,7 +29,7 @@ constexpr std::array<float, 3> kShirts[] = {
 } // namespace
 
 Result<scene::Character> loadCharacterBody(const Scenario& scenario, std::size_t characterIndex,
-                                           const std::filesystem::path& baseDir)
+                                           const Assets& assets)
 {
     const Character& spec = scenario.characters.at(characterIndex);
     const std::string field = "characters[" + std::to_string(characterIndex) + "]";
@@ -39,7 +39,7 @@ Result<scene::Character> loadCharacterBody(const Scenario& scenario, std::size_t
     Result<scene::Character> body = spec.model.empty()
                                         ? scene::makeDefaultHumanoid({.level = humanoidLevel(spec.skeleton),
                                                                       .shirtColor = kShirts[characterIndex % std::size(kShirts)]})
-                                        : scene::loadGltfCharacter(baseDir / spec.model);
+                                        : scene::loadGltfCharacter(assets.path(spec.model));
     if (!body)
         return fail(spec.model.empty() ? "skeleton" : "model", body.error());
     body->name = spec.name;

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "scenario/asset_resolver.h"
 #include "scenario/scenario.h"
 #include "scene/character.h"
 #include "util/error.h"
@@ -13,6 +14,6 @@
 namespace thespis::core::scenario {
 
 Result<scene::Character> loadCharacterBody(const Scenario& scenario, std::size_t characterIndex,
-                                           const std::filesystem::path& baseDir);
+                                           const Assets& assets);
 
 } // namespace thespis::core::scenario

@@ -101,8 +101,8 @@ const std::vector<anim::BodyMeasure::SolePoint>& humanoidSoles(anim::hanim::Leve
 // everything that depends on it. Problems name the character, layer, action and field.
 class RuntimeBuilder {
 public:
-    RuntimeBuilder(const Scenario& scenario, std::filesystem::path baseDir, AssetCache* cache = nullptr)
-        : m_scenario(scenario), m_baseDir(std::move(baseDir)), m_cache(cache ? cache : &m_ownCache)
+    RuntimeBuilder(const Scenario& scenario, Assets assets, AssetCache* cache = nullptr)
+        : m_scenario(scenario), m_assets(std::move(assets)), m_cache(cache ? cache : &m_ownCache)
     {
     }
 
@@ -176,11 +176,11 @@ private:
                 problem(ErrorCode::InvalidSchedule, where + ": the frame rate override must be a positive number.");
                 return std::nullopt;
             }
-            auto read = m_cache->clipFile(asset, m_baseDir);
+            auto read = m_cache->clipFile(asset, m_assets);
             if (!read) {
                 const Error& e = read.error();
                 problem(e.code, where + ", file " + quote(asset.file) + ": " + e.message,
-                        "looked for " + (m_baseDir / asset.file).string() + (e.detail.empty() ? "" : "; " + e.detail));
+                        "looked for " + m_assets.path(asset.file).string() + (e.detail.empty() ? "" : "; " + e.detail));
                 return std::nullopt;
             }
             const ClipFile& file = **read;
@@ -240,7 +240,7 @@ private:
                 problem(ErrorCode::InvalidSchedule, who + ", skeleton \"model\": the character has no model to take its rig from.");
                 return std::nullopt;
             }
-            auto rig = m_cache->modelRig(m_baseDir / character.model);
+            auto rig = m_cache->modelRig(m_assets.path(character.model));
             if (!rig) {
                 problem(rig.error().code, who + ", model " + quote(character.model) + ": " + rig.error().message,
                         rig.error().detail);
@@ -286,8 +286,8 @@ private:
         options.fitGround = source.asset->fitGround;
         options.retarget.targetSoles = m_soles;
         // Kept between builds: the file as read, the options and the skeleton (with its body).
-        std::string key = "retarget\n" + (m_baseDir / source.asset->file).lexically_normal().string() + "\n"
-                          + std::to_string(AssetCache::stampOf(m_baseDir / source.asset->file)) + "\n"
+        std::string key = "retarget\n" + m_assets.path(source.asset->file).lexically_normal().string() + "\n"
+                          + std::to_string(m_assets.stamp(source.asset->file)) + "\n"
                           + source.asset->animation + "\n" + std::to_string(source.asset->frameRateOverride) + "\n"
                           + std::to_string(options.retarget.sourceUnit) + (options.fitGround ? " fit" : " keep")
                           + (source.asset->keepCalibrationFrame ? " calibration" : "") + "\n" + m_skeletonKey;
@@ -522,7 +522,7 @@ private:
 
         m_soles.clear();
         m_skeletonKey = character.skeleton + "\n" + character.model + "\n"
-                        + (character.model.empty() ? std::string() : std::to_string(AssetCache::stampOf(m_baseDir / character.model)));
+                        + (character.model.empty() ? std::string() : std::to_string(m_assets.stamp(character.model)));
         auto skeleton = resolveSkeleton(character, who, sources);
         if (!skeleton)
             return std::nullopt;
@@ -646,7 +646,7 @@ private:
     }
 
     const Scenario& m_scenario;
-    std::filesystem::path m_baseDir;
+    Assets m_assets;
     AssetCache m_ownCache; // when the caller keeps none
     std::vector<anim::BodyMeasure::SolePoint> m_soles; // the character's model's, when it plays on its rig
     std::string m_skeletonKey; // what the character's skeleton and soles are made from
@@ -656,10 +656,10 @@ private:
 
 } // namespace
 
-Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const std::filesystem::path& baseDir,
+Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const Assets& assets,
                                      AssetCache* cache)
 {
-    RuntimeBuilder builder(scenario, baseDir, cache);
+    RuntimeBuilder builder(scenario, assets, cache);
     ScenarioRuntime runtime = builder.build();
     if (builder.errors.empty())
         return runtime;
@@ -683,14 +683,14 @@ Error fieldError(const std::string& field, const Error& error)
 
 // The lighting side of a scenario (models and their segment tags, the probe): loaded only to
 // validate, since the runtime plays animation and the renderer loads meshes itself.
-void validateLightingFiles(const Scenario& scenario, const std::filesystem::path& baseDir, std::vector<Error>& errors)
+void validateLightingFiles(const Scenario& scenario, const Assets& assets, std::vector<Error>& errors)
 {
     for (std::size_t i = 0; i < scenario.characters.size(); ++i) {
         const Character& character = scenario.characters[i];
         const std::string field = "characters[" + std::to_string(i) + "]";
         if (character.model.empty())
             continue; // the built-in humanoid (rendering issue) checks its own tags when it is built
-        auto mesh = scene::loadGltfMesh(baseDir / character.model);
+        auto mesh = scene::loadGltfMesh(assets.path(character.model));
         if (!mesh) {
             errors.push_back(fieldError(field + ".model", mesh.error()));
             continue;
@@ -700,7 +700,7 @@ void validateLightingFiles(const Scenario& scenario, const std::filesystem::path
     }
     if (!scenario.lighting.probe.empty()) {
         auto layout = lighting::parseProbeLayout(scenario.lighting.layout);
-        auto image = lighting::readHdrImage(baseDir / scenario.lighting.probe);
+        auto image = lighting::readHdrImage(assets.path(scenario.lighting.probe));
         if (!image)
             errors.push_back(fieldError("lighting.probe", image.error()));
         else if (layout)
@@ -711,11 +711,11 @@ void validateLightingFiles(const Scenario& scenario, const std::filesystem::path
 
 } // namespace
 
-std::vector<Error> validateScenario(const Scenario& scenario, const std::filesystem::path& baseDir)
+std::vector<Error> validateScenario(const Scenario& scenario, const Assets& assets)
 {
-    RuntimeBuilder builder(scenario, baseDir);
+    RuntimeBuilder builder(scenario, assets);
     (void)builder.build();
-    validateLightingFiles(scenario, baseDir, builder.errors);
+    validateLightingFiles(scenario, assets, builder.errors);
     return std::move(builder.errors);
 }
 

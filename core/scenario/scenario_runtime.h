@@ -54,12 +54,12 @@ struct ScenarioRuntime {
     const CharacterRuntime* findCharacter(const std::string& name) const;
 };
 
-/// `baseDir` is where relative clip files are looked up (the scenario file's folder). `cache`
+/// `assets` is where the scenario's files are found (the scenario file's folder). `cache`
 /// (optional) keeps the files read between builds.
-Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const std::filesystem::path& baseDir,
+Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const Assets& assets,
                                      AssetCache* cache = nullptr);
 
 /// Checks a scenario without keeping the result: every problem found, empty when valid.
-std::vector<Error> validateScenario(const Scenario& scenario, const std::filesystem::path& baseDir);
+std::vector<Error> validateScenario(const Scenario& scenario, const Assets& assets);
 
 } // namespace thespis::core::scenario

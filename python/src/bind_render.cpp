@@ -21,11 +21,6 @@ namespace render = core::render;
 
 namespace {
 
-std::filesystem::path folderOf(const std::filesystem::path& scenarioPath)
-{
-    return scenarioPath.parent_path().empty() ? "." : scenarioPath.parent_path();
-}
-
 render::PictureSettings pictureSettings(const core::scenario::Scenario& document, int width, int height,
                                         const std::string& shading,
                                         const std::optional<core::lighting::TransferBake>& bake,
@@ -69,7 +64,7 @@ void bindRender(py::module_& m)
             render::RgbaImage image;
             {
                 py::gil_scoped_release unlocked;
-                auto picture = unwrap(render::ScenarioPicture::create(document, folderOf(path), settings));
+                auto picture = unwrap(render::ScenarioPicture::create(document, core::scenario::Assets::besideFile(path), settings));
                 picture->scene().setTime(time);
                 image = *unwrap(picture->draw());
             }
@@ -90,7 +85,7 @@ void bindRender(py::module_& m)
             job.scenario = unwrap(core::scenario::loadScenario(path));
             job.picture = pictureSettings(job.scenario, width, height, shading, bake, character, samples, ground,
                                           azimuth, elevation);
-            job.baseDir = folderOf(path);
+            job.assets = core::scenario::Assets::besideFile(path);
             job.first = first;
             job.last = last;
             job.fps = fps;

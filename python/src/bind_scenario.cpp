@@ -482,7 +482,7 @@ void bindScenario(py::module_& m)
            const py::object& progress) {
             MotionBakeJob job;
             job.scenario = scenario;
-            job.baseDir = baseDir;
+            job.assets = baseDir;
             job.character = character;
             job.output = out;
             job.fps = fps;

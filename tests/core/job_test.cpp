@@ -175,7 +175,7 @@ TEST(MotionBakeJob, BakesTheDemoAndACancelledOneLeavesNoFile)
     const fs::path folder = freshFolder("motion");
     scenario::MotionBakeJob job;
     job.scenario = demo();
-    job.baseDir = thespis::test::resources();
+    job.assets = thespis::test::resources();
     job.character = job.scenario.characters.front().name;
     job.output = folder / "demo.bvh";
     job.fps = 10;
@@ -236,7 +236,7 @@ TEST(FrameSequenceJob, RendersTheDemoAndACancelledOneTakesItsFramesBack)
     const fs::path folder = freshFolder("frames");
     render::FrameSequenceJob job;
     job.scenario = demo();
-    job.baseDir = thespis::test::resources();
+    job.assets = thespis::test::resources();
     job.picture.width = 96;
     job.picture.height = 64;
     job.picture.samples = 0;

@@ -292,7 +292,7 @@ void BringContentTest::fromNothingToARenderedScenarioAndBack()
     QVERIFY(m_window->messagesPanel()->count() >= 1); // what the robot's model brought (its IK feet …)
 
     // Render headless from the saved file: everyone on the ground, at their own size.
-    auto scene = core::render::ScenarioScene::create(*reread, m_dir.path().toStdString());
+    auto scene = core::render::ScenarioScene::create(*reread, std::filesystem::path(m_dir.path().toStdString()));
     QVERIFY2(scene.ok(), scene.ok() ? "" : scene.error().message.c_str());
     (*scene)->setTime(-1.0);
     std::vector<double> restHeight;
