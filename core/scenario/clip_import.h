@@ -36,7 +36,7 @@ struct ClipImport {
 };
 
 /// Reads `file` to import it into a character whose skeleton is `skeleton`; clips are named
-/// after the file (BVH) or their animations (glTF) and their paths made relative to `baseDir`.
+/// after the file (BVH) or their animations (glTF) and their paths named as `assets` finds them.
 /// `mapping` (optional) replaces the automatic joint naming. Errors: the reader's (file, line).
 Result<ClipImport> planClipImport(const std::filesystem::path& file, const Assets& assets,
                                   const anim::Skeleton& skeleton, const std::map<std::string, std::string>& mapping = {});
