@@ -6,6 +6,8 @@
 // (drawn as a polyline) and its keys; gestures only emit intents (keysMoveRequested, …) that the
 // editor turns into undoable commands, then it feeds the result back through setCurves().
 // Setters emit nothing. Owns a copy of the curves, the key selection and the visible range.
+// Files: pure mapping and hit testing in curve_geometry.h, gestures in curve_view_drag.cpp,
+// painting in curve_view_paint.cpp.
 
 #include <QList>
 #include <QPointF>

@@ -7,6 +7,7 @@
 // jointSelected) and what is shown changes only through the setters, which emit nothing, so the
 // editor can apply each intent as an undoable command and feed the result back without loops.
 // Owns a copy of the joints, the tree items and the brush settings.
+// Files: the body picture in joint_mask_picture.h, its pure layout in joint_mask_layout.h.
 
 #include <QColor>
 #include <QPointF>

@@ -15,7 +15,8 @@ namespace thespis::widgets {
 
 namespace {
 
-constexpr int kTimePad = TimelineMetrics::TimePad;
+using M = TimelineMetrics;
+
 constexpr double kMinPixelsPerSecond = 0.05;
 constexpr double kMaxPixelsPerSecond = 50000.0;
 constexpr qint64 kSecondSteps[] = {1, 2, 5, 10, 15, 30, 60, 120, 300, 600, 900, 1800, 3600, 7200};
@@ -177,7 +178,7 @@ void TimelineView::setPixelsPerSecond(double zoom)
 
 void TimelineView::frameAll()
 {
-    const int available = viewport()->width() - HeaderWidth - 2 * kTimePad - 16;
+    const int available = viewport()->width() - HeaderWidth - 2 * M::TimePad - 16;
     if (available < 40) {
         m_frameAllPending = true; // no size yet: framed at the first resize
         return;
@@ -199,8 +200,8 @@ void TimelineView::ensureTimeVisible(qint64 ticks)
 {
     if (ticks == OpenEnd)
         return;
-    const int lanesLeft = HeaderWidth + kTimePad;
-    const int lanesWidth = viewport()->width() - lanesLeft - kTimePad;
+    const int lanesLeft = HeaderWidth + M::TimePad;
+    const int lanesWidth = viewport()->width() - lanesLeft - M::TimePad;
     if (lanesWidth <= 0)
         return;
     const int x = xForTime(ticks);
@@ -300,7 +301,6 @@ void TimelineView::rebuildRows()
         if (const TimelineRow& row = m_rows.rows[i]; row.track < 0)
             m_rowLabels[i] = bold.elidedText(m_tracks[row.group].group, Qt::ElideRight, HeaderWidth - 16);
     // Track names elided to the room left of the flags; recomputed only when tracks or fonts change.
-    using M = TimelineMetrics;
     m_trackElided.resize(std::size_t(m_tracks.size()));
     const int flagsLeft = HeaderWidth - M::FlagRight - 3 * M::FlagWidth - 2 * M::FlagGap;
     for (int i = 0; i < int(m_tracks.size()); ++i) {
@@ -328,7 +328,7 @@ void TimelineView::updateScrollRanges()
     const int laneWidth = std::max(0, viewport()->width() - HeaderWidth);
     // Half a view of room after the end, so that clips can be dragged past it.
     const double ticksPerPixel = double(m_time.ticksPerSecond) / m_pixelsPerSecond;
-    const double contentWidth = kTimePad + double(contentEndTime()) / ticksPerPixel + laneWidth / 2.0;
+    const double contentWidth = M::TimePad + double(contentEndTime()) / ticksPerPixel + laneWidth / 2.0;
     QScrollBar* h = horizontalScrollBar();
     h->setRange(0, int(std::clamp(std::ceil(contentWidth) - laneWidth, 0.0, 1e9)));
     h->setPageStep(std::max(1, laneWidth));
@@ -435,7 +435,7 @@ void TimelineView::wheelEvent(QWheelEvent* event)
         m_pixelsPerSecond = std::clamp(m_pixelsPerSecond * std::pow(2.0, delta / 480.0), kMinPixelsPerSecond,
                                        kMaxPixelsPerSecond);
         updateScrollRanges();
-        horizontalScrollBar()->setValue(int(std::lround(anchorSeconds * m_pixelsPerSecond - (x - HeaderWidth - kTimePad))));
+        horizontalScrollBar()->setValue(int(std::lround(anchorSeconds * m_pixelsPerSecond - (x - HeaderWidth - M::TimePad))));
         viewport()->update();
     } else if ((modifiers & Qt::ShiftModifier) || (angle.y() == 0 && angle.x() != 0)) {
         QScrollBar* h = horizontalScrollBar();

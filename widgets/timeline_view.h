@@ -23,6 +23,9 @@
 // the tracks; Escape or Undo's keys (Ctrl+Z) during a drag ask back what it requested, and Redo's
 // do nothing until the drag ends, so no window action edits under the drag. Clips on locked tracks can be
 // selected (to inspect them) but emit no move, trim or fade.
+//
+// Files: pure geometry and hit testing in timeline_geometry.h, snapping in timeline_snapping.h,
+// gestures and drops in timeline_drag.cpp, painting in timeline_view_paint.cpp.
 
 #include <QAbstractScrollArea>
 #include <QBrush>
