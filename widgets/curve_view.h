@@ -6,10 +6,10 @@
 // (drawn as a polyline) and its keys; gestures only emit intents (keysMoveRequested, …) that the
 // editor turns into undoable commands, then it feeds the result back through setCurves().
 // Setters emit nothing. Owns a copy of the curves, the key selection and the visible range.
+// Files: pure mapping and hit testing in curve_geometry.h, gestures in curve_view_drag.cpp,
+// painting in curve_view_paint.cpp.
 
-#include <QColor>
 #include <QList>
-#include <QMetaType>
 #include <QPointF>
 #include <QRectF>
 #include <QString>
@@ -18,41 +18,14 @@
 
 #include <array>
 
+#include "widgets/curve_geometry.h"
+#include "widgets/curve_types.h"
+
 class QAction;
 class QMenu;
 class QPainter;
 
 namespace thespis::widgets {
-
-/// How a key's tangents are chosen. Auto clamped, Linear and Constant are computed by the curve;
-/// Free and Broken use the key's own slopes (Free: in = out; Broken: each side on its own), and
-/// only those two show draggable tangent handles.
-enum class CurveTangent { AutoClamped, Linear, Constant, Free, Broken };
-
-/// One key of a keyframed curve, in the curve's units: time in seconds, slopes in value / second.
-struct CurveViewKey {
-    double time = 0, value = 0;
-    CurveTangent mode = CurveTangent::AutoClamped;
-    double inSlope = 0, outSlope = 0;
-};
-
-/// One curve as the view shows it.
-struct CurveViewCurve {
-    QString name;               ///< "Weight", "Scale": shown in the legend
-    QColor color;
-    QVector<QPointF> samples;   ///< the evaluated curve (x = seconds, ascending; y = value): a polyline
-    QVector<CurveViewKey> keys; ///< empty for parametric curves (fades / ADSR): drawn, not key-editable
-    /// Accepts new keys (double-click, Ctrl+click) even while `keys` is empty, e.g. a keyframed
-    /// curve whose last key was deleted. Curves with keys are always editable.
-    bool keyable = false;
-};
-
-/// A key by position: index of the curve in setCurves() and of the key in that curve.
-struct CurveKeyRef {
-    int curve = -1;
-    int key = -1;
-    bool operator==(const CurveKeyRef&) const = default;
-};
 
 class CurveView : public QWidget {
     Q_OBJECT
@@ -100,7 +73,7 @@ public:
     /// The plotting area (the rest holds the axis labels).
     QRectF plotRect() const;
     /// The visible time range and value range.
-    QRectF visibleRange() const { return QRectF(m_t0, m_v0, m_t1 - m_t0, m_v1 - m_v0); }
+    QRectF visibleRange() const { return QRectF(m_range.t0, m_range.v0, m_range.t1 - m_range.t0, m_range.v1 - m_range.v0); }
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
@@ -139,50 +112,50 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
-    /// Ends the gesture in progress and puts everything back as it was.
-    void cancelDrag();
     enum class Drag { None, PendingKey, MovingKeys, PendingBox, Box, Tangent, Pan };
-    struct Colors;  // derived from the palette at paint time
-    struct Mapping; // (seconds, value) ↔ pixels for the current size and visible range
-    Mapping mapping() const;
-    void updateGutters();
+    struct Colors; // derived from the palette at paint time (curve_view_paint.cpp)
 
-    // The visible range [m_t0, m_t1] × [m_v0, m_v1] fills the plot rect.
-    void setVisible(double t0, double t1, double v0, double v1);
-    void fitBounds(double t0, double t1, double v0, double v1);
+    // Mapping and framing (curve_view.cpp)
+    CurveMapping mapping() const; // for the current size and visible range
+    void updateGutters();
+    /// The visible range fills the plot rect; its spans are clamped.
+    void setVisibleRange(CurveRange range);
     void autoFrame(); // while m_autoFrame: the domain, [0, 1] and everything
     double domainViewEnd() const;
-    void stopAutoFrame() { m_autoFrame = false; }
 
-    bool isEditable(int curve) const;
-    const CurveViewKey* keyAt(CurveKeyRef ref) const;
+    // Keys and selection (curve_view.cpp)
+    const CurveViewKey* keyAt(CurveKeyRef ref) const { return curveKeyAt(m_curves, ref); }
+    CurveKeyRef keyUnder(QPointF pixel) const { return curveKeyUnder(mapping(), m_curves, pixel); }
+    CurveKeyRef handleUnder(QPointF pixel, bool* outSide) const
+    {
+        return curveHandleUnder(mapping(), m_curves, m_selection, pixel, outSide);
+    }
     bool isSelected(CurveKeyRef ref) const;
     void normalizeSelection(QList<CurveKeyRef>& keys) const;
     void changeSelection(QList<CurveKeyRef> keys); // by the user: emits selectionChanged if it changed
-    CurveKeyRef keyUnder(QPointF pixel) const;
-    /// A selected Free / Broken key's handle under `pixel`; outSide says which one.
-    CurveKeyRef handleUnder(QPointF pixel, bool* outSide) const;
-    /// The editable curve whose polyline passes nearest `pixel` (within a few pixels), or -1.
-    int editableCurveNear(QPointF pixel) const;
-    QList<CurveKeyRef> keysIn(const QRectF& pixelRect) const;
-    QPointF moveDelta(QPointF pixel, Qt::KeyboardModifiers modifiers) const;
-    void emitTangent(QPointF pixel, bool finished);
     void requestDelete();
     void requestTangentMode(CurveTangent mode);
     void updateMenuActions();
 
-    void paintGrid(QPainter& painter, const Colors& colors, const QRectF& plot);
-    void paintCurves(QPainter& painter, const Colors& colors, const QRectF& plot);
-    void paintKeys(QPainter& painter, const Colors& colors, const QRectF& plot);
-    void paintOverlays(QPainter& painter, const Colors& colors, const QRectF& plot);
-    void paintPlayhead(QPainter& painter, const Colors& colors, const QRectF& plot);
+    // Gestures (curve_view_drag.cpp)
+    /// Ends the gesture in progress and puts everything back as it was.
+    void cancelDrag();
+    QPointF moveDelta(QPointF pixel, Qt::KeyboardModifiers modifiers) const;
+    void emitTangent(QPointF pixel, bool finished);
+
+    // Painting (curve_view_paint.cpp)
+    void paintGrid(QPainter& painter, const Colors& colors, const CurveMapping& m);
+    void paintCurves(QPainter& painter, const CurveMapping& m);
+    void paintKeys(QPainter& painter, const Colors& colors, const CurveMapping& m);
+    void paintOverlays(QPainter& painter, const Colors& colors, const CurveMapping& m);
+    void paintPlayhead(QPainter& painter, const Colors& colors, const CurveMapping& m);
 
     QVector<CurveViewCurve> m_curves;
     QList<CurveKeyRef> m_selection;
     double m_domainStart = 0;
     double m_domainEnd = 1;
     double m_playhead = 0;
-    double m_t0 = -0.1, m_t1 = 1.1, m_v0 = -0.1, m_v1 = 1.1;
+    CurveRange m_range{-0.1, 1.1, -0.1, 1.1};
     bool m_autoFrame = true;
     QString m_placeholder;
     qreal m_leftGutter = 40;   // value labels
@@ -202,7 +175,7 @@ private:
     bool m_tangentOutSide = false;
     bool m_tangentMoved = false;
     double m_tangentIn = 0, m_tangentOut = 0; // slopes when the tangent drag began
-    double m_panT0 = 0, m_panT1 = 0, m_panV0 = 0, m_panV1 = 0;
+    CurveRange m_panRange; // the visible range when the pan began
 
     CurveKeyRef m_hoverKey;
     CurveKeyRef m_hoverHandle;
@@ -217,7 +190,3 @@ private:
 };
 
 } // namespace thespis::widgets
-
-Q_DECLARE_METATYPE(thespis::widgets::CurveKeyRef)
-Q_DECLARE_METATYPE(QList<thespis::widgets::CurveKeyRef>)
-Q_DECLARE_METATYPE(thespis::widgets::CurveTangent)

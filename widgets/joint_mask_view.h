@@ -7,12 +7,15 @@
 // jointSelected) and what is shown changes only through the setters, which emit nothing, so the
 // editor can apply each intent as an undoable command and feed the result back without loops.
 // Owns a copy of the joints, the tree items and the brush settings.
+// Files: the body picture in joint_mask_picture.h, its pure layout in joint_mask_layout.h.
 
 #include <QColor>
 #include <QPointF>
 #include <QString>
 #include <QVector>
 #include <QWidget>
+
+#include "widgets/mask_joint.h"
 
 class QDoubleSpinBox;
 class QSlider;
@@ -24,17 +27,6 @@ class QTreeWidgetItem;
 namespace thespis::widgets {
 
 class JointMaskPicture;
-
-/// One joint as the view shows it.
-struct MaskJoint {
-    QString name;       ///< H-Anim name, e.g. "l_shoulder"
-    int parent = -1;    ///< index of the parent joint, -1 for the root (parents come before children)
-    QPointF position;   ///< front view in metres: x to the viewer's right, y up (the character faces
-                        ///< the viewer, so its left side is on the viewer's right)
-    float weight = 0;   ///< the mask's resolved weight for this joint, 0..1
-    bool named = false; ///< true: the mask sets this joint; false: inherited from an ancestor or the
-                        ///< default (shown in grey italic)
-};
 
 class JointMaskView : public QWidget {
     Q_OBJECT

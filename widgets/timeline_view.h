@@ -23,6 +23,9 @@
 // the tracks; Escape or Undo's keys (Ctrl+Z) during a drag ask back what it requested, and Redo's
 // do nothing until the drag ends, so no window action edits under the drag. Clips on locked tracks can be
 // selected (to inspect them) but emit no move, trim or fade.
+//
+// Files: pure geometry and hit testing in timeline_geometry.h, snapping in timeline_snapping.h,
+// gestures and drops in timeline_drag.cpp, painting in timeline_view_paint.cpp.
 
 #include <QAbstractScrollArea>
 #include <QBrush>
@@ -30,9 +33,8 @@
 #include <QFont>
 #include <QFontMetrics>
 #include <QHash>
-#include <QList>
 #include <QLine>
-#include <QMetaType>
+#include <QList>
 #include <QPen>
 #include <QPointF>
 #include <QRect>
@@ -40,65 +42,42 @@
 #include <QString>
 #include <QVector>
 
-#include <limits>
 #include <vector>
+
+#include "widgets/timeline_drag.h"
+#include "widgets/timeline_geometry.h"
+#include "widgets/timeline_snapping.h"
+#include "widgets/timeline_types.h"
 
 class QMimeData;
 class QPainter;
 
 namespace thespis::widgets {
 
-enum class TimelineEdge { Start, End };
-enum class TimelineTrackFlag { Mute, Solo, Lock };
-
-/// One row of the timeline.
-struct TimelineTrack {
-    QString name;  ///< "Body", "Face", …
-    QString group; ///< the character's name; consecutive tracks of one group share a group header row
-    bool muted = false, solo = false, locked = false;
-    /// Clips are dragged only between tracks of the same group and the same kind ("body", "face").
-    QString kind;
-};
-
-/// One action on a track, in ticks.
-struct TimelineClip {
-    int id = 0;      ///< stable id chosen by the caller
-    int track = 0;   ///< index into the tracks; clips on a track that does not exist are not drawn
-    QString name;
-    qint64 start = 0, end = 0;      ///< end == TimelineView::OpenEnd for open-ended actions
-    qint64 fadeIn = 0, fadeOut = 0; ///< lengths in ticks
-    QVector<float> weight;          ///< weight samples evenly over [start, end] (thumbnail), 0..1+, may be empty
-};
-
-struct TimelineMarker {
-    QString name;
-    qint64 time = 0;
-};
-
 class TimelineView : public QAbstractScrollArea {
     Q_OBJECT
 public:
-    static constexpr qint64 OpenEnd = std::numeric_limits<qint64>::max();
+    static constexpr qint64 OpenEnd = TimelineOpenEnd;
     /// Mime type of a clip dragged in from a library; the data is the clip name in UTF-8.
     static constexpr const char* ClipMimeType = "application/x-thespis-clip";
 
     // Layout, in pixels (public so that tests and the editor can reason about it).
-    static constexpr int HeaderWidth = 170; ///< the track header column on the left
-    static constexpr int RulerHeight = 26;  ///< the time ruler on top
-    static constexpr int TrackHeight = 40;  ///< one track's lane
-    static constexpr int GroupHeight = 20;  ///< a character's header row above its tracks
-    static constexpr int EdgeGrip = 5;      ///< a press this close to a clip's edge trims it
-    static constexpr int SnapDistance = 8;  ///< snap targets this close (on screen) attract
+    static constexpr int HeaderWidth = TimelineMetrics::HeaderWidth;   ///< the track header column on the left
+    static constexpr int RulerHeight = TimelineMetrics::RulerHeight;   ///< the time ruler on top
+    static constexpr int TrackHeight = TimelineMetrics::TrackHeight;   ///< one track's lane
+    static constexpr int GroupHeight = TimelineMetrics::GroupHeight;   ///< a character's header row above its tracks
+    static constexpr int EdgeGrip = TimelineMetrics::EdgeGrip;         ///< a press this close to a clip's edge trims it
+    static constexpr int SnapDistance = TimelineMetrics::SnapDistance; ///< snap targets this close (on screen) attract
 
     explicit TimelineView(QWidget* parent = nullptr);
     ~TimelineView() override;
 
     /// Ticks per second (default 705,600,000); values below 1 are ignored.
     void setTicksPerSecond(qint64 ticks);
-    qint64 ticksPerSecond() const { return m_ticksPerSecond; }
+    qint64 ticksPerSecond() const { return m_time.ticksPerSecond; }
     /// Frames per second for snapping, frame ticks and time labels (default 30); below 1 is ignored.
     void setFrameRate(int framesPerSecond);
-    int frameRate() const { return m_frameRate; }
+    int frameRate() const { return m_time.frameRate; }
 
     void setTracks(QVector<TimelineTrack> tracks);
     const QVector<TimelineTrack>& tracks() const { return m_tracks; }
@@ -208,49 +187,9 @@ protected:
     bool viewportEvent(QEvent* event) override;
 
 private:
-    struct ClipItem {
-        TimelineClip clip;
-        bool selected = false;
-        mutable QStaticText label;   // the name elided to labelWidth, laid out once, kept between paints
-        mutable int labelWidth = -1;
-    };
-    struct Row {
-        int top = 0;    // content y (0 = just below the ruler when not scrolled)
-        int track = -1; // -1: a group header row
-        int group = 0;  // index of the group's first track
-        QString label;  // a group row's name, elided to the header
-    };
-    enum class HitKind { None, Corner, Ruler, Marker, Header, Flag, Lane, Body, StartEdge, EndEdge, FadeIn, FadeOut };
-    struct Hit {
-        HitKind kind = HitKind::None;
-        int track = -1;
-        int clip = -1; // index into m_clips
-        int marker = -1;
-        TimelineTrackFlag flag = TimelineTrackFlag::Mute;
-    };
-    enum class DragMode { None, Clip, TrimStart, TrimEnd, FadeIn, FadeOut, Scrub, Marker, RubberBand };
-    struct Drag {
-        DragMode mode = DragMode::None;
-        QPoint pressPos;
-        bool active = false;  // moved past the threshold
-        bool emitted = false; // something was requested during this drag
-        bool locked = false;  // started on a locked track: the gesture only selects
-        bool toggleOnRelease = false;     // Shift/Ctrl+press on a selected clip: deselect unless dragged
-        bool selectOnlyOnRelease = false; // press on a selected clip: select only it unless dragged
-        int clip = -1;                    // index into m_clips
-        int clipId = 0;
-        int marker = -1;
-        qint64 origStart = 0, origEnd = 0, origValue = 0; // origValue: fade length or marker time
-        qint64 last = 0;                                   // last value requested
-        QList<int> ids;                                    // moving clips
-        QVector<TimelineClip> moving;                      // them as they were at the press
-        int origTrack = -1;                                // the grabbed clip's track at the press
-        int trackDelta = 0;                                // last track offset requested
-        std::vector<qint64> edges;                         // their edges at the press
-        qint64 minStart = 0;
-        std::vector<char> baseSelection;                   // rubber band: selection kept (Shift/Ctrl)
-        std::vector<char> pressSelection;                  // rubber band: selection before the press
-        QRect band;
+    struct ClipLabel {
+        QStaticText text; // the clip's name elided to width, laid out once, kept between paints
+        int width = -1;
     };
     struct Colors {
         QColor lane, laneAlt, group, header, headerText, headerDim, separator, ruler, rulerText, rulerTick,
@@ -260,80 +199,65 @@ private:
         QBrush lockedHatch;
         bool dark = true;
     };
-
-    // Layout
-    void rebuildRows();
-    void updateScrollRanges();
-    void updateColors();
-    void updateFonts();
-    int contentHeight() const;
-    int lanesTop() const { return RulerHeight; }
-    int rowY(const Row& row) const;
-    int trackY(int track) const; // viewport y of the track's lane top
-    int trackAtY(int y) const;   // -1 if none
-    int timeOriginX() const;     // viewport x of time 0
-    double ticksPerPixel() const { return double(m_ticksPerSecond) / m_pixelsPerSecond; }
-    qint64 contentEndTime() const;
-    bool trackLocked(int track) const;
-    bool trackDimmed(int track) const;
-    int clipIndex(int id) const { return m_idToIndex.value(id, -1); }
-    QRect clipRectAt(int index) const;
-    QRect fadeHandleRectAt(int index, TimelineEdge edge) const;
-    QString formatTime(qint64 ticks) const;
-    qint64 clampSeek(qint64 ticks) const;
     struct Steps {
         qint64 major = 0, minor = 0; // in frames; minor 0: none
     };
+
+    // Layout (timeline_view.cpp)
+    /// Where everything is now: the view's content at its zoom, scroll and size.
+    TimelineGeometry geometry() const;
+    void rebuildRows();
+    void updateScrollRanges();
+    void updateFonts();
+    qint64 contentEndTime() const;
+    bool trackDimmed(int track) const;
+    int clipIndex(int id) const { return m_idToIndex.value(id, -1); }
+    qint64 clampSeek(qint64 ticks) const;
     Steps rulerSteps() const;
 
-    // Hit testing and gestures
-    Hit hitTest(const QPoint& pos) const;
-    void updateHoverCursor(const QPoint& pos);
-    void beginClipPress(const Hit& hit, const QPoint& pos, Qt::KeyboardModifiers modifiers);
-    void updateDrag(const QPoint& pos, Qt::KeyboardModifiers modifiers, bool finished);
-    void updateRubberBand(const QPoint& pos);
-    void cancelDrag();
+    // Selection (timeline_view.cpp)
     void selectOnly(int index);
     void setSelectionFlags(const std::vector<char>& flags);
     void emitSelectionIfChanged(const std::vector<char>& before);
-    std::vector<char> selectionFlags() const;
-    qint64 rawDelta(const QPoint& pos) const;
-    int clipTrackDelta(int y) const; // the track offset of a clip drag with the mouse at y
-    bool trackOffsetFits(int offset) const;
 
-    // Snapping
-    void buildSnapTargets(const std::vector<char>* excludeClips, int excludeMarker, bool includePlayhead);
+    // Gestures and drops (timeline_drag.cpp)
+    void updateHoverCursor(const QPoint& pos);
+    void beginClipPress(const TimelineHit& hit, const QPoint& pos, Qt::KeyboardModifiers modifiers);
+    void updateDrag(const QPoint& pos, Qt::KeyboardModifiers modifiers, bool finished);
+    void updateRubberBand(const QPoint& pos);
+    void cancelDrag();
+    bool updateDrop(const QPoint& pos, Qt::KeyboardModifiers modifiers);
+
+    // Snapping: collects the gesture's targets; snapTime() and snapDelta() set m_snapLine.
+    void buildSnapTargets(std::span<const char> excludeClips, int excludeMarker, bool includePlayhead);
     qint64 snapTime(qint64 ticks, bool bypass);
     qint64 snapDelta(qint64 delta, qint64 anchor, bool bypass);
-    qint64 snapThreshold() const;
-    bool nearestTarget(qint64 ticks, qint64& target) const;
 
-    // Drop
-    bool updateDrop(const QPoint& pos, const QMimeData* mime, Qt::KeyboardModifiers modifiers);
-
-    // Painting
-    void paintLanes(QPainter& painter, const QRect& lanes);
-    void paintClips(QPainter& painter, const QRect& lanes);
-    void paintClip(QPainter& painter, const ClipItem& item, const QRect& rect, bool dimmed, bool locked,
-                   int laneRight);
-    void paintOverlays(QPainter& painter, const QRect& lanes);
-    void paintMoveGhosts(QPainter& painter);
+    // Painting (timeline_view_paint.cpp)
+    void updateColors();
+    void paintLanes(QPainter& painter, const TimelineGeometry& g);
+    void paintClips(QPainter& painter, const TimelineGeometry& g);
+    void paintClip(QPainter& painter, const TimelineGeometry& g, int index, const QRect& rect, bool dimmed,
+                   bool locked, int laneRight);
+    void paintOverlays(QPainter& painter, const TimelineGeometry& g);
+    void paintMoveGhosts(QPainter& painter, const TimelineGeometry& g);
     void paintGhost(QPainter& painter, const QRect& rect, const QString& name);
-    void paintHeader(QPainter& painter);
-    void paintRuler(QPainter& painter);
+    void paintHeader(QPainter& painter, const TimelineGeometry& g);
+    void paintRuler(QPainter& painter, const TimelineGeometry& g);
     void paintFlag(QPainter& painter, const QRect& rect, TimelineTrackFlag flag, bool on);
 
     QVector<TimelineTrack> m_tracks;
-    QVector<ClipItem> m_clips;
+    QVector<TimelineClip> m_clips;
+    std::vector<char> m_selected;               // per clip
+    std::vector<ClipLabel> m_clipLabels; // per clip
     QHash<int, int> m_idToIndex;
     QVector<TimelineMarker> m_markers;
     std::vector<int> m_markerWidths; // name widths in the ruler font
-    std::vector<Row> m_rows;
-    std::vector<int> m_trackRow;     // track → index into m_rows
+    TimelineRows m_rows;
+    std::vector<QString> m_rowLabels; // per row: a group's name elided to the header
     std::vector<QString> m_trackElided;
 
-    qint64 m_ticksPerSecond = 705'600'000;
-    int m_frameRate = 30;
+    TimelineTimebase m_time;
     QString m_frameRateLabel;
     qint64 m_duration = 0;
     qint64 m_playhead = 0;
@@ -343,8 +267,8 @@ private:
     qint64 m_clipsEnd = 0; // latest clip end (or open-ended start), for the scroll range
     bool m_frameAllPending = false;
 
-    Drag m_drag;
-    std::vector<qint64> m_snapTargets; // sorted, built when a gesture starts
+    TimelineDrag m_drag;
+    TimelineSnapTargets m_snapTargets; // built when a gesture starts
     qint64 m_snapLine = -1;            // the target snapped to, drawn while dragging; -1 none
     bool m_dropActive = false;
     int m_dropTrack = -1;
@@ -361,9 +285,3 @@ private:
 };
 
 } // namespace thespis::widgets
-
-Q_DECLARE_METATYPE(thespis::widgets::TimelineEdge)
-Q_DECLARE_METATYPE(thespis::widgets::TimelineTrackFlag)
-Q_DECLARE_METATYPE(thespis::widgets::TimelineTrack)
-Q_DECLARE_METATYPE(thespis::widgets::TimelineClip)
-Q_DECLARE_METATYPE(thespis::widgets::TimelineMarker)
