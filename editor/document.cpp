@@ -122,7 +122,7 @@ core::Result<void> Document::edit(core::edit::Edit edit, const QString& text, Me
     core::scenario::Scenario next = m_scenario;
     if (auto applied = edit.apply(next); !applied)
         return applied.error();
-    auto runtime = core::scenario::buildRuntime(next, m_assets, m_cache.get());
+    auto runtime = runtimeAfter(edit, next);
     if (!runtime)
         return runtime.error();
     m_undoStack->push(new EditCommand(*this, std::move(edit), text, merge.key, merge.finished, std::move(next),
@@ -143,11 +143,21 @@ void Document::apply(const core::edit::Edit& edit)
     core::scenario::Scenario next = m_scenario;
     auto applied = edit.apply(next);
     Q_ASSERT(applied);
-    auto runtime = core::scenario::buildRuntime(next, m_assets, m_cache.get());
+    auto runtime = runtimeAfter(edit, next);
     Q_ASSERT(runtime);
     if (!applied || !runtime)
         return;
     install(std::move(next), std::move(runtime).value(), edit);
+}
+
+core::Result<core::scenario::ScenarioRuntime> Document::runtimeAfter(const core::edit::Edit& edit,
+                                                                     const core::scenario::Scenario& next)
+{
+    const core::edit::RuntimeScope scope = edit.runtimeScope();
+    if (scope.everything)
+        return core::scenario::buildRuntime(next, m_assets, m_cache.get());
+    // Only what the edit touched is built again: a drag step on one action rebuilds one character.
+    return core::scenario::rebuildRuntime(next, m_assets, m_runtime, scope.characters, m_cache.get());
 }
 
 void Document::install(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime,

@@ -105,6 +105,9 @@ private:
              QString baseDir);
     // Applies an edit that is known to fit and rebuilds the runtime (undo / redo).
     void apply(const core::edit::Edit& edit);
+    // The runtime of `next`, the scenario `edit` made from the current one.
+    core::Result<core::scenario::ScenarioRuntime> runtimeAfter(const core::edit::Edit& edit,
+                                                               const core::scenario::Scenario& next);
     void install(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime,
                  const core::edit::Edit& edit);
 

@@ -95,6 +95,11 @@ void BlendingSchedule::sortAndResize()
     std::stable_sort(m_actions.begin(), m_actions.end(), [](const Entry& a, const Entry& b) {
         return a.action.start < b.action.start || (a.action.start == b.action.start && a.id < b.id);
     });
+    resizeBuffers();
+}
+
+void BlendingSchedule::resizeBuffers()
+{
     const std::size_t n = m_actions.size();
     m_frames.resize(n * m_layout->floatCount());
     m_weights.resize(n * std::size_t(m_layout->elementCount()));
@@ -113,8 +118,12 @@ Result<ActionId> BlendingSchedule::addAction(BlendingAction action)
         return ok.error();
     entry.id = m_nextId++;
     const ActionId id = entry.id;
-    m_actions.push_back(std::move(entry));
-    sortAndResize();
+    // Its id is the largest, so it goes after every action starting no later: the order stays
+    // sorted without sorting again (schedules are built one action at a time, in start order).
+    const auto at = std::upper_bound(m_actions.begin(), m_actions.end(), entry.action.start,
+                                     [](double start, const Entry& e) { return start < e.action.start; });
+    m_actions.insert(at, std::move(entry));
+    resizeBuffers();
     return id;
 }
 
@@ -124,7 +133,7 @@ bool BlendingSchedule::removeAction(ActionId id)
     if (it == m_actions.end())
         return false;
     m_actions.erase(it);
-    sortAndResize();
+    resizeBuffers();
     return true;
 }
 

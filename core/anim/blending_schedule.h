@@ -109,6 +109,7 @@ private:
 
     Result<void> prepare(Entry& entry) const;
     void sortAndResize();
+    void resizeBuffers(); // the evaluation buffers, for the number of actions
     Entry* find(ActionId id);
     const Entry* find(ActionId id) const;
     bool active(const Entry& entry, double t) const;

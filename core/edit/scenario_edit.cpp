@@ -1,5 +1,6 @@
 #include "edit/scenario_edit.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 
@@ -275,6 +276,41 @@ bool Edit::changesNothing() const
             return false;
     }
     return true;
+}
+
+RuntimeScope Edit::runtimeScope() const
+{
+    RuntimeScope scope;
+    for (const Change& change : m_changes) {
+        std::optional<int> character;
+        if (const auto* action = std::get_if<ActionChange>(&change))
+            character = action->at.character;
+        else if (const auto* layer = std::get_if<LayerChange>(&change))
+            character = layer->at.character;
+        else if (const auto* gesture = std::get_if<GestureChange>(&change))
+            character = gesture->at.character;
+        else if (const auto* clip = std::get_if<ClipChange>(&change))
+            character = clip->at.character;
+        else if (const auto* whole = std::get_if<CharacterChange>(&change)) {
+            if (!whole->before || !whole->after || whole->before->name != whole->after->name) {
+                scope.everything = true;
+                break;
+            }
+            character = whole->at;
+        } else if (std::holds_alternative<MaskChange>(change)) {
+            scope.everything = true;
+            break;
+        }
+        if (character)
+            scope.characters.push_back(*character);
+    }
+    if (scope.everything) {
+        scope.characters.clear();
+        return scope;
+    }
+    std::sort(scope.characters.begin(), scope.characters.end());
+    scope.characters.erase(std::unique(scope.characters.begin(), scope.characters.end()), scope.characters.end());
+    return scope;
 }
 
 void Edit::rebasePaths(const std::filesystem::path& from, const std::filesystem::path& to)

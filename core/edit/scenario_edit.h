@@ -91,6 +91,16 @@ struct ScriptsChange {
 using Change = std::variant<ActionChange, LayerChange, MaskChange, MarkerChange, GestureChange, ClipChange,
                             SegmentTagsChange, CharacterBakeChange, CharacterChange, LightingChange, ScriptsChange>;
 
+/// What an edit changes of a scenario's runtime (its schedules): nothing (the light, markers,
+/// scripts, segment tags, bakes), some characters' (their actions, layers, clips, gestures, or the
+/// character replaced under the same name), or everything (characters added, removed or renamed,
+/// the masks every character may use).
+struct RuntimeScope {
+    bool everything = false;
+    std::vector<int> characters; ///< sorted, without repeats; when not everything
+    bool empty() const { return !everything && characters.empty(); }
+};
+
 class Edit {
 public:
     Edit() = default;
@@ -124,6 +134,8 @@ public:
     Edit stepTo(const Edit& wanted) const;
     /// True when applying the edit changes nothing (every change replaces a value by an equal one).
     bool changesNothing() const;
+    /// What the edit changes of the runtime, so that only that is rebuilt.
+    RuntimeScope runtimeScope() const;
     /// Rewrites the file paths the edit carries (clips, bakes) as scenario::rebasePaths() does the
     /// document's, so that it still fits the document after a save to another folder.
     void rebasePaths(const std::filesystem::path& from, const std::filesystem::path& to);

@@ -122,6 +122,28 @@ public:
             if (auto built = buildCharacter(character))
                 runtime.characters.push_back(std::move(*built));
         }
+        setDuration(runtime);
+        return runtime;
+    }
+
+    // `previous` with the characters at `indices` built again (the others are shared with it).
+    ScenarioRuntime rebuild(const ScenarioRuntime& previous, std::span<const int> indices)
+    {
+        ScenarioRuntime runtime = previous;
+        buildMasks();
+        for (const int i : indices) {
+            if (auto built = buildCharacter(m_scenario.characters[std::size_t(i)]))
+                runtime.characters[std::size_t(i)] = std::move(*built);
+        }
+        setDuration(runtime);
+        return runtime;
+    }
+
+    std::vector<Error> errors;
+
+private:
+    void setDuration(ScenarioRuntime& runtime) const
+    {
         runtime.duration = ticksToSeconds(m_scenario.duration);
         if (m_scenario.duration == 0) {
             for (const CharacterRuntime& character : runtime.characters)
@@ -130,12 +152,8 @@ public:
                         if (const double end = layer->endTime(id); std::isfinite(end))
                             runtime.duration = std::max(runtime.duration, end);
         }
-        return runtime;
     }
 
-    std::vector<Error> errors;
-
-private:
     void problem(ErrorCode code, std::string message, std::string detail = {})
     {
         errors.push_back(makeError(code, std::move(message), std::move(detail)));
@@ -656,13 +674,11 @@ private:
 
 } // namespace
 
-Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const Assets& assets,
-                                     AssetCache* cache)
+namespace {
+
+// The first of the builder's errors, with a count and summary of the others in its detail.
+Error firstError(const RuntimeBuilder& builder)
 {
-    RuntimeBuilder builder(scenario, assets, cache);
-    ScenarioRuntime runtime = builder.build();
-    if (builder.errors.empty())
-        return runtime;
     Error first = builder.errors.front();
     if (builder.errors.size() > 1) {
         std::string others = std::to_string(builder.errors.size() - 1) + " more problem(s): ";
@@ -671,6 +687,32 @@ Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const Assets& ass
         first.detail = first.detail.empty() ? others : first.detail + "; " + others;
     }
     return first;
+}
+
+} // namespace
+
+Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const Assets& assets, AssetCache* cache)
+{
+    RuntimeBuilder builder(scenario, assets, cache);
+    ScenarioRuntime runtime = builder.build();
+    if (!builder.errors.empty())
+        return firstError(builder);
+    return runtime;
+}
+
+Result<ScenarioRuntime> rebuildRuntime(const Scenario& scenario, const Assets& assets, const ScenarioRuntime& previous,
+                                       std::span<const int> characters, AssetCache* cache)
+{
+    if (previous.characters.size() != scenario.characters.size())
+        return makeError(ErrorCode::InvalidArgument, "The scenario's characters changed: build its runtime anew.");
+    for (const int i : characters)
+        if (i < 0 || std::size_t(i) >= scenario.characters.size())
+            return makeError(ErrorCode::InvalidArgument, "There is no character " + std::to_string(i) + " to rebuild.");
+    RuntimeBuilder builder(scenario, assets, cache);
+    ScenarioRuntime runtime = builder.rebuild(previous, characters);
+    if (!builder.errors.empty())
+        return firstError(builder);
+    return runtime;
 }
 
 namespace {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,11 @@ struct ScenarioRuntime {
 Result<ScenarioRuntime> buildRuntime(const Scenario& scenario, const Assets& assets,
                                      AssetCache* cache = nullptr);
 
+/// `previous` (this scenario's runtime before an edit that kept its characters) with only the
+/// characters at `characters` built again from `scenario` — what an edit touched
+/// (edit::Edit::runtimeScope) — the others shared with it. Errors as buildRuntime's.
+Result<ScenarioRuntime> rebuildRuntime(const Scenario& scenario, const Assets& assets, const ScenarioRuntime& previous,
+                                       std::span<const int> characters, AssetCache* cache = nullptr);
 /// Checks a scenario without keeping the result: every problem found, empty when valid.
 std::vector<Error> validateScenario(const Scenario& scenario, const Assets& assets);
 

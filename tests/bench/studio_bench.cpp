@@ -12,16 +12,22 @@
 //   seeks, the timeline and the 3D scene follow (schedules evaluated, bodies skinned, light
 //   rotated), and the 1280 × 720 frame is drawn offscreen through EGL and read back, as the
 //   studio's viewport draws it (Mesa llvmpipe here). Goal < 33 ms.
+// DragStep/1000: one step of a timeline drag on the 1000-action scenario — an action moved by a
+//   frame, merged into the drag's undo command — from the edit to the stage playing the new
+//   schedules: Document::edit (apply, rebuild what the edit touched, undo stack) and the scene's
+//   stage updated and posed at the playhead, as the studio's preview does. Goal < 5 ms.
 #include <benchmark/benchmark.h>
 
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QImage>
 #include <QTemporaryDir>
+#include <QUndoStack>
 
 #include <algorithm>
 #include <memory>
 
+#include "edit/document_edits.h"
 #include "editor/document.h"
 #include "editor/playback_clock.h"
 #include "editor/scenario_tree_model.h"
@@ -232,5 +238,49 @@ void ScrubToFrame(benchmark::State& state)
     }
 }
 BENCHMARK(ScrubToFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void DragStep(benchmark::State& state)
+{
+    application();
+    auto scenario = scenarioWithActions(int(state.range(0)));
+    if (!scenario) {
+        state.SkipWithError(scenario.error().message.c_str());
+        return;
+    }
+    auto document = editor::Document::fromScenario(std::move(*scenario), QStringLiteral(THESPIS_RESOURCES));
+    if (!document) {
+        state.SkipWithError(document.error().message.c_str());
+        return;
+    }
+    editor::Document& edited = **document;
+    auto scene = core::render::ScenarioScene::create(edited.scenario(), edited.assets());
+    if (!scene) {
+        state.SkipWithError(scene.error().message.c_str());
+        return;
+    }
+    const double playhead = 3.0;
+    (*scene)->setTime(playhead);
+    // An action in the middle of the first character's first track, dragged back and forth.
+    const int middle = int(edited.scenario().characters[0].layers[0].actions.size()) / 2;
+    const core::edit::ActionPath dragged{0, 0, middle};
+    const core::Tick frame = core::ticksPerFrame(30);
+    long step = 0;
+    for (auto _ : state) {
+        const core::Tick delta = (step++ % 2 == 0) ? frame : -frame;
+        auto moved = core::edit::moveActions(edited.scenario(), std::span(&dragged, 1), delta);
+        if (auto done = edited.edit(std::move(moved), QStringLiteral("Move Action"), editor::Merge{1, false}); !done) {
+            state.SkipWithError(done.error().message.c_str());
+            return;
+        }
+        if (auto played = (*scene)->setRuntime(edited.runtime()); !played) {
+            state.SkipWithError(played.error().message.c_str());
+            return;
+        }
+        benchmark::DoNotOptimize((*scene)->poses());
+    }
+    state.counters["actions"] = double(state.range(0));
+    state.counters["undo_steps"] = edited.undoStack()->count();
+}
+BENCHMARK(DragStep)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 } // namespace

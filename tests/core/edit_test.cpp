@@ -558,3 +558,58 @@ TEST(DocumentEdits, GesturesAreChecked)
     EXPECT_FALSE(addGesture(s, 0, Gesture{"g", "swing", "", 0, 0, false, {}}).ok()); // taken
     EXPECT_TRUE(replaceGesture(s, {0, 0}, Gesture{"g", "swing", "", Second, 0, true, {}}).ok()); // its own name
 }
+
+TEST(Edit, RuntimeScopeNamesWhatAnEditRebuilds)
+{
+    const Scenario s = loadScenario(thespis::test::resources("demo.thespis")).value();
+    ASSERT_GE(s.characters.size(), 2u);
+    const RuntimeScope move = moveActions(s, std::vector<ActionPath>{{1, 0, 0}}, Second / 2)->runtimeScope();
+    EXPECT_FALSE(move.everything);
+    EXPECT_EQ(move.characters, std::vector<int>{1});
+    EXPECT_TRUE(addMarker(s, Marker{"cue", Second, {}})->runtimeScope().empty());
+    EXPECT_TRUE(addMask(s, "legs", anim::JointMask::preset(anim::MaskPreset::LowerBody))->runtimeScope().everything);
+    Edit both = *moveActions(s, std::vector<ActionPath>{{1, 0, 0}}, Second);
+    both.append(*setLayerFlag(s, {0, 1}, LayerFlag::Mute, true));
+    both.append(*moveActions(s, std::vector<ActionPath>{{1, 0, 1}}, Second));
+    EXPECT_EQ(both.runtimeScope().characters, (std::vector<int>{0, 1}));
+}
+
+TEST(Edit, RebuildingTheTouchedCharacterGivesTheSameMotionAsBuildingAll)
+{
+    const Scenario s = loadScenario(thespis::test::resources("demo.thespis")).value();
+    const auto before = buildRuntime(s, thespis::test::resources());
+    ASSERT_TRUE(before.ok()) << before.error().message;
+    const Edit edit = *moveActions(s, std::vector<ActionPath>{{1, 0, 1}}, Second / 3);
+    Scenario after = s;
+    ASSERT_TRUE(edit.apply(after).ok());
+    const RuntimeScope scope = edit.runtimeScope();
+    const auto rebuilt = rebuildRuntime(after, thespis::test::resources(), *before, scope.characters);
+    ASSERT_TRUE(rebuilt.ok()) << rebuilt.error().message;
+    const auto built = buildRuntime(after, thespis::test::resources());
+    ASSERT_TRUE(built.ok());
+    EXPECT_EQ(rebuilt->duration, built->duration);
+    // The untouched character keeps its schedules; the moved action plays where it was moved.
+    EXPECT_EQ(rebuilt->characters[0].body, before->characters[0].body);
+    EXPECT_NE(rebuilt->characters[1].body, before->characters[1].body);
+    for (std::size_t c = 0; c < s.characters.size(); ++c) {
+        std::vector<float> a = built->characters[c].skeleton.restFrame(), b = a;
+        for (double t = 0; t <= built->duration; t += 0.25) {
+            built->characters[c].evaluateBody(t, a);
+            rebuilt->characters[c].evaluateBody(t, b);
+            ASSERT_EQ(a, b) << "character " << c << " at " << t << " s";
+        }
+    }
+    // The motion did change for the touched character.
+    std::vector<float> old = before->characters[1].skeleton.restFrame(), moved = old;
+    bool differs = false;
+    for (double t = 0; t <= built->duration && !differs; t += 0.25) {
+        before->characters[1].evaluateBody(t, old);
+        rebuilt->characters[1].evaluateBody(t, moved);
+        differs = old != moved;
+    }
+    EXPECT_TRUE(differs);
+
+    Scenario fewer = after;
+    fewer.characters.pop_back();
+    EXPECT_FALSE(rebuildRuntime(fewer, thespis::test::resources(), *before, std::vector<int>{0}).ok());
+}
