@@ -38,18 +38,21 @@ ScenePreview::~ScenePreview()
         m_viewport->setSceneData(nullptr);
 }
 
-core::Result<void> ScenePreview::setDocument(const Document* document)
+core::Result<void> ScenePreview::setDocument(const Document* document, std::shared_ptr<core::runtime::Stage> stage)
 {
-    return build(document, true);
+    return build(document, true, std::move(stage));
 }
 
-core::Result<void> ScenePreview::build(const Document* document, bool frameCamera)
+core::Result<void> ScenePreview::build(const Document* document, bool frameCamera,
+                                       std::shared_ptr<core::runtime::Stage> stage)
 {
     m_viewport->setSceneData(nullptr);
     m_scene.reset();
     if (!document)
         return {};
-    auto scene = core::render::ScenarioScene::create(document->scenario(), document->assets());
+    core::render::ScenarioSceneOptions options;
+    options.stage = std::move(stage);
+    auto scene = core::render::ScenarioScene::create(document->scenario(), document->assets(), options);
     if (!scene)
         return scene.error();
     m_scene = std::move(scene).value();
@@ -80,10 +83,12 @@ std::vector<ScenePreview::BodySource> ScenePreview::bodySources(const core::scen
     return sources;
 }
 
-core::Result<void> ScenePreview::updateDocument(const Document* document)
+core::Result<void> ScenePreview::updateDocument(const Document* document, std::shared_ptr<core::runtime::Stage> stage)
 {
-    // Same bodies: only the schedules changed, so the new runtime plays on the scene as it is.
-    if (m_scene && document && bodySources(document->scenario()) == m_bodySources
+    // Same bodies and stage: only the schedules changed, so the new runtime plays on the scene
+    // as it is (it also ends a gesture preview).
+    const bool sameStage = !stage || (m_scene && m_scene->sharedStage() == stage);
+    if (m_scene && document && sameStage && bodySources(document->scenario()) == m_bodySources
         && m_scene->setRuntime(document->runtime())) {
         m_viewport->update();
         return {};
@@ -98,7 +103,7 @@ core::Result<void> ScenePreview::updateDocument(const Document* document)
                    && std::equal(next.begin(), next.end(), m_bodySources.begin(),
                                  [](const BodySource& a, const BodySource& b) { return a.name == b.name; });
     }
-    auto rebuilt = build(document, !sameCast);
+    auto rebuilt = build(document, !sameCast, std::move(stage));
     if (rebuilt)
         setTime(time);
     return rebuilt;

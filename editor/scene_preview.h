@@ -41,14 +41,15 @@ public:
     explicit ScenePreview(widgets::OsgViewport* viewport, QObject* parent = nullptr);
     ~ScenePreview() override;
 
-    /// Builds the scene of `document` (null clears the view) and frames the camera on it. On
+    /// Builds the scene of `document` (null clears the view) and frames the camera on it. It
+    /// plays `stage` (the session's, of the document's runtime), or one of its own when null. On
     /// failure the view is left empty and the error says which character or file could not be
     /// loaded.
-    core::Result<void> setDocument(const Document* document);
+    core::Result<void> setDocument(const Document* document, std::shared_ptr<core::runtime::Stage> stage = {});
     /// After an edit of `document`: plays its new schedules (rebuilding the scene, at the same
     /// time and camera, only when the characters themselves, their bodies, segment tags or bakes
-    /// changed) and redraws at the current time.
-    core::Result<void> updateDocument(const Document* document);
+    /// changed, or the session made a new stage) and redraws at the current time.
+    core::Result<void> updateDocument(const Document* document, std::shared_ptr<core::runtime::Stage> stage = {});
     /// Plays `runtime` — schedules of this scene's characters with something added, such as a
     /// gesture on a layer of its own — instead of the document's, and redraws at the current
     /// time, until the next setDocument() or updateDocument() puts the document's own back.
@@ -94,7 +95,7 @@ private:
     static std::vector<BodySource> bodySources(const core::scenario::Scenario& scenario);
 
     // Builds the scene of `document`; frameCamera: also aim the home view (and go there).
-    core::Result<void> build(const Document* document, bool frameCamera);
+    core::Result<void> build(const Document* document, bool frameCamera, std::shared_ptr<core::runtime::Stage> stage);
     void onViewportClicked(const QVector3D& origin, const QVector3D& direction, Qt::KeyboardModifiers modifiers);
     void applyHighlights();
 

@@ -60,6 +60,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 {
     setObjectName(QStringLiteral("mainWindow"));
     m_clock = new editor::PlaybackClock(this);
+    m_session = new editor::Session(m_clock, this);
+    connect(m_session, &editor::Session::edited, this, &MainWindow::onDocumentEdited);
     m_model = new editor::ScenarioTreeModel(this);
 
     auto* central = new QWidget(this);
@@ -136,6 +138,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     createMenus();
     createToolBar();
     createStatusBar();
+    // Handed to the session once: each follows every document opened or closed from now on.
+    m_session->addPanel(m_model);
+    m_session->addPanel(m_timeline);
+    m_session->addPanel(m_curves);
+    m_session->addPanel(m_masks);
+    m_session->addPanel(m_library);
+    m_session->addPanel(m_properties);
+    m_session->addPanel(m_gesticon);
+    m_session->addPanel(m_segments);
+    m_session->addPanel(m_bake);
+    m_session->addPanel(m_autosaver);
 
     m_fpsTimer = new QTimer(this);
     m_fpsTimer->setInterval(500);
@@ -156,16 +169,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 MainWindow::~MainWindow()
 {
     // The model, panels and samplers read the document: detach them before it goes.
-    m_model->setDocument(nullptr);
-    m_timeline->setDocument(nullptr);
-    m_curves->setDocument(nullptr);
-    m_masks->setDocument(nullptr);
-    m_library->setDocument(nullptr);
-    m_properties->setDocument(nullptr);
-    m_gesticon->setDocument(nullptr);
-    m_segments->setDocument(nullptr);
-    m_bake->setDocument(nullptr);
     m_samplers.clear();
+    m_session->setDocument(nullptr);
     if (m_preview)
         (void)m_preview->setDocument(nullptr);
 }
@@ -422,54 +427,33 @@ void MainWindow::createStatusBar()
     statusBar()->addPermanentWidget(m_fpsLabel);
 }
 
-void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
+void MainWindow::setDocument(std::unique_ptr<editor::Document> next)
 {
-    m_clock->pause();
-    m_model->setDocument(nullptr);
-    m_timeline->setDocument(nullptr);
-    m_curves->setDocument(nullptr);
-    m_masks->setDocument(nullptr);
-    m_library->setDocument(nullptr);
-    m_properties->setDocument(nullptr);
-    m_gesticon->setDocument(nullptr);
-    m_segments->setDocument(nullptr);
-    m_bake->setDocument(nullptr);
-    m_autosaver->setDocument(nullptr);
     m_samplers.clear();
-    if (m_document)
-        m_undoGroup->removeStack(m_document->undoStack());
-    m_document = std::move(document);
-    if (m_document) {
-        m_undoGroup->addStack(m_document->undoStack());
-        m_undoGroup->setActiveStack(m_document->undoStack());
-        connect(m_document.get(), &editor::Document::edited, this, &MainWindow::onDocumentEdited);
-        connect(m_document.get(), &editor::Document::modifiedChanged, this, &MainWindow::updateTitle);
-        connect(m_document.get(), &editor::Document::filePathChanged, this, &MainWindow::updateTitle);
-        m_timeline->setDocument(m_document.get());
-        m_curves->setDocument(m_document.get());
-        m_masks->setDocument(m_document.get());
-        m_library->setDocument(m_document.get());
-        m_properties->setDocument(m_document.get());
-        m_gesticon->setDocument(m_document.get());
-        m_segments->setDocument(m_document.get());
-        m_bake->setDocument(m_document.get());
-        m_autosaver->setDocument(m_document.get());
+    if (m_session->document())
+        m_undoGroup->removeStack(m_session->document()->undoStack());
+    // Every panel registered with the session follows (registerViews).
+    m_session->setDocument(std::move(next));
+    if (editor::Document* opened = m_session->document()) {
+        m_undoGroup->addStack(opened->undoStack());
+        m_undoGroup->setActiveStack(opened->undoStack());
+        connect(opened, &editor::Document::modifiedChanged, this, &MainWindow::updateTitle);
+        connect(opened, &editor::Document::filePathChanged, this, &MainWindow::updateTitle);
     }
 
     refreshFigures(true);
 
-    m_model->setDocument(m_document.get());
     m_outline->expandAll();
     QString sceneProblem;
     if (m_preview)
-        if (auto built = m_preview->setDocument(m_document.get()); !built)
+        if (auto built = m_preview->setDocument(document(), m_session->stage()); !built)
             sceneProblem = tr("The 3D view is empty: %1").arg(QString::fromStdString(built.error().message));
     updateScriptStage();
     refreshScripts();
 
-    const bool open = m_document != nullptr;
+    const bool open = document() != nullptr;
     m_transport->setEnabled(open);
-    m_reloadAction->setEnabled(open && !m_document->filePath().isEmpty());
+    m_reloadAction->setEnabled(open && !document()->filePath().isEmpty());
     m_saveAction->setEnabled(open);
     m_saveAsAction->setEnabled(open);
     m_playPauseAction->setEnabled(open);
@@ -478,22 +462,22 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> document)
     m_stepBackAction->setEnabled(open);
     m_stepForwardAction->setEnabled(open);
     m_loopAction->setEnabled(open);
-    m_clock->setDuration(open ? m_document->previewDuration() : 0.0);
+    m_clock->setDuration(open ? document()->previewDuration() : 0.0);
     m_transport->setDuration(m_clock->duration());
     m_clock->seek(0.0);
     onTimeChanged(m_clock->time()); // pose everything even when the time did not change
 
     if (open) {
-        m_fileLabel->setText(m_document->fileName());
-        m_fileLabel->setToolTip(QDir::toNativeSeparators(m_document->filePath()));
+        m_fileLabel->setText(document()->fileName());
+        m_fileLabel->setToolTip(QDir::toNativeSeparators(document()->filePath()));
         int actions = 0;
-        for (const core::scenario::Character& character : m_document->scenario().characters)
+        for (const core::scenario::Character& character : document()->scenario().characters)
             for (const core::scenario::Layer& layer : character.layers)
                 actions += int(layer.actions.size());
-        QString summary = tr("Opened %1: %n character(s)", nullptr, int(m_document->scenario().characters.size()))
-                              .arg(m_document->fileName()) +
+        QString summary = tr("Opened %1: %n character(s)", nullptr, int(document()->scenario().characters.size()))
+                              .arg(document()->fileName()) +
                           tr(", %n action(s)", nullptr, actions) +
-                          tr(", %1 s long. Press Space to play.").arg(m_document->previewDuration(), 0, 'f', 1);
+                          tr(", %1 s long. Press Space to play.").arg(document()->previewDuration(), 0, 'f', 1);
         refreshMessages();
         if (const int warnings = m_messages->count() - (m_messages->item(0)->flags() == Qt::NoItemFlags ? 1 : 0); warnings > 0)
             summary += QLatin1Char(' ') + tr("%n warning(s): see Messages.", nullptr, warnings);
@@ -525,16 +509,24 @@ void MainWindow::onTimeChanged(double seconds)
 #ifdef THESPIS_WITH_PYTHON
     m_script->setTime(seconds); // before the stage is evaluated, so a waiting script acts on time
 #endif
-    if (m_preview)
+    // The session's stage is evaluated once per tick — by the 3D view when there is one, else
+    // here — and the skeleton view shows the same poses (live actions included).
+    const core::runtime::PoseSet* poses = nullptr;
+    if (m_preview && m_preview->scene()) {
         m_preview->setTime(seconds);
-    // The skeleton view shows the poses the 3D view's stage gave this tick (live actions
-    // included), so nothing is evaluated twice; without a 3D view it samples the schedules.
-    const core::render::ScenarioScene* scene = m_preview ? m_preview->scene() : nullptr;
+        poses = &m_preview->scene()->poses();
+    } else if (const auto& stage = m_session->stage()) {
+        if (m_poses.characters.size() != stage->runtime().characters.size())
+            m_poses = stage->makePoseSet(); // only when the cast changed
+        stage->evaluate(core::secondsToTicks(seconds), m_poses);
+        poses = &m_poses;
+    }
+    const core::runtime::Stage* stage = m_session->stage().get();
     for (std::size_t i = 0; i < m_samplers.size(); ++i) {
-        const bool fromStage = scene && i < scene->poses().characters.size() &&
-                               scene->runtime().characters[i].name == m_samplers[i].name();
+        const bool fromStage = poses && stage && i < poses->characters.size() &&
+                               stage->runtime().characters[i].name == m_samplers[i].name();
         if (fromStage)
-            m_samplers[i].setFrame(scene->poses().characters[i].body);
+            m_samplers[i].setFrame(poses->characters[i].body);
         else
             m_samplers[i].sample(seconds);
         m_poseView->setFigurePositions(int(i), m_samplers[i].positions());
@@ -561,7 +553,7 @@ void MainWindow::onPlayingChanged(bool playing)
 
 void MainWindow::updateFps()
 {
-    if (!m_document) {
+    if (!document()) {
         m_fpsLabel->clear();
         return;
     }
@@ -600,30 +592,30 @@ void MainWindow::setShading(core::render::Shading shading)
 
 void MainWindow::updateTitle()
 {
-    if (!m_document) {
+    if (!document()) {
         setWindowModified(false);
         setWindowTitle(tr("Thespis Studio"));
         return;
     }
     // [*] is where Qt shows the modified mark.
-    setWindowTitle(tr("%1[*] — Thespis Studio").arg(m_document->scenarioName()));
-    setWindowModified(m_document->isModified());
-    m_fileLabel->setText(m_document->fileName());
-    m_fileLabel->setToolTip(QDir::toNativeSeparators(m_document->filePath()));
+    setWindowTitle(tr("%1[*] — Thespis Studio").arg(document()->scenarioName()));
+    setWindowModified(document()->isModified());
+    m_fileLabel->setText(document()->fileName());
+    m_fileLabel->setToolTip(QDir::toNativeSeparators(document()->filePath()));
 }
 
 void MainWindow::refreshFigures(bool frame)
 {
     rebuildSamplers();
     m_figureKeys.clear();
-    if (m_document)
-        for (const core::scenario::Character& character : m_document->scenario().characters)
+    if (document())
+        for (const core::scenario::Character& character : document()->scenario().characters)
             m_figureKeys.emplace_back(character.name, character.skeleton);
     std::vector<widgets::PoseFigure> figures;
     bool haveBounds = false;
     QVector3D low, high;
-    if (m_document) {
-        const double duration = m_document->previewDuration();
+    if (document()) {
+        const double duration = document()->previewDuration();
         for (editor::PoseSampler& sampler : m_samplers) {
             figures.push_back(sampler.figure(widgets::figureColor(int(figures.size()))));
             const auto [characterLow, characterHigh] = sampler.sweepBounds(duration, kBoundsSampleStep);
@@ -640,15 +632,15 @@ void MainWindow::refreshFigures(bool frame)
     // H-Anim skeletons are in metres; a skeleton taken from a BVH file keeps the file's unit,
     // which BVH does not name.
     bool metres = true;
-    if (m_document)
-        for (const core::scenario::Character& character : m_document->scenario().characters)
+    if (document())
+        for (const core::scenario::Character& character : document()->scenario().characters)
             metres = metres && !character.skeleton.starts_with("clip:");
     m_poseView->setLengthUnit(metres ? tr("m", "metres") : tr("units", "length unit of a BVH file"));
     if (haveBounds && frame)
         m_poseView->setSceneBounds(low, high);
     else if (!haveBounds)
         m_poseView->clearSceneBounds();
-    if (m_document && m_document->runtime().characters.empty())
+    if (document() && document()->runtime().characters.empty())
         m_poseView->setPlaceholderText(tr("This scenario has no characters yet."));
     else
         m_poseView->setPlaceholderText(tr("No scenario is open.\nUse File ▸ Open… (Ctrl+O) to open a .thespis file."));
@@ -659,10 +651,10 @@ void MainWindow::rebuildSamplers()
 {
     // The samplers point into the runtime, which an edit replaces.
     m_samplers.clear();
-    if (!m_document)
+    if (!document())
         return;
-    m_samplers.reserve(m_document->runtime().characters.size());
-    for (const core::scenario::CharacterRuntime& character : m_document->runtime().characters)
+    m_samplers.reserve(document()->runtime().characters.size());
+    for (const core::scenario::CharacterRuntime& character : document()->runtime().characters)
         m_samplers.emplace_back(character);
 }
 
@@ -670,7 +662,7 @@ void MainWindow::onDocumentEdited()
 {
     // Characters added, removed or given another skeleton: new stick figures, framed anew.
     std::vector<std::pair<std::string, std::string>> figures;
-    for (const core::scenario::Character& character : m_document->scenario().characters)
+    for (const core::scenario::Character& character : document()->scenario().characters)
         figures.emplace_back(character.name, character.skeleton);
     if (figures != m_figureKeys)
         refreshFigures(true);
@@ -678,7 +670,7 @@ void MainWindow::onDocumentEdited()
         rebuildSamplers();
     // The outline is rebuilt: the same character or layer stays selected.
     const auto location = m_model->locationOf(m_outline->currentIndex());
-    m_model->setDocument(m_document.get());
+    m_model->setDocument(document());
     m_outline->expandAll();
     if (location)
         if (const QModelIndex index = m_model->indexOf(location->character, location->layer); index.isValid())
@@ -686,11 +678,11 @@ void MainWindow::onDocumentEdited()
     refreshMessages();
     m_content->updateEnabled();
     if (m_preview)
-        if (auto updated = m_preview->updateDocument(m_document.get()); !updated)
+        if (auto updated = m_preview->updateDocument(document(), m_session->stage()); !updated)
             statusBar()->showMessage(tr("The 3D view is empty: %1").arg(QString::fromStdString(updated.error().message)));
     updateScriptStage();
     refreshScripts();
-    m_clock->setDuration(m_document->previewDuration());
+    m_clock->setDuration(document()->previewDuration());
     m_transport->setDuration(m_clock->duration());
     onTimeChanged(m_clock->time());
 }

@@ -19,6 +19,7 @@
 #include "editor/playback_clock.h"
 #include "editor/pose_sampler.h"
 #include "editor/scene_preview.h"
+#include "editor/session.h"
 
 class QAction;
 class QActionGroup;
@@ -66,7 +67,8 @@ public:
     /// Shows a document built elsewhere (a scenario made in code, tests); null closes it.
     void setDocument(std::unique_ptr<editor::Document> document);
 
-    editor::Document* document() const { return m_document.get(); }
+    editor::Document* document() const { return m_session->document(); }
+    editor::Session* session() const { return m_session; }
     editor::PlaybackClock* clock() const { return m_clock; }
     widgets::PoseView* poseView() const { return m_poseView; }
     widgets::OsgViewport* viewport() const { return m_viewport; }
@@ -152,8 +154,9 @@ private:
     void setShading(core::render::Shading shading);
 
     // The samplers point into the document's runtime: declared after it, destroyed before it.
-    std::unique_ptr<editor::Document> m_document;
+    editor::Session* m_session = nullptr; // child: the document, its stage and the views that show it
     std::vector<editor::PoseSampler> m_samplers;
+    core::runtime::PoseSet m_poses; // the stage's poses when no 3D view evaluates them
     std::vector<std::pair<std::string, std::string>> m_figureKeys; // name and skeleton of each figure shown
 
     editor::PlaybackClock* m_clock = nullptr;

@@ -81,9 +81,9 @@ void MainWindow::createMessagesDock()
     tabifyDockWidget(m_editorDocks.front(), m_messagesDock);
     m_editorDocks.front()->raise();
     connect(m_messages, &editor::MessagesPanel::showRequested, this, [this](int character, const QString& clip) {
-        if (!m_document || character < 0)
+        if (!document() || character < 0)
             return;
-        const QString name = editor::fromUtf8(m_document->scenario().characters.at(std::size_t(character)).name);
+        const QString name = editor::fromUtf8(document()->scenario().characters.at(std::size_t(character)).name);
         if (QTreeWidgetItem* item = clip.isEmpty() ? nullptr : m_library->clipItem(name, clip)) {
             m_library->setCurrentItem(item);
             if (auto* dock = qobject_cast<QDockWidget*>(m_library->parentWidget()))
@@ -110,8 +110,8 @@ void MainWindow::createScriptDock()
             m_clock->play();
     });
     connect(m_script, &editor::ScriptPanel::saveRequested, this, [this](const QString& name, const QString& source) {
-        if (m_document)
-            (void)m_document->edit(core::edit::setScript(m_document->scenario(), name.toStdString(), source.toStdString()),
+        if (document())
+            (void)document()->edit(core::edit::setScript(document()->scenario(), name.toStdString(), source.toStdString()),
                                    tr("Save Script “%1”").arg(name));
     });
     m_script->setTrustCheck([this] { return confirmScriptTrust(); });
@@ -124,9 +124,8 @@ void MainWindow::createScriptDock()
 void MainWindow::updateScriptStage()
 {
 #ifdef THESPIS_WITH_PYTHON
-    core::render::ScenarioScene* scene = m_preview ? m_preview->scene() : nullptr;
-    m_script->setStage(scene ? scene->sharedStage() : nullptr);
-    m_script->setAssets(m_document ? m_document->assets() : core::scenario::Assets("."));
+    m_script->setStage(m_session->stage());
+    m_script->setAssets(document() ? document()->assets() : core::scenario::Assets("."));
 #endif
 }
 
@@ -134,47 +133,47 @@ void MainWindow::refreshScripts()
 {
 #ifdef THESPIS_WITH_PYTHON
     QStringList names, sources;
-    if (m_document)
-        for (const core::scenario::ScriptSpec& script : m_document->scenario().scripts) {
+    if (document())
+        for (const core::scenario::ScriptSpec& script : document()->scenario().scripts) {
             names.push_back(QString::fromStdString(script.name));
             sources.push_back(QString::fromStdString(script.source));
         }
     m_script->setScenarioScripts(names, sources);
-    m_script->setSaveEnabled(m_document != nullptr);
+    m_script->setSaveEnabled(document() != nullptr);
 #endif
 }
 
 bool MainWindow::confirmScriptTrust()
 {
-    if (!m_document || m_document->filePath().isEmpty() || editor::ScriptTrust::isTrusted(m_document->filePath()))
+    if (!document() || document()->filePath().isEmpty() || editor::ScriptTrust::isTrusted(document()->filePath()))
         return true; // a scenario never saved holds only what the user made here
     QMessageBox box(QMessageBox::Warning, tr("Run Scripts From This File?"),
                     tr("“%1” keeps Python scripts. A script can do anything your user account can: read, change "
                        "and delete files, or use the network.\n\nRun the scenario's scripts only if you trust where "
                        "this file came from. Your answer is remembered for this file as it is now.")
-                        .arg(m_document->fileName()),
+                        .arg(document()->fileName()),
                     QMessageBox::Cancel, this);
     QPushButton* trust = box.addButton(tr("Trust This File and Run"), QMessageBox::AcceptRole);
     box.setDefaultButton(QMessageBox::Cancel);
     box.exec();
     if (box.clickedButton() != trust)
         return false;
-    editor::ScriptTrust::trust(m_document->filePath());
+    editor::ScriptTrust::trust(document()->filePath());
     return true;
 }
 
 void MainWindow::refreshMessages()
 {
     QList<editor::MessagesPanel::Entry> entries;
-    if (m_document) {
-        for (const editor::Document::Message& message : m_document->messages())
+    if (document()) {
+        for (const editor::Document::Message& message : document()->messages())
             entries.push_back({message.text, message.character, message.clip});
         // The 3D view's (a model's joints without H-Anim names, a bake left out) start with the
         // character's name.
         if (m_preview)
             for (const QString& warning : m_preview->warnings()) {
                 int character = -1;
-                const auto& characters = m_document->scenario().characters;
+                const auto& characters = document()->scenario().characters;
                 for (std::size_t c = 0; c < characters.size(); ++c)
                     if (warning.startsWith(editor::fromUtf8(characters[c].name) + QLatin1Char(':')))
                         character = int(c);
@@ -187,7 +186,7 @@ void MainWindow::refreshMessages()
 
 int MainWindow::currentCharacter() const
 {
-    if (!m_document || m_document->scenario().characters.empty())
+    if (!document() || document()->scenario().characters.empty())
         return -1;
     if (const auto location = m_model->locationOf(m_outline->currentIndex()))
         return location->character;
@@ -198,7 +197,7 @@ int MainWindow::currentCharacter() const
 
 std::optional<core::edit::LayerPath> MainWindow::currentLayer() const
 {
-    if (!m_document)
+    if (!document())
         return std::nullopt;
     if (const auto location = m_model->locationOf(m_outline->currentIndex()); location && location->layer >= 0)
         return core::edit::LayerPath{location->character, location->layer};
@@ -222,7 +221,7 @@ QString MainWindow::importFolder() const
     const QString stored = QSettings().value(QStringLiteral("import/lastFolder")).toString();
     if (!stored.isEmpty())
         return stored;
-    return m_document ? m_document->baseDir() : QDir::homePath();
+    return document() ? document()->baseDir() : QDir::homePath();
 }
 
 void MainWindow::setImportFolder(const QString& folder)
@@ -285,8 +284,8 @@ void MainWindow::createEditorDocks()
             [this](std::optional<core::edit::ActionPath> action) {
                 m_curves->setAction(action);
                 m_properties->setAction(action);
-                if (action && m_document) {
-                    const auto& spec = m_document->scenario().characters[std::size_t(action->character)]
+                if (action && document()) {
+                    const auto& spec = document()->scenario().characters[std::size_t(action->character)]
                                            .layers[std::size_t(action->layer)].actions[std::size_t(action->action)];
                     if (!spec.mask.empty())
                         m_masks->showMask(QString::fromStdString(spec.mask));

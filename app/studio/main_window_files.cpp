@@ -39,14 +39,14 @@ bool MainWindow::openScenario(const QString& path)
         return false;
     }
     setDocument(std::move(*document));
-    addRecentFile(m_document->filePath());
+    addRecentFile(this->document()->filePath());
     return true;
 }
 
 void MainWindow::onOpen()
 {
-    const QString start = m_document && !m_document->filePath().isEmpty()
-                              ? QFileInfo(m_document->filePath()).absolutePath()
+    const QString start = document() && !document()->filePath().isEmpty()
+                              ? QFileInfo(document()->filePath()).absolutePath()
                               : QString();
     const QString path = QFileDialog::getOpenFileName(this, tr("Open Scenario"), start,
                                                       tr("Thespis scenarios (*.thespis);;All files (*)"));
@@ -56,10 +56,10 @@ void MainWindow::onOpen()
 
 void MainWindow::onReload()
 {
-    if (!m_document || m_document->filePath().isEmpty())
+    if (!document() || document()->filePath().isEmpty())
         return;
     // A copy: opening replaces the document that owns the path.
-    const QString path = m_document->filePath();
+    const QString path = document()->filePath();
     const double time = m_clock->time();
     if (openScenario(path))
         m_clock->seek(time);
@@ -118,35 +118,35 @@ void MainWindow::newScenario(bool withCharacter)
 
 bool MainWindow::save()
 {
-    if (!m_document)
+    if (!document())
         return false;
-    if (m_document->filePath().isEmpty())
+    if (document()->filePath().isEmpty())
         return onSaveAs();
-    return saveAs(m_document->filePath());
+    return saveAs(document()->filePath());
 }
 
 bool MainWindow::saveAs(const QString& path)
 {
-    if (!m_document)
+    if (!document())
         return false;
-    if (auto saved = m_document->saveAs(path); !saved) {
+    if (auto saved = document()->saveAs(path); !saved) {
         editor::showError(this, saved.error(), tr("Could not save “%1”.").arg(QFileInfo(path).fileName()));
         return false;
     }
     m_autosaver->discard();
-    editor::ScriptTrust::trust(m_document->filePath()); // the user's own file now
-    addRecentFile(m_document->filePath());
+    editor::ScriptTrust::trust(document()->filePath()); // the user's own file now
+    addRecentFile(document()->filePath());
     m_reloadAction->setEnabled(true);
-    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(m_document->filePath())), 5000);
+    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document()->filePath())), 5000);
     updateTitle();
     return true;
 }
 
 bool MainWindow::onSaveAs()
 {
-    if (!m_document)
+    if (!document())
         return false;
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Scenario As"), m_document->filePath(),
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Scenario As"), document()->filePath(),
                                                 tr("Thespis scenarios (*.thespis)"));
     if (path.isEmpty())
         return false;
@@ -157,10 +157,10 @@ bool MainWindow::onSaveAs()
 
 bool MainWindow::maybeSave()
 {
-    if (!m_document || !m_document->isModified())
+    if (!document() || !document()->isModified())
         return true;
     const auto answer = QMessageBox::question(this, tr("Unsaved Changes"),
-                                              tr("“%1” has changes that are not saved. Save them?").arg(m_document->fileName()),
+                                              tr("“%1” has changes that are not saved. Save them?").arg(document()->fileName()),
                                               QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer == QMessageBox::Save)
         return save();

@@ -44,11 +44,17 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
                                                              const scenario::Assets& assets,
                                                              const ScenarioSceneOptions& options)
 {
-    auto runtime = scenario::buildRuntime(scenario, assets);
-    if (!runtime)
-        return runtime.error();
     std::unique_ptr<ScenarioScene> self(new ScenarioScene);
-    self->m_stage = std::make_shared<runtime::Stage>(std::move(runtime).value());
+    if (options.stage) {
+        if (options.stage->runtime().characters.size() != scenario.characters.size())
+            return makeError(ErrorCode::InvalidArgument, "The stage does not play this scenario's characters.");
+        self->m_stage = options.stage;
+    } else {
+        auto runtime = scenario::buildRuntime(scenario, assets);
+        if (!runtime)
+            return runtime.error();
+        self->m_stage = std::make_shared<runtime::Stage>(std::move(runtime).value());
+    }
     self->m_scene = std::make_unique<RenderScene>(options.skinningThreads);
 
     if (!scenario.lighting.probe.empty()) {
@@ -103,6 +109,7 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
         Performer performer;
         performer.name = scenario.characters[i].name;
         performer.runtime = characterRuntime;
+        performer.skeletonLayout = characterRuntime->skeleton.frameLayout();
         performer.node = *node;
         // The body's own soles (from its mesh) stay on the floor where the animation's feet are.
         anim::RetargetOptions retarget;
@@ -135,19 +142,26 @@ void ScenarioScene::attachPerformers()
 
 Result<void> ScenarioScene::setRuntime(scenario::ScenarioRuntime runtime)
 {
-    if (runtime.characters.size() != m_performers.size())
-        return makeError(ErrorCode::InvalidArgument, "The scenario's characters changed: the scene must be rebuilt.");
-    for (std::size_t i = 0; i < m_performers.size(); ++i) {
-        const scenario::CharacterRuntime& old = *m_performers[i].runtime;
-        const scenario::CharacterRuntime& next = runtime.characters[i];
-        if (next.name != old.name || !(*next.skeleton.frameLayout() == *old.skeleton.frameLayout()))
-            return makeError(ErrorCode::InvalidArgument,
-                             "Character \"" + next.name + "\" changed its skeleton: the scene must be rebuilt.");
-    }
+    if (auto fits = fitsPerformers(runtime); !fits)
+        return fits;
     if (auto played = m_stage->setRuntime(std::move(runtime)); !played)
         return played.error();
     attachPerformers();
     setTime(m_time);
+    return {};
+}
+
+// The performers may point into a runtime the stage no longer has: they are compared by the
+// names and skeleton layouts they recorded.
+Result<void> ScenarioScene::fitsPerformers(const scenario::ScenarioRuntime& next) const
+{
+    if (next.characters.size() != m_performers.size())
+        return makeError(ErrorCode::InvalidArgument, "The scenario's characters changed: the scene must be rebuilt.");
+    for (std::size_t i = 0; i < m_performers.size(); ++i)
+        if (next.characters[i].name != m_performers[i].name
+            || !(*next.characters[i].skeleton.frameLayout() == *m_performers[i].skeletonLayout))
+            return makeError(ErrorCode::InvalidArgument,
+                             "Character \"" + next.characters[i].name + "\" changed its skeleton: the scene must be rebuilt.");
     return {};
 }
 

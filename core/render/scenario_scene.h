@@ -36,6 +36,9 @@ struct ScenarioSceneOptions {
     int lightOrder = 6;
     /// Draw the probe behind the characters (when the scenario has one).
     bool probeBackground = false;
+    /// Play this stage (of the scenario's runtime: the studio's session stage) instead of one
+    /// built for the scene.
+    std::shared_ptr<runtime::Stage> stage;
 };
 
 class ScenarioScene {
@@ -62,6 +65,7 @@ public:
     /// error says so and the scene must be rebuilt.
     Result<void> setRuntime(scenario::ScenarioRuntime runtime);
 
+
     /// Evaluates the stage at `seconds` and poses every character (no allocation).
     void setTime(double seconds);
     /// Poses every character from poses the stage gave (its character order).
@@ -82,9 +86,11 @@ private:
         CharacterNode* node = nullptr;
         anim::FrameRetarget retarget;
         anim::FrameLayoutPtr bodyLayout;
+        anim::FrameLayoutPtr skeletonLayout; ///< of the character's skeleton when the scene was made
         std::vector<float> bodyFrame;
     };
     void attachPerformers();
+    Result<void> fitsPerformers(const scenario::ScenarioRuntime& next) const;
 
     std::shared_ptr<runtime::Stage> m_stage;
     runtime::PoseSet m_poses;
