@@ -6,6 +6,7 @@
 // and attaches them to the new one, in registration order. An edit updates the stage in place
 // (live actions play on, only the characters the edit touched were rebuilt by the Document); a
 // stage that cannot follow (characters added, removed or given another skeleton) is made anew.
+// The stage keeps a cache of recent frames, so scrubbing back over them is cheap.
 
 #include <QObject>
 

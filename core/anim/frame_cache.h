@@ -29,6 +29,7 @@ public:
         return m_source.get() == &other || m_source->plays(other);
     }
 
+    const BlendablePtr& source() const { return m_source; }
     int capacity() const { return m_capacity; }
     std::uint64_t hits() const { return m_hits; }
     std::uint64_t misses() const { return m_misses; }

@@ -85,6 +85,8 @@ Stage::Stage(scenario::ScenarioRuntime runtime) : m_runtime(std::move(runtime))
             initPerformer(performer, character.skeleton, character.body, character.face);
         assert(made);
         fillLibrary(performer, character);
+        cacheAuthored(performer.body);
+        cacheAuthored(performer.face);
         m_performers.push_back(std::move(performer));
     }
 }
@@ -123,8 +125,11 @@ Result<void> Stage::setRuntime(scenario::ScenarioRuntime runtime)
     }
     m_authoredCuts.clear(); // they were cut in the old schedules
     m_runtime = std::move(runtime);
-    for (std::size_t i = 0; i < m_performers.size(); ++i)
+    for (std::size_t i = 0; i < m_performers.size(); ++i) {
         fillLibrary(m_performers[i], m_runtime.characters[i]); // live actions play on
+        cacheAuthored(m_performers[i].body);
+        cacheAuthored(m_performers[i].face);
+    }
     return {};
 }
 
@@ -462,17 +467,17 @@ PoseSet Stage::makePoseSet() const
 void Stage::evaluateTrack(TrackState& track, double seconds, std::vector<float>& out) const
 {
     const anim::FrameLayout& layout = *track.live->layout();
-    const auto overlayByCoverage = [&](const BlendingSchedule& schedule) {
+    const auto overlayByCoverage = [&](const anim::BlendableObject& schedule) {
         schedule.evaluateWithCoverage(seconds, track.scratch, track.coverage);
         m_blender->overlay(layout, anim::BlendInput{track.scratch.data(), track.coverage.data()}, out);
     };
     // 1, 2: the synthesizers, and the authored schedule over them; alone, the authored one as is.
     if (track.synthesizers->actionCount() > 0) {
         track.synthesizers->evaluate(seconds, out);
-        if (track.authored)
-            overlayByCoverage(*track.authored);
-    } else if (track.authored) {
-        track.authored->evaluate(seconds, out);
+        if (track.played)
+            overlayByCoverage(*track.played);
+    } else if (track.played) {
+        track.played->evaluate(seconds, out);
     } else {
         std::copy(track.live->restPose().begin(), track.live->restPose().end(), out.begin());
     }
@@ -509,6 +514,40 @@ std::uint64_t Stage::ticks() const
 {
     const std::lock_guard lock(m_mutex);
     return m_ticks;
+}
+
+void Stage::cacheAuthored(TrackState& track) const
+{
+    // A character an edit did not touch keeps its schedule, and so its cached frames.
+    if (track.cache && track.cache->source() == track.authored && track.cache->capacity() == m_cacheFrames) {
+        track.played = track.cache;
+        return;
+    }
+    track.cache = m_cacheFrames > 0 && track.authored
+                      ? std::make_shared<anim::CachedBlendable>(track.authored, m_cacheFrames)
+                      : nullptr;
+    track.played = track.cache ? anim::BlendablePtr(track.cache) : anim::BlendablePtr(track.authored);
+}
+
+void Stage::setFrameCache(int frames)
+{
+    const std::lock_guard lock(m_mutex);
+    m_cacheFrames = std::max(frames, 0);
+    for (Performer& performer : m_performers) {
+        cacheAuthored(performer.body);
+        cacheAuthored(performer.face);
+    }
+}
+
+std::uint64_t Stage::frameCacheHits() const
+{
+    const std::lock_guard lock(m_mutex);
+    std::uint64_t hits = 0;
+    for (const Performer& performer : m_performers)
+        for (const TrackState* track : {&performer.body, &performer.face})
+            if (track->cache)
+                hits += track->cache->hits();
+    return hits;
 }
 
 } // namespace thespis::core::runtime

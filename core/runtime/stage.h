@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "anim/blending_schedule.h"
+#include "anim/frame_cache.h"
 #include "runtime/pose_set.h"
 #include "scenario/scenario_runtime.h"
 #include "util/error.h"
@@ -112,6 +113,13 @@ public:
     void evaluate(Tick t, PoseSet& out);
     /// How many times evaluate() ran.
     std::uint64_t ticks() const;
+    /// Keeps the last `frames` frames of each character's authored motion (paper §4.2's cache of
+    /// rendered frames), dropped at every edit of it: where the playhead goes back over times
+    /// already shown (the studio's scrubbing) a frame costs a copy. 0 (the default): no cache.
+    /// Poses are the same with or without it.
+    void setFrameCache(int frames);
+    /// Authored frames the cache gave back so far.
+    std::uint64_t frameCacheHits() const;
 
 private:
     /// An action that plays or played: live (in `live` for Normalized actions, in `layered` for
@@ -126,6 +134,8 @@ private:
     class HeldFrame;
     struct TrackState {
         std::shared_ptr<const anim::BlendingSchedule> authored; // null: nothing authored
+        std::shared_ptr<anim::CachedBlendable> cache;          // in front of `authored`, when kept
+        anim::BlendablePtr played;                              // what plays of it: the cache or itself
         std::vector<std::shared_ptr<anim::BlendingSchedule>> authoredLayers;
         std::shared_ptr<anim::BlendingSchedule> synthesizers; // 1. open-ended, Normalized
         std::shared_ptr<anim::BlendingSchedule> live;         // 3. live Normalized actions
@@ -144,6 +154,7 @@ private:
     };
 
     static void fillLibrary(Performer& performer, scenario::CharacterRuntime& character);
+    void cacheAuthored(TrackState& track) const; // sets `cache` and `played` for m_cacheFrames
     Result<void> initPerformer(Performer& performer, const anim::Skeleton& skeleton,
                                std::shared_ptr<const anim::BlendingSchedule> body,
                                std::shared_ptr<const anim::BlendingSchedule> face);
@@ -164,6 +175,7 @@ private:
     std::vector<Activation> m_authoredCuts; // authored actions cut off live (resetLive restores them)
     bool m_bodyEnabled = true, m_faceEnabled = true;
     std::uint64_t m_ticks = 0;
+    int m_cacheFrames = 0;
 };
 
 } // namespace thespis::core::runtime

@@ -6,8 +6,11 @@
 //   iteration at a new time. The clips come from a library of 12, as the characters of a
 //   scenario share their motion files (each character its own choice of them, from its own
 //   start). Reports ns per character per tick and allocations per tick.
+// StageScrub/F: the same stage (10 characters) scrubbed back and forth over 2 s, with a frame
+//   cache of F frames (Stage::setFrameCache; the studio keeps 600) or none.
 #include <benchmark/benchmark.h>
 
+#include <memory>
 #include <random>
 
 #include "allocation_counter.h"
@@ -37,9 +40,10 @@ std::shared_ptr<KeyframeClip> randomWalkClip(const Skeleton& skeleton, std::mt19
     return std::move(KeyframeClip::create(layout, 30.0, std::move(data))).value();
 }
 
-void StageTick(benchmark::State& state)
+// The stage StageTick and StageScrub play: `characters` characters, each with 4 authored actions
+// and one live action.
+std::unique_ptr<runtime::Stage> benchStage(int characters)
 {
-    const int characters = int(state.range(0));
     const Skeleton& skeleton = hanim::skeleton(hanim::Level::Subset25);
     std::mt19937 rng(11);
     std::vector<std::shared_ptr<KeyframeClip>> library;
@@ -64,13 +68,21 @@ void StageTick(benchmark::State& state)
         character.clips["gesture"] = library[std::size_t(c * 5 + 4) % library.size()];
         runtime.characters.push_back(std::move(character));
     }
-    runtime::Stage stage(std::move(runtime));
+    auto stage = std::make_unique<runtime::Stage>(std::move(runtime));
     for (int c = 0; c < characters; ++c) {
-        auto made = stage.defineAction("character" + std::to_string(c), runtime::Track::Body, "gesture",
-                                       {stage.runtime().characters[std::size_t(c)].clips.at("gesture"), {}, true});
+        auto made = stage->defineAction("character" + std::to_string(c), runtime::Track::Body, "gesture",
+                                        {stage->runtime().characters[std::size_t(c)].clips.at("gesture"), {}, true});
         (void)made;
-        (void)stage.activateAction("character" + std::to_string(c), runtime::Track::Body, "gesture", secondsToTicks(0.1));
+        (void)stage->activateAction("character" + std::to_string(c), runtime::Track::Body, "gesture", secondsToTicks(0.1));
     }
+    return stage;
+}
+
+void StageTick(benchmark::State& state)
+{
+    const int characters = int(state.range(0));
+    auto made = benchStage(characters);
+    runtime::Stage& stage = *made;
     runtime::PoseSet poses = stage.makePoseSet();
     Tick t = secondsToTicks(1.0);
     const Tick step = ticksPerFrame(60);
@@ -89,3 +101,24 @@ void StageTick(benchmark::State& state)
 } // namespace
 
 BENCHMARK(StageTick)->Arg(2)->Arg(10)->Arg(100);
+
+// StageScrub/F: the playhead scrubbed back and forth over the same 2 s at 30 frames per second
+// (as a user drags it), 10 characters, with a frame cache of F frames per character (0: none).
+void StageScrub(benchmark::State& state)
+{
+    constexpr int characters = 10;
+    auto stage = benchStage(characters);
+    stage->setFrameCache(int(state.range(0)));
+    runtime::PoseSet poses = stage->makePoseSet();
+    const Tick frame = ticksPerFrame(30);
+    long step = 0;
+    for (auto _ : state) {
+        const long f = step++ % 120; // 0 … 60, then back
+        stage->evaluate(secondsToTicks(1.0) + frame * (f <= 60 ? f : 120 - f), poses);
+        benchmark::DoNotOptimize(poses.characters.back().body.data());
+    }
+    state.counters["ns/character"] = benchmark::Counter(double(characters) * double(state.iterations()),
+                                                        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["hits"] = double(stage->frameCacheHits()) / double(state.iterations());
+}
+BENCHMARK(StageScrub)->Arg(0)->Arg(600);

@@ -182,6 +182,46 @@ TEST(Stage, AnEditedScenarioPlaysOnWithItsLiveActions)
     EXPECT_FALSE(stage->setRuntime(std::move(other).value()));
 }
 
+TEST(Stage, TheFrameCacheGivesTheSamePosesAndPaysWhenScrubbingBack)
+{
+    auto cached = demoStage(), plain = demoStage();
+    cached->setFrameCache(240);
+    PoseSet a = cached->makePoseSet(), b = plain->makePoseSet();
+    const auto compareAt = [&](double t) {
+        cached->evaluate(secondsToTicks(t), a);
+        plain->evaluate(secondsToTicks(t), b);
+        for (std::size_t c = 0; c < a.characters.size(); ++c) {
+            ASSERT_EQ(a.characters[c].body, b.characters[c].body) << "character " << c << " at " << t << " s";
+            ASSERT_EQ(a.characters[c].face, b.characters[c].face) << "character " << c << " at " << t << " s";
+        }
+    };
+    // A scrub: forward over 2 s at 30 fps, then back over the same frames.
+    for (int f = 0; f <= 60; ++f)
+        compareAt(f / 30.0);
+    const std::uint64_t forward = cached->frameCacheHits();
+    for (int f = 60; f >= 0; --f)
+        compareAt(f / 30.0);
+    EXPECT_GE(cached->frameCacheHits() - forward, 2u * 61u - 4u); // body and face, nearly every frame
+    // A live action and a cut-off authored one play over the cached frames as over the others.
+    for (auto* stage : {cached.get(), plain.get()}) {
+        ASSERT_TRUE(stage->activateAction("Antigone", Track::Body, "nod", secondsToTicks(0.5)));
+        ASSERT_TRUE(*stage->cutOffAction("Creon", Track::Body, "creon_idle", secondsToTicks(1.0), 0.5));
+    }
+    for (int f = 60; f >= 0; --f)
+        compareAt(f / 30.0);
+    // After an edit the new schedules play, cached or not.
+    auto scenario = core::scenario::loadScenario(resources("demo.thespis"));
+    ASSERT_TRUE(scenario);
+    scenario->characters[0].layers[0].actions[0].start += core::TicksPerSecond / 3;
+    for (auto* stage : {cached.get(), plain.get()}) {
+        auto edited = core::scenario::buildRuntime(*scenario, resources());
+        ASSERT_TRUE(edited);
+        ASSERT_TRUE(stage->setRuntime(std::move(edited).value()));
+    }
+    for (int f = 0; f <= 60; ++f)
+        compareAt(f / 30.0);
+}
+
 TEST(Stage, UnknownNamesAreNamedWithTheKnownOnes)
 {
     auto stage = demoStage();
