@@ -1,6 +1,7 @@
 #pragma once
 // Private to core/scenario's reader and writer (scenario_read.cpp, scenario_write.cpp) and the
-// entry points (scenario_io.cpp): JSON aliases, the enumerations by name, and messages.
+// entry points (scenario_io.cpp): JSON aliases, the enumerations by name, and messages (the
+// document helpers come from util/json_document.h).
 
 #include <charconv>
 #include <cmath>
@@ -10,61 +11,19 @@
 #include <nlohmann/json.hpp>
 
 #include "scenario/scenario.h"
+#include "util/json_document.h"
 
 namespace thespis::core::scenario::detail {
 
 using json = nlohmann::json;
 using ojson = nlohmann::ordered_json;
-
-// Documents nest a handful of levels; unknown fields could nest deeper, but a limit keeps the
-// recursive parts (comparison, writing, destruction of foreign code's copies) safe from
-// hostile files.
-inline constexpr int kMaxDepth = 64;
-
-// Thrown inside the reader only, caught in parseScenario: a field path and what is wrong.
-struct FieldError {
-    std::string path;
-    std::string message;
-};
-
-[[noreturn]] inline void fail(const std::string& path, std::string message)
-{
-    throw FieldError{path, std::move(message)};
-}
-
-inline std::string join(const std::string& path, std::string_view key)
-{
-    return path.empty() ? std::string(key) : path + "." + std::string(key);
-}
-
-inline std::string indexed(const std::string& path, std::size_t index)
-{
-    return path + "[" + std::to_string(index) + "]";
-}
-
-inline std::string quote(std::string_view text)
-{
-    return json(std::string(text)).dump(-1, ' ', false, json::error_handler_t::replace);
-}
-
-// What a JSON value is, for "expected X, found Y" messages: short, with the value if small.
-inline std::string describeValue(const json& value)
-{
-    switch (value.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return value.get<bool>() ? "true" : "false";
-    case json::value_t::string: {
-        const auto& s = value.get_ref<const std::string&>();
-        return s.size() <= 40 ? "the text " + quote(s) : "a text";
-    }
-    case json::value_t::number_integer:
-    case json::value_t::number_unsigned:
-    case json::value_t::number_float: return value.dump();
-    case json::value_t::object: return "an object";
-    case json::value_t::array: return "a list";
-    default: return "an unsupported value";
-    }
-}
+using json_document::describeValue;
+using json_document::fail;
+using json_document::FieldError;
+using json_document::indexed;
+using json_document::join;
+using json_document::kMaxDepth;
+using json_document::quote;
 
 // The float nearest to `value`, as the double with the same shortest decimal form, so that
 // files show "0.1" rather than "0.10000000149011612" and read back to the same float.

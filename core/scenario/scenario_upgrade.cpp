@@ -1,0 +1,127 @@
+// The scenario format's upgrade steps (scenario_upgrade.h): each takes a document of version N to
+// N + 1 before it is read.
+
+#include "scenario/scenario_upgrade.h"
+
+#include <algorithm>
+#include <string>
+#include <string_view>
+
+#include "scenario/scenario_io.h"
+
+namespace thespis::core::scenario {
+
+namespace detail {
+
+// 1 → 2: layers gained mute / solo / lock, characters a gesticon, the scenario markers. All are
+// optional, so a version 1 document only needs the new schema names of the objects that changed.
+static Result<void> upgradeV1toV2(nlohmann::json& document)
+{
+    auto renameSchema = [](nlohmann::json& object, std::string_view from, std::string_view to) {
+        if (!object.is_object())
+            return; // the reader names the field that is not an object
+        const auto schema = object.find("schema");
+        if (schema != object.end() && schema->is_string() && schema->get_ref<const std::string&>() == from)
+            *schema = to;
+    };
+    renameSchema(document, "Scenario.1", "Scenario.2");
+    const auto characters = document.find("characters");
+    if (characters == document.end() || !characters->is_array())
+        return {};
+    for (nlohmann::json& character : *characters) {
+        renameSchema(character, "Character.1", "Character.2");
+        if (!character.is_object())
+            continue;
+        const auto layers = character.find("layers");
+        if (layers != character.end() && layers->is_array())
+            for (nlohmann::json& layer : *layers)
+                renameSchema(layer, "Layer.1", "Layer.2");
+    }
+    return {};
+}
+
+// 2 → 3: clips gained retarget options and glTF animations, actions their placement, loops root
+// motion, characters a placement and the "model" skeleton, the light a rotation and intensity.
+// All are optional: only the schema names of the objects that changed are new.
+static Result<void> upgradeV2toV3(nlohmann::json& document)
+{
+    const auto renameSchema = [](nlohmann::json& object, std::string_view from, std::string_view to) {
+        if (!object.is_object())
+            return;
+        const auto schema = object.find("schema");
+        if (schema != object.end() && schema->is_string() && schema->get_ref<const std::string&>() == from)
+            *schema = to;
+    };
+    const auto each = [](nlohmann::json& object, const char* member, const auto& visit) {
+        if (!object.is_object())
+            return;
+        const auto list = object.find(member);
+        if (list != object.end() && list->is_array())
+            for (nlohmann::json& item : *list)
+                visit(item);
+    };
+    renameSchema(document, "Scenario.2", "Scenario.3");
+    if (document.is_object())
+        if (const auto lighting = document.find("lighting"); lighting != document.end())
+            renameSchema(*lighting, "Lighting.1", "Lighting.2");
+    each(document, "characters", [&](nlohmann::json& character) {
+        renameSchema(character, "Character.2", "Character.3");
+        each(character, "clips", [&](nlohmann::json& clip) { renameSchema(clip, "Clip.1", "Clip.2"); });
+        each(character, "layers", [&](nlohmann::json& layer) {
+            each(layer, "actions", [&](nlohmann::json& action) {
+                renameSchema(action, "Action.1", "Action.2");
+                each(action, "modifiers", [&](nlohmann::json& m) { renameSchema(m, "Modifier.1", "Modifier.2"); });
+            });
+        });
+    });
+    return {};
+}
+
+// 3 → 4: scenarios may hold scripts (an optional list); only the scenario's schema is new.
+static Result<void> upgradeV3toV4(nlohmann::json& document)
+{
+    if (document.is_object())
+        if (const auto schema = document.find("schema");
+            schema != document.end() && schema->is_string() && schema->get_ref<const std::string&>() == "Scenario.3")
+            *schema = "Scenario.4";
+    return {};
+}
+
+std::span<const UpgradeStep> upgradeSteps()
+{
+    static constexpr UpgradeStep steps[] = {
+        {format::Initial, "timeline state and gesticon", &upgradeV1toV2},
+        {format::TimelineAndGesticon, "clip import options and placement", &upgradeV2toV3},
+        {format::ImportAndPlacement, "scripts", &upgradeV3toV4},
+    };
+    return steps;
+}
+
+Result<void> runUpgradeSteps(nlohmann::json& document, int fromVersion, int toVersion,
+                             std::span<const UpgradeStep> steps)
+{
+    for (int version = fromVersion; version < toVersion; ++version) {
+        const auto step = std::find_if(steps.begin(), steps.end(),
+                                       [&](const UpgradeStep& s) { return s.from == version; });
+        if (step == steps.end() || !step->apply)
+            return makeError(ErrorCode::Internal,
+                             "This Thespis cannot upgrade a scenario from format " + std::to_string(version)
+                                 + " to " + std::to_string(version + 1) + ".",
+                             "no upgrade step registered for version " + std::to_string(version));
+        const std::string what = "Upgrading the scenario from format " + std::to_string(version) + " to "
+                                 + std::to_string(version + 1) + " (" + step->name + ") failed";
+        try {
+            if (auto ok = step->apply(document); !ok)
+                return makeError(ErrorCode::CorruptData, what + ": " + ok.error().message, ok.error().detail);
+        } catch (const std::exception& e) {
+            return makeError(ErrorCode::CorruptData, what + ".", e.what());
+        }
+        if (document.is_object())
+            document["version"] = version + 1;
+    }
+    return {};
+}
+
+} // namespace detail
+
+} // namespace thespis::core::scenario
