@@ -23,8 +23,8 @@ namespace {
 
 double at(const Mat4& m, int row, int column) { return m[std::size_t(column * 4 + row)]; }
 
-/// Cofactor matrix of the 3×3 part: transforms normals (the inverse transpose up to a positive
-/// factor times the determinant's sign, which the caller normalizes away and handles).
+} // namespace
+
 std::array<double, 9> normalMatrix(const Mat4& m)
 {
     auto a = [&](int r, int c) { return at(m, r, c); };
@@ -36,8 +36,6 @@ std::array<double, 9> normalMatrix(const Mat4& m)
         }
     return n;
 }
-
-} // namespace
 
 Mat4 multiply(const Mat4& a, const Mat4& b)
 {
@@ -409,6 +407,12 @@ std::string nodeName(const tinygltf::Model& model, int index)
         !model.meshes[std::size_t(node.mesh)].name.empty())
         return model.meshes[std::size_t(node.mesh)].name;
     return "node" + std::to_string(index);
+}
+
+Mat4 parentWorld(const NodeTree& tree, int node)
+{
+    const int parent = tree.parent[std::size_t(node)];
+    return parent < 0 ? kIdentity : tree.world[std::size_t(parent)];
 }
 
 } // namespace thespis::core::scene::gltf
