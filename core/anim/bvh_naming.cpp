@@ -278,10 +278,6 @@ constexpr Convention kConventions[] = {
     {"mixamo", kMixamo},
 };
 
-constexpr std::string_view kEssential[] = {
-    "humanoid_root", "l_hip", "r_hip", "l_knee", "r_knee", "l_talocrural", "r_talocrural",
-    "l_shoulder", "r_shoulder", "l_elbow", "r_elbow", "l_radiocarpal", "r_radiocarpal", "skullbase"};
-
 const NameEntry* findEntry(const Convention& convention, std::string_view name)
 {
     for (const NameEntry& entry : convention.entries)
@@ -302,19 +298,25 @@ std::string lower(std::string_view s)
 
 std::span<const Convention> conventions() { return kConventions; }
 
-std::span<const std::string_view> essentialJoints() { return kEssential; }
-
 std::string_view stripNamespace(std::string_view name)
 {
     const auto colon = name.rfind(':');
     return colon == std::string_view::npos || colon + 1 == name.size() ? name : name.substr(colon + 1);
 }
 
+std::string_view hanimJointName(std::string_view name)
+{
+    const std::string_view current = hanim::fromHAnim11(name);
+    return hanim::isJointName(current) ? current : std::string_view();
+}
+
+int minimumKnown(std::size_t nameCount) { return std::max(4, int((nameCount + 3) / 4)); }
+
 Detection detect(std::span<const std::string> names)
 {
     Detection best;
     best.convention = "none";
-    const int minimum = std::max(4, int((names.size() + 3) / 4));
+    const int minimum = minimumKnown(names.size());
 
     for (const Convention& convention : kConventions) {
         int known = 0;
@@ -335,8 +337,7 @@ Detection detect(std::span<const std::string> names)
     int hanimKnown = 0;
     JointMapping hanimMapping;
     for (const std::string& name : names) {
-        const std::string_view current = hanim::fromHAnim11(stripNamespace(name));
-        if (hanim::isJointName(current)) {
+        if (const std::string_view current = hanimJointName(stripNamespace(name)); !current.empty()) {
             ++hanimKnown;
             hanimMapping.emplace(name, std::string(current));
         }
