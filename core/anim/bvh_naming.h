@@ -4,7 +4,8 @@
 // conventions of motion capture files and their tables onto H-Anim 2.0 joint names. Each table
 // lists every joint name the convention uses; names with no sensible H-Anim counterpart (pelvis
 // side bones, twist helpers, end bones) are listed with an empty H-Anim name, so that they count
-// when the convention is detected but keep their own name on import.
+// when the convention is detected but keep their own name on import. The BVH reader's naming
+// decision and its user mapping files (bvh::parseMapping) are here too.
 
 #include <span>
 #include <string>
@@ -53,6 +54,20 @@ struct Detection {
 /// "hanim" convention for files already written with H-Anim 1.1 / 2.0 names. A convention is
 /// only taken when it knows minimumKnown of the file's joints.
 Detection detect(std::span<const std::string> names);
+
+/// The joint names of an imported file, and what the report says about them.
+struct Naming {
+    std::vector<std::string> names; ///< final joint names, in file order
+    ImportReport report;            ///< convention, isBody, unmapped
+};
+
+/// Decides the joint names: the user's table or the detected convention's; a mapped name that
+/// is taken (by an earlier joint, or as the own name of another joint of the file) is refused
+/// and that joint keeps its own name, so names stay unique. Joints map only when the file is a
+/// body; `rotationRange` (per joint, radians: the most it turns away from its first frame) tells
+/// a face clip on a body rig from body motion.
+Naming nameJoints(std::span<const std::string> fileNames, std::span<const double> rotationRange,
+                  const ImportOptions& options);
 
 /// True for joints of a face rig (eyes, jaw, tongue, lips, brows and the MakeHuman face muscle
 /// bones): a clip that moves only such joints is a face clip, not a body motion.
