@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <numbers>
 #include <set>
 
+#include "anim/bvh_text.h"
 #include "anim/hanim.h"
+#include "util/file_io.h"
 
 // The H-Anim name of each joint is chosen by what the joint moves, not only by where it sits:
 // BVH joint J's rotation turns the bone from J to its children, which is what H-Anim joint J
@@ -16,7 +19,8 @@
 // thoracic joint nearest to where it sits. Facial joints (eyes, jaw, tongue) keep their names:
 // their H-Anim names are beyond LOA 2, which the rest of the engine knows.
 
-namespace thespis::core::anim::bvh::naming {
+namespace thespis::core::anim::bvh {
+namespace naming {
 namespace {
 
 // CMU as converted by cgspeed for MotionBuilder (most CMU BVH files in circulation).
@@ -278,10 +282,6 @@ constexpr Convention kConventions[] = {
     {"mixamo", kMixamo},
 };
 
-constexpr std::string_view kEssential[] = {
-    "humanoid_root", "l_hip", "r_hip", "l_knee", "r_knee", "l_talocrural", "r_talocrural",
-    "l_shoulder", "r_shoulder", "l_elbow", "r_elbow", "l_radiocarpal", "r_radiocarpal", "skullbase"};
-
 const NameEntry* findEntry(const Convention& convention, std::string_view name)
 {
     for (const NameEntry& entry : convention.entries)
@@ -289,6 +289,10 @@ const NameEntry* findEntry(const Convention& convention, std::string_view name)
             return &entry;
     return nullptr;
 }
+
+// A joint moves when some frame turns it more than this away from its first frame: well above
+// the rounding noise of 6-decimal files (1e-6°), well below any deliberate motion.
+constexpr double kMovingAngle = 0.5 * std::numbers::pi / 180.0;
 
 std::string lower(std::string_view s)
 {
@@ -298,11 +302,20 @@ std::string lower(std::string_view s)
     return out;
 }
 
+bool reachesBody(const std::set<std::string, std::less<>>& mapped)
+{
+    auto all = [&](std::initializer_list<std::string_view> names) {
+        return std::all_of(names.begin(), names.end(), [&](std::string_view n) { return mapped.count(n) > 0; });
+    };
+    // The root plus both legs or both arms: whole bodies, and upper- or lower-body captures.
+    return all({"humanoid_root"})
+           && (all({"l_hip", "r_hip", "l_knee", "r_knee", "l_talocrural", "r_talocrural"})
+               || all({"l_shoulder", "r_shoulder", "l_elbow", "r_elbow", "l_radiocarpal", "r_radiocarpal"}));
+}
+
 } // namespace
 
 std::span<const Convention> conventions() { return kConventions; }
-
-std::span<const std::string_view> essentialJoints() { return kEssential; }
 
 std::string_view stripNamespace(std::string_view name)
 {
@@ -310,11 +323,19 @@ std::string_view stripNamespace(std::string_view name)
     return colon == std::string_view::npos || colon + 1 == name.size() ? name : name.substr(colon + 1);
 }
 
+std::string_view hanimJointName(std::string_view name)
+{
+    const std::string_view current = hanim::fromHAnim11(name);
+    return hanim::isJointName(current) ? current : std::string_view();
+}
+
+int minimumKnown(std::size_t nameCount) { return std::max(4, int((nameCount + 3) / 4)); }
+
 Detection detect(std::span<const std::string> names)
 {
     Detection best;
     best.convention = "none";
-    const int minimum = std::max(4, int((names.size() + 3) / 4));
+    const int minimum = minimumKnown(names.size());
 
     for (const Convention& convention : kConventions) {
         int known = 0;
@@ -335,8 +356,7 @@ Detection detect(std::span<const std::string> names)
     int hanimKnown = 0;
     JointMapping hanimMapping;
     for (const std::string& name : names) {
-        const std::string_view current = hanim::fromHAnim11(stripNamespace(name));
-        if (hanim::isJointName(current)) {
+        if (const std::string_view current = hanimJointName(stripNamespace(name)); !current.empty()) {
             ++hanimKnown;
             hanimMapping.emplace(name, std::string(current));
         }
@@ -361,4 +381,114 @@ bool isFacialName(std::string_view name)
                        [&](std::string_view stem) { return s.find(stem) != std::string::npos; });
 }
 
-} // namespace thespis::core::anim::bvh::naming
+Naming nameJoints(std::span<const std::string> fileNames, std::span<const double> rotationRange,
+                  const ImportOptions& options)
+{
+    Naming result;
+
+    JointMapping table;
+    bool userTable = false;
+    if (options.mapping) {
+        table = *options.mapping;
+        userTable = true;
+        result.report.convention = "user";
+    } else {
+        Detection detection = detect(fileNames);
+        result.report.convention = detection.convention;
+        table = std::move(detection.mapping);
+    }
+
+    std::set<std::string, std::less<>> fileNameSet(fileNames.begin(), fileNames.end());
+    std::set<std::string, std::less<>> used;
+    std::vector<std::string> candidate(fileNames.size());
+    for (std::size_t j = 0; j < fileNames.size(); ++j) {
+        auto it = table.find(fileNames[j]);
+        if (it == table.end() && userTable)
+            it = table.find(std::string(stripNamespace(fileNames[j])));
+        if (it == table.end() || it->second.empty())
+            continue;
+        const std::string& target = it->second;
+        if (used.count(target) || (target != fileNames[j] && fileNameSet.count(target)))
+            continue;
+        used.insert(target);
+        candidate[j] = target;
+    }
+
+    // A face clip: only facial joints move (MakeHuman's face pose units sit on a full body rig
+    // whose body joints stay still). It imports with its own names, as any non-body file.
+    bool faceMoves = false, bodyMoves = false;
+    for (std::size_t j = 0; j < fileNames.size(); ++j) {
+        if (rotationRange[j] <= kMovingAngle)
+            continue;
+        (isFacialName(fileNames[j]) ? faceMoves : bodyMoves) = true;
+    }
+    const bool faceClip = faceMoves && !bodyMoves;
+
+    const bool body = !faceClip && reachesBody(used);
+    const bool rename = options.mapToHAnim && (userTable || body);
+    result.report.isBody = body && rename;
+    for (std::size_t j = 0; j < fileNames.size(); ++j) {
+        if (rename && !candidate[j].empty()) {
+            result.names.push_back(candidate[j]);
+        } else {
+            result.names.push_back(fileNames[j]);
+            result.report.unmapped.push_back(fileNames[j]);
+        }
+    }
+    return result;
+}
+
+} // namespace naming
+
+Result<JointMapping> parseMapping(std::string_view text)
+{
+    JointMapping mapping;
+    std::map<std::string, int> sourceLine, targetLine;
+    std::map<std::string, std::string> targetSource;
+    Scanner scanner(text);
+    std::string_view line;
+    int number = 0;
+    while (scanner.nextLine(line, number)) {
+        if (const auto hash = line.find('#'); hash != std::string_view::npos)
+            line = line.substr(0, hash);
+        std::vector<std::string_view> words;
+        std::size_t pos = 0;
+        for (std::string_view word = nextWord(line, pos); !word.empty(); word = nextWord(line, pos))
+            words.push_back(word);
+        if (words.empty())
+            continue;
+        // "file_joint hanim_joint", also written "file_joint = hanim_joint" or "… -> …".
+        if (words.size() == 3 && (words[1] == "=" || words[1] == "->"))
+            words.erase(words.begin() + 1);
+        if (words.size() != 2)
+            return corrupt(number, "expected 'file_joint_name hanim_joint_name', found " + quote(line));
+        const std::string source(words[0]);
+        const std::string target(hanim::fromHAnim11(words[1]));
+        if (!hanim::isJointName(target))
+            return corrupt(number, quote(words[1]) + " is not an H-Anim 2.0 joint name (e.g. l_hip, vl5, skullbase)");
+        if (const auto it = sourceLine.find(source); it != sourceLine.end())
+            return corrupt(number, "joint " + quote(source) + " is mapped twice (first on line "
+                                       + std::to_string(it->second) + ")");
+        if (const auto it = targetLine.find(target); it != targetLine.end())
+            return corrupt(number, quote(target) + " is already the target of " + quote(targetSource[target])
+                                       + " (line " + std::to_string(it->second) + ")");
+        sourceLine.emplace(source, number);
+        targetLine.emplace(target, number);
+        targetSource.emplace(target, source);
+        mapping.emplace(source, target);
+    }
+    return mapping;
+}
+
+Result<JointMapping> loadMapping(const std::filesystem::path& path)
+{
+    auto text = readTextFile(path);
+    if (!text)
+        return text.error();
+    auto mapping = parseMapping(*text);
+    if (!mapping)
+        return inFile(path, mapping.error());
+    return mapping;
+}
+
+} // namespace thespis::core::anim::bvh

@@ -31,6 +31,8 @@ struct QuatT {
     friend bool operator==(const QuatT&, const QuatT&) = default;
 };
 
+template <class T> inline T dot(const Vec3T<T>& a, const Vec3T<T>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
 using Vec3 = Vec3T<float>;
 using Quat = QuatT<float>;
 using Vec3d = Vec3T<double>;

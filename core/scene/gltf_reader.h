@@ -1,10 +1,11 @@
 #pragma once
-// Private to core/scene's glTF importers (gltf_mesh.cpp, gltf_character.cpp): one reading of a
-// glTF file that loadGltfMesh and loadGltfCharacter share. It opens the file (refusing the
-// extensions that change geometry), reads accessors with every bound checked, places the nodes
-// at rest and builds the rest-pose mesh (see gltf_mesh.h) together with the per-vertex data a
-// character needs: skin joints and weights, texture coordinates, and where each segment came
-// from. Not installed for other parts of core: everything here speaks tinygltf.
+// Private to core/scene's glTF importers (gltf_mesh.cpp, gltf_character.cpp, gltf_animation.cpp):
+// one reading of a glTF file that loadGltfMesh and loadGltfCharacter share. It opens the file
+// (refusing the extensions that change geometry), reads accessors with every bound checked,
+// places the nodes at rest (gltf_reader.cpp) and builds the rest-pose mesh (see gltf_mesh.h)
+// together with the per-vertex data a character needs: skin joints and weights, texture
+// coordinates, and where each segment came from (gltf_mesh.cpp). Not installed for other parts
+// of core: everything here speaks tinygltf.
 
 #include <array>
 #include <filesystem>
@@ -32,6 +33,9 @@ Vec3d transformPoint(const Mat4& m, Vec3d p);
 /// The 3×3 part applied to a direction (no translation).
 Vec3d transformVector(const Mat4& m, Vec3d v);
 double determinant3(const Mat4& m);
+/// Cofactor matrix of the 3×3 part, row-major: transforms normals (the inverse transpose up to a
+/// positive factor times the determinant's sign, which the caller normalizes away and handles).
+std::array<double, 9> normalMatrix(const Mat4& m);
 /// Inverse of an affine matrix (last row 0 0 0 1); nullopt when singular.
 std::optional<Mat4> invertAffine(const Mat4& m);
 /// A node's own transform: its matrix, or translation · rotation · scale.
@@ -97,6 +101,9 @@ Result<NodeTree> nodeTree(const tinygltf::Model& model, const AccessorReader& re
 
 /// A node's name, else its mesh's name, else "node<index>".
 std::string nodeName(const tinygltf::Model& model, int node);
+
+/// The rest world transform of a node's parent (identity for a scene root).
+Mat4 parentWorld(const NodeTree& tree, int node);
 
 // ---- the rest-pose mesh ------------------------------------------------------------------------
 
