@@ -3,6 +3,7 @@
 // legend; and the colours taken from the palette.
 
 #include "widgets/curve_view.h"
+#include "widgets/color_mix.h"
 
 #include <QFontMetricsF>
 #include <QPainter>
@@ -15,18 +16,6 @@ namespace thespis::widgets {
 namespace {
 
 using M = CurveMetrics;
-
-QColor mix(const QColor& a, const QColor& b, qreal t)
-{
-    return QColor::fromRgbF(float(a.redF() + (b.redF() - a.redF()) * t), float(a.greenF() + (b.greenF() - a.greenF()) * t),
-                            float(a.blueF() + (b.blueF() - a.blueF()) * t), float(a.alphaF() + (b.alphaF() - a.alphaF()) * t));
-}
-
-QColor withAlpha(QColor color, int alpha)
-{
-    color.setAlpha(alpha);
-    return color;
-}
 
 int decimalsFor(double step)
 {

@@ -3,6 +3,7 @@
 // band, playhead), the track header column and the ruler; and the colours taken from the palette.
 
 #include "widgets/timeline_view.h"
+#include "widgets/color_mix.h"
 
 #include <QLinearGradient>
 #include <QPainter>
@@ -19,18 +20,6 @@ using M = TimelineMetrics;
 
 constexpr int kMinSmoothClipWidth = 80; // narrower clips: fade ramps unshaded, lines aliased
 constexpr int kOpenFadeWidth = 90;      // an open-ended clip fades out over this many pixels
-
-QColor mix(const QColor& a, const QColor& b, double t)
-{
-    return QColor::fromRgbF(float(a.redF() + (b.redF() - a.redF()) * t), float(a.greenF() + (b.greenF() - a.greenF()) * t),
-                            float(a.blueF() + (b.blueF() - a.blueF()) * t), float(a.alphaF() + (b.alphaF() - a.alphaF()) * t));
-}
-
-QColor withAlpha(QColor color, int alpha)
-{
-    color.setAlpha(alpha);
-    return color;
-}
 
 const char* flagLetter(TimelineTrackFlag flag)
 {

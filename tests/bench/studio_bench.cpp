@@ -99,22 +99,31 @@ core::Result<core::scenario::Scenario> scenarioWithActions(int actionCount)
     return scenario;
 }
 
-void repaintTimeline(benchmark::State& state, double pixelsPerSecond)
+// A document of scenarioWithActions(state.range(0)); null (the benchmark skipped) when it fails.
+std::unique_ptr<editor::Document> documentWithActions(benchmark::State& state)
 {
     application();
     auto scenario = scenarioWithActions(int(state.range(0)));
     if (!scenario) {
         state.SkipWithError(scenario.error().message.c_str());
-        return;
+        return nullptr;
     }
     auto document = editor::Document::fromScenario(std::move(*scenario), QStringLiteral(THESPIS_RESOURCES));
     if (!document) {
         state.SkipWithError(document.error().message.c_str());
-        return;
+        return nullptr;
     }
+    return std::move(document).value();
+}
+
+void repaintTimeline(benchmark::State& state, double pixelsPerSecond)
+{
+    auto document = documentWithActions(state);
+    if (!document)
+        return;
     editor::TimelinePanel panel;
     panel.resize(1200, 400);
-    panel.setDocument(document->get());
+    panel.setDocument(document.get());
     widgets::TimelineView* view = panel.view();
     panel.show(); // offscreen: lays the view out at its size
     QApplication::processEvents();
@@ -241,18 +250,10 @@ BENCHMARK(ScrubToFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void DragStep(benchmark::State& state)
 {
-    application();
-    auto scenario = scenarioWithActions(int(state.range(0)));
-    if (!scenario) {
-        state.SkipWithError(scenario.error().message.c_str());
+    auto document = documentWithActions(state);
+    if (!document)
         return;
-    }
-    auto document = editor::Document::fromScenario(std::move(*scenario), QStringLiteral(THESPIS_RESOURCES));
-    if (!document) {
-        state.SkipWithError(document.error().message.c_str());
-        return;
-    }
-    editor::Document& edited = **document;
+    editor::Document& edited = *document;
     auto scene = core::render::ScenarioScene::create(edited.scenario(), edited.assets());
     if (!scene) {
         state.SkipWithError(scene.error().message.c_str());
