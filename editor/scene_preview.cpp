@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "editor/document.h"
+#include "editor/job_runner.h"
 #include "editor/qt_conversions.h"
 #include "render/gl_context.h"
 #include "render/picking.h"
@@ -33,6 +34,7 @@ ScenePreview::ScenePreview(widgets::OsgViewport* viewport, QObject* parent) : QO
 
 ScenePreview::~ScenePreview()
 {
+    m_lightJob.reset(); // cancels a projection before the scene goes
     // The viewport may outlive the scene: it must not draw nodes that are gone.
     if (m_viewport)
         m_viewport->setSceneData(nullptr);
@@ -47,16 +49,21 @@ core::Result<void> ScenePreview::build(const Document* document, bool frameCamer
                                        std::shared_ptr<core::runtime::Stage> stage)
 {
     m_viewport->setSceneData(nullptr);
+    m_lightJob.reset();
+    m_lightProblem.clear();
     m_scene.reset();
     if (!document)
         return {};
     core::render::ScenarioSceneOptions options;
     options.stage = std::move(stage);
+    options.projectProbe = false; // projectLight() does it off the GUI thread
     auto scene = core::render::ScenarioScene::create(document->scenario(), document->assets(), options);
     if (!scene)
         return scene.error();
     m_scene = std::move(scene).value();
     m_bodySources = bodySources(document->scenario());
+    m_lighting = document->scenario().lighting;
+    projectLight(*document);
     m_scene->scene().setShading(m_shading);
     m_scene->scene().setGroundVisible(m_groundVisible);
     const auto& background = m_scene->scene().backgroundColor();
@@ -89,6 +96,7 @@ core::Result<void> ScenePreview::updateDocument(const Document* document, std::s
     // as it is (it also ends a gesture preview).
     const bool sameStage = !stage || (m_scene && m_scene->sharedStage() == stage);
     if (m_scene && document && sameStage && bodySources(document->scenario()) == m_bodySources
+        && document->scenario().lighting == m_lighting
         && m_scene->setRuntime(document->runtime())) {
         m_viewport->update();
         return {};
@@ -139,7 +147,50 @@ QStringList ScenePreview::warnings() const
     if (m_scene)
         for (const std::string& warning : m_scene->warnings())
             list << QString::fromStdString(warning);
+    if (!m_lightProblem.isEmpty())
+        list << m_lightProblem;
     return list;
+}
+
+bool ScenePreview::isLightLoading() const
+{
+    return m_lightJob && m_lightJob->isRunning();
+}
+
+void ScenePreview::projectLight(const Document& document)
+{
+    auto projection = core::render::probeProjectionFor(document.scenario(), document.assets(),
+                                                       core::render::ScenarioSceneOptions{}.lightOrder);
+    if (!projection) {
+        m_lightProblem = fromUtf8(projection.error().message);
+        return;
+    }
+    if (!*projection)
+        return; // no probe: the default light
+    m_lightJob = std::make_unique<JobRunner>();
+    connect(m_lightJob.get(), &JobRunner::finished, this, &ScenePreview::onLightProjected);
+    if (auto started = m_lightJob->start(std::make_unique<core::lighting::ProbeProjectionJob>(std::move(**projection)));
+        !started)
+        onLightProjected(started);
+}
+
+void ScenePreview::onLightProjected(const core::Result<void>& result)
+{
+    if (!result) {
+        if (result.error().code == core::ErrorCode::Cancelled)
+            return;
+        m_lightProblem = tr("The light probe could not be used (the default light shows instead): %1")
+                             .arg(fromUtf8(result.error().message));
+        emit lightLoaded(false);
+        return;
+    }
+    auto* job = m_lightJob->jobAs<core::lighting::ProbeProjectionJob>();
+    if (m_scene && job && job->probe) {
+        m_scene->setProbeLight(*job->probe, job->light);
+        if (m_viewport)
+            m_viewport->update();
+    }
+    emit lightLoaded(true);
 }
 
 // ---- Gesture preview (GesticonPanel) ----

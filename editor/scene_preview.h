@@ -25,6 +25,8 @@ class OsgViewport;
 
 namespace thespis::editor {
 
+class JobRunner;
+
 class Document;
 
 class ScenePreview : public QObject {
@@ -72,8 +74,12 @@ public:
     int highlightedCharacter() const { return m_highlightCharacter; }
     const std::vector<int>& highlightedSegments() const { return m_highlightSegments; }
 
-    /// Problems that did not stop loading (unmapped joints of a model, …).
+    /// Problems that did not stop loading (unmapped joints of a model, a probe that cannot be
+    /// read, …).
     QStringList warnings() const;
+    /// The scenario's light probe is being read and projected (off the GUI thread); until then
+    /// the scene shows the default light.
+    bool isLightLoading() const;
     /// The scene shown, or null.
     core::render::ScenarioScene* scene() const { return m_scene.get(); }
 
@@ -82,6 +88,8 @@ signals:
     void segmentClicked(int character, int segment, Qt::KeyboardModifiers modifiers);
     /// The viewport was clicked where no character is.
     void emptySpaceClicked(Qt::KeyboardModifiers modifiers);
+    /// The probe's light reached the scene, or could not (see warnings()).
+    void lightLoaded(bool ok);
 
 private:
     // What each character's body was built from (ScenarioScene::create): an edit that changes
@@ -97,11 +105,17 @@ private:
     // Builds the scene of `document`; frameCamera: also aim the home view (and go there).
     core::Result<void> build(const Document* document, bool frameCamera, std::shared_ptr<core::runtime::Stage> stage);
     void onViewportClicked(const QVector3D& origin, const QVector3D& direction, Qt::KeyboardModifiers modifiers);
+    // Starts projecting the document's probe for the scene just built (a job off the GUI thread).
+    void projectLight(const Document& document);
+    void onLightProjected(const core::Result<void>& result);
     void applyHighlights();
 
     QPointer<widgets::OsgViewport> m_viewport; // may go first when a window closes
     std::unique_ptr<core::render::ScenarioScene> m_scene;
     std::vector<BodySource> m_bodySources;
+    core::scenario::LightingSpec m_lighting; // the scene's; another one rebuilds it
+    std::unique_ptr<JobRunner> m_lightJob;   // the probe's projection; replaced (so cancelled) by a rebuild
+    QString m_lightProblem;
     core::render::Shading m_shading = core::render::Shading::Prt;
     bool m_groundVisible = true;
     int m_highlightCharacter = -1;

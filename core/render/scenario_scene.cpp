@@ -57,24 +57,17 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
     }
     self->m_scene = std::make_unique<RenderScene>(options.skinningThreads);
 
-    if (!scenario.lighting.probe.empty()) {
-        auto layout = lighting::parseProbeLayout(scenario.lighting.layout);
-        if (!layout)
-            return makeError(layout.error().code, "lighting.layout: " + layout.error().message);
-        lighting::ProbeProjectionJob projection;
-        projection.path = assets.path(scenario.lighting.probe);
-        projection.layout = *layout;
-        projection.order = options.lightOrder;
+    self->m_lighting = scenario.lighting;
+    self->m_probeBackground = options.probeBackground;
+    auto projection = probeProjectionFor(scenario, assets, options.lightOrder);
+    if (!projection)
+        return projection.error();
+    if (*projection && options.projectProbe) {
         JobContext context;
-        if (auto projected = projection.run(context); !projected)
+        if (auto projected = (*projection)->run(context); !projected)
             return makeError(projected.error().code, "lighting.probe: " + projected.error().message,
                              projected.error().detail);
-        const lighting::LightProbe& probe = *projection.probe;
-        const lighting::ShRgb& light = projection.light;
-        const scenario::LightingSpec& spec = scenario.lighting;
-        self->m_scene->setLight(lighting::turnedLight(light, spec.rotation, spec.intensity));
-        if (options.probeBackground)
-            self->m_scene->setBackgroundProbe(probe, 512, spec.rotation, spec.intensity);
+        self->setProbeLight(*(*projection)->probe, (*projection)->light);
     }
 
     for (std::size_t i = 0; i < scenario.characters.size(); ++i) {
@@ -163,6 +156,30 @@ Result<void> ScenarioScene::fitsPerformers(const scenario::ScenarioRuntime& next
             return makeError(ErrorCode::InvalidArgument,
                              "Character \"" + next.characters[i].name + "\" changed its skeleton: the scene must be rebuilt.");
     return {};
+}
+
+Result<std::optional<lighting::ProbeProjectionJob>> probeProjectionFor(const scenario::Scenario& scenario,
+                                                                        const scenario::Assets& assets,
+                                                                        int lightOrder)
+{
+    if (scenario.lighting.probe.empty())
+        return std::optional<lighting::ProbeProjectionJob>();
+    auto layout = lighting::parseProbeLayout(scenario.lighting.layout);
+    if (!layout)
+        return makeError(layout.error().code, "lighting.layout: " + layout.error().message);
+    lighting::ProbeProjectionJob projection;
+    projection.path = assets.path(scenario.lighting.probe);
+    projection.layout = *layout;
+    projection.order = lightOrder;
+    return std::optional<lighting::ProbeProjectionJob>(std::move(projection));
+}
+
+void ScenarioScene::setProbeLight(const lighting::LightProbe& probe, const lighting::ShRgb& light)
+{
+    const scenario::LightingSpec& spec = m_lighting;
+    m_scene->setLight(lighting::turnedLight(light, spec.rotation, spec.intensity));
+    if (m_probeBackground)
+        m_scene->setBackgroundProbe(probe, 512, spec.rotation, spec.intensity);
 }
 
 void ScenarioScene::setTime(double seconds)

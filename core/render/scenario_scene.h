@@ -10,10 +10,12 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "anim/retarget.h"
+#include "lighting/probe_projection_job.h"
 #include "lighting/transfer_bake.h"
 #include "render/render_scene.h"
 #include "runtime/stage.h"
@@ -39,7 +41,17 @@ struct ScenarioSceneOptions {
     /// Play this stage (of the scenario's runtime: the studio's session stage) instead of one
     /// built for the scene.
     std::shared_ptr<runtime::Stage> stage;
+    /// Project the scenario's probe while making the scene. When false the scene starts with
+    /// the default light and the caller projects the probe (probeProjectionFor, e.g. off the
+    /// GUI thread) and hands the result to setProbeLight().
+    bool projectProbe = true;
 };
+
+/// The job that projects the scenario's light probe for its scene, or nothing when it has no
+/// probe. Errors: an unknown layout (naming lighting.layout).
+Result<std::optional<lighting::ProbeProjectionJob>> probeProjectionFor(const scenario::Scenario& scenario,
+                                                                        const scenario::Assets& assets,
+                                                                        int lightOrder);
 
 class ScenarioScene {
 public:
@@ -65,6 +77,10 @@ public:
     /// error says so and the scene must be rebuilt.
     Result<void> setRuntime(scenario::ScenarioRuntime runtime);
 
+
+    /// Lights the scene with the scenario's probe as projected (turned and scaled as the
+    /// scenario's lighting says; drawn behind the characters with probeBackground).
+    void setProbeLight(const lighting::LightProbe& probe, const lighting::ShRgb& light);
 
     /// Evaluates the stage at `seconds` and poses every character (no allocation).
     void setTime(double seconds);
@@ -98,6 +114,8 @@ private:
     std::unique_ptr<RenderScene> m_scene;
     std::vector<Performer> m_performers;
     std::vector<std::string> m_warnings;
+    scenario::LightingSpec m_lighting;
+    bool m_probeBackground = false;
     double m_time = 0;
 };
 

@@ -40,6 +40,7 @@
 #include "editor/document.h"
 #include "editor/import_motion_dialog.h"
 #include "editor/lighting_dialog.h"
+#include "editor/scene_preview.h"
 #include "editor/messages_panel.h"
 #include "editor/properties_panel.h"
 #include "editor/scenario_tree_model.h"
@@ -278,6 +279,11 @@ void BringContentTest::fromNothingToARenderedScenarioAndBack()
     content->lightingAction()->trigger();
     QTRY_COMPARE(document->scenario().lighting.rotation, 120.0);
     QVERIFY(document->scenario().lighting.probe.ends_with("venice_sunset_1k.hdr"));
+    // The 3D view projects the probe off the GUI thread, then lights the scene with it.
+    if (editor::ScenePreview* preview = m_window->scenePreview()) {
+        QTRY_VERIFY_WITH_TIMEOUT(!preview->isLightLoading(), 60000);
+        QVERIFY2(preview->warnings().filter(QStringLiteral("probe")).isEmpty(), qPrintable(preview->warnings().join(u'\n')));
+    }
     m_window->clock()->seek(1.0);
     QApplication::processEvents();
     saveScreenshot(m_window.get(), QStringLiteral("content_6_built.png"));
