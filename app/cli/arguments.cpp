@@ -86,7 +86,7 @@ ParseOutcome parseArguments(const CommandSpec& spec, std::span<const std::string
         outcome.error = "missing " + spec.positionals[parsed.positionals.size()];
         return outcome;
     }
-    if (parsed.positionals.size() > spec.positionals.size()) {
+    if (parsed.positionals.size() > spec.positionals.size() && !spec.repeatsLast) {
         outcome.error = "unexpected argument '" + parsed.positionals[spec.positionals.size()] + "'";
         return outcome;
     }
@@ -103,6 +103,8 @@ std::string usageLine(const CommandSpec& spec)
     std::string line = "Usage: thespis-cli " + spec.name;
     for (const std::string& positional : spec.positionals)
         line += " " + positional;
+    if (spec.repeatsLast)
+        line += "...";
     for (const OptionSpec& option : spec.options)
         if (option.required)
             line += " --" + option.name + (option.valueName.empty() ? "" : " " + option.valueName);

@@ -24,6 +24,7 @@ struct CommandSpec {
     std::string name;                    ///< e.g. "bake-motion"
     std::string summary;                 ///< one line for the command list
     std::vector<std::string> positionals;///< names shown in usage, all required (e.g. "SCENARIO")
+    bool repeatsLast = false;            ///< the last positional takes one or more values ("CLIP...")
     std::vector<OptionSpec> options;
     std::string description;             ///< paragraphs shown by --help after the usage line
 };

@@ -15,6 +15,7 @@ const std::vector<Command>& commands()
         {bakeMotionSpec(), &runBakeMotion},
         {bakeSpec(), &runBake},
         {renderSpec(), &runRender},
+        {trainPcaSpec(), &runTrainPca},
 #ifdef THESPIS_WITH_PYTHON
         {runSpec(), &runRun},
 #endif

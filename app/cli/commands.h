@@ -30,6 +30,8 @@ CommandSpec bakeSpec();
 int runBake(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec renderSpec();
 int runRender(const CommandSpec& spec, const ParsedArguments& arguments);
+CommandSpec trainPcaSpec();
+int runTrainPca(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec infoSpec();
 int runInfo(const CommandSpec& spec, const ParsedArguments& arguments);
 #ifdef THESPIS_WITH_PYTHON

@@ -25,6 +25,7 @@
 #include <cmath>
 
 #include "lighting/transfer_bake.h"
+#include "util/byte_io.h"
 #include "util/crc32.h"
 #include "util/file_io.h"
 
@@ -44,99 +45,11 @@ constexpr std::uint32_t kFirstWithGeometryHash = 2;
 constexpr std::size_t kSegmentFixedBytes = 4 + 4 + 4 + 8 + 1 + 1; // everything but the name
 constexpr std::size_t kChecksumBytes = 4;
 
-class ByteWriter {
-public:
-    void bytes(const void* data, std::size_t size) { m_out.append(static_cast<const char*>(data), size); }
-    void u8(std::uint8_t value) { m_out.push_back(char(value)); }
-    void u32(std::uint32_t value)
-    {
-        for (int i = 0; i < 4; ++i)
-            m_out.push_back(char((value >> (8 * i)) & 0xffu));
-    }
-    void u64(std::uint64_t value)
-    {
-        for (int i = 0; i < 8; ++i)
-            m_out.push_back(char((value >> (8 * i)) & 0xffu));
-    }
-    void f32(float value) { u32(std::bit_cast<std::uint32_t>(value)); }
-    std::string& text() { return m_out; }
-
-private:
-    std::string m_out;
-};
-
-/// Reads fields in order; every read names its field, so a short file says where it ends.
-class ByteReader {
-public:
-    ByteReader(std::string_view data, const std::filesystem::path& path) : m_data(data), m_path(path) {}
-
-    std::size_t left() const { return m_data.size() - m_position; }
-
-    Error corrupt(const std::string& what) const
-    {
-        return makeError(ErrorCode::CorruptData, "The bake file " + m_path.string() + " is damaged: " + what + ".",
-                         "at byte " + std::to_string(m_position));
-    }
-    Error truncated(const std::string& field) const { return corrupt("it ends inside the " + field); }
-
-    bool take(std::size_t size, const std::string& field, std::string_view& out, Error& error)
-    {
-        if (left() < size) {
-            error = truncated(field);
-            return false;
-        }
-        out = m_data.substr(m_position, size);
-        m_position += size;
-        return true;
-    }
-    bool u8(const std::string& field, std::uint8_t& value, Error& error)
-    {
-        std::string_view raw;
-        if (!take(1, field, raw, error))
-            return false;
-        value = std::uint8_t(raw[0]);
-        return true;
-    }
-    bool u32(const std::string& field, std::uint32_t& value, Error& error)
-    {
-        std::string_view raw;
-        if (!take(4, field, raw, error))
-            return false;
-        value = 0;
-        for (int i = 0; i < 4; ++i)
-            value |= std::uint32_t(std::uint8_t(raw[i])) << (8 * i);
-        return true;
-    }
-    bool u64(const std::string& field, std::uint64_t& value, Error& error)
-    {
-        std::string_view raw;
-        if (!take(8, field, raw, error))
-            return false;
-        value = 0;
-        for (int i = 0; i < 8; ++i)
-            value |= std::uint64_t(std::uint8_t(raw[i])) << (8 * i);
-        return true;
-    }
-    bool f32(const std::string& field, float& value, Error& error)
-    {
-        std::uint32_t bits = 0;
-        if (!u32(field, bits, error))
-            return false;
-        value = std::bit_cast<float>(bits);
-        return true;
-    }
-
-private:
-    std::string_view m_data;
-    const std::filesystem::path& m_path;
-    std::size_t m_position = 0;
-};
-
 } // namespace
 
 Result<TransferBake> parseBakeBytes(std::string_view data, const std::filesystem::path& path)
 {
-    ByteReader in(data, path);
+    ByteReader in(data, path, "bake file");
     Error error;
     std::string_view magic;
     if (!in.take(sizeof kMagic, "magic", magic, error) || magic != std::string_view(kMagic, sizeof kMagic))
@@ -261,7 +174,7 @@ Result<void> writeBakeFile(const std::filesystem::path& path, const TransferBake
                          "Cannot write " + path.string() + ": the bake holds a value that is not a finite number.");
 
     ByteWriter out;
-    out.text().reserve(64 + bake.segments.size() * 48 + bake.transfer.size() * 4);
+    out.data().reserve(64 + bake.segments.size() * 48 + bake.transfer.size() * 4);
     out.bytes(kMagic, sizeof kMagic);
     out.u32(kFormatVersion);
     out.u32(std::uint32_t(bake.order));
@@ -284,8 +197,8 @@ Result<void> writeBakeFile(const std::filesystem::path& path, const TransferBake
     out.u64(bake.transfer.size());
     for (float value : bake.transfer)
         out.f32(value);
-    out.u32(crc32(out.text()));
-    return writeFileAtomically(path, out.text());
+    out.u32(crc32(out.data()));
+    return writeFileAtomically(path, out.data());
 }
 
 Result<TransferBake> readBakeFile(const std::filesystem::path& path)

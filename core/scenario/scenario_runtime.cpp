@@ -82,19 +82,6 @@ struct SourceClip {
 
 namespace {
 
-// The soles of the built-in humanoid at a level (scene/foot_soles.h), made once.
-const std::vector<anim::BodyMeasure::SolePoint>& humanoidSoles(anim::hanim::Level level)
-{
-    static const auto soles = [] {
-        std::map<anim::hanim::Level, std::vector<anim::BodyMeasure::SolePoint>> all;
-        for (const anim::hanim::Level l : {anim::hanim::Level::Loa1, anim::hanim::Level::Loa2, anim::hanim::Level::Subset25})
-            if (auto humanoid = scene::makeDefaultHumanoid({.level = l}))
-                all[l] = scene::footSoles(*humanoid);
-        return all;
-    }();
-    return soles.at(level);
-}
-
 // Builds the runtime of a scenario and collects every problem it meets (buildRuntime fails with
 // the first, validateScenario lists them all). A part that fails (a clip, an action, a
 // character's skeleton) is left out, so that one mistake is reported once and not again by
@@ -250,7 +237,7 @@ private:
                                           std::pair{"hanim-25", anim::hanim::Level::Subset25}})
             if (spec == name) {
                 if (character.model.empty()) // the built-in humanoid: motion keeps its own feet down
-                    m_soles = humanoidSoles(level);
+                    m_soles = scene::defaultHumanoidSoles(level);
                 return anim::hanim::skeleton(level);
             }
         if (spec == "model") {

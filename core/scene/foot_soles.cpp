@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <set>
+
+#include "scene/default_humanoid.h"
 
 namespace thespis::core::scene {
 
@@ -59,6 +62,18 @@ std::vector<anim::BodyMeasure::SolePoint> footSoles(const Character& character)
         }
     }
     return soles;
+}
+
+const std::vector<anim::BodyMeasure::SolePoint>& defaultHumanoidSoles(anim::hanim::Level level)
+{
+    static const auto soles = [] {
+        std::map<anim::hanim::Level, std::vector<anim::BodyMeasure::SolePoint>> all;
+        for (const anim::hanim::Level l : {anim::hanim::Level::Loa1, anim::hanim::Level::Loa2, anim::hanim::Level::Subset25})
+            if (auto humanoid = makeDefaultHumanoid({.level = l}))
+                all[l] = footSoles(*humanoid);
+        return all;
+    }();
+    return soles.at(level);
 }
 
 } // namespace thespis::core::scene

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "anim/body_measure.h"
+#include "anim/hanim.h"
 #include "scene/character.h"
 
 namespace thespis::core::scene {
@@ -16,5 +17,8 @@ namespace thespis::core::scene {
 /// Sole points of the foot segments (those following an ankle or a joint below it); empty when
 /// the character has no feet.
 std::vector<anim::BodyMeasure::SolePoint> footSoles(const Character& character);
+
+/// The soles of the built-in humanoid (scene/default_humanoid.h) at a level, made once.
+const std::vector<anim::BodyMeasure::SolePoint>& defaultHumanoidSoles(anim::hanim::Level level);
 
 } // namespace thespis::core::scene

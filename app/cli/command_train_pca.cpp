@@ -1,0 +1,114 @@
+// thespis-cli train-pca: runs core's TrainPcaJob (the paper's §4.1 posture PCA of motion capture
+// clips) with a progress bar and prints how much of the postures' variance the leading PCs hold.
+
+#include <cstdio>
+
+#include "cancel.h"
+#include "commands.h"
+#include "exit_codes.h"
+#include "motion/train_pca_job.h"
+#include "progress.h"
+
+namespace thespis::cli {
+
+namespace {
+
+// "walk.bvh" or "77_02.bvh@60": a clip file and, after '@', the frame rate that replaces its
+// header's (CMU's index gives 60 fps for some takes whose headers say 120).
+std::optional<core::scenario::ClipAsset> clipArgument(const std::string& text)
+{
+    core::scenario::ClipAsset asset;
+    const auto at = text.rfind('@');
+    asset.file = text.substr(0, at);
+    asset.name = std::filesystem::path(asset.file).stem().string();
+    if (at != std::string::npos) {
+        const auto rate = parseNumber(std::string_view(text).substr(at + 1));
+        if (!rate || !(*rate > 0))
+            return std::nullopt;
+        asset.frameRateOverride = *rate;
+    }
+    return asset;
+}
+
+} // namespace
+
+CommandSpec trainPcaSpec()
+{
+    CommandSpec spec;
+    spec.name = "train-pca";
+    spec.summary = "Train the posture PCA (whole body and upper body) on motion capture clips.";
+    spec.positionals = {"CLIP"};
+    spec.repeatsLast = true;
+    spec.options = {
+        {"out", "FILE.pca", "the bases file to write; an existing file is replaced atomically", true},
+        {"rate", "N", "postures taken per second of each clip (default 30)"},
+        {"skip", "SECONDS", "left out at each clip's start, e.g. a capture's T-pose and settling (default 0)"},
+        {"quiet", "", "no progress and no summary"},
+    };
+    spec.description =
+        "Each CLIP is a BVH file or a glTF file (its first animation), retargeted onto the H-Anim\n"
+        "25-joint skeleton; CLIP@FPS replaces the file's frame rate (77_02.bvh@60). Postures are\n"
+        "exponential maps of the 25 joints and the root's place over the feet (78 numbers); the\n"
+        "upper body is the 15 joints above the pelvis (45). The summary gives the share of the\n"
+        "variance that 5, 10 and 20 PCs explain.\n"
+        "Exit status: 0 written, 2 bad command line, 3 a clip that cannot be used,\n"
+        "4 the file could not be written, 130 cancelled.";
+    return spec;
+}
+
+int runTrainPca(const CommandSpec& spec, const ParsedArguments& arguments)
+{
+    core::motion::TrainPcaJob job;
+    for (const std::string& text : arguments.positionals) {
+        auto clip = clipArgument(text);
+        if (!clip)
+            return usageError(spec, "'" + text + "': the frame rate after '@' must be a positive number");
+        job.clips.push_back(std::move(*clip));
+    }
+    job.output = *arguments.value("out");
+    const bool quiet = arguments.has("quiet");
+    for (auto [name, target] : {std::pair{"rate", &job.sampleRate}, std::pair{"skip", &job.skip}})
+        if (const auto text = arguments.value(name)) {
+            const auto value = parseNumber(*text);
+            if (!value)
+                return usageError(spec, std::string("--") + name + " must be a number, not '" + *text + "'");
+            *target = *value;
+        }
+    if (auto valid = job.validate(); !valid)
+        return usageError(spec, valid.error().message);
+
+    installInterruptHandlers();
+    std::optional<ProgressReporter> progress;
+    const auto trained = core::runJobWatched(job, std::chrono::milliseconds(50), [&](const core::JobProgress& p) {
+        if (p.stage == core::motion::TrainPcaJob::ReadingStage) {
+            if (!progress)
+                progress.emplace(stderr, "train-pca", "clips", long(p.total), quiet);
+            progress->update(long(p.done));
+        }
+        return !interrupted();
+    });
+    if (!trained) {
+        if (progress)
+            progress->abandon();
+        if (trained.error().code == core::ErrorCode::Cancelled) {
+            std::fprintf(stderr, "thespis-cli train-pca: cancelled; %s was not written.\n", job.output.string().c_str());
+            return ExitCancelled;
+        }
+        printError(spec.name, trained.error());
+        return trained.error().code == core::ErrorCode::IoError ? ExitFailure : ExitInvalidInput;
+    }
+    if (progress)
+        progress->finish();
+    if (!quiet) {
+        std::printf("Trained on %ld postures of %zu clips; wrote %s.\n", job.frameCount, job.clips.size(),
+                    job.output.string().c_str());
+        for (const auto* basis : {&job.bases.whole, &job.bases.upper})
+            std::printf("%s (%d dimensions): 5 PCs explain %.1f %%, 10 PCs %.1f %%, 20 PCs %.1f %% of the variance.\n",
+                        basis == &job.bases.whole ? "Whole body" : "Upper body", basis->dimension(),
+                        100 * basis->explainedVariance(5), 100 * basis->explainedVariance(10),
+                        100 * basis->explainedVariance(20));
+    }
+    return ExitOk;
+}
+
+} // namespace thespis::cli

@@ -1,0 +1,67 @@
+#include "motion/posture_clip.h"
+
+#include <cmath>
+
+#include "anim/clip_retarget.h"
+#include "anim/hanim.h"
+#include "scenario/clip_file.h"
+#include "scene/foot_soles.h"
+
+namespace thespis::core::motion {
+
+const anim::Skeleton& postureSkeleton()
+{
+    return anim::hanim::skeleton(anim::hanim::Level::Subset25);
+}
+
+std::vector<float> PostureClip::postures(PostureSet set, double rate, double skip) const
+{
+    const PostureMap map = *PostureMap::create(postureSkeleton(), set); // every set is on it
+    const std::size_t d = std::size_t(map.layout().size());
+    const anim::TimeDomain domain = frames->domain();
+    const double step = rate > 0 ? 1.0 / rate : 1.0 / frameRate();
+    std::vector<float> out, frame(frames->layout()->floatCount());
+    const double first = domain.start + std::max(0.0, skip);
+    const std::size_t count = first > domain.end ? 0 : std::size_t(std::floor((domain.end - first) / step + 1e-9)) + 1;
+    out.resize(count * d);
+    for (std::size_t i = 0; i < count; ++i) {
+        frames->evaluate(first + double(i) * step, frame);
+        map.toPosture(frame, std::span<float>(out).subspan(i * d, d));
+    }
+    return out;
+}
+
+Result<PostureClip> readPostureClip(const scenario::ClipAsset& asset, const scenario::Assets& assets)
+{
+    auto file = scenario::readClipFile(asset, assets);
+    if (!file)
+        return file.error();
+    anim::ClipRetargetOptions options;
+    options.retarget.sourceUnit = asset.unit > 0 ? asset.unit : file->report.unit;
+    options.fitGround = asset.fitGround;
+    options.retarget.targetSoles = scene::defaultHumanoidSoles(anim::hanim::Level::Subset25);
+    auto retargeted = anim::retargetClip(*file->clip, file->skeleton, postureSkeleton(), options);
+    if (!retargeted)
+        return makeError(retargeted.error().code, asset.file + ": " + retargeted.error().message, retargeted.error().detail);
+
+    PostureClip clip;
+    clip.name = asset.file;
+    clip.frames = retargeted->clip;
+    for (const std::string& joint : PostureLayout::of(PostureSet::WholeBody).joints)
+        if (std::find(retargeted->report.unmatched.begin(), retargeted->report.unmatched.end(), joint) !=
+            retargeted->report.unmatched.end())
+            clip.unmatched.push_back(joint);
+    const std::size_t total = PostureLayout::of(PostureSet::WholeBody).joints.size();
+    if (2 * clip.unmatched.size() > total) {
+        std::string names;
+        for (const std::string& joint : clip.unmatched)
+            names += (names.empty() ? "" : ", ") + joint;
+        return makeError(ErrorCode::InvalidArgument,
+                         asset.file + " moves only " + std::to_string(total - clip.unmatched.size()) + " of the " +
+                             std::to_string(total) + " posture joints; its joints map onto too little of the H-Anim body "
+                             "(not moved: " + names + "). Map its joints in the import dialog, or leave it out.");
+    }
+    return clip;
+}
+
+} // namespace thespis::core::motion

@@ -1,0 +1,38 @@
+#pragma once
+// Motion capture as postures (paper §4.1's database): a clip file (BVH, or an animation of a
+// glTF file; scenario/clip_file.h) read with its options, retargeted onto the H-Anim 25-joint
+// skeleton standing on its floor (anim/clip_retarget.h), and each frame taken as a posture vector
+// (motion/posture.h). Whatever rig the performer wore, its postures land in one space.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "anim/keyframe_clip.h"
+#include "motion/posture.h"
+#include "scenario/asset_resolver.h"
+#include "scenario/scenario.h"
+#include "util/error.h"
+
+namespace thespis::core::motion {
+
+struct PostureClip {
+    std::string name;                                 ///< the file's name
+    std::shared_ptr<const anim::KeyframeClip> frames; ///< on the 25-joint skeleton's layout
+    std::vector<std::string> unmatched;               ///< posture joints the file does not move
+
+    double frameRate() const { return frames->frameRate(); }
+    int frameCount() const { return frames->frameCount(); }
+    /// Every frame as a posture of `set` (frameCount × size floats), or resampled at `rate` frames
+    /// per second when given, from `skip` seconds on.
+    std::vector<float> postures(PostureSet set, double rate = 0, double skip = 0) const;
+};
+
+/// The skeleton postures are measured on: H-Anim's 25 joints (hanim::Level::Subset25).
+const anim::Skeleton& postureSkeleton();
+
+/// Reads `asset.file` from `assets` onto the posture skeleton. Errors name the file: it cannot be
+/// read, or it moves fewer than half of the 25 posture joints (they are listed).
+Result<PostureClip> readPostureClip(const scenario::ClipAsset& asset, const scenario::Assets& assets);
+
+} // namespace thespis::core::motion

@@ -1,0 +1,64 @@
+#include "motion/train_pca_job.h"
+
+#include <cmath>
+
+#include "motion/idle_builder.h"
+#include "motion/posture_clip.h"
+
+namespace thespis::core::motion {
+
+std::string TrainPcaJob::title() const
+{
+    return "The posture PCA of " + std::to_string(clips.size()) + (clips.size() == 1 ? " clip" : " clips");
+}
+
+Result<void> TrainPcaJob::validate() const
+{
+    if (clips.empty())
+        return makeError(ErrorCode::InvalidArgument, "Give at least one clip to train the posture PCA on.");
+    if (!(sampleRate > 0) || !std::isfinite(sampleRate))
+        return makeError(ErrorCode::InvalidArgument, "The sample rate must be a positive number of frames per second.");
+    if (!(skip >= 0) || !std::isfinite(skip))
+        return makeError(ErrorCode::InvalidArgument, "The time skipped at each clip's start must not be negative.");
+    if (output.extension() != ".pca")
+        return makeError(ErrorCode::InvalidArgument, "The output must be a .pca file, not " + output.string() + ".");
+    return {};
+}
+
+Result<void> TrainPcaJob::run(JobContext& context)
+{
+    context.beginStage(ReadingStage, clips.size());
+    std::vector<float> postures;
+    for (std::size_t i = 0; i < clips.size(); ++i) {
+        if (context.stopRequested())
+            return cancelledError(title());
+        auto clip = readPostureClip(clips[i], assets);
+        if (!clip)
+            return clip.error();
+        const std::vector<float> more = clip->postures(PostureSet::WholeBody, sampleRate, skip);
+        postures.insert(postures.end(), more.begin(), more.end());
+        context.setDone(i + 1);
+    }
+    context.beginStage(AnalysingStage);
+    if (context.stopRequested())
+        return cancelledError(title());
+    frameCount = long(postures.size() / std::size_t(PostureLayout::of(PostureSet::WholeBody).size()));
+    auto whole = PostureBasis::train(PostureSet::WholeBody, postures);
+    if (!whole)
+        return whole.error();
+    auto upper = PostureBasis::train(PostureSet::UpperBody, upperBodyOf(postures));
+    if (!upper)
+        return upper.error();
+    bases = {std::move(whole).value(), std::move(upper).value()};
+    if (context.stopRequested())
+        return cancelledError(title());
+    return writePostureBasesFile(output, bases);
+}
+
+void TrainPcaJob::discardOutput()
+{
+    std::error_code ignored;
+    std::filesystem::remove(output, ignored);
+}
+
+} // namespace thespis::core::motion

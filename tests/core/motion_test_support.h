@@ -1,0 +1,25 @@
+#pragma once
+// The CMU clips of ../shared/data/mocap/cmu as postures, for the motion tests.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "motion/posture_clip.h"
+#include "test_support.h"
+
+namespace thespis::test {
+
+/// mocap/cmu/NAME.bvh on the posture skeleton; `rate` replaces the header's frame rate when > 0.
+inline core::motion::PostureClip cmuPostureClip(const std::string& name, double rate = 0)
+{
+    core::scenario::ClipAsset asset;
+    asset.name = name;
+    asset.file = name + ".bvh";
+    asset.frameRateOverride = rate;
+    auto clip = core::motion::readPostureClip(asset, sharedData("mocap/cmu"));
+    EXPECT_TRUE(clip) << (clip ? "" : clip.error().message);
+    return clip ? *clip : core::motion::PostureClip{};
+}
+
+} // namespace thespis::test
