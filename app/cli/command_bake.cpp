@@ -10,14 +10,13 @@
 #include <cstdio>
 #include <optional>
 
-#include "cancel.h"
 #include "commands.h"
 #include "exit_codes.h"
 #include "lighting/probe.h"
 #include "lighting/probe_projection_job.h"
 #include "lighting/transfer_bake.h"
 #include "lighting/transfer_bake_job.h"
-#include "progress.h"
+#include "job_progress.h"
 #include "scenario/scenario_character.h"
 #include "scene/gltf_mesh.h"
 
@@ -202,26 +201,18 @@ int runBake(const CommandSpec& spec, const ParsedArguments& arguments)
         light = *projected;
     }
 
-    installInterruptHandlers();
     lighting::TransferBakeJob job;
     job.mesh = *mesh;
     job.settings = settings;
     job.output = outPath;
-    ProgressReporter progress(stderr, "bake", "vertices", long(mesh->vertexCount()), quiet);
-    const auto baked = core::runJobWatched(job, std::chrono::milliseconds(50), [&](const core::JobProgress& p) {
-        progress.update(long(p.done));
-        return !interrupted();
-    });
+    const auto baked = runJobWithProgress(spec.name, job, {"", "vertices", long(mesh->vertexCount())}, quiet,
+                                          outPath.string() + " was not written");
     if (!baked) {
-        progress.abandon();
-        if (baked.error().code == core::ErrorCode::Cancelled) {
-            std::fprintf(stderr, "thespis-cli bake: cancelled; %s was not written.\n", outPath.string().c_str());
+        if (baked.error().code == core::ErrorCode::Cancelled)
             return ExitCancelled;
-        }
         printError(spec.name, baked.error());
         return ExitFailure;
     }
-    progress.finish();
     const lighting::TransferBake* bake = &*job.bake;
     const lighting::BakeStatistics& statistics = job.statistics;
     if (quiet)

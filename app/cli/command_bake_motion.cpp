@@ -10,10 +10,9 @@
 
 #include <optional>
 
-#include "cancel.h"
 #include "commands.h"
 #include "exit_codes.h"
-#include "progress.h"
+#include "job_progress.h"
 #include "scenario/motion_bake_job.h"
 
 namespace thespis::cli {
@@ -103,29 +102,15 @@ int runBakeMotion(const CommandSpec& spec, const ParsedArguments& arguments)
     job.end = endOption;
     job.frameDelay = debugFrameDelay();
 
-    installInterruptHandlers();
     const auto began = std::chrono::steady_clock::now();
-    std::optional<ProgressReporter> progress; // once the frame count is known
-    const auto baked = core::runJobWatched(job, std::chrono::milliseconds(50), [&](const core::JobProgress& p) {
-        if (p.stage == core::scenario::MotionBakeJob::FramesStage) {
-            if (!progress)
-                progress.emplace(stderr, "bake-motion", "frames", long(p.total), quiet);
-            progress->update(long(p.done));
-        }
-        return !interrupted();
-    });
+    const auto baked = runJobWithProgress(spec.name, job, {core::scenario::MotionBakeJob::FramesStage, "frames"}, quiet,
+                                          outPath.string() + " was not written");
     if (!baked) {
-        if (progress)
-            progress->abandon();
-        if (baked.error().code == core::ErrorCode::Cancelled) {
-            std::fprintf(stderr, "thespis-cli bake-motion: cancelled; %s was not written.\n", outPath.string().c_str());
+        if (baked.error().code == core::ErrorCode::Cancelled)
             return ExitCancelled;
-        }
         printError(spec.name, baked.error());
         return baked.error().code == core::ErrorCode::IoError ? ExitFailure : ExitInvalidInput;
     }
-    if (progress)
-        progress->finish();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
     if (!quiet)
         std::printf("Baked %ld frames (%.3f s to %.3f s at %g fps) of '%s' to %s in %.2f s.\n", job.frameCount,

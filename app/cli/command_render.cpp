@@ -7,10 +7,9 @@
 #include <cstdio>
 #include <optional>
 
-#include "cancel.h"
 #include "commands.h"
 #include "exit_codes.h"
-#include "progress.h"
+#include "job_progress.h"
 #include "render/frame_sequence_job.h"
 #include "scene_render.h"
 
@@ -97,33 +96,19 @@ int runRender(const CommandSpec& spec, const ParsedArguments& arguments)
     job.fps = *fps;
     job.folder = outPath;
 
-    installInterruptHandlers();
     const long count = frames->last - frames->first + 1;
-    std::optional<ProgressReporter> progress; // once the scene is ready
-    const auto rendered = core::runJobWatched(job, std::chrono::milliseconds(50), [&](const core::JobProgress& p) {
-        if (p.stage == core::render::FrameSequenceJob::FramesStage) {
-            if (!progress) {
-                if (!quiet)
-                    for (const std::string& warning : job.warnings)
-                        std::fprintf(stderr, "thespis-cli render: warning: %s\n", warning.c_str());
-                progress.emplace(stderr, "render", "frames", count, quiet);
-            }
-            progress->update(long(p.done));
-        }
-        return !interrupted();
-    });
+    JobBar bar{core::render::FrameSequenceJob::FramesStage, "frames", count, [&] { // once the scene is ready
+        if (!quiet)
+            for (const std::string& warning : job.warnings)
+                std::fprintf(stderr, "thespis-cli render: warning: %s\n", warning.c_str());
+    }};
+    const auto rendered = runJobWithProgress(spec.name, job, bar, quiet, "no frame was kept");
     if (!rendered) {
-        if (progress)
-            progress->abandon();
-        if (rendered.error().code == core::ErrorCode::Cancelled) {
-            std::fprintf(stderr, "thespis-cli render: cancelled; no frame was kept.\n");
+        if (rendered.error().code == core::ErrorCode::Cancelled)
             return ExitCancelled;
-        }
         printSceneError(spec, arguments, scenarioPath, rendered.error());
         return rendered.error().code == core::ErrorCode::IoError ? ExitFailure : ExitInvalidInput;
     }
-    if (progress)
-        progress->finish();
     if (!quiet)
         std::printf("Rendered %ld frames (%ld to %ld at %g fps, %dx%d, %s) into %s.\n", count, frames->first,
                     frames->last, *fps, job.picture.width, job.picture.height,

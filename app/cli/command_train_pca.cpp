@@ -3,11 +3,10 @@
 
 #include <cstdio>
 
-#include "cancel.h"
 #include "commands.h"
 #include "exit_codes.h"
+#include "job_progress.h"
 #include "motion/train_pca_job.h"
-#include "progress.h"
 
 namespace thespis::cli {
 
@@ -77,28 +76,14 @@ int runTrainPca(const CommandSpec& spec, const ParsedArguments& arguments)
     if (auto valid = job.validate(); !valid)
         return usageError(spec, valid.error().message);
 
-    installInterruptHandlers();
-    std::optional<ProgressReporter> progress;
-    const auto trained = core::runJobWatched(job, std::chrono::milliseconds(50), [&](const core::JobProgress& p) {
-        if (p.stage == core::motion::TrainPcaJob::ReadingStage) {
-            if (!progress)
-                progress.emplace(stderr, "train-pca", "clips", long(p.total), quiet);
-            progress->update(long(p.done));
-        }
-        return !interrupted();
-    });
+    const auto trained = runJobWithProgress(spec.name, job, {core::motion::TrainPcaJob::ReadingStage, "clips"}, quiet,
+                                            job.output.string() + " was not written");
     if (!trained) {
-        if (progress)
-            progress->abandon();
-        if (trained.error().code == core::ErrorCode::Cancelled) {
-            std::fprintf(stderr, "thespis-cli train-pca: cancelled; %s was not written.\n", job.output.string().c_str());
+        if (trained.error().code == core::ErrorCode::Cancelled)
             return ExitCancelled;
-        }
         printError(spec.name, trained.error());
         return trained.error().code == core::ErrorCode::IoError ? ExitFailure : ExitInvalidInput;
     }
-    if (progress)
-        progress->finish();
     if (!quiet) {
         std::printf("Trained on %ld postures of %zu clips; wrote %s.\n", job.frameCount, job.clips.size(),
                     job.output.string().c_str());
