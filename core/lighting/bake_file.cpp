@@ -139,15 +139,8 @@ Result<TransferBake> parseBakeBytes(std::string_view data, const std::filesystem
     for (float& value : bake.transfer)
         (void)in.f32("transfer", value, error); // length checked above
     // Last, the checksum over everything before it: a flipped byte the checks above let through.
-    const std::string_view body = data.substr(0, data.size() - kChecksumBytes);
-    std::uint32_t stored = 0;
-    if (!in.u32("checksum", stored, error))
-        return error;
-    if (const std::uint32_t computed = crc32(body); computed != stored)
-        return makeError(ErrorCode::CorruptData,
-                         "The bake file " + path.string() + " is damaged: its checksum does not match "
-                         "(the file was changed after it was written).",
-                         "CRC-32 stored " + std::to_string(stored) + ", computed " + std::to_string(computed));
+    if (auto checksum = checkTrailingCrc(data, path, "bake file"); !checksum)
+        return checksum.error();
     // Values the checksum cannot vouch for: a writer that went wrong before checksumming.
     if (!std::isfinite(bake.epsilon) || bake.epsilon < 0)
         return in.corrupt("its epsilon " + std::to_string(bake.epsilon) + " is not a distance");

@@ -63,19 +63,10 @@ Result<void> checkRecording(const IdleRecording& recording, std::size_t d)
     return {};
 }
 
-// The root's rotation and translation and the legs' joints of whole-body postures.
-std::vector<float> lowerBodyOf(std::span<const float> wholePostures)
+// The columns `columns` of every whole-body posture, posture after posture.
+std::vector<float> selectColumns(std::span<const float> wholePostures, const std::vector<std::size_t>& columns)
 {
-    const PostureLayout& whole = PostureLayout::of(PostureSet::WholeBody);
-    const PostureLayout& upper = PostureLayout::of(PostureSet::UpperBody);
-    std::vector<std::size_t> columns;
-    for (std::size_t j = 0; j < whole.joints.size(); ++j)
-        if (std::find(upper.joints.begin(), upper.joints.end(), whole.joints[j]) == upper.joints.end())
-            for (std::size_t k = 0; k < 3; ++k)
-                columns.push_back(3 * j + k);
-    for (std::size_t k = 0; k < 3; ++k)
-        columns.push_back(3 * whole.joints.size() + k);
-    const std::size_t d = std::size_t(whole.size()), frames = wholePostures.size() / d;
+    const std::size_t d = std::size_t(PostureLayout::of(PostureSet::WholeBody).size()), frames = wholePostures.size() / d;
     std::vector<float> out;
     out.reserve(frames * columns.size());
     for (std::size_t f = 0; f < frames; ++f)
@@ -84,23 +75,34 @@ std::vector<float> lowerBodyOf(std::span<const float> wholePostures)
     return out;
 }
 
-} // namespace
-
-std::vector<float> upperBodyOf(std::span<const float> wholePostures)
+// The whole-body posture's columns of the upper body's joints, or of the others.
+std::vector<std::size_t> jointColumns(bool keepUpper)
 {
     const PostureLayout& whole = PostureLayout::of(PostureSet::WholeBody);
     const PostureLayout& upper = PostureLayout::of(PostureSet::UpperBody);
     std::vector<std::size_t> columns;
-    for (const std::string& joint : upper.joints)
-        columns.push_back(std::size_t(std::find(whole.joints.begin(), whole.joints.end(), joint) - whole.joints.begin()));
-    const std::size_t d = std::size_t(whole.size()), frames = wholePostures.size() / d;
-    std::vector<float> out;
-    out.reserve(frames * std::size_t(upper.size()));
-    for (std::size_t f = 0; f < frames; ++f)
-        for (const std::size_t joint : columns)
+    for (std::size_t j = 0; j < whole.joints.size(); ++j)
+        if ((std::find(upper.joints.begin(), upper.joints.end(), whole.joints[j]) != upper.joints.end()) == keepUpper)
             for (std::size_t k = 0; k < 3; ++k)
-                out.push_back(wholePostures[f * d + 3 * joint + k]);
-    return out;
+                columns.push_back(3 * j + k);
+    return columns;
+}
+
+// The root's rotation and translation and the legs' joints.
+std::vector<float> lowerBodyOf(std::span<const float> wholePostures)
+{
+    std::vector<std::size_t> columns = jointColumns(false);
+    for (std::size_t k = 0; k < 3; ++k)
+        columns.push_back(std::size_t(PostureLayout::of(PostureSet::WholeBody).size()) - 3 + k);
+    return selectColumns(wholePostures, columns);
+}
+
+} // namespace
+
+std::vector<float> upperBodyOf(std::span<const float> wholePostures)
+{
+    // Upper-body joints come in the same order in both layouts (H-Anim order, parents first).
+    return selectColumns(wholePostures, jointColumns(true));
 }
 
 std::vector<int> findRestCategories(const IdleRecording& recording, const IdleBuildOptions& options)

@@ -9,6 +9,7 @@
 
 #include "anim/hanim.h"
 #include "motion/exp_map.h"
+#include "motion/idle_builder.h"
 #include "motion/posture_bases.h"
 #include "motion/posture_clip.h"
 #include "motion_test_support.h"
@@ -35,16 +36,7 @@ std::vector<float> concat(std::initializer_list<std::vector<float>> parts)
 
 PostureBases basesOf(const std::vector<float>& whole)
 {
-    std::vector<float> upper;
-    const auto& w = PostureLayout::of(PostureSet::WholeBody);
-    const auto& u = PostureLayout::of(PostureSet::UpperBody);
-    for (std::size_t f = 0; f < whole.size() / 78; ++f)
-        for (const auto& joint : u.joints) {
-            const auto j = std::size_t(std::find(w.joints.begin(), w.joints.end(), joint) - w.joints.begin());
-            for (int k = 0; k < 3; ++k)
-                upper.push_back(whole[f * 78 + 3 * j + std::size_t(k)]);
-        }
-    return {*PostureBasis::train(PostureSet::WholeBody, whole), *PostureBasis::train(PostureSet::UpperBody, upper)};
+    return {*PostureBasis::train(PostureSet::WholeBody, whole), *PostureBasis::train(PostureSet::UpperBody, upperBodyOf(whole))};
 }
 
 } // namespace
@@ -136,8 +128,9 @@ TEST(Pca, ReconstructionErrorFallsWithEveryPcOnAHeldBackClip)
         }
         EXPECT_LE(error, previous * (1 + 1e-6)) << k << " PCs";
         previous = error;
-        if (k == 78)
+        if (k == 78) {
             EXPECT_LT(error / double(held.size()), 1e-9) << "all PCs give the posture back";
+        }
     }
     EXPECT_GT(basis.explainedVariance(10), 0.8);
 }
