@@ -41,9 +41,10 @@ void ClipLibraryPanel::refresh()
         group->setData(0, Qt::UserRole, topLevelItemCount() - 1);
         group->setFlags(Qt::ItemIsEnabled);
         for (const auto& clip : character.clips) {
-            auto* item = new QTreeWidgetItem(group, {QString::fromStdString(clip.name),
-                                                     clip.file.empty() ? tr("keyframes in the scenario")
-                                                                       : QString::fromStdString(clip.file)});
+            const QString source = clip.idle ? tr("idle motion from %1").arg(QString::fromStdString(clip.idle->database))
+                                   : clip.file.empty() ? tr("keyframes in the scenario")
+                                                       : QString::fromStdString(clip.file);
+            auto* item = new QTreeWidgetItem(group, {QString::fromStdString(clip.name), source});
             item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsDragEnabled);
             item->setToolTip(0, tr("Drag onto a track of %1").arg(QString::fromStdString(character.name)));
         }

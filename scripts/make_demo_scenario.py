@@ -2,8 +2,9 @@
 """Writes resources/demo.thespis, the built-in demo scenario the studio opens.
 
 Everything in it is made here: procedural clips stored inline as keyframes on H-Anim joints
-(a breathing / weight-shifting idle loop, a right-arm wave, a head nod, eye blinks as MPEG-4
-FAPs), two characters of the paper's script (Creon and Antigone, §4.5) and their schedules.
+(a right-arm wave, a head nod, eye blinks as MPEG-4 FAPs), the paper's idle motion synthesized
+from the shipped CMU-derived database (resources/idle), two characters of the paper's script
+(Creon and Antigone, §4.5) and their schedules.
 
 The file is written in the exact form Thespis writes scenarios (key order, indentation, one
 line per frame, numbers in their shortest form), so that loading and saving it in the studio
@@ -73,7 +74,7 @@ def clip(name, rate, joints, sample, duration, root_translation=False, scalars=(
     for k in range(count):
         values = sample(k / rate)
         frames.append([number(v) for v in values])
-    out = {"schema": "Clip.2", "name": name, "frameRate": float(rate), "joints": list(joints),
+    out = {"schema": "Clip.3", "name": name, "frameRate": float(rate), "joints": list(joints),
            "rootTranslation": root_translation}
     if scalars:
         out["scalars"] = list(scalars)
@@ -81,46 +82,13 @@ def clip(name, rate, joints, sample, duration, root_translation=False, scalars=(
     return out
 
 
-IDLE_JOINTS = ["humanoid_root", "sacroiliac", "l_hip", "l_knee", "r_hip", "r_knee", "vl1", "vt6",
-               "vc4", "skullbase", "l_shoulder", "l_elbow", "r_shoulder", "r_elbow"]
-
-
-def idle_clip(name, period, sway, breaths, head_tilt, arm_bend):
-    """Standing idle: the weight shifts from foot to foot once per period (the pelvis slides
-    sideways and rolls, the legs stay under it, the loaded knee straightens), the chest breathes
-    `breaths` times per period, the spine and head counter the roll so the gaze stays level."""
-    hip_height = 0.98
-    leg = 0.88
-
-    def sample(t):
-        phase = 2.0 * math.pi * t / period
-        shift = sway * math.sin(phase)                      # + = weight on the left foot
-        roll = 1.6 * math.sin(phase)                         # pelvis roll, degrees
-        breath = math.sin(breaths * phase)
-        leg_angle = -math.degrees(math.asin(shift / leg))    # keeps the feet in place
-        dip = 0.004 * (1.0 - math.cos(2.0 * phase)) / 2.0    # hips lowest between the feet
-        left_load = (1.0 + math.sin(phase)) / 2.0
-        rotations = [
-            rz(roll),                                        # humanoid_root
-            rx(0.8 * breath),                                # sacroiliac
-            rz(leg_angle - roll),                            # l_hip
-            rx(6.0 * (1.0 - left_load)),                     # l_knee: bends when unloaded
-            rz(leg_angle - roll),                            # r_hip
-            rx(6.0 * left_load),                             # r_knee
-            rz(-0.6 * roll),                                 # vl1
-            rx(-1.2 * breath),                               # vt6: the chest rises
-            rz(-0.3 * roll),                                 # vc4
-            mul(rz(head_tilt - 0.1 * roll), rx(0.6 * breath)),  # skullbase
-            rz(3.0 + 0.6 * breath),                          # l_shoulder: slightly away from the body
-            rx(-arm_bend),                                   # l_elbow
-            rz(-3.0 - 0.6 * breath),                         # r_shoulder
-            rx(-arm_bend - 2.0 * breath),                    # r_elbow
-        ]
-        values = [c for q in rotations for c in q]
-        values += [shift, hip_height - dip, 0.0]
-        return values
-
-    return clip(name, 15, IDLE_JOINTS, sample, period, root_translation=True)
+def idle_synthesizer(name, seed, amplitude=1.0):
+    """The paper's idle motion (§4.3), synthesized from the database the product ships
+    (resources/idle/cmu_standing.idle, made by scripts/make_idle_database.sh from CMU standing
+    recordings): balance shifts and small posture variations, open-ended, each character its own
+    seed."""
+    return {"schema": "Clip.3", "name": name,
+            "idle": {"database": "idle/cmu_standing.idle", "seed": seed, "amplitude": float(amplitude)}}
 
 
 WAVE_JOINTS = ["r_sternoclavicular", "r_shoulder", "r_elbow", "r_radiocarpal"]
@@ -233,15 +201,15 @@ def scenario():
         "schema": "Character.3", "name": "Creon", "skeleton": "hanim-25", "position": [-0.55, 0.0, 0.0],
         "heading": 25.0,
         "clips": [
-            idle_clip("creon_idle", period=4.0, sway=0.025, breaths=2, head_tilt=0.0, arm_bend=8.0),
+            idle_synthesizer("creon_idle", seed=1),
             wave_clip("wave", waves=3, wave_period=0.6),
             nod_clip("nod", nods=2, nod_period=0.8, degrees=12.0),
             blink_clip("blink", period=3.2, at=0.4),
         ],
         "layers": [
             layer("body", "body", [
-                # The base idle plays at full weight from the start.
-                action("creon_idle", "creon_idle", 0.0, constant(1.0), modifiers=[modifier("loop", count=0)]),
+                # The base idle plays at full weight from the start, and never ends.
+                action("creon_idle", "creon_idle", 0.0, constant(1.0)),
                 action("creon_wave", "wave", 1.5, adsr("cubicAdsr", 0.4, 0.3, 0.85, 0.5),
                        mask="rightArm", mode="override"),
                 action("creon_nod", "nod", 5.0, fade("linearFade", 0.25, 0.25), mask="head",
@@ -265,13 +233,13 @@ def scenario():
         "schema": "Character.3", "name": "Antigone", "skeleton": "hanim-25", "position": [0.55, 0.0, 0.0],
         "heading": -25.0,
         "clips": [
-            idle_clip("antigone_idle", period=5.0, sway=0.03, breaths=3, head_tilt=3.0, arm_bend=12.0),
+            idle_synthesizer("antigone_idle", seed=2),
             wave_clip("wave", waves=2, wave_period=0.8),
             nod_clip("nod", nods=2, nod_period=1.2, degrees=10.0),
         ],
         "layers": [
             layer("body", "body", [
-                action("antigone_idle", "antigone_idle", 0.0, constant(1.0), modifiers=[modifier("loop", count=0)]),
+                action("antigone_idle", "antigone_idle", 0.0, constant(1.0)),
                 action("antigone_nod", "nod", 3.0, fade("cubicFade", 0.2, 0.3), mask="head",
                        mode="additive", modifiers=[modifier("trim", start=0.0, end=1.2)]),
                 # Her wave is Creon's motion played on the left arm: the mirror modifier swaps sides.
@@ -285,8 +253,8 @@ def scenario():
     }
     return {
         "format": "thespis-scenario",
-        "version": 4,
-        "schema": "Scenario.4",
+        "version": 5,
+        "schema": "Scenario.5",
         "name": "Antigone, act 1 (demo)",
         "duration": ticks(12.0),
         "masks": [

@@ -471,6 +471,10 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>Drag a clip onto a track of its character to add an action; drop BVH or glTF files here to import them</source>
         <translation>Ziehen Sie einen Clip auf eine Spur seiner Figur, um eine Aktion hinzuzufügen; legen Sie BVH- oder glTF-Dateien hier ab, um sie zu importieren</translation>
     </message>
+    <message>
+        <source>idle motion from %1</source>
+        <translation>Idle-Bewegung aus %1</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::CurvePanel</name>
@@ -1715,6 +1719,13 @@ Blenden: Ein- / Ausblendung in Sekunden. ADSR: Anstieg / Abfall in Sekunden, Hal
 A green dot marks an action that plays at the current time.</source>
         <translation>Figuren, ihre Animationsebenen und die Aktionen jeder Ebene.
 Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::ScenePreview</name>
+    <message>
+        <source>The light probe could not be used (the default light shows instead): %1</source>
+        <translation>Die Lichtsonde konnte nicht verwendet werden (stattdessen leuchtet das Standardlicht): %1</translation>
     </message>
 </context>
 <context>

@@ -471,6 +471,10 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>Drag a clip onto a track of its character to add an action; drop BVH or glTF files here to import them</source>
         <translation>Faites glisser un clip sur une piste de son personnage pour ajouter une action ; déposez ici des fichiers BVH ou glTF pour les importer</translation>
     </message>
+    <message>
+        <source>idle motion from %1</source>
+        <translation>mouvement de repos tiré de %1</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::CurvePanel</name>
@@ -1715,6 +1719,13 @@ Fondus : entrée / sortie en secondes. ADSR : attaque / déclin en secondes, niv
 A green dot marks an action that plays at the current time.</source>
         <translation>Les personnages, leurs couches d’animation et les actions de chaque couche.
 Un point vert signale une action jouée à l’instant courant.</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::ScenePreview</name>
+    <message>
+        <source>The light probe could not be used (the default light shows instead): %1</source>
+        <translation>La sonde de lumière n’a pas pu être utilisée (la lumière par défaut la remplace) : %1</translation>
     </message>
 </context>
 <context>

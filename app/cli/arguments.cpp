@@ -135,6 +135,27 @@ std::string helpText(const CommandSpec& spec)
     return text;
 }
 
+std::optional<ClipArgument> parseClipArgument(std::string_view text)
+{
+    ClipArgument clip;
+    const std::size_t name = text.find_last_of("/\\") == std::string_view::npos ? 0 : text.find_last_of("/\\") + 1;
+    if (const auto plus = text.find('+', name); plus != std::string_view::npos) {
+        clip.skip = parseNumber(text.substr(plus + 1));
+        if (!clip.skip || *clip.skip < 0)
+            return std::nullopt;
+        text = text.substr(0, plus);
+    }
+    if (const auto at = text.find('@', name); at != std::string_view::npos) {
+        const auto rate = parseNumber(text.substr(at + 1));
+        if (!rate || !(*rate > 0))
+            return std::nullopt;
+        clip.frameRate = *rate;
+        text = text.substr(0, at);
+    }
+    clip.file = std::string(text);
+    return clip;
+}
+
 std::optional<double> parseNumber(std::string_view text)
 {
     double value = 0;

@@ -54,6 +54,16 @@ std::string helpText(const CommandSpec& spec);
 /// The one usage line.
 std::string usageLine(const CommandSpec& spec);
 
+/// A motion file on the command line: "FILE[@FPS][+SKIP]" — the file, the frame rate that
+/// replaces its header's (CMU's index gives 60 fps for takes whose headers say 120) and the seconds
+/// left out at its start. Nullopt when the rate or the skip is not a number (rate > 0, skip ≥ 0).
+struct ClipArgument {
+    std::string file;
+    double frameRate = 0;          ///< 0: as the file says
+    std::optional<double> skip;
+};
+std::optional<ClipArgument> parseClipArgument(std::string_view text);
+
 /// Parses a finite number; nullopt when `text` is not one entirely.
 std::optional<double> parseNumber(std::string_view text);
 

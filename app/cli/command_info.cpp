@@ -57,6 +57,12 @@ std::string clipSummary(const scenario::ClipAsset& clip)
             text += ", " + std::to_string(clip.mapping.size()) + " joints mapped by hand";
         return text;
     }
+    if (clip.idle) {
+        char amplitude[64];
+        std::snprintf(amplitude, sizeof amplitude, "%g", clip.idle->amplitude);
+        return "idle motion from " + clip.idle->database + ", seed " + std::to_string(clip.idle->seed) +
+               ", variations x" + amplitude;
+    }
     const std::size_t perFrame = clip.valuesPerFrame();
     const std::size_t frames = perFrame ? clip.frames.size() / perFrame : 0;
     char text[160];

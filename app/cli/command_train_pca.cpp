@@ -10,27 +10,6 @@
 
 namespace thespis::cli {
 
-namespace {
-
-// "walk.bvh" or "77_02.bvh@60": a clip file and, after '@', the frame rate that replaces its
-// header's (CMU's index gives 60 fps for some takes whose headers say 120).
-std::optional<core::scenario::ClipAsset> clipArgument(const std::string& text)
-{
-    core::scenario::ClipAsset asset;
-    const auto at = text.rfind('@');
-    asset.file = text.substr(0, at);
-    asset.name = std::filesystem::path(asset.file).stem().string();
-    if (at != std::string::npos) {
-        const auto rate = parseNumber(std::string_view(text).substr(at + 1));
-        if (!rate || !(*rate > 0))
-            return std::nullopt;
-        asset.frameRateOverride = *rate;
-    }
-    return asset;
-}
-
-} // namespace
-
 CommandSpec trainPcaSpec()
 {
     CommandSpec spec;
@@ -46,7 +25,8 @@ CommandSpec trainPcaSpec()
     };
     spec.description =
         "Each CLIP is a BVH file or a glTF file (its first animation), retargeted onto the H-Anim\n"
-        "25-joint skeleton; CLIP@FPS replaces the file's frame rate (77_02.bvh@60). Postures are\n"
+        "25-joint skeleton; FILE@FPS replaces the file's frame rate (77_02.bvh@60) and FILE+SECONDS\n"
+        "skips its start (111_28.bvh+6), over --skip. Postures are\n"
         "exponential maps of the 25 joints and the root's place over the feet (78 numbers); the\n"
         "upper body is the 15 joints above the pelvis (45). The summary gives the share of the\n"
         "variance that 5, 10 and 20 PCs explain.\n"
@@ -58,21 +38,21 @@ CommandSpec trainPcaSpec()
 int runTrainPca(const CommandSpec& spec, const ParsedArguments& arguments)
 {
     core::motion::TrainPcaJob job;
-    for (const std::string& text : arguments.positionals) {
-        auto clip = clipArgument(text);
-        if (!clip)
-            return usageError(spec, "'" + text + "': the frame rate after '@' must be a positive number");
-        job.clips.push_back(std::move(*clip));
-    }
-    job.output = *arguments.value("out");
-    const bool quiet = arguments.has("quiet");
-    for (auto [name, target] : {std::pair{"rate", &job.sampleRate}, std::pair{"skip", &job.skip}})
+    double skip = 0;
+    for (auto [name, target] : {std::pair{"rate", &job.sampleRate}, std::pair{"skip", &skip}})
         if (const auto text = arguments.value(name)) {
             const auto value = parseNumber(*text);
             if (!value)
                 return usageError(spec, std::string("--") + name + " must be a number, not '" + *text + "'");
             *target = *value;
         }
+    int exitCode = ExitOk;
+    auto sources = postureSources(spec, arguments.positionals, skip, exitCode);
+    if (!sources)
+        return exitCode;
+    job.sources = std::move(*sources);
+    job.output = *arguments.value("out");
+    const bool quiet = arguments.has("quiet");
     if (auto valid = job.validate(); !valid)
         return usageError(spec, valid.error().message);
 
@@ -85,7 +65,7 @@ int runTrainPca(const CommandSpec& spec, const ParsedArguments& arguments)
         return trained.error().code == core::ErrorCode::IoError ? ExitFailure : ExitInvalidInput;
     }
     if (!quiet) {
-        std::printf("Trained on %ld postures of %zu clips; wrote %s.\n", job.frameCount, job.clips.size(),
+        std::printf("Trained on %ld postures of %zu clips; wrote %s.\n", job.frameCount, job.sources.size(),
                     job.output.string().c_str());
         for (const auto* basis : {&job.bases.whole, &job.bases.upper})
             std::printf("%s (%d dimensions): 5 PCs explain %.1f %%, 10 PCs %.1f %%, 20 PCs %.1f %% of the variance.\n",

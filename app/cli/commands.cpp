@@ -16,6 +16,7 @@ const std::vector<Command>& commands()
         {bakeSpec(), &runBake},
         {renderSpec(), &runRender},
         {trainPcaSpec(), &runTrainPca},
+        {buildIdleSpec(), &runBuildIdle},
 #ifdef THESPIS_WITH_PYTHON
         {runSpec(), &runRun},
 #endif
@@ -75,6 +76,27 @@ std::string joinNames(const std::vector<std::string>& names)
     for (const std::string& name : names)
         text += (text.empty() ? "" : ", ") + name;
     return text;
+}
+
+std::optional<std::vector<core::motion::PostureSource>> postureSources(const CommandSpec& spec,
+                                                                       const std::vector<std::string>& arguments,
+                                                                       double defaultSkip, int& exitCode)
+{
+    std::vector<core::motion::PostureSource> sources;
+    for (const std::string& text : arguments) {
+        const auto clip = parseClipArgument(text);
+        if (!clip) {
+            exitCode = usageError(spec, "'" + text + "': after '@' a frame rate (> 0) and after '+' seconds to skip (>= 0)");
+            return std::nullopt;
+        }
+        core::motion::PostureSource source;
+        source.clip.file = clip->file;
+        source.clip.name = std::filesystem::path(clip->file).stem().string();
+        source.clip.frameRateOverride = clip->frameRate;
+        source.skip = clip->skip.value_or(defaultSkip);
+        sources.push_back(std::move(source));
+    }
+    return sources;
 }
 
 } // namespace thespis::cli

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "arguments.h"
+#include "motion/posture_clip.h"
 #include "scenario/scenario.h"
 #include "util/error.h"
 
@@ -32,6 +33,8 @@ CommandSpec renderSpec();
 int runRender(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec trainPcaSpec();
 int runTrainPca(const CommandSpec& spec, const ParsedArguments& arguments);
+CommandSpec buildIdleSpec();
+int runBuildIdle(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec infoSpec();
 int runInfo(const CommandSpec& spec, const ParsedArguments& arguments);
 #ifdef THESPIS_WITH_PYTHON
@@ -68,6 +71,12 @@ std::optional<T> choiceOption(const CommandSpec& spec, const ParsedArguments& ar
     }
     return *parsed;
 }
+/// The motion files of a command line ("FILE[@FPS][+SKIP]", arguments.h), each skipping
+/// `defaultSkip` seconds unless it says otherwise. On a malformed one prints the usage error,
+/// sets exitCode and returns nothing.
+std::optional<std::vector<core::motion::PostureSource>> postureSources(const CommandSpec& spec,
+                                                                       const std::vector<std::string>& arguments,
+                                                                       double defaultSkip, int& exitCode);
 /// "a, b, c", or "none".
 std::string joinNames(const std::vector<std::string>& names);
 

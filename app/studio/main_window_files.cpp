@@ -92,18 +92,20 @@ void MainWindow::newScenario(bool withCharacter)
     scenario.duration = 10 * core::TicksPerSecond;
     if (withCharacter) {
         core::scenario::Character actor = core::edit::newCharacter(tr("Actor").toStdString(), "", "hanim-25");
-        // Standing, breathing and swaying a little: the built-in demo's idle, looped.
-        const auto demo = core::scenario::loadScenario(
-            editor::toFsPath(defaultScenarioPath(QCoreApplication::applicationDirPath())));
+        // Standing, shifting its weight now and then: the built-in demo's idle motion, its
+        // database named where the demo keeps it (the new scenario has no folder yet).
+        const std::filesystem::path demoPath = editor::toFsPath(defaultScenarioPath(QCoreApplication::applicationDirPath()));
+        const auto demo = core::scenario::loadScenario(demoPath);
         const core::scenario::ClipAsset* idle = demo && !demo->characters.empty() ? demo->characters[0].findClip("creon_idle")
                                                                                  : nullptr;
-        if (idle) {
-            actor.clips.push_back(*idle);
-            actor.clips.back().name = "idle";
+        if (idle && idle->idle) {
+            core::scenario::ClipAsset clip = *idle;
+            clip.name = "idle";
+            clip.idle->database = (demoPath.parent_path() / clip.idle->database).lexically_normal().string();
+            actor.clips.push_back(std::move(clip));
             core::scenario::ActionSpec stand;
             stand.name = "idle";
             stand.clip = "idle";
-            stand.modifiers.push_back({.kind = core::scenario::ModifierKind::Loop, .count = 0});
             actor.layers[0].actions.push_back(stand);
         }
         scenario.characters.push_back(actor);

@@ -373,13 +373,17 @@ void BlendingSchedule::evaluateInto(double t, std::span<float> out, std::span<fl
         layered = layered || (m_contributing[i] && m_actions[i].action.params.mode != BlendMode::Normalized);
     const std::span<const BlendInput> pool(m_inputs.data(), normalized);
     const bool fillRest = coverage.empty() || layered;
-    if (normalized == 1 && !fillRest) {
-        // One action alone, nested: its frame is the blend (a weighted average of one), and its
-        // weights are the coverage. The common case of a layer or a live schedule playing one
-        // action; skipping the blend changes nothing but rounding.
+    // One normalized action alone is the blend (a weighted average of one) where it is nested
+    // (its weights are the coverage) or where it drives every element fully (nothing of the rest
+    // pose shows): the common case of a layer, a live schedule or the base under gestures playing
+    // one action. Skipping the blend changes nothing but rounding, and keeps its frame exact.
+    const bool alone = normalized == 1 &&
+                       (!fillRest || std::all_of(pool[0].weights, pool[0].weights + elements, [](float w) { return w >= 1.0f; }));
+    if (alone) {
         std::copy_n(pool[0].values, floats, out.data());
-        for (std::size_t e = 0; e < elements; ++e)
-            coverage[e] = std::min(pool[0].weights[e], 1.0f);
+        if (!coverage.empty())
+            for (std::size_t e = 0; e < elements; ++e)
+                coverage[e] = fillRest ? 1.0f : std::min(pool[0].weights[e], 1.0f);
     } else {
         m_blender->blend(*m_layout, pool, m_rest, out, m_totals, fillRest);
         if (!coverage.empty())

@@ -317,7 +317,7 @@ void Edit::rebasePaths(const std::filesystem::path& from, const std::filesystem:
 {
     const auto rebaseClip = [&](std::optional<scenario::ClipAsset>& clip) {
         if (clip)
-            clip->file = scenario::rebasedPath(clip->file, from, to);
+            scenario::rebaseClip(*clip, from, to);
     };
     const auto rebaseCharacter = [&](std::optional<scenario::Character>& character) {
         if (!character)

@@ -112,9 +112,11 @@ void PostureMap::toPosture(std::span<const float> frame, std::span<float> postur
 void PostureMap::toFrame(std::span<const float> posture, std::span<float> frame) const
 {
     const std::size_t joints = m_rotationOffsets.size();
+    // Normalized as every frame's rotations are (the exponential map is unit only to rounding),
+    // so that blending a frame with itself gives it back bit for bit.
     for (std::size_t j = 0; j < joints; ++j)
         *reinterpret_cast<anim::Quat*>(frame.data() + m_rotationOffsets[j]) =
-            expMap(anim::Vec3{posture[3 * j], posture[3 * j + 1], posture[3 * j + 2]});
+            anim::normalize(expMap(anim::Vec3{posture[3 * j], posture[3 * j + 1], posture[3 * j + 2]}));
     if (m_layout->rootTranslation)
         std::copy_n(posture.data() + 3 * joints, 3, frame.data() + m_rootTranslation);
 }

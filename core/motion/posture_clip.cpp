@@ -31,6 +31,25 @@ std::vector<float> PostureClip::postures(PostureSet set, double rate, double ski
     return out;
 }
 
+Result<std::vector<std::vector<float>>> readPostureSources(const std::vector<PostureSource>& sources,
+                                                           const scenario::Assets& assets, double rate,
+                                                           JobContext& context, const std::string& stage,
+                                                           const std::string& job)
+{
+    context.beginStage(stage, sources.size());
+    std::vector<std::vector<float>> postures;
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+        if (context.stopRequested())
+            return cancelledError(job);
+        auto clip = readPostureClip(sources[i].clip, assets);
+        if (!clip)
+            return clip.error();
+        postures.push_back(clip->postures(PostureSet::WholeBody, rate, sources[i].skip));
+        context.setDone(i + 1);
+    }
+    return postures;
+}
+
 Result<PostureClip> readPostureClip(const scenario::ClipAsset& asset, const scenario::Assets& assets)
 {
     auto file = scenario::readClipFile(asset, assets);

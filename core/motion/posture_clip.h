@@ -13,6 +13,7 @@
 #include "scenario/asset_resolver.h"
 #include "scenario/scenario.h"
 #include "util/error.h"
+#include "util/job.h"
 
 namespace thespis::core::motion {
 
@@ -27,6 +28,20 @@ struct PostureClip {
     /// per second when given, from `skip` seconds on.
     std::vector<float> postures(PostureSet set, double rate = 0, double skip = 0) const;
 };
+
+/// A recording to learn from: a clip file with its options, and the seconds left out at its start
+/// (a capture's T-pose and the settling after it).
+struct PostureSource {
+    scenario::ClipAsset clip;
+    double skip = 0;
+};
+
+/// Every source's whole-body postures at `rate` frames per second, read as a job's stage
+/// `stage` (util/job.h: one unit per source); ErrorCode::Cancelled (naming `job`) when stopped.
+Result<std::vector<std::vector<float>>> readPostureSources(const std::vector<PostureSource>& sources,
+                                                           const scenario::Assets& assets, double rate,
+                                                           JobContext& context, const std::string& stage,
+                                                           const std::string& job);
 
 /// The skeleton postures are measured on: H-Anim's 25 joints (hanim::Level::Subset25).
 const anim::Skeleton& postureSkeleton();

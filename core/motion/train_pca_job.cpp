@@ -9,17 +9,19 @@ namespace thespis::core::motion {
 
 std::string TrainPcaJob::title() const
 {
-    return "The posture PCA of " + std::to_string(clips.size()) + (clips.size() == 1 ? " clip" : " clips");
+    return "The posture PCA of " + std::to_string(sources.size()) + (sources.size() == 1 ? " clip" : " clips");
 }
 
 Result<void> TrainPcaJob::validate() const
 {
-    if (clips.empty())
+    if (sources.empty())
         return makeError(ErrorCode::InvalidArgument, "Give at least one clip to train the posture PCA on.");
     if (!(sampleRate > 0) || !std::isfinite(sampleRate))
         return makeError(ErrorCode::InvalidArgument, "The sample rate must be a positive number of frames per second.");
-    if (!(skip >= 0) || !std::isfinite(skip))
-        return makeError(ErrorCode::InvalidArgument, "The time skipped at each clip's start must not be negative.");
+    for (const PostureSource& source : sources)
+        if (!(source.skip >= 0) || !std::isfinite(source.skip))
+            return makeError(ErrorCode::InvalidArgument,
+                             "The time skipped at the start of " + source.clip.file + " must not be negative.");
     if (output.extension() != ".pca")
         return makeError(ErrorCode::InvalidArgument, "The output must be a .pca file, not " + output.string() + ".");
     return {};
@@ -27,18 +29,12 @@ Result<void> TrainPcaJob::validate() const
 
 Result<void> TrainPcaJob::run(JobContext& context)
 {
-    context.beginStage(ReadingStage, clips.size());
+    auto read = readPostureSources(sources, assets, sampleRate, context, ReadingStage, title());
+    if (!read)
+        return read.error();
     std::vector<float> postures;
-    for (std::size_t i = 0; i < clips.size(); ++i) {
-        if (context.stopRequested())
-            return cancelledError(title());
-        auto clip = readPostureClip(clips[i], assets);
-        if (!clip)
-            return clip.error();
-        const std::vector<float> more = clip->postures(PostureSet::WholeBody, sampleRate, skip);
+    for (const std::vector<float>& more : *read)
         postures.insert(postures.end(), more.begin(), more.end());
-        context.setDone(i + 1);
-    }
     context.beginStage(AnalysingStage);
     if (context.stopRequested())
         return cancelledError(title());

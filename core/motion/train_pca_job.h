@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "motion/posture_bases.h"
+#include "motion/posture_clip.h"
 #include "scenario/asset_resolver.h"
 #include "scenario/scenario.h"
 #include "util/job.h"
@@ -18,17 +19,16 @@ struct TrainPcaJob final : Job {
     static constexpr const char* ReadingStage = "Reading clips";
     static constexpr const char* AnalysingStage = "Analysing postures";
 
-    std::vector<scenario::ClipAsset> clips; ///< files with their options (frame rate, mapping)
+    std::vector<PostureSource> sources;
     scenario::Assets assets{"."};
     std::filesystem::path output; ///< a .pca file
     double sampleRate = 30;       ///< postures per second of each clip
-    double skip = 0;              ///< seconds left out at each clip's start (a capture's settling)
 
     PostureBases bases; ///< after run()
     long frameCount = 0;
 
     std::string title() const override;
-    /// At least one clip; sampleRate > 0; skip ≥ 0; the output ends in .pca.
+    /// At least one clip; sampleRate > 0; skips ≥ 0; the output ends in .pca.
     Result<void> validate() const override;
     Result<void> run(JobContext& context) override;
     void discardOutput() override;

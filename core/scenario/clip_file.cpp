@@ -174,6 +174,7 @@ struct AssetCache::Entry {
     std::filesystem::file_time_type modified;
     std::shared_ptr<const ClipFile> clip;
     std::shared_ptr<const ModelRig> rig;
+    std::shared_ptr<const motion::IdleDatabase> idle;
 };
 
 namespace {
@@ -242,6 +243,28 @@ Result<std::shared_ptr<const ModelRig>> AssetCache::modelRig(const std::filesyst
     auto rig = entry->rig;
     m_entries[key] = std::move(entry);
     return rig;
+}
+
+Result<std::shared_ptr<const motion::IdleDatabase>> AssetCache::idleDatabase(const std::string& name,
+                                                                              const Assets& assets)
+{
+    const std::string key = "idle\n" + assets.path(name).lexically_normal().string();
+    const auto modified = modifiedTime(assets.path(name));
+    if (const auto it = m_entries.find(key); it != m_entries.end() && it->second->modified == modified)
+        return it->second->idle;
+    m_entries.erase(key);
+    auto bytes = assets.read(name);
+    if (!bytes)
+        return bytes.error();
+    auto parsed = motion::parseIdleDatabase(*bytes, assets.path(name));
+    if (!parsed)
+        return parsed.error();
+    auto entry = std::make_unique<Entry>();
+    entry->modified = modified;
+    entry->idle = std::make_shared<const motion::IdleDatabase>(std::move(parsed).value());
+    auto idle = entry->idle;
+    m_entries[key] = std::move(entry);
+    return idle;
 }
 
 Result<AssetCache::ClipPtr> AssetCache::retargeted(const std::string& key, const std::function<Result<ClipPtr>()>& make)

@@ -15,6 +15,7 @@
 #include "anim/body_measure.h"
 #include "anim/keyframe_clip.h"
 #include "anim/skeleton.h"
+#include "motion/idle_database.h"
 #include "scenario/asset_resolver.h"
 #include "scenario/scenario.h"
 #include "util/error.h"
@@ -80,6 +81,9 @@ public:
     /// it is not kept. The last 64 are kept.
     using ClipPtr = std::shared_ptr<const anim::KeyframeClip>;
     Result<ClipPtr> retargeted(const std::string& key, const std::function<Result<ClipPtr>()>& make);
+    /// An idle motion database (motion/idle_database.h) read through `assets`, from the cache
+    /// while its file is unchanged: every character idling on it shares one copy.
+    Result<std::shared_ptr<const motion::IdleDatabase>> idleDatabase(const std::string& name, const Assets& assets);
     /// True when the asset's file, as it is on disk now, is in the cache.
     bool holds(const ClipAsset& asset, const Assets& assets) const;
     void clear();

@@ -9,13 +9,20 @@ std::string rebasedPath(const std::string& path, const std::filesystem::path& fr
     return (from / path).lexically_normal().lexically_relative(to).generic_string();
 }
 
+void rebaseClip(ClipAsset& clip, const std::filesystem::path& from, const std::filesystem::path& to)
+{
+    clip.file = rebasedPath(clip.file, from, to);
+    if (clip.idle)
+        clip.idle->database = rebasedPath(clip.idle->database, from, to);
+}
+
 void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const std::filesystem::path& to)
 {
     for (Character& character : scenario.characters) {
         character.model = rebasedPath(character.model, from, to);
         character.bake = rebasedPath(character.bake, from, to);
         for (ClipAsset& clip : character.clips)
-            clip.file = rebasedPath(clip.file, from, to);
+            rebaseClip(clip, from, to);
     }
     scenario.lighting.probe = rebasedPath(scenario.lighting.probe, from, to);
 }

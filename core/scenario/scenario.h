@@ -1,5 +1,5 @@
 #pragma once
-// The scenario document (format "thespis-scenario", version 3): characters with their skeleton,
+// The scenario document (format "thespis-scenario", version 5): characters with their skeleton,
 // body, placement, clips and gesture database (gesticon), layers of actions (the blending
 // schedules) with their timeline state (mute / solo / lock), named joint masks, timeline
 // markers, the light. Plain data with
@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,18 @@
 
 namespace thespis::core::scenario {
 
+/// The paper's idle motion synthesizer (§4.3) as a clip (format 5): balance shifts from an idle
+/// motion database (core/motion/idle_database.h) and small posture variations, open-ended.
+struct IdleSynthesizer {
+    std::string database;     ///< an idle motion database file (.idle), relative to the scenario
+    std::uint64_t seed = 1;   ///< each character's own motion program (at most 2^53)
+    double amplitude = 1;     ///< of the small posture variations: 0 none, 1 as recorded
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const IdleSynthesizer&) const = default;
+};
+
 /// A clip a character can play: motion capture in a file beside the scenario (BVH, or an
-/// animation of a glTF file), or keyframes stored inline. A file's motion is retargeted onto the
+/// animation of a glTF file), keyframes stored inline, or an idle motion synthesizer. A file's motion is retargeted onto the
 /// character's skeleton (anim/clip_retarget.h): resized by the bodies' legs and stood on the
 /// floor the performer stood on.
 struct ClipAsset {
@@ -47,6 +58,8 @@ struct ClipAsset {
     bool rootTranslation = false;
     std::vector<std::string> scalars;
     std::vector<float> frames;
+    /// Set: the clip is synthesized (format 5); neither a file nor inline keyframes then.
+    std::optional<IdleSynthesizer> idle;
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const ClipAsset&) const = default;
 
@@ -213,6 +226,8 @@ struct Scenario {
 /// A file path relative to folder `from`, rewritten to name the same file relative to folder `to`
 /// (saving a scenario to another folder). Empty and absolute paths are returned as they are.
 std::string rebasedPath(const std::string& path, const std::filesystem::path& from, const std::filesystem::path& to);
+/// rebasedPath() on the files a clip names: its motion file or its idle motion database.
+void rebaseClip(ClipAsset& clip, const std::filesystem::path& from, const std::filesystem::path& to);
 /// rebasedPath() on every file path of the scenario: models, bakes, clips and the light probe.
 void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const std::filesystem::path& to);
 

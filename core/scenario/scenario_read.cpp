@@ -397,10 +397,26 @@ Layer readLayer(const json& value, const std::string& path)
 
 ClipAsset readClip(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Clip.2");
+    ObjectReader r(value, path, "Clip.3");
     ClipAsset clip;
     clip.name = r.name();
-    if (r.find("file")) {
+    if (const json* idle = r.find("idle")) {
+        for (const char* other : {"file", "frameRate", "animation", "unit", "fitGround", "keepCalibrationFrame", "mapping",
+                                  "joints", "rootTranslation", "scalars", "frames"})
+            if (r.find(other))
+                fail(r.fieldPath(other), "an idle motion clip is synthesized: it has no file and no keyframes");
+        ObjectReader s(*idle, r.fieldPath("idle"), "");
+        IdleSynthesizer synthesizer;
+        synthesizer.database = s.string("database", true);
+        if (synthesizer.database.empty())
+            fail(s.fieldPath("database"), "must name an idle motion database file (.idle)");
+        synthesizer.seed = std::uint64_t(s.integer("seed", false, 1, 0, std::int64_t(1) << 53));
+        synthesizer.amplitude = s.number("amplitude", false, 1, Range::NonNegative);
+        if (synthesizer.amplitude > 10)
+            fail(s.fieldPath("amplitude"), "must be at most 10, found " + std::to_string(synthesizer.amplitude));
+        synthesizer.extra = s.extra();
+        clip.idle = std::move(synthesizer);
+    } else if (r.find("file")) {
         clip.file = r.string("file", true);
         if (clip.file.empty())
             fail(r.fieldPath("file"), "must not be empty (leave the field out for a clip stored inline)");
@@ -621,7 +637,7 @@ NamedMask readMask(const json& value, const std::string& path)
 
 Scenario readScenario(const json& document)
 {
-    ObjectReader r(document, "", "Scenario.4");
+    ObjectReader r(document, "", "Scenario.5");
     r.find("format");  // checked before
     r.find("version");
     Scenario scenario;

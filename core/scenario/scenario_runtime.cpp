@@ -15,6 +15,7 @@
 #include "scene/foot_soles.h"
 #include "anim/hanim.h"
 #include "anim/modifiers.h"
+#include "motion/idle_motion.h"
 #include "lighting/probe.h"
 #include "scene/gltf_mesh.h"
 
@@ -75,6 +76,7 @@ std::string joinNames(const std::vector<std::string>& names, std::size_t limit =
 struct SourceClip {
     std::shared_ptr<const KeyframeClip> clip;
     std::shared_ptr<const ClipFile> file; // clips read from a file bring their rig
+    std::shared_ptr<const motion::IdleDatabase> idle; // idle motion clips: what they play from
     const ClipAsset* asset = nullptr;
 };
 
@@ -172,6 +174,21 @@ private:
     {
         SourceClip source;
         source.asset = &asset;
+        if (asset.idle) {
+            if (!asset.file.empty() || !asset.frames.empty() || !asset.joints.empty() || !asset.scalars.empty()) {
+                problem(ErrorCode::InvalidSchedule, where + ": an idle motion clip has no file and no keyframes.");
+                return std::nullopt;
+            }
+            auto database = m_cache->idleDatabase(asset.idle->database, m_assets);
+            if (!database) {
+                const Error& e = database.error();
+                problem(e.code, where + ", idle database " + quote(asset.idle->database) + ": " + e.message,
+                        "looked for " + m_assets.path(asset.idle->database).string() + (e.detail.empty() ? "" : "; " + e.detail));
+                return std::nullopt;
+            }
+            source.idle = *database;
+            return source;
+        }
         if (!asset.file.empty()) {
             if (!asset.frames.empty() || !asset.joints.empty() || !asset.scalars.empty()) {
                 problem(ErrorCode::InvalidSchedule, where + ": a clip read from a file cannot also hold inline keyframes.");
@@ -267,7 +284,8 @@ private:
             }
             if (!it->second.file) {
                 problem(ErrorCode::InvalidSchedule, who + ", skeleton " + quote(spec)
-                                                        + ": the clip is stored inline; only a clip read from a file carries a skeleton.");
+                                                        + (it->second.idle ? ": the clip is synthesized" : ": the clip is stored inline")
+                                                        + std::string("; only a clip read from a file carries a skeleton."));
                 return std::nullopt;
             }
             return it->second.file->skeleton;
@@ -407,6 +425,9 @@ private:
                 else
                     problem(ErrorCode::InvalidSchedule, where + ", clip " + quote(spec.clip)
                                                             + ": it moves no joint of the character's skeleton.");
+            } else if (clip->second.idle) {
+                problem(ErrorCode::InvalidSchedule, where + ", clip " + quote(spec.clip)
+                                                        + ": idle motion moves a body; it cannot play on a face layer.");
             } else {
                 auto& face = ctx.faceClips[spec.clip];
                 if (!face) {
@@ -540,6 +561,17 @@ private:
         runtime.placementTranslation = character.position;
         const std::vector<float> rest = runtime.skeleton.restFrame();
         for (const auto& [name, source] : sources) {
+            if (source.idle) {
+                motion::IdleOptions options;
+                options.seed = source.asset->idle->seed;
+                options.amplitude = float(source.asset->idle->amplitude);
+                auto idle = motion::IdleMotion::create(source.idle, runtime.skeleton, options);
+                if (!idle)
+                    problem(ErrorCode::InvalidSchedule, who + ", clip " + quote(name) + ": " + idle.error().message);
+                else
+                    runtime.clips.emplace(name, std::move(idle).value());
+                continue;
+            }
             if (source.file) {
                 runtime.clipReports[name] = source.file->report;
                 if (const auto lost = unmappedJointsMovingNothing(*source.file, runtime.skeleton); !lost.empty()) {

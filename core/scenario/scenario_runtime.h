@@ -31,7 +31,8 @@ struct CharacterRuntime {
     /// Where the character stands and faces (Character::position, heading).
     anim::Quat placementRotation;
     anim::Vec3 placementTranslation;
-    std::map<std::string, std::shared_ptr<const anim::KeyframeClip>> clips; ///< on skeleton's layout
+    /// On the skeleton's layout: recorded clips (keyframes) and synthesized ones (idle motion).
+    std::map<std::string, anim::BlendablePtr> clips;
     std::shared_ptr<anim::BlendingSchedule> body;       ///< every body layer, nested
     std::shared_ptr<anim::BlendingSchedule> face;       ///< every face layer (MPEG-4 FAPs), nested
     std::vector<std::shared_ptr<anim::BlendingSchedule>> layers; ///< per Layer, same order

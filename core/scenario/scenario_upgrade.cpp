@@ -87,12 +87,41 @@ static Result<void> upgradeV3toV4(nlohmann::json& document)
     return {};
 }
 
+// 4 → 5: a clip may be an idle motion synthesizer (an optional member); the scenario's and the
+// clips' schemas are new.
+static Result<void> upgradeV4toV5(nlohmann::json& document)
+{
+    const auto renameSchema = [](nlohmann::json& object, std::string_view from, std::string_view to) {
+        if (!object.is_object())
+            return;
+        const auto schema = object.find("schema");
+        if (schema != object.end() && schema->is_string() && schema->get_ref<const std::string&>() == from)
+            *schema = to;
+    };
+    renameSchema(document, "Scenario.4", "Scenario.5");
+    if (!document.is_object())
+        return {};
+    const auto characters = document.find("characters");
+    if (characters == document.end() || !characters->is_array())
+        return {};
+    for (nlohmann::json& character : *characters) {
+        if (!character.is_object())
+            continue;
+        const auto clips = character.find("clips");
+        if (clips != character.end() && clips->is_array())
+            for (nlohmann::json& clip : *clips)
+                renameSchema(clip, "Clip.2", "Clip.3");
+    }
+    return {};
+}
+
 std::span<const UpgradeStep> upgradeSteps()
 {
     static constexpr UpgradeStep steps[] = {
         {format::Initial, "timeline state and gesticon", &upgradeV1toV2},
         {format::TimelineAndGesticon, "clip import options and placement", &upgradeV2toV3},
         {format::ImportAndPlacement, "scripts", &upgradeV3toV4},
+        {format::Scripts, "idle motion clips", &upgradeV4toV5},
     };
     return steps;
 }

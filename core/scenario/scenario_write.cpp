@@ -187,9 +187,16 @@ ojson writeLayer(const Layer& layer)
 ojson writeClip(const ClipAsset& clip)
 {
     ojson out = ojson::object();
-    out["schema"] = "Clip.2";
+    out["schema"] = "Clip.3";
     out["name"] = clip.name;
-    if (!clip.file.empty()) {
+    if (clip.idle) {
+        ojson idle = ojson::object();
+        idle["database"] = clip.idle->database;
+        idle["seed"] = clip.idle->seed;
+        idle["amplitude"] = clip.idle->amplitude;
+        appendExtra(idle, clip.idle->extra);
+        out["idle"] = std::move(idle);
+    } else if (!clip.file.empty()) {
         out["file"] = clip.file;
         if (clip.frameRateOverride > 0)
             out["frameRate"] = clip.frameRateOverride;
@@ -368,7 +375,7 @@ ojson writeScenario(const Scenario& scenario)
     ojson out = ojson::object();
     out["format"] = FormatName;
     out["version"] = int(format::Current);
-    out["schema"] = "Scenario.4";
+    out["schema"] = "Scenario.5";
     out["name"] = scenario.name;
     out["duration"] = scenario.duration;
     ojson masks = ojson::array();

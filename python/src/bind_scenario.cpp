@@ -82,9 +82,26 @@ void bindDocument(py::module_& m)
         .value("time_offset", ModifierKind::TimeOffset)
         .value("trim", ModifierKind::Trim);
 
+    py::class_<IdleSynthesizer> idle(m, "IdleSynthesizer",
+                                     "The paper's idle motion (§4.3) as a clip: balance shifts from an idle motion database "
+                                     "(.idle, thespis-cli build-idle) and small posture variations, open-ended.");
+    idle.def(py::init([](std::string database, std::uint64_t seed, double amplitude) {
+                 return IdleSynthesizer{std::move(database), seed, amplitude};
+             }),
+             "database"_a, "seed"_a = 1, "amplitude"_a = 1.0)
+        .def_readwrite("database", &IdleSynthesizer::database, "The .idle file, relative to the scenario.")
+        .def_readwrite("seed", &IdleSynthesizer::seed, "The character's own motion program (at most 2**53).")
+        .def_readwrite("amplitude", &IdleSynthesizer::amplitude,
+                       "Of the small posture variations: 0 none, 1 as recorded (at most 10).")
+        .def("__eq__", [](const IdleSynthesizer& a, const IdleSynthesizer& b) { return a == b; })
+        .def("__repr__", [](const IdleSynthesizer& a) {
+            return "<thespis.IdleSynthesizer " + a.database + " seed " + std::to_string(a.seed) + ">";
+        });
+    defExtra(idle);
+
     py::class_<ClipAsset> clip(m, "ClipAsset",
                                "A clip a character can play: a motion file beside the scenario (BVH, or an animation "
-                               "of a glTF file), retargeted onto the character, or inline keyframes.");
+                               "of a glTF file), retargeted onto the character, inline keyframes, or idle motion.");
     clip.def(py::init([](std::string name, std::string file) {
                  ClipAsset asset;
                  asset.name = std::move(name);
@@ -112,9 +129,12 @@ void bindDocument(py::module_& m)
                 a.frames.assign(frames.data(), frames.data() + frames.size());
             },
             "Inline clips: per frame the joints' rotations (x y z w), the root translation, the scalars; flat (a copy).")
+        .def_readwrite("idle", &ClipAsset::idle,
+                       "An IdleSynthesizer when the clip is synthesized idle motion (then no file, no keyframes); None else.")
         .def("__eq__", [](const ClipAsset& a, const ClipAsset& b) { return a == b; })
         .def("__repr__", [](const ClipAsset& a) {
-            return "<thespis.ClipAsset '" + a.name + "' " + (a.file.empty() ? std::string("inline") : a.file) + ">";
+            const std::string kind = a.idle ? "idle " + a.idle->database : a.file.empty() ? std::string("inline") : a.file;
+            return "<thespis.ClipAsset '" + a.name + "' " + kind + ">";
         });
     defExtra(clip);
     defList(clip, "joints", &ClipAsset::joints, "Inline clips: the joints rotated, in frame order.");

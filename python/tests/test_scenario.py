@@ -126,7 +126,11 @@ def test_build_runtime_of_the_demo(demo):
         norms = np.linalg.norm(frames[:, : 4 * n].reshape(25, n, 4), axis=2)
         np.testing.assert_allclose(norms, 1.0, atol=1e-5)
         for name, clip in character.clips.items():
-            assert isinstance(clip, thespis.KeyframeClip) and clip.layout == character.skeleton.frame_layout
+            assert clip.layout == character.skeleton.frame_layout
+            if {c.name: c for c in spec.clips}[name].idle is None:
+                assert isinstance(clip, thespis.KeyframeClip)
+            else:  # synthesized: open-ended
+                assert isinstance(clip, thespis.Blendable) and math.isinf(clip.domain.end)
     assert thespis.validate_scenario(demo, demo_scenario().parent) == []
 
 

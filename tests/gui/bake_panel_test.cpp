@@ -29,6 +29,7 @@
 #include "editor/document.h"
 #include "editor/job_runner.h"
 #include "editor/qt_conversions.h"
+#include "editor/qt_conversions.h"
 #include "editor/scene_preview.h"
 #include "lighting/transfer_bake.h"
 #include "lighting/transfer_bake_job.h"
@@ -106,9 +107,13 @@ private:
 void BakePanelTest::initTestCase()
 {
     QVERIFY(m_folder.isValid());
-    // The demo refers to no other file (inline clips, built-in bodies, no probe).
+    // The demo refers to one other file, the idle motion database (inline clips, built-in
+    // bodies, no probe): it moves along.
     m_scenarioPath = m_folder.filePath(QStringLiteral("demo.thespis"));
     QVERIFY(QFile::copy(QStringLiteral(THESPIS_RESOURCES "/demo.thespis"), m_scenarioPath));
+    QVERIFY(QDir(m_folder.path()).mkpath(QStringLiteral("idle")));
+    QVERIFY(QFile::copy(QStringLiteral(THESPIS_RESOURCES "/idle/cmu_standing.idle"),
+                        m_folder.filePath(QStringLiteral("idle/cmu_standing.idle"))));
 }
 
 void BakePanelTest::init()
@@ -356,7 +361,14 @@ void BakePanelTest::unwritableFolderIsRefused()
     QFile blocker(m_folder.filePath(QStringLiteral("not_a_folder")));
     QVERIFY(blocker.open(QIODevice::WriteOnly));
     blocker.close();
-    auto document = editor::Document::fromScenario(m_document->scenario(), blocker.fileName() + QStringLiteral("/inside"));
+    const QString inside = blocker.fileName() + QStringLiteral("/inside");
+    // Its files named absolutely (no path goes through the file in the way).
+    core::scenario::Scenario moved = m_document->scenario();
+    for (core::scenario::Character& character : moved.characters)
+        for (core::scenario::ClipAsset& clip : character.clips)
+            if (clip.idle)
+                clip.idle->database = (editor::toFsPath(m_folder.path()) / clip.idle->database).string();
+    auto document = editor::Document::fromScenario(std::move(moved), inside);
     QVERIFY(document.ok());
     m_panel->setDocument(document->get());
     m_panel->setCurrentCharacter(m_antigone);

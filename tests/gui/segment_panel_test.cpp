@@ -110,16 +110,27 @@ int segmentRow(const editor::SegmentPanel& panel, const char* name)
 }
 
 // Centre of a segment's posed bounding box.
-QVector3D posedCentre(const core::render::CharacterNode& node, int segment)
+// The centre of a segment's posed bounding box; with `lowerPart` < 1, of the box of its vertices
+// in that lower part of its height (a head's face, below the hair).
+QVector3D posedCentre(const core::render::CharacterNode& node, int segment, float lowerPart = 1.0f)
 {
     const core::scene::Segment& s = node.character().mesh.segments[std::size_t(segment)];
-    QVector3D low(1e9f, 1e9f, 1e9f), high(-1e9f, -1e9f, -1e9f);
-    for (std::uint32_t v = s.firstVertex; v < s.firstVertex + s.vertexCount; ++v) {
-        const auto& p = node.posedPositions()[v];
-        low = QVector3D(std::min(low.x(), p.x), std::min(low.y(), p.y), std::min(low.z(), p.z));
-        high = QVector3D(std::max(high.x(), p.x), std::max(high.y(), p.y), std::max(high.z(), p.z));
-    }
-    return (low + high) / 2;
+    const auto box = [&](float below) {
+        QVector3D low(1e9f, 1e9f, 1e9f), high(-1e9f, -1e9f, -1e9f);
+        for (std::uint32_t v = s.firstVertex; v < s.firstVertex + s.vertexCount; ++v) {
+            const auto& p = node.posedPositions()[v];
+            if (p.y > below)
+                continue;
+            low = QVector3D(std::min(low.x(), p.x), std::min(low.y(), p.y), std::min(low.z(), p.z));
+            high = QVector3D(std::max(high.x(), p.x), std::max(high.y(), p.y), std::max(high.z(), p.z));
+        }
+        return std::pair{low, high};
+    };
+    const auto [low, high] = box(1e9f);
+    if (lowerPart >= 1.0f)
+        return (low + high) / 2;
+    const auto [partLow, partHigh] = box(low.y() + lowerPart * (high.y() - low.y()));
+    return (partLow + partHigh) / 2;
 }
 
 // Where a world point appears in the widget (logical pixels), through the OSG camera as it last
@@ -336,10 +347,11 @@ void SegmentPanelTest::clickInTheViewportSelectsAndHighlights()
     widgets::OsgViewport& viewport = *studio.viewport;
     QCOMPARE(panel.currentCharacter(), 0);
 
-    // Antigone's head, where the camera shows it: a click there selects her skull.
+    // Antigone's face, where the camera shows it (below the hair, whichever way the idle tilts
+    // her head): a click there selects her skull.
     const int character = 1;
     const int skull = segmentRow(panel, "skull"); // same body layout for both characters
-    const QVector3D head = posedCentre(studio.node(character), skull);
+    const QVector3D head = posedCentre(studio.node(character), skull, 0.5f);
     const QPoint at = toWidget(viewport, head);
     QVERIFY2(viewport.rect().contains(at), qPrintable(QStringLiteral("%1, %2").arg(at.x()).arg(at.y())));
     const QRgb plain = framebufferPixel(viewport, at);
