@@ -24,6 +24,7 @@
 #include "editor/playback_clock.h"
 #include "editor/qt_conversions.h"
 #include "editor/scene_preview.h"
+#include "scenario/gesture_action.h"
 #include "util/tick.h"
 
 namespace thespis::editor {
@@ -492,14 +493,7 @@ void GesticonPanel::preview()
     layer.kind = core::scenario::LayerKind::Body;
     layer.mode = core::anim::BlendMode::Override;
     layer.solo = anySolo;
-    core::scenario::ActionSpec action;
-    action.name = gesture->name;
-    action.clip = gesture->clip;
-    action.mask = gesture->mask;
-    action.start = core::secondsToTicks(start);
-    action.weight = core::anim::Curve::cubicFade(core::ticksToSeconds(gesture->fadeIn),
-                                                 core::ticksToSeconds(gesture->fadeOut));
-    layer.actions.push_back(std::move(action));
+    layer.actions.push_back(core::scenario::gestureAction(scenario, *gesture, core::secondsToTicks(start)));
     character.layers.push_back(std::move(layer));
     const core::edit::ActionPath path{c, int(character.layers.size()) - 1, 0};
     const QString name = fromUtf8(gesture->name);

@@ -66,6 +66,10 @@ QString describeModifier(const ModifierSpec& modifier)
         return PropertiesPanel::tr("offset %1").arg(seconds(modifier.offset));
     case ModifierKind::Trim:
         return PropertiesPanel::tr("trim %1 – %2").arg(seconds(modifier.start), seconds(modifier.end));
+    case ModifierKind::DependentJointFilter:
+        return PropertiesPanel::tr("dependent joints follow (PCs kept to %1, muted above %2)")
+            .arg(modifier.fadeFrom)
+            .arg(modifier.muteAbove);
     }
     return {};
 }

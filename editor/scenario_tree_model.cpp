@@ -56,6 +56,7 @@ QString describeModifier(const core::scenario::ModifierSpec& modifier)
     case ModifierKind::GlobalTransform: return ScenarioTreeModel::tr("move/rotate");
     case ModifierKind::TimeOffset: return ScenarioTreeModel::tr("offset %1 s").arg(modifier.offset);
     case ModifierKind::Trim: return ScenarioTreeModel::tr("trim %1–%2 s").arg(modifier.start).arg(modifier.end);
+    case ModifierKind::DependentJointFilter: return ScenarioTreeModel::tr("dependent joints");
     }
     return {};
 }

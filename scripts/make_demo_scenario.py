@@ -3,7 +3,7 @@
 
 Everything in it is made here: procedural clips stored inline as keyframes on H-Anim joints
 (a right-arm wave, a head nod, eye blinks as MPEG-4 FAPs), the paper's idle motion synthesized
-from the shipped CMU-derived database (resources/idle), two characters of the paper's script
+from the shipped CMU-derived database (resources/motion), two characters of the paper's script
 (Creon and Antigone, §4.5) and their schedules.
 
 The file is written in the exact form Thespis writes scenarios (key order, indentation, one
@@ -84,11 +84,11 @@ def clip(name, rate, joints, sample, duration, root_translation=False, scalars=(
 
 def idle_synthesizer(name, seed, amplitude=1.0):
     """The paper's idle motion (§4.3), synthesized from the database the product ships
-    (resources/idle/cmu_standing.idle, made by scripts/make_idle_database.sh from CMU standing
+    (resources/motion/cmu_standing.idle, made by scripts/make_motion_data.sh from CMU standing
     recordings): balance shifts and small posture variations, open-ended, each character its own
     seed."""
     return {"schema": "Clip.3", "name": name,
-            "idle": {"database": "idle/cmu_standing.idle", "seed": seed, "amplitude": float(amplitude)}}
+            "idle": {"database": "motion/cmu_standing.idle", "seed": seed, "amplitude": float(amplitude)}}
 
 
 WAVE_JOINTS = ["r_sternoclavicular", "r_shoulder", "r_elbow", "r_radiocarpal"]
@@ -263,6 +263,8 @@ def scenario():
             mask("rightArm", {"r_sternoclavicular": 1.0}),
         ],
         "characters": [creon, antigone],
+        # The posture PCA the dependent-joint filter of Creon's "greet" gesture works in.
+        "postureBases": "motion/cmu_postures.pca",
         "markers": [marker("Creon greets", 1.5), marker("Antigone answers", 6.0)],
         # The paper's §4.5 script, kept in the scenario (the Script dock lists it).
         "scripts": [{"schema": "Script.1", "name": "antigone_creon", "source": PAPER_SCRIPT.read_text(encoding="utf-8")}],

@@ -1508,6 +1508,10 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;File: %2&lt;br&gt;%3, %4, %5 markers&lt;br&gt;Length: %6&lt;br&gt;&lt;br&gt;%7</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Datei: %2&lt;br&gt;%3, %4, %5 Marker&lt;br&gt;Länge: %6&lt;br&gt;&lt;br&gt;%7</translation>
     </message>
+    <message>
+        <source>dependent joints follow (PCs kept to %1, muted above %2)</source>
+        <translation>abhängige Gelenke folgen (HKs bis %1 erhalten, über %2 stumm)</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::ScenarioTreeModel</name>
@@ -1719,6 +1723,10 @@ Blenden: Ein- / Ausblendung in Sekunden. ADSR: Anstieg / Abfall in Sekunden, Hal
 A green dot marks an action that plays at the current time.</source>
         <translation>Figuren, ihre Animationsebenen und die Aktionen jeder Ebene.
 Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translation>
+    </message>
+    <message>
+        <source>dependent joints</source>
+        <translation>abhängige Gelenke</translation>
     </message>
 </context>
 <context>

@@ -1508,6 +1508,10 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;File: %2&lt;br&gt;%3, %4, %5 markers&lt;br&gt;Length: %6&lt;br&gt;&lt;br&gt;%7</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Fichier : %2&lt;br&gt;%3, %4, %5 marqueurs&lt;br&gt;Durée : %6&lt;br&gt;&lt;br&gt;%7</translation>
     </message>
+    <message>
+        <source>dependent joints follow (PCs kept to %1, muted above %2)</source>
+        <translation>les articulations dépendantes suivent (CP gardées jusqu’à %1, muettes au-delà de %2)</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::ScenarioTreeModel</name>
@@ -1719,6 +1723,10 @@ Fondus : entrée / sortie en secondes. ADSR : attaque / déclin en secondes, niv
 A green dot marks an action that plays at the current time.</source>
         <translation>Les personnages, leurs couches d’animation et les actions de chaque couche.
 Un point vert signale une action jouée à l’instant courant.</translation>
+    </message>
+    <message>
+        <source>dependent joints</source>
+        <translation>articulations dépendantes</translation>
     </message>
 </context>
 <context>

@@ -2,7 +2,7 @@
 // Building an idle motion database as a job (util/job.h): standing recordings read onto the
 // posture skeleton (posture_clip.h), built into a database (idle_builder.h) and written
 // atomically as a .idle file (idle_database.h). `thespis-cli build-idle` and
-// scripts/make_idle_database.sh run it.
+// scripts/make_motion_data.sh run it.
 
 #include <filesystem>
 #include <string>

@@ -175,6 +175,7 @@ struct AssetCache::Entry {
     std::shared_ptr<const ClipFile> clip;
     std::shared_ptr<const ModelRig> rig;
     std::shared_ptr<const motion::IdleDatabase> idle;
+    std::shared_ptr<const motion::PostureBases> bases;
 };
 
 namespace {
@@ -245,26 +246,40 @@ Result<std::shared_ptr<const ModelRig>> AssetCache::modelRig(const std::filesyst
     return rig;
 }
 
-Result<std::shared_ptr<const motion::IdleDatabase>> AssetCache::idleDatabase(const std::string& name,
-                                                                              const Assets& assets)
+template <class T, class Parse>
+Result<std::shared_ptr<const T>> AssetCache::motionFile(const std::string& kind, const std::string& name,
+                                                        const Assets& assets, Parse parse,
+                                                        std::shared_ptr<const T> Entry::*slot)
 {
-    const std::string key = "idle\n" + assets.path(name).lexically_normal().string();
+    const std::string key = kind + "\n" + assets.path(name).lexically_normal().string();
     const auto modified = modifiedTime(assets.path(name));
     if (const auto it = m_entries.find(key); it != m_entries.end() && it->second->modified == modified)
-        return it->second->idle;
+        return (*it->second).*slot;
     m_entries.erase(key);
     auto bytes = assets.read(name);
     if (!bytes)
         return bytes.error();
-    auto parsed = motion::parseIdleDatabase(*bytes, assets.path(name));
+    auto parsed = parse(*bytes, assets.path(name));
     if (!parsed)
         return parsed.error();
     auto entry = std::make_unique<Entry>();
     entry->modified = modified;
-    entry->idle = std::make_shared<const motion::IdleDatabase>(std::move(parsed).value());
-    auto idle = entry->idle;
+    (*entry).*slot = std::make_shared<const T>(std::move(parsed).value());
+    auto value = (*entry).*slot;
     m_entries[key] = std::move(entry);
-    return idle;
+    return value;
+}
+
+Result<std::shared_ptr<const motion::IdleDatabase>> AssetCache::idleDatabase(const std::string& name,
+                                                                              const Assets& assets)
+{
+    return motionFile("idle", name, assets, motion::parseIdleDatabase, &Entry::idle);
+}
+
+Result<std::shared_ptr<const motion::PostureBases>> AssetCache::postureBases(const std::string& name,
+                                                                              const Assets& assets)
+{
+    return motionFile("bases", name, assets, motion::parsePostureBases, &Entry::bases);
 }
 
 Result<AssetCache::ClipPtr> AssetCache::retargeted(const std::string& key, const std::function<Result<ClipPtr>()>& make)

@@ -16,6 +16,7 @@
 #include "anim/keyframe_clip.h"
 #include "anim/skeleton.h"
 #include "motion/idle_database.h"
+#include "motion/posture_bases.h"
 #include "scenario/asset_resolver.h"
 #include "scenario/scenario.h"
 #include "util/error.h"
@@ -84,12 +85,18 @@ public:
     /// An idle motion database (motion/idle_database.h) read through `assets`, from the cache
     /// while its file is unchanged: every character idling on it shares one copy.
     Result<std::shared_ptr<const motion::IdleDatabase>> idleDatabase(const std::string& name, const Assets& assets);
+    /// Posture bases (motion/posture_bases.h) read through `assets`, likewise.
+    Result<std::shared_ptr<const motion::PostureBases>> postureBases(const std::string& name, const Assets& assets);
     /// True when the asset's file, as it is on disk now, is in the cache.
     bool holds(const ClipAsset& asset, const Assets& assets) const;
     void clear();
 
 private:
     struct Entry;
+    /// A binary motion file read through `assets` into the entry member `slot`, kept while unchanged.
+    template <class T, class Parse>
+    Result<std::shared_ptr<const T>> motionFile(const std::string& kind, const std::string& name, const Assets& assets,
+                                                Parse parse, std::shared_ptr<const T> Entry::*slot);
     std::map<std::string, std::unique_ptr<Entry>> m_entries; // by key: path and the read options
     std::map<std::string, ClipPtr> m_retargeted;
     std::vector<std::string> m_retargetedOrder; // oldest first

@@ -25,6 +25,7 @@ void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const st
             rebaseClip(clip, from, to);
     }
     scenario.lighting.probe = rebasedPath(scenario.lighting.probe, from, to);
+    scenario.postureBases = rebasedPath(scenario.postureBases, from, to);
 }
 
 const Character* Scenario::findCharacter(const std::string& characterName) const

@@ -67,7 +67,7 @@ struct ClipAsset {
     std::size_t valuesPerFrame() const { return 4 * joints.size() + (rootTranslation ? 3 : 0) + scalars.size(); }
 };
 
-enum class ModifierKind { TimeStretch, TimeWarp, Loop, Mirror, GlobalTransform, TimeOffset, Trim };
+enum class ModifierKind { TimeStretch, TimeWarp, Loop, Mirror, GlobalTransform, TimeOffset, Trim, DependentJointFilter };
 
 /// One modifier in an action's chain (applied in order, first wraps the clip).
 struct ModifierSpec {
@@ -84,6 +84,9 @@ struct ModifierSpec {
     /// Loop: each repetition starts where the last one ended (root position and heading), as a
     /// walk goes on, instead of jumping back (format 3).
     bool rootMotion = false;
+    /// DependentJointFilter (format 5): upper-body PCs 1 … fadeFrom kept, faded out until muteAbove,
+    /// muted above (the scenario's postureBases).
+    int fadeFrom = 20, muteAbove = 30;
     nlohmann::json extra = nlohmann::json::object();
     nlohmann::json warpExtra = nlohmann::json::object(); ///< unknown fields of the warp curve
     bool operator==(const ModifierSpec&) const = default;
@@ -215,6 +218,9 @@ struct Scenario {
     LightingSpec lighting;
     std::vector<Marker> markers;       ///< format 2
     std::vector<ScriptSpec> scripts;   ///< format 4
+    /// The posture bases (.pca, thespis-cli train-pca; path relative to the scenario) the
+    /// dependent-joint filter works in (format 5); empty: no filter can play.
+    std::string postureBases;
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const Scenario&) const = default;
 
@@ -228,7 +234,8 @@ struct Scenario {
 std::string rebasedPath(const std::string& path, const std::filesystem::path& from, const std::filesystem::path& to);
 /// rebasedPath() on the files a clip names: its motion file or its idle motion database.
 void rebaseClip(ClipAsset& clip, const std::filesystem::path& from, const std::filesystem::path& to);
-/// rebasedPath() on every file path of the scenario: models, bakes, clips and the light probe.
+/// rebasedPath() on every file path of the scenario: models, bakes, clips, the light probe and
+/// the posture bases.
 void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const std::filesystem::path& to);
 
 } // namespace thespis::core::scenario

@@ -66,7 +66,7 @@ constexpr NamedValue<ModifierKind> kModifierKinds[] = {
     {ModifierKind::TimeStretch, "timeStretch"}, {ModifierKind::TimeWarp, "timeWarp"},
     {ModifierKind::Loop, "loop"},               {ModifierKind::Mirror, "mirror"},
     {ModifierKind::GlobalTransform, "globalTransform"}, {ModifierKind::TimeOffset, "timeOffset"},
-    {ModifierKind::Trim, "trim"},
+    {ModifierKind::Trim, "trim"},              {ModifierKind::DependentJointFilter, "dependentJointFilter"},
 };
 constexpr NamedValue<Placement> kPlacements[] = {
     {Placement::World, "world"},

@@ -351,6 +351,13 @@ ModifierSpec readModifier(const json& value, const std::string& path)
             fail(r.fieldPath("end"), "must be after start (" + json(m.start).dump() + " s), found "
                                          + json(m.end).dump() + " s");
         break;
+    case ModifierKind::DependentJointFilter:
+        m.fadeFrom = int(r.integer("fadeFrom", false, 20, 1, 78));
+        m.muteAbove = int(r.integer("muteAbove", false, 30, 1, 78));
+        if (m.muteAbove < m.fadeFrom)
+            fail(r.fieldPath("muteAbove"), "must not be below fadeFrom (" + std::to_string(m.fadeFrom) + "), found "
+                                               + std::to_string(m.muteAbove));
+        break;
     }
     m.extra = r.extra();
     return m;
@@ -660,6 +667,7 @@ Scenario readScenario(const json& document)
     }
     if (const json* lighting = r.find("lighting"))
         scenario.lighting = readLighting(*lighting, "lighting");
+    scenario.postureBases = r.string("postureBases", false);
     const json& markers = r.array("markers", false);
     for (std::size_t i = 0; i < markers.size(); ++i)
         scenario.markers.push_back(readMarker(markers[i], indexed("markers", i)));

@@ -16,6 +16,7 @@
 #include "anim/hanim.h"
 #include "anim/modifiers.h"
 #include "motion/idle_motion.h"
+#include "scenario/action_modifier.h"
 #include "lighting/probe.h"
 #include "scene/gltf_mesh.h"
 
@@ -353,32 +354,28 @@ private:
         return std::move(remapped).value();
     }
 
-    Result<anim::BlendablePtr> applyModifier(anim::BlendablePtr source, const ModifierSpec& m)
+    // The scenario's posture bases, read once per build (a problem, once, when they cannot be).
+    Result<std::shared_ptr<const motion::PostureBases>> postureBases()
     {
-        auto wrap = [](auto made) -> Result<anim::BlendablePtr> {
-            if (!made)
-                return made.error();
-            return anim::BlendablePtr(std::move(made).value());
-        };
-        switch (m.kind) {
-        case ModifierKind::TimeStretch: return wrap(anim::TimeStretch::create(std::move(source), m.factor));
-        case ModifierKind::TimeWarp: return wrap(anim::TimeWarp::create(std::move(source), m.warp, m.duration));
-        case ModifierKind::Loop: return wrap(anim::Loop::create(std::move(source), m.count, m.rootMotion));
-        case ModifierKind::Mirror: return wrap(anim::Mirror::create(std::move(source), m.axis));
-        case ModifierKind::GlobalTransform: {
-            const anim::Quat q = m.rotation;
-            const float length = std::sqrt(anim::dot(q, q));
-            if (!std::isfinite(length) || std::abs(length - 1.0f) > 1e-3f)
-                return makeError(ErrorCode::InvalidArgument, "The rotation must be a unit quaternion.");
-            return wrap(anim::GlobalTransform::create(std::move(source), anim::normalize(q), m.translation));
+        if (m_bases)
+            return m_bases;
+        if (m_basesError)
+            return *m_basesError;
+        if (m_scenario.postureBases.empty()) {
+            m_basesError = makeError(ErrorCode::InvalidSchedule,
+                                     "the dependent-joint filter needs the scenario's posture bases (postureBases: a .pca "
+                                     "file made by thespis-cli train-pca).");
+            return *m_basesError;
         }
-        case ModifierKind::TimeOffset:
-            if (!std::isfinite(m.offset))
-                return makeError(ErrorCode::InvalidArgument, "A time offset must be a finite number.");
-            return anim::BlendablePtr(std::make_shared<anim::TimeOffset>(std::move(source), m.offset));
-        case ModifierKind::Trim: return wrap(anim::Trim::create(std::move(source), m.start, m.end));
+        auto read = m_cache->postureBases(m_scenario.postureBases, m_assets);
+        if (!read) {
+            problem(read.error().code, "Posture bases " + quote(m_scenario.postureBases) + ": " + read.error().message,
+                    "looked for " + m_assets.path(m_scenario.postureBases).string());
+            m_basesError = makeError(read.error().code, "the posture bases cannot be read (reported above).");
+            return *m_basesError;
         }
-        return makeError(ErrorCode::Internal, "Unknown modifier kind.");
+        m_bases = *read;
+        return m_bases;
     }
 
     static bool weightIsNonNegative(const anim::Curve& curve)
@@ -444,7 +441,8 @@ private:
 
         // Modifiers, in order: the first wraps the clip.
         for (std::size_t m = 0; source && m < spec.modifiers.size(); ++m) {
-            auto wrapped = applyModifier(source, spec.modifiers[m]);
+            auto wrapped = applyModifier(source, spec.modifiers[m], runtime.skeleton, layer.kind,
+                                         [this] { return postureBases(); });
             if (!wrapped) {
                 problem(ErrorCode::InvalidSchedule,
                         where + ", modifiers[" + std::to_string(m) + "]: " + wrapped.error().message);
@@ -689,6 +687,8 @@ private:
     std::string m_skeletonKey; // what the character's skeleton and soles are made from
     AssetCache* m_cache = nullptr;
     std::map<std::string, std::shared_ptr<const anim::JointMask>> m_masks;
+    std::shared_ptr<const motion::PostureBases> m_bases;
+    std::optional<Error> m_basesError;
 };
 
 } // namespace

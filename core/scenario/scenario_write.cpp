@@ -132,6 +132,10 @@ ojson writeModifier(const ModifierSpec& m)
         out["start"] = m.start;
         out["end"] = m.end;
         break;
+    case ModifierKind::DependentJointFilter:
+        out["fadeFrom"] = m.fadeFrom;
+        out["muteAbove"] = m.muteAbove;
+        break;
     }
     appendExtra(out, m.extra);
     return out;
@@ -398,6 +402,8 @@ ojson writeScenario(const Scenario& scenario)
         appendExtra(lighting, scenario.lighting.extra);
         out["lighting"] = std::move(lighting);
     }
+    if (!scenario.postureBases.empty())
+        out["postureBases"] = scenario.postureBases;
     if (!scenario.markers.empty()) {
         ojson markers = ojson::array();
         for (const Marker& marker : scenario.markers) {

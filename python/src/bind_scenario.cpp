@@ -80,7 +80,8 @@ void bindDocument(py::module_& m)
         .value("mirror", ModifierKind::Mirror)
         .value("global_transform", ModifierKind::GlobalTransform)
         .value("time_offset", ModifierKind::TimeOffset)
-        .value("trim", ModifierKind::Trim);
+        .value("trim", ModifierKind::Trim)
+        .value("dependent_joint_filter", ModifierKind::DependentJointFilter);
 
     py::class_<IdleSynthesizer> idle(m, "IdleSynthesizer",
                                      "The paper's idle motion (§4.3) as a clip: balance shifts from an idle motion database "
@@ -159,6 +160,8 @@ void bindDocument(py::module_& m)
         .def_readwrite("offset", &ModifierSpec::offset, "time_offset (seconds)")
         .def_readwrite("start", &ModifierSpec::start, "trim (source seconds)")
         .def_readwrite("end", &ModifierSpec::end, "trim (source seconds)")
+        .def_readwrite("fade_from", &ModifierSpec::fadeFrom, "dependent_joint_filter: upper-body PCs kept up to it")
+        .def_readwrite("mute_above", &ModifierSpec::muteAbove, "dependent_joint_filter: PCs above it muted")
         .def_readwrite("root_motion", &ModifierSpec::rootMotion,
                        "loop: each repetition starts where the last ended, as a walk goes on")
         .def("__eq__", [](const ModifierSpec& a, const ModifierSpec& b) { return a == b; });
@@ -371,6 +374,8 @@ void bindDocument(py::module_& m)
     defList(scenario, "markers", &Scenario::markers, "The timeline markers (a copy).");
     defList(scenario, "scripts", &Scenario::scripts, "The scenario's Python scripts (a copy).");
     scenario.def_readwrite("lighting", &Scenario::lighting, "The light probe (a LightingSpec).");
+    scenario.def_readwrite("posture_bases", &Scenario::postureBases,
+                           "The .pca file (thespis-cli train-pca) the dependent-joint filter works in; '' = none.");
 }
 
 void bindImport(py::module_& m)

@@ -243,8 +243,8 @@ TEST(ScenarioScene, UsesTheCharactersBakeFileOnlyWhileItFitsTheBody)
         std::filesystem::temp_directory_path() / ("thespis_render_bake_" + std::to_string(::getpid()));
     std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder / "bakes");
-    // The demo moved, with the idle motion database it names.
-    std::filesystem::copy(thespis::test::resources("idle"), folder / "idle", std::filesystem::copy_options::recursive);
+    // The demo moved, with the motion files it names.
+    std::filesystem::copy(thespis::test::resources("motion"), folder / "motion", std::filesystem::copy_options::recursive);
     auto demo = scenario::loadScenario(thespis::test::resources("demo.thespis"));
     ASSERT_TRUE(demo.ok()) << describe(demo.error());
     const auto antigone = std::size_t(demo->findCharacter("Antigone") - demo->characters.data());

@@ -111,9 +111,9 @@ void BakePanelTest::initTestCase()
     // bodies, no probe): it moves along.
     m_scenarioPath = m_folder.filePath(QStringLiteral("demo.thespis"));
     QVERIFY(QFile::copy(QStringLiteral(THESPIS_RESOURCES "/demo.thespis"), m_scenarioPath));
-    QVERIFY(QDir(m_folder.path()).mkpath(QStringLiteral("idle")));
-    QVERIFY(QFile::copy(QStringLiteral(THESPIS_RESOURCES "/idle/cmu_standing.idle"),
-                        m_folder.filePath(QStringLiteral("idle/cmu_standing.idle"))));
+    QVERIFY(QDir(m_folder.path()).mkpath(QStringLiteral("motion")));
+    QVERIFY(QFile::copy(QStringLiteral(THESPIS_RESOURCES "/motion/cmu_standing.idle"),
+                        m_folder.filePath(QStringLiteral("motion/cmu_standing.idle"))));
 }
 
 void BakePanelTest::init()

@@ -425,7 +425,10 @@ void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
                                                  rotationOf(creon, documentFrame, "l_shoulder"));
         const double hip = angleBetween(rotationOf(shown, frame, "l_hip"), rotationOf(creon, documentFrame, "l_hip"));
         QVERIFY2(rightShoulder > 10, qPrintable(QString::number(rightShoulder)));
-        QVERIFY2(leftShoulder < 0.01 && hip < 0.01, qPrintable(QStringLiteral("%1 %2").arg(leftShoulder).arg(hip)));
+        // "greet" has the dependent-joint filter on (paper §4.4): the gesture plays over the upper
+        // body, whose other joints follow it (the left shoulder among them), while the legs go on
+        // with the idle as the document has them.
+        QVERIFY2(hip < 0.01, qPrintable(QStringLiteral("%1 %2").arg(leftShoulder).arg(hip)));
         const float moved = largestDistance(poseAt(during), documentPose);
         QVERIFY2(moved > 0.05f, qPrintable(QString::number(moved)));
         saveScreenshot(&window, QStringLiteral("gesticon_preview.png"));

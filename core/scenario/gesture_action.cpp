@@ -1,0 +1,30 @@
+#include "scenario/gesture_action.h"
+
+#include "motion/posture.h"
+
+namespace thespis::core::scenario {
+
+ActionSpec gestureAction(Scenario& scenario, const Gesture& gesture, Tick start)
+{
+    ActionSpec action;
+    action.name = gesture.name;
+    action.clip = gesture.clip;
+    action.mask = gesture.mask;
+    action.start = start;
+    action.weight = anim::Curve::cubicFade(ticksToSeconds(gesture.fadeIn), ticksToSeconds(gesture.fadeOut));
+    if (!gesture.dependentJointFilter)
+        return action;
+    action.modifiers.push_back({.kind = ModifierKind::DependentJointFilter});
+    const NamedMask* part = gesture.mask.empty() ? nullptr : scenario.findMask(gesture.mask);
+    if (!part)
+        return action; // the whole body, or a mask the runtime will report missing
+    NamedMask widened{part->name + " + dependent joints", part->mask};
+    for (const std::string& joint : motion::PostureLayout::of(motion::PostureSet::UpperBody).joints)
+        widened.mask.setWeight(joint, 1.0f);
+    action.mask = widened.name;
+    if (!scenario.findMask(widened.name))
+        scenario.masks.push_back(std::move(widened));
+    return action;
+}
+
+} // namespace thespis::core::scenario
