@@ -135,5 +135,6 @@ void bindLighting(py::module_& m); // thespis.lighting: SH, probes, the transfer
 void bindRender(py::module_& m);   // thespis.render: headless pictures of scenarios
 void bindEdit(py::module_& m);     // thespis.edit: the studio's undoable scenario edits
 void bindRuntime(py::module_& m);  // thespis.runtime: clocks, the Stage, the animation service
+void bindMotion(py::module_& m);   // thespis.motion: postures, the posture PCA, idle motion, the filter
 
 } // namespace thespis::python

@@ -20,6 +20,7 @@ void defineModule(py::module_& m)
     bindRender(m);
     bindEdit(m);
     bindRuntime(m);
+    bindMotion(m);
 }
 
 } // namespace thespis::python

@@ -29,7 +29,7 @@ if "_thespis" in _sys.builtin_module_names:
 else:
     from . import _thespis
 from ._thespis import *  # noqa: F401,F403  (the public API is the compiled module's)
-from ._thespis import __version__, bvh, edit, hanim, lighting, render, runtime, scene  # noqa: F401
+from ._thespis import __version__, bvh, edit, hanim, lighting, motion, render, runtime, scene  # noqa: F401
 from ._thespis import Cancelled, FormatError  # noqa: F401
 
 AnimationService, Stage = runtime.AnimationService, runtime.Stage
