@@ -1,6 +1,7 @@
 #include "editor/clip_library_panel.h"
 
 #include <QDropEvent>
+#include <QFileInfo>
 
 #include "editor/document.h"
 #include "widgets/dropped_files.h"
@@ -31,14 +32,33 @@ void ClipLibraryPanel::setDocument(Document* document)
     refresh();
 }
 
+void ClipLibraryPanel::setIdleDatabase(const QString& path)
+{
+    m_idleDatabase = path;
+    refresh();
+}
+
 void ClipLibraryPanel::refresh()
 {
     clear();
+    m_idle = nullptr;
     if (!m_document)
         return;
+    // What any character can play without a file of its own.
+    auto* synthesis = new QTreeWidgetItem(this, {tr("Motion synthesis")});
+    synthesis->setData(0, Qt::UserRole, -1);
+    synthesis->setFlags(Qt::ItemIsEnabled);
+    m_idle = new QTreeWidgetItem(synthesis, {tr("Idle"), m_idleDatabase.isEmpty()
+                                                            ? tr("no idle database found")
+                                                            : tr("standing idle from %1").arg(QFileInfo(m_idleDatabase).fileName())});
+    m_idle->setFlags(m_idleDatabase.isEmpty() ? Qt::ItemIsEnabled
+                                              : Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsDragEnabled);
+    m_idle->setToolTip(0, tr("Drag onto a body track: the character stands, shifting its weight and moving a little, "
+                             "for as long as the scenario plays"));
+    m_idle->setToolTip(1, m_idleDatabase);
     for (const auto& character : m_document->scenario().characters) {
         auto* group = new QTreeWidgetItem(this, {QString::fromStdString(character.name)});
-        group->setData(0, Qt::UserRole, topLevelItemCount() - 1);
+        group->setData(0, Qt::UserRole, topLevelItemCount() - 2); // after "Motion synthesis"
         group->setFlags(Qt::ItemIsEnabled);
         for (const auto& clip : character.clips) {
             const QString source = clip.idle ? tr("idle motion from %1").arg(QString::fromStdString(clip.idle->database))
@@ -98,7 +118,8 @@ void ClipLibraryPanel::dropEvent(QDropEvent* event)
 
 QStringList ClipLibraryPanel::mimeTypes() const
 {
-    return {QString::fromLatin1(widgets::TimelineView::ClipMimeType)};
+    return {QString::fromLatin1(widgets::TimelineView::ClipMimeType),
+            QString::fromLatin1(widgets::TimelineView::SynthesizerMimeType)};
 }
 
 QMimeData* ClipLibraryPanel::mimeData(const QList<QTreeWidgetItem*>& items) const
@@ -106,7 +127,10 @@ QMimeData* ClipLibraryPanel::mimeData(const QList<QTreeWidgetItem*>& items) cons
     if (items.isEmpty() || !items.front()->parent())
         return nullptr;
     auto* mime = new QMimeData;
-    mime->setData(QString::fromLatin1(widgets::TimelineView::ClipMimeType), items.front()->text(0).toUtf8());
+    if (items.front() == m_idle)
+        mime->setData(QString::fromLatin1(widgets::TimelineView::SynthesizerMimeType), QByteArrayLiteral("idle"));
+    else
+        mime->setData(QString::fromLatin1(widgets::TimelineView::ClipMimeType), items.front()->text(0).toUtf8());
     return mime;
 }
 

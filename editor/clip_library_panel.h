@@ -1,8 +1,10 @@
 #pragma once
 // ClipLibraryPanel: the clips each character can play, grouped by character. Dragging a clip onto
 // a timeline track of that character creates an action playing it (widgets::TimelineView takes
-// the drop as widgets::TimelineView::ClipMimeType with the clip's name). Motion files dropped on
-// it from the file manager are to be imported into the character they land on.
+// the drop as widgets::TimelineView::ClipMimeType with the clip's name). Under "Motion synthesis",
+// "Idle" is dragged as widgets::TimelineView::SynthesizerMimeType: dropped on a body track it
+// plays the character's idle motion (its clip made on the way when it has none). Motion files
+// dropped on it from the file manager are to be imported into the character they land on.
 
 #include <QTreeWidget>
 
@@ -15,6 +17,10 @@ class ClipLibraryPanel : public QTreeWidget {
 public:
     explicit ClipLibraryPanel(QWidget* parent = nullptr);
     void setDocument(Document* document);
+    /// The idle motion database a dragged "Idle" plays (the shipped one), shown beside it.
+    void setIdleDatabase(const QString& path);
+    /// The "Idle" item under "Motion synthesis" (tests start drags from it).
+    QTreeWidgetItem* idleItem() const { return m_idle; }
     /// The item of a character's clip, or null (tests start drags from it).
     QTreeWidgetItem* clipItem(const QString& character, const QString& clip) const;
 
@@ -33,6 +39,8 @@ protected:
 private:
     void refresh();
     Document* m_document = nullptr;
+    QString m_idleDatabase;
+    QTreeWidgetItem* m_idle = nullptr;
 };
 
 } // namespace thespis::editor

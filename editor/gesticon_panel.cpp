@@ -229,10 +229,16 @@ GesticonPanel::GesticonPanel(QWidget* parent) : QWidget(parent), m_model(new Ges
     m_rename = textButton(tr("Rename"), tr("Rename the selected gesture"), QStringLiteral("renameGesture"), this);
     m_preview = textButton(tr("Preview"), QString(), QStringLiteral("previewGesture"), this);
     m_preview->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_compare = textButton(tr("Before / After"), QString(), QStringLiteral("compareFilter"), this);
     for (QToolButton* button : {m_add, m_remove, m_rename})
         buttons->addWidget(button);
     buttons->addStretch(1);
+    buttons->addWidget(m_compare);
     buttons->addWidget(m_preview);
+    m_playing = new QLabel(this);
+    m_playing->setObjectName(QStringLiteral("gesticonPlaying"));
+    m_playing->hide();
+    layout->addWidget(m_playing);
     layout->addLayout(buttons);
 
     m_message = new QLabel(this);
@@ -261,6 +267,12 @@ GesticonPanel::GesticonPanel(QWidget* parent) : QWidget(parent), m_model(new Ges
             stopPreview();
         else
             preview();
+    });
+    connect(m_compare, &QToolButton::clicked, this, [this] {
+        if (m_previewing)
+            stopPreview();
+        else
+            compareFilter();
     });
     connect(m_model, &GesticonModel::editFailed, this, &GesticonPanel::showMessage);
     connect(m_model, &GesticonModel::editSucceeded, this, [this] { showMessage({}); });
@@ -397,6 +409,14 @@ void GesticonPanel::updateActions()
     else
         m_preview->setToolTip(tr("Play the selected gesture on the character from the playhead, over its other "
                                  "layers (the document does not change)"));
+    m_compare->setEnabled(!m_previewing && canPreview && hasCurrent);
+    m_compare->setToolTip(tr("Play the selected gesture twice from the playhead: without the dependent-joint filter, "
+                             "then with it (spine and neck follow the gesture)"));
+}
+
+QString GesticonPanel::playing() const
+{
+    return m_playing->isVisible() ? m_playing->text() : QString();
 }
 
 void GesticonPanel::showMessage(const QString& message)
@@ -469,12 +489,30 @@ void GesticonPanel::renameSelected()
 
 void GesticonPanel::preview()
 {
+    m_comparePass = 0;
+    startPreview(std::nullopt);
+}
+
+void GesticonPanel::compareFilter()
+{
+    m_comparePass = 1;
+    startPreview(false);
+}
+
+void GesticonPanel::startPreview(std::optional<bool> filter)
+{
+    const int pass = m_comparePass;
     if (m_previewing)
         stopPreview();
+    m_comparePass = pass;
     const int c = currentCharacter();
-    const Gesture* gesture = m_model->gesture(m_table->currentIndex().row());
-    if (!m_document || !m_scenePreview || !m_clock || c < 0 || !gesture)
+    const Gesture* current = m_model->gesture(m_table->currentIndex().row());
+    if (!m_document || !m_scenePreview || !m_clock || c < 0 || !current)
         return;
+    Gesture played = *current;
+    if (filter)
+        played.dependentJointFilter = *filter;
+    const Gesture* gesture = &played;
 
     // The document plus the gesture as an action on a layer of its own, from the playhead. The
     // layer overrides the layers below it where the gesture's mask reaches, as a triggered
@@ -524,6 +562,11 @@ void GesticonPanel::preview()
     m_clock->setDuration(std::max(m_savedClockDuration, m_previewEnd));
     m_previewClockDuration = m_clock->duration();
     showMessage({});
+    m_playing->setText(m_comparePass == 1 ? tr("Before: \"%1\" without the dependent-joint filter").arg(name)
+                       : m_comparePass == 2
+                           ? tr("After: \"%1\" with the dependent-joint filter (spine and neck follow)").arg(name)
+                           : QString());
+    m_playing->setVisible(m_comparePass != 0);
     updateActions();
     emit previewingChanged(true);
     m_clock->play();
@@ -534,6 +577,8 @@ void GesticonPanel::stopPreview()
     if (!m_previewing)
         return;
     m_previewing = false;
+    m_comparePass = 0;
+    m_playing->hide();
     if (m_scenePreview && m_document)
         if (auto restored = m_scenePreview->updateDocument(m_document); !restored)
             showMessage(tr("The 3D view could not show the document again: %1").arg(fromUtf8(restored.error().message)));
@@ -551,8 +596,20 @@ void GesticonPanel::stopPreview()
 
 void GesticonPanel::onClockTime(double seconds)
 {
-    if (m_previewing && seconds >= m_previewEnd)
+    if (!m_previewing || seconds < m_previewEnd)
+        return;
+    if (m_comparePass != 1) {
         stopPreviewLater();
+        return;
+    }
+    // Before has played: After, from the same time. Queued, as a stop is.
+    QMetaObject::invokeMethod(this, [this, serial = m_previewSerial] {
+        if (m_previewing && serial == m_previewSerial && m_comparePass == 1) {
+            stopPreview();
+            m_comparePass = 2;
+            startPreview(true);
+        }
+    }, Qt::QueuedConnection);
 }
 
 void GesticonPanel::stopPreviewLater()

@@ -12,9 +12,14 @@
 // to the end of the gesture. The document's runtime comes back, and the playhead returns to
 // where the preview began, when the gesture ends, when the user stops (the Stop button, or
 // pausing the clock), on any edit and when the document or character changes.
+//
+// Before / After plays the gesture twice from the same time: without the dependent-joint filter
+// (paper §4.4), then with it, a line above the buttons saying which one plays.
 
 #include <QPointer>
 #include <QWidget>
+
+#include <optional>
 
 #include "scenario/scenario_runtime.h"
 
@@ -47,6 +52,9 @@ public:
     GesticonModel* model() const { return m_model; }
     QComboBox* characterCombo() const { return m_characters; }
     QToolButton* previewButton() const { return m_preview; }
+    QToolButton* compareButton() const { return m_compare; }
+    /// What plays in a Before / After preview ("Before: …", "After: …"), empty otherwise.
+    QString playing() const;
     /// The text of the message line (the last refused edit or failed preview), empty when none.
     QString message() const;
 
@@ -68,6 +76,8 @@ public:
     /// Plays the selected gesture on its character (see the class comment); restarts when a
     /// preview is already playing. Failures go to the message line.
     void preview();
+    /// Plays the selected gesture without the dependent-joint filter, then with it.
+    void compareFilter();
     /// Ends a preview and restores the document's runtime; nothing when none plays.
     void stopPreview();
     bool isPreviewing() const { return m_previewing; }
@@ -80,6 +90,8 @@ private:
     void updateActions();
     void showMessage(const QString& message);
     void onClockTime(double seconds);
+    // Starts a preview; `filter` overrides the gesture's dependent-joint flag.
+    void startPreview(std::optional<bool> filter);
     // Stops the preview playing now from the event loop: for stops asked for from inside the
     // clock's or the document's signals, which the stop's own clock changes must not re-enter.
     void stopPreviewLater();
@@ -94,11 +106,14 @@ private:
     QToolButton* m_remove = nullptr;
     QToolButton* m_rename = nullptr;
     QToolButton* m_preview = nullptr;
+    QToolButton* m_compare = nullptr;
     QLabel* m_message = nullptr;
+    QLabel* m_playing = nullptr;
     QString m_keptSelection; // the current gesture's name across a model reset
 
     // The preview playing, if any.
     bool m_previewing = false;
+    int m_comparePass = 0; // 1: before (filter off), 2: after (filter on); 0: a plain preview
     int m_previewSerial = 0;
     double m_previewStart = 0;
     double m_previewEnd = 0;

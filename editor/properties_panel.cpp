@@ -17,6 +17,7 @@
 #include "edit/document_edits.h"
 #include "editor/character_properties.h"
 #include "editor/document.h"
+#include "editor/idle_properties.h"
 #include "editor/qt_conversions.h"
 
 namespace thespis::editor {
@@ -146,6 +147,9 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent)
     form->addRow(tr("Body part:"), m_mask);
     form->addRow(QString(), m_outsideDomain);
     form->addRow(tr("Modifiers:"), m_modifiers);
+    m_idle = new IdleProperties(actionPage);
+    form->addRow(m_idle);
+    connect(m_idle, &IdleProperties::problem, this, &PropertiesPanel::problem);
     m_pages->addWidget(actionPage);
     m_characterPage = new CharacterProperties(m_pages);
     m_pages->addWidget(m_characterPage);
@@ -353,6 +357,7 @@ void PropertiesPanel::showAction()
     for (const ModifierSpec& modifier : spec.modifiers)
         modifiers << describeModifier(modifier);
     m_modifiers->setText(modifiers.isEmpty() ? tr("none") : modifiers.join(QStringLiteral(", ")));
+    m_idle->show(m_document, m_action->character, spec.clip, editable);
 
     for (QWidget* field : {static_cast<QWidget*>(m_name), static_cast<QWidget*>(m_clip), static_cast<QWidget*>(m_start),
                            static_cast<QWidget*>(m_mode), static_cast<QWidget*>(m_mask), static_cast<QWidget*>(m_outsideDomain),

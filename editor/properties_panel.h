@@ -2,8 +2,9 @@
 // PropertiesPanel: the fields of the action selected on the timeline — name, clip, start time,
 // where its motion starts, how often it plays, blend mode, joint mask, whether it renders outside
 // its domain — each editable as one undoable command, plus what it is made of (length, fades,
-// modifiers) for reading. With a character selected in the outline instead, the character's
-// (CharacterProperties); with nothing selected it describes the scenario and says how to select.
+// modifiers) for reading, and the settings of the idle motion it plays (IdleProperties). With a
+// character selected in the outline instead, the character's (CharacterProperties); with nothing
+// selected it describes the scenario and says how to select.
 
 #include <QWidget>
 
@@ -23,6 +24,7 @@ namespace thespis::editor {
 
 class CharacterProperties;
 class Document;
+class IdleProperties;
 
 class PropertiesPanel : public QWidget {
     Q_OBJECT
@@ -36,6 +38,8 @@ public:
     /// The character whose properties are shown when no action is, or none.
     void setCharacter(std::optional<int> character);
     CharacterProperties* characterPage() const { return m_characterPage; }
+    /// The idle clip's settings, shown for an action playing idle motion.
+    IdleProperties* idleProperties() const { return m_idle; }
 
     QLineEdit* nameEdit() const { return m_name; }
     QComboBox* clipChoice() const { return m_clip; }
@@ -81,6 +85,7 @@ private:
     QLabel* m_length = nullptr;
     QLabel* m_fades = nullptr;
     QLabel* m_modifiers = nullptr;
+    IdleProperties* m_idle = nullptr;
 };
 
 } // namespace thespis::editor

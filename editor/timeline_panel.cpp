@@ -1,14 +1,17 @@
 #include "editor/timeline_panel.h"
 
 #include <QAction>
+#include <QDir>
 #include <QVBoxLayout>
 
 #include <algorithm>
 #include <cmath>
 #include <set>
 
+#include "edit/content_edits.h"
 #include "editor/commands/command_ids.h"
 #include "editor/document.h"
+#include "editor/qt_conversions.h"
 #include "widgets/timeline_view.h"
 
 namespace thespis::editor {
@@ -147,14 +150,33 @@ TimelinePanel::TimelinePanel(QWidget* parent) : QWidget(parent)
             report(action.error());
             return;
         }
-        const int index = int(m_document->scenario().characters[std::size_t(layer.character)].layers[std::size_t(layer.layer)].actions.size());
-        auto done = m_document->edit(core::edit::insertActions(m_document->scenario(), layer, {*action}),
-                                     tr("Add Action %1").arg(clip));
-        report(done);
-        if (done)
-            selectActions({{layer.character, layer.layer, index}});
+        addActionAtEnd(layer, core::edit::insertActions(m_document->scenario(), layer, {*action}),
+                       tr("Add Action %1").arg(clip));
+    });
+    connect(m_view, &widgets::TimelineView::synthesizerDropRequested, this, [this](int track, qint64 time, const QString& kind) {
+        if (!m_document || track < 0 || std::size_t(track) >= m_tracks.size() || kind != QStringLiteral("idle"))
+            return;
+        const LayerPath layer = m_tracks[std::size_t(track)];
+        // Named as the scenario names its files: relative to its folder, or as the character's
+        // idle clip on the same file already names it (that clip then plays).
+        std::string database = QDir::fromNativeSeparators(QDir(m_document->baseDir()).relativeFilePath(m_idleDatabase)).toStdString();
+        std::error_code error;
+        for (const auto& clip : m_document->scenario().characters[std::size_t(layer.character)].clips)
+            if (clip.idle && std::filesystem::equivalent(m_document->assets().path(clip.idle->database), toFsPath(m_idleDatabase), error))
+                database = clip.idle->database;
+        addActionAtEnd(layer, core::edit::addIdleAction(m_document->scenario(), layer, database, time), tr("Add Idle Motion"));
     });
     setDocument(nullptr);
+}
+
+void TimelinePanel::addActionAtEnd(const LayerPath& layer, core::Result<core::edit::Edit> edit, const QString& text)
+{
+    const auto& layers = m_document->scenario().characters[std::size_t(layer.character)].layers;
+    const int index = int(layers[std::size_t(layer.layer)].actions.size());
+    auto done = m_document->edit(std::move(edit), text);
+    report(done);
+    if (done)
+        selectActions({{layer.character, layer.layer, index}});
 }
 
 void TimelinePanel::setDocument(Document* document)

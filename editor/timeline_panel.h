@@ -34,6 +34,8 @@ public:
     void setTime(double seconds);
     /// Whole frames per second of snapping, trimming and the ruler (default 30).
     void setFrameRate(int framesPerSecond);
+    /// The idle motion database (absolute path) an "Idle" dropped from the clip library plays.
+    void setIdleDatabase(const QString& path) { m_idleDatabase = path; }
 
     widgets::TimelineView* view() const { return m_view; }
     /// The actions selected on the timeline, in timeline order.
@@ -65,6 +67,8 @@ signals:
 private:
     void refresh();
     void report(const core::Result<void>& result);
+    // Pushes `edit`, which adds an action at the end of `layer`, and selects that action.
+    void addActionAtEnd(const core::edit::LayerPath& layer, core::Result<core::edit::Edit> edit, const QString& text);
     std::vector<core::edit::ActionPath> pathsOf(const QList<int>& ids) const;
     void onMoveRequested(const QList<int>& ids, qint64 delta, int trackDelta, bool finished);
     void onDelete(bool ripple);
@@ -99,6 +103,7 @@ private:
     QAction* m_duplicate = nullptr;
     QAction* m_split = nullptr;
     QAction* m_snap = nullptr;
+    QString m_idleDatabase;
 };
 
 } // namespace thespis::editor

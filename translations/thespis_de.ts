@@ -475,6 +475,26 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>idle motion from %1</source>
         <translation>Idle-Bewegung aus %1</translation>
     </message>
+    <message>
+        <source>Motion synthesis</source>
+        <translation>Bewegungssynthese</translation>
+    </message>
+    <message>
+        <source>Idle</source>
+        <translation>Ruhebewegung</translation>
+    </message>
+    <message>
+        <source>no idle database found</source>
+        <translation>keine Ruhebewegungs-Datenbank gefunden</translation>
+    </message>
+    <message>
+        <source>standing idle from %1</source>
+        <translation>Stehen in Ruhe aus %1</translation>
+    </message>
+    <message>
+        <source>Drag onto a body track: the character stands, shifting its weight and moving a little, for as long as the scenario plays</source>
+        <translation>Auf eine Körperspur ziehen: Die Figur steht, verlagert ihr Gewicht und bewegt sich ein wenig, solange das Szenario läuft</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::CurvePanel</name>
@@ -843,6 +863,85 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source>The 3D view could not show the document again: %1</source>
         <translation>Die 3D-Ansicht konnte das Dokument nicht wieder anzeigen: %1</translation>
+    </message>
+    <message>
+        <source>Before / After</source>
+        <translation>Vorher / Nachher</translation>
+    </message>
+    <message>
+        <source>Play the selected gesture twice from the playhead: without the dependent-joint filter, then with it (spine and neck follow the gesture)</source>
+        <translation>Die ausgewählte Geste zweimal ab der Abspielposition spielen: ohne den Filter für abhängige Gelenke, dann mit ihm (Wirbelsäule und Hals folgen der Geste)</translation>
+    </message>
+    <message>
+        <source>Before: &quot;%1&quot; without the dependent-joint filter</source>
+        <translation>Vorher: &quot;%1&quot; ohne den Filter für abhängige Gelenke</translation>
+    </message>
+    <message>
+        <source>After: &quot;%1&quot; with the dependent-joint filter (spine and neck follow)</source>
+        <translation>Nachher: &quot;%1&quot; mit dem Filter für abhängige Gelenke (Wirbelsäule und Hals folgen)</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::IdleProperties</name>
+    <message>
+        <source>Idle motion</source>
+        <translation>Ruhebewegung</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Wählen…</translation>
+    </message>
+    <message>
+        <source>Play another idle motion database (.idle, made by thespis-cli build-idle)</source>
+        <translation>Eine andere Ruhebewegungs-Datenbank abspielen (.idle, erzeugt mit thespis-cli build-idle)</translation>
+    </message>
+    <message>
+        <source>Which motion program the character follows: characters with different seeds shift their weight at different times</source>
+        <translation>Welchem Bewegungsprogramm die Figur folgt: Figuren mit verschiedenen Startwerten verlagern ihr Gewicht zu verschiedenen Zeiten</translation>
+    </message>
+    <message>
+        <source>Size of the small posture variations: 0 none, 1 as much as in the recordings</source>
+        <translation>Größe der kleinen Haltungsschwankungen: 0 keine, 1 so viel wie in den Aufnahmen</translation>
+    </message>
+    <message>
+        <source>Database:</source>
+        <translation>Datenbank:</translation>
+    </message>
+    <message>
+        <source>Seed:</source>
+        <translation>Startwert:</translation>
+    </message>
+    <message>
+        <source>Variations:</source>
+        <translation>Schwankungen:</translation>
+    </message>
+    <message>
+        <source>Change Idle Seed</source>
+        <translation>Startwert der Ruhebewegung ändern</translation>
+    </message>
+    <message>
+        <source>Change Idle Variations</source>
+        <translation>Schwankungen der Ruhebewegung ändern</translation>
+    </message>
+    <message>
+        <source>Choose an Idle Motion Database</source>
+        <translation>Ruhebewegungs-Datenbank wählen</translation>
+    </message>
+    <message>
+        <source>Idle motion databases (*.idle)</source>
+        <translation>Ruhebewegungs-Datenbanken (*.idle)</translation>
+    </message>
+    <message>
+        <source>Idle motion (clip &quot;%1&quot;, shared by its actions)</source>
+        <translation>Ruhebewegung (Clip &quot;%1&quot;, von seinen Aktionen geteilt)</translation>
+    </message>
+    <message>
+        <source>Change Idle Database</source>
+        <translation>Ruhebewegungs-Datenbank ändern</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -1263,6 +1362,57 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source>Nothing to report.</source>
         <translation>Keine Meldungen.</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::PostureChartPanel</name>
+    <message>
+        <source>The character whose posture at the playhead is charted</source>
+        <translation>Die Figur, deren Haltung an der Abspielposition dargestellt wird</translation>
+    </message>
+    <message>
+        <source>Each bar: how far the pose is along one principal component of the upper body&apos;s posture space. The line: how far recorded motion typically goes along it. A hand-keyed pose shows more in the high components; the dependent-joint filter fades and mutes them.</source>
+        <translation>Jeder Balken: wie weit die Pose entlang einer Hauptkomponente des Haltungsraums des Oberkörpers liegt. Die Linie: wie weit aufgenommene Bewegung typischerweise entlang ihr reicht. Eine von Hand animierte Pose zeigt mehr in den hohen Komponenten; der Filter für abhängige Gelenke blendet sie aus und schaltet sie stumm.</translation>
+    </message>
+    <message>
+        <source>No character to chart.</source>
+        <translation>Keine Figur darzustellen.</translation>
+    </message>
+    <message>
+        <source>No posture bases: name a .pca file (thespis-cli train-pca) as the scenario&apos;s postureBases.</source>
+        <translation>Keine Haltungsbasen: eine .pca-Datei (thespis-cli train-pca) als postureBases des Szenarios angeben.</translation>
+    </message>
+    <message>
+        <source>The posture bases could not be read: %1</source>
+        <translation>Die Haltungsbasen konnten nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>The character has no body motion to chart.</source>
+        <translation>Die Figur hat keine Körperbewegung zum Darstellen.</translation>
+    </message>
+    <message>
+        <source>Cannot chart this character&apos;s posture: %1</source>
+        <translation>Die Haltung dieser Figur kann nicht dargestellt werden: %1</translation>
+    </message>
+    <message>
+        <source>this pose |PC|</source>
+        <translation>diese Pose |HK|</translation>
+    </message>
+    <message>
+        <source>captured motion, typical (√eigenvalue)</source>
+        <translation>aufgenommene Bewegung, typisch (√Eigenwert)</translation>
+    </message>
+    <message>
+        <source>filter fades</source>
+        <translation>Filter blendet aus</translation>
+    </message>
+    <message>
+        <source>filter mutes</source>
+        <translation>Filter schaltet stumm</translation>
+    </message>
+    <message>
+        <source>%1 at %2 s — energy above PC %3: this pose %4 %, captured motion %5 %</source>
+        <translation>%1 bei %2 s — Energie über HK %3: diese Pose %4 %, aufgenommene Bewegung %5 %</translation>
     </message>
 </context>
 <context>
@@ -2125,6 +2275,10 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
         <source>Split Action</source>
         <translation>Aktion teilen</translation>
     </message>
+    <message>
+        <source>Add Idle Motion</source>
+        <translation>Ruhebewegung hinzufügen</translation>
+    </message>
 </context>
 <context>
     <name>thespis::studio::ContentActions</name>
@@ -2716,6 +2870,10 @@ Führen Sie die Skripte des Szenarios nur aus, wenn Sie der Herkunft dieser Date
     <message>
         <source>Trust This File and Run</source>
         <translation>Dieser Datei vertrauen und ausführen</translation>
+    </message>
+    <message>
+        <source>Posture PCs</source>
+        <translation>Haltungs-HK</translation>
     </message>
 </context>
 <context>

@@ -475,6 +475,26 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>idle motion from %1</source>
         <translation>mouvement de repos tiré de %1</translation>
     </message>
+    <message>
+        <source>Motion synthesis</source>
+        <translation>Synthèse de mouvement</translation>
+    </message>
+    <message>
+        <source>Idle</source>
+        <translation>Attente</translation>
+    </message>
+    <message>
+        <source>no idle database found</source>
+        <translation>aucune base de mouvement d’attente trouvée</translation>
+    </message>
+    <message>
+        <source>standing idle from %1</source>
+        <translation>attente debout tirée de %1</translation>
+    </message>
+    <message>
+        <source>Drag onto a body track: the character stands, shifting its weight and moving a little, for as long as the scenario plays</source>
+        <translation>Glisser sur une piste de corps : le personnage se tient debout, déplace son poids et bouge un peu, tant que le scénario joue</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::CurvePanel</name>
@@ -843,6 +863,85 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source>The 3D view could not show the document again: %1</source>
         <translation>La vue 3D n’a pas pu réafficher le document : %1</translation>
+    </message>
+    <message>
+        <source>Before / After</source>
+        <translation>Avant / Après</translation>
+    </message>
+    <message>
+        <source>Play the selected gesture twice from the playhead: without the dependent-joint filter, then with it (spine and neck follow the gesture)</source>
+        <translation>Jouer le geste sélectionné deux fois depuis la tête de lecture : sans le filtre des articulations dépendantes, puis avec (le dos et le cou suivent le geste)</translation>
+    </message>
+    <message>
+        <source>Before: &quot;%1&quot; without the dependent-joint filter</source>
+        <translation>Avant : « %1 » sans le filtre des articulations dépendantes</translation>
+    </message>
+    <message>
+        <source>After: &quot;%1&quot; with the dependent-joint filter (spine and neck follow)</source>
+        <translation>Après : « %1 » avec le filtre des articulations dépendantes (le dos et le cou suivent)</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::IdleProperties</name>
+    <message>
+        <source>Idle motion</source>
+        <translation>Mouvement d’attente</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Choisir…</translation>
+    </message>
+    <message>
+        <source>Play another idle motion database (.idle, made by thespis-cli build-idle)</source>
+        <translation>Jouer une autre base de mouvement d’attente (.idle, faite par thespis-cli build-idle)</translation>
+    </message>
+    <message>
+        <source>Which motion program the character follows: characters with different seeds shift their weight at different times</source>
+        <translation>Le programme de mouvement que suit le personnage : des personnages de graines différentes déplacent leur poids à des moments différents</translation>
+    </message>
+    <message>
+        <source>Size of the small posture variations: 0 none, 1 as much as in the recordings</source>
+        <translation>Taille des petites variations de posture : 0 aucune, 1 autant que dans les enregistrements</translation>
+    </message>
+    <message>
+        <source>Database:</source>
+        <translation>Base :</translation>
+    </message>
+    <message>
+        <source>Seed:</source>
+        <translation>Graine :</translation>
+    </message>
+    <message>
+        <source>Variations:</source>
+        <translation>Variations :</translation>
+    </message>
+    <message>
+        <source>Change Idle Seed</source>
+        <translation>Changer la graine de l’attente</translation>
+    </message>
+    <message>
+        <source>Change Idle Variations</source>
+        <translation>Changer les variations de l’attente</translation>
+    </message>
+    <message>
+        <source>Choose an Idle Motion Database</source>
+        <translation>Choisir une base de mouvement d’attente</translation>
+    </message>
+    <message>
+        <source>Idle motion databases (*.idle)</source>
+        <translation>Bases de mouvement d’attente (*.idle)</translation>
+    </message>
+    <message>
+        <source>Idle motion (clip &quot;%1&quot;, shared by its actions)</source>
+        <translation>Mouvement d’attente (clip « %1 », partagé par ses actions)</translation>
+    </message>
+    <message>
+        <source>Change Idle Database</source>
+        <translation>Changer la base de mouvement d’attente</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
     </message>
 </context>
 <context>
@@ -1263,6 +1362,57 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source>Nothing to report.</source>
         <translation>Rien à signaler.</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::PostureChartPanel</name>
+    <message>
+        <source>The character whose posture at the playhead is charted</source>
+        <translation>Le personnage dont la posture à la tête de lecture est tracée</translation>
+    </message>
+    <message>
+        <source>Each bar: how far the pose is along one principal component of the upper body&apos;s posture space. The line: how far recorded motion typically goes along it. A hand-keyed pose shows more in the high components; the dependent-joint filter fades and mutes them.</source>
+        <translation>Chaque barre : la distance de la pose le long d’une composante principale de l’espace des postures du haut du corps. La ligne : la distance qu’atteint typiquement le mouvement enregistré. Une pose animée à la main en montre davantage dans les hautes composantes ; le filtre des articulations dépendantes les atténue puis les coupe.</translation>
+    </message>
+    <message>
+        <source>No character to chart.</source>
+        <translation>Aucun personnage à tracer.</translation>
+    </message>
+    <message>
+        <source>No posture bases: name a .pca file (thespis-cli train-pca) as the scenario&apos;s postureBases.</source>
+        <translation>Aucune base de postures : nommer un fichier .pca (thespis-cli train-pca) comme postureBases du scénario.</translation>
+    </message>
+    <message>
+        <source>The posture bases could not be read: %1</source>
+        <translation>Les bases de postures n’ont pas pu être lues : %1</translation>
+    </message>
+    <message>
+        <source>The character has no body motion to chart.</source>
+        <translation>Le personnage n’a pas de mouvement du corps à tracer.</translation>
+    </message>
+    <message>
+        <source>Cannot chart this character&apos;s posture: %1</source>
+        <translation>Impossible de tracer la posture de ce personnage : %1</translation>
+    </message>
+    <message>
+        <source>this pose |PC|</source>
+        <translation>cette pose |CP|</translation>
+    </message>
+    <message>
+        <source>captured motion, typical (√eigenvalue)</source>
+        <translation>mouvement capturé, typique (√valeur propre)</translation>
+    </message>
+    <message>
+        <source>filter fades</source>
+        <translation>le filtre atténue</translation>
+    </message>
+    <message>
+        <source>filter mutes</source>
+        <translation>le filtre coupe</translation>
+    </message>
+    <message>
+        <source>%1 at %2 s — energy above PC %3: this pose %4 %, captured motion %5 %</source>
+        <translation>%1 à %2 s — énergie au-delà de la CP %3 : cette pose %4 %, mouvement capturé %5 %</translation>
     </message>
 </context>
 <context>
@@ -2125,6 +2275,10 @@ Un point vert signale une action jouée à l’instant courant.</translation>
         <source>Split Action</source>
         <translation>Scinder l’action</translation>
     </message>
+    <message>
+        <source>Add Idle Motion</source>
+        <translation>Ajouter un mouvement d’attente</translation>
+    </message>
 </context>
 <context>
     <name>thespis::studio::ContentActions</name>
@@ -2716,6 +2870,10 @@ N’exécutez les scripts du scénario que si vous faites confiance à la proven
     <message>
         <source>Trust This File and Run</source>
         <translation>Faire confiance à ce fichier et exécuter</translation>
+    </message>
+    <message>
+        <source>Posture PCs</source>
+        <translation>CP de posture</translation>
     </message>
 </context>
 <context>

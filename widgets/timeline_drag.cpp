@@ -28,7 +28,18 @@ constexpr int kDragThreshold = 3; // Manhattan pixels before a press becomes a d
 
 bool acceptsDrop(const QMimeData* mime)
 {
-    return mime && (mime->hasFormat(QLatin1String(TimelineView::ClipMimeType)) || !droppedFiles(mime).isEmpty());
+    return mime && (mime->hasFormat(QLatin1String(TimelineView::ClipMimeType)) ||
+                    mime->hasFormat(QLatin1String(TimelineView::SynthesizerMimeType)) || !droppedFiles(mime).isEmpty());
+}
+
+// What a drop is called while it is dragged over the lanes.
+QString dropName(const QMimeData* mime)
+{
+    if (const QStringList files = droppedFiles(mime); !files.isEmpty())
+        return QFileInfo(files.front()).completeBaseName();
+    if (mime->hasFormat(QLatin1String(TimelineView::SynthesizerMimeType)))
+        return QString::fromUtf8(mime->data(QLatin1String(TimelineView::SynthesizerMimeType)));
+    return QString::fromUtf8(mime->data(QLatin1String(TimelineView::ClipMimeType)));
 }
 
 } // namespace
@@ -491,9 +502,7 @@ void TimelineView::dragEnterEvent(QDragEnterEvent* event)
         event->ignore();
         return;
     }
-    const QStringList files = droppedFiles(event->mimeData());
-    m_dropName = files.isEmpty() ? QString::fromUtf8(event->mimeData()->data(QLatin1String(ClipMimeType)))
-                                 : QFileInfo(files.front()).completeBaseName();
+    m_dropName = dropName(event->mimeData());
     buildSnapTargets({}, -1, true);
     updateDrop(event->position().toPoint(), event->modifiers());
     event->acceptProposedAction(); // accepted even over the header, so that moves keep coming
@@ -524,8 +533,12 @@ void TimelineView::dropEvent(QDropEvent* event)
     const bool ours = acceptsDrop(event->mimeData());
     if (ours && updateDrop(event->position().toPoint(), event->modifiers())) {
         event->acceptProposedAction();
-        if (const QStringList files = droppedFiles(event->mimeData()); !files.isEmpty())
+        const QMimeData* mime = event->mimeData();
+        if (const QStringList files = droppedFiles(mime); !files.isEmpty())
             emit filesDropRequested(m_dropTrack, m_dropTime, files);
+        else if (mime->hasFormat(QLatin1String(SynthesizerMimeType)))
+            emit synthesizerDropRequested(m_dropTrack, m_dropTime,
+                                          QString::fromUtf8(mime->data(QLatin1String(SynthesizerMimeType))));
         else
             emit clipDropRequested(m_dropTrack, m_dropTime,
                                    QString::fromUtf8(event->mimeData()->data(QLatin1String(ClipMimeType))));

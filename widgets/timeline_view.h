@@ -60,6 +60,9 @@ public:
     static constexpr qint64 OpenEnd = TimelineOpenEnd;
     /// Mime type of a clip dragged in from a library; the data is the clip name in UTF-8.
     static constexpr const char* ClipMimeType = "application/x-thespis-clip";
+    /// Mime type of a motion synthesizer dragged in from a library ("idle"): it makes its clip
+    /// when dropped; the data is the synthesizer's kind in UTF-8.
+    static constexpr const char* SynthesizerMimeType = "application/x-thespis-synthesizer";
 
     // Layout, in pixels (public so that tests and the editor can reason about it).
     static constexpr int HeaderWidth = TimelineMetrics::HeaderWidth;   ///< the track header column on the left
@@ -162,6 +165,8 @@ signals:
     void markerRemoveRequested(int index);
     /// A drop of ClipMimeType data on a lane that is not locked, at the snapped time.
     void clipDropRequested(int track, qint64 time, const QString& clipName);
+    /// A drop of SynthesizerMimeType data on a lane that is not locked, at the snapped time.
+    void synthesizerDropRequested(int track, qint64 time, const QString& kind);
     /// Files dropped from the file manager on a lane that is not locked, at the snapped time.
     void filesDropRequested(int track, qint64 time, const QStringList& files);
     /// Double-click on a clip.

@@ -35,6 +35,7 @@
 #ifdef THESPIS_WITH_PYTHON
 #include "editor/script_panel.h"
 #endif
+#include "editor/posture_chart_panel.h"
 #include "editor/properties_panel.h"
 #include "content_actions.h"
 #include "preferences_dialog.h"
@@ -148,6 +149,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     m_session->addPanel(m_gesticon);
     m_session->addPanel(m_segments);
     m_session->addPanel(m_bake);
+    m_session->addPanel(m_postureChart);
     m_session->addPanel(m_autosaver);
 
     m_fpsTimer = new QTimer(this);

@@ -38,6 +38,7 @@ class ScriptPanel;
 class ClipLibraryPanel;
 class CurvePanel;
 class BakePanel;
+class PostureChartPanel;
 class GesticonPanel;
 class SegmentPanel;
 class JointMaskPanel;
@@ -85,6 +86,7 @@ public:
     editor::GesticonPanel* gesticon() const { return m_gesticon; }
     editor::SegmentPanel* segments() const { return m_segments; }
     editor::BakePanel* bakePanel() const { return m_bake; }
+    editor::PostureChartPanel* postureChart() const { return m_postureChart; }
     editor::Autosaver* autosaver() const { return m_autosaver; }
     QAction* undoAction() const { return m_undoAction; }
     QAction* redoAction() const { return m_redoAction; }
@@ -176,6 +178,7 @@ private:
     editor::GesticonPanel* m_gesticon = nullptr;
     editor::SegmentPanel* m_segments = nullptr;
     editor::BakePanel* m_bake = nullptr;
+    editor::PostureChartPanel* m_postureChart = nullptr;
     editor::Autosaver* m_autosaver = nullptr;
     editor::MessagesPanel* m_messages = nullptr;
     QDockWidget* m_messagesDock = nullptr;

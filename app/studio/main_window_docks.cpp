@@ -4,6 +4,7 @@
 #include "main_window.h"
 
 #include <QCheckBox>
+#include <QCoreApplication>
 #include <QDir>
 #include <QDockWidget>
 #include <QHeaderView>
@@ -16,6 +17,7 @@
 #include <QTreeWidget>
 
 #include "content_actions.h"
+#include "startup.h"
 #include "edit/content_edits.h"
 #include "editor/bake_panel.h"
 #include "editor/clip_library_panel.h"
@@ -26,6 +28,7 @@
 #ifdef THESPIS_WITH_PYTHON
 #include "editor/script_panel.h"
 #endif
+#include "editor/posture_chart_panel.h"
 #include "editor/properties_panel.h"
 #include "editor/qt_conversions.h"
 #include "editor/scenario_tree_model.h"
@@ -243,11 +246,17 @@ void MainWindow::createEditorDocks()
     m_curves = new editor::CurvePanel(this);
     m_masks = new editor::JointMaskPanel(this);
     m_library = new editor::ClipLibraryPanel(this);
+    const QString idleDatabase = shippedResource(QCoreApplication::applicationDirPath(), QStringLiteral("motion/cmu_standing.idle"));
+    m_library->setIdleDatabase(idleDatabase);
+    m_timeline->setIdleDatabase(idleDatabase);
     m_properties = new editor::PropertiesPanel(this);
     m_gesticon = new editor::GesticonPanel(this);
     m_gesticon->setClock(m_clock);
     m_segments = new editor::SegmentPanel(this);
     m_bake = new editor::BakePanel(this);
+    m_postureChart = new editor::PostureChartPanel(this);
+    m_postureChart->setClock(m_clock);
+    m_postureChart->setDefaultBases(shippedResource(QCoreApplication::applicationDirPath(), QStringLiteral("motion/cmu_postures.pca")));
     m_bake->prtPreviewCheck()->setEnabled(m_preview != nullptr);
     connect(m_bake, &editor::BakePanel::prtPreviewToggled, this,
             [this](bool prt) { setShading(prt ? core::render::Shading::Prt : core::render::Shading::Phong); });
@@ -260,6 +269,8 @@ void MainWindow::createEditorDocks()
     QDockWidget* timelineDock = dock(tr("Timeline"), QStringLiteral("timelineDock"), m_timeline, Qt::BottomDockWidgetArea);
     QDockWidget* curveDock = dock(tr("Curve Editor"), QStringLiteral("curveDock"), m_curves, Qt::BottomDockWidgetArea);
     tabifyDockWidget(timelineDock, curveDock);
+    QDockWidget* postureDock = dock(tr("Posture PCs"), QStringLiteral("postureChartDock"), m_postureChart, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(curveDock, postureDock);
     timelineDock->raise();
     QDockWidget* propertiesDock = dock(tr("Properties"), QStringLiteral("propertiesDock"), m_properties, Qt::RightDockWidgetArea);
     QDockWidget* maskDock = dock(tr("Joint Mask"), QStringLiteral("maskDock"), m_masks, Qt::RightDockWidgetArea);

@@ -22,6 +22,12 @@ QString defaultScenarioPath(const QString& applicationDir)
     return QStringLiteral(THESPIS_SOURCE_RESOURCES "/demo.thespis");
 }
 
+QString shippedResource(const QString& applicationDir, const QString& relative)
+{
+    const QString path = QFileInfo(defaultScenarioPath(applicationDir)).dir().filePath(relative);
+    return QFileInfo::exists(path) ? QDir::cleanPath(path) : QString();
+}
+
 QString executableDir(const char* argv0)
 {
 #ifdef Q_OS_LINUX

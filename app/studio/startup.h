@@ -14,6 +14,10 @@ namespace thespis::studio {
 /// else in the source tree the binary was built from. `applicationDir` is the binary's folder.
 QString defaultScenarioPath(const QString& applicationDir);
 
+/// A file shipped beside the demo (`relative` to its folder, e.g. "motion/cmu_standing.idle",
+/// which "Idle" in the clip library plays); empty when it is missing.
+QString shippedResource(const QString& applicationDir, const QString& relative);
+
 /// The folder of the running binary (before any QCoreApplication exists).
 QString executableDir(const char* argv0);
 

@@ -1,5 +1,6 @@
 #include "edit/content_edits.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -233,12 +234,54 @@ Result<Edit> addClips(const Scenario& scenario, int index, std::vector<ClipAsset
     Edit edit;
     int at = int((*character)->clips.size());
     for (ClipAsset& clip : clips) {
-        if (clip.file.empty() && clip.joints.empty() && clip.scalars.empty())
-            return invalid("A clip needs a file or keyframes.");
+        if (clip.file.empty() && clip.joints.empty() && clip.scalars.empty() && !clip.idle)
+            return invalid("A clip needs a file, keyframes or an idle motion database.");
         clip.name = uniqueName(clip.name.empty() ? "clip" : clip.name, names);
         names.push_back(clip.name);
         edit.add(ClipChange{{index, at++}, std::nullopt, std::move(clip)});
     }
+    return edit;
+}
+
+Result<Edit> addIdleAction(const Scenario& scenario, const LayerPath& layerPath, const std::string& database, Tick start)
+{
+    auto layer = layerAt(scenario, layerPath);
+    if (!layer)
+        return layer.error();
+    if ((*layer)->kind != LayerKind::Body)
+        return invalid("Idle motion moves the body: put it on a body layer, not on " + quote((*layer)->name) + ".");
+    if (database.empty())
+        return invalid("The idle motion needs a database (.idle) to play.");
+    const Character& character = scenario.characters[std::size_t(layerPath.character)];
+    // The character's own idle on that database when it has one: its program and amplitude stay.
+    const auto own = std::find_if(character.clips.begin(), character.clips.end(), [&](const ClipAsset& clip) {
+        return clip.idle && clip.idle->database == database;
+    });
+    Edit edit;
+    Scenario after = scenario;
+    std::string clipName;
+    if (own != character.clips.end()) {
+        clipName = own->name;
+    } else {
+        ClipAsset clip;
+        clip.name = "idle";
+        // Each character a program of its own: characters side by side do not shift in step.
+        clip.idle = IdleSynthesizer{.database = database, .seed = std::uint64_t(layerPath.character + 1)};
+        auto added = addClips(scenario, layerPath.character, {std::move(clip)});
+        if (!added)
+            return added.error();
+        if (auto applied = added->apply(after); !applied)
+            return applied.error();
+        clipName = after.characters[std::size_t(layerPath.character)].clips.back().name;
+        edit.append(std::move(*added));
+    }
+    auto action = actionFromClip(after, layerPath, clipName, start);
+    if (!action)
+        return action.error();
+    auto inserted = insertActions(after, layerPath, {std::move(*action)});
+    if (!inserted)
+        return inserted.error();
+    edit.append(std::move(*inserted));
     return edit;
 }
 

@@ -48,6 +48,12 @@ Result<Edit> moveLayer(const scenario::Scenario& scenario, const LayerPath& laye
 
 /// Adds clips to a character (names made unique among its clips).
 Result<Edit> addClips(const scenario::Scenario& scenario, int character, std::vector<scenario::ClipAsset> clips);
+/// An open-ended action playing idle motion from `database` (an .idle file, as the scenario names
+/// it) on a body layer from `start`: the character's idle clip on that database when it has one,
+/// else a new clip "idle" (seeded by the character's place, so that characters differ) added in
+/// the same edit.
+Result<Edit> addIdleAction(const scenario::Scenario& scenario, const LayerPath& layer, const std::string& database,
+                           Tick start);
 /// Replaces a clip (its options, its joint mapping); a new name is followed by the actions,
 /// gestures and skeleton ("clip:NAME") that use the clip.
 Result<Edit> replaceClip(const scenario::Scenario& scenario, const CharacterItemPath& clip, scenario::ClipAsset value);

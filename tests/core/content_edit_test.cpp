@@ -111,6 +111,37 @@ TEST(ContentEdits, ClipsRenameWithTheirUsersAndAreNotRemovedWhileUsed)
     expectRoundTrip(s, removeClip(s, {0, 0}));
 }
 
+TEST(ContentEdits, IdleGoesOnABodyLayerWithTheCharactersOwnClip)
+{
+    Scenario s = withWalker();
+    const std::string database = std::string(THESPIS_RESOURCES) + "/motion/cmu_standing.idle";
+    // The first drop adds the clip and the action in one edit; it builds and undoes exactly.
+    auto first = addIdleAction(s, {0, 0}, database, 3 * TicksPerSecond);
+    expectRoundTrip(s, first);
+    ASSERT_TRUE(first->apply(s).ok());
+    const ClipAsset& clip = s.characters[0].clips.back();
+    ASSERT_TRUE(clip.idle);
+    EXPECT_EQ(clip.name, "idle");
+    EXPECT_EQ(clip.idle->database, database);
+    EXPECT_EQ(s.characters[0].layers[0].actions.back().clip, "idle");
+    EXPECT_EQ(s.characters[0].layers[0].actions.back().start, 3 * TicksPerSecond);
+    const auto runtime = buildRuntime(s, test::sharedData());
+    ASSERT_TRUE(runtime.ok()) << describe(runtime.error());
+    const auto span = actionSpan(s, *runtime, {0, 0, 1});
+    ASSERT_TRUE(span.has_value());
+    EXPECT_TRUE(span->openEnded);
+    // The next drop plays the same clip: no second "idle 2".
+    const std::size_t clips = s.characters[0].clips.size();
+    ASSERT_TRUE(addIdleAction(s, {0, 0}, database, 20 * TicksPerSecond)->apply(s).ok());
+    EXPECT_EQ(s.characters[0].clips.size(), clips);
+    EXPECT_EQ(s.characters[0].layers[0].actions.back().clip, "idle");
+    // Refused: a face layer, no database.
+    auto face = addIdleAction(s, {0, 1}, database, 0);
+    ASSERT_FALSE(face.ok());
+    EXPECT_NE(face.error().message.find("body layer"), std::string::npos) << face.error().message;
+    EXPECT_FALSE(addIdleAction(s, {0, 0}, "", 0).ok());
+}
+
 TEST(ContentEdits, TheLight)
 {
     Scenario s = withWalker();

@@ -4,7 +4,8 @@
 // however many rows, and undoing everything gives back the original document. Preview plays a
 // gesture on the character in a real 3D view (Xvfb + Mesa): the arm inside the gesture's mask
 // moves, the other arm does not, and the document's own motion comes back when the gesture ends,
-// when the clock is paused, on Stop and on any edit.
+// when the clock is paused, on Stop and on any edit. Before / After plays it without, then with,
+// the dependent-joint filter.
 
 #include <QComboBox>
 #include <QDir>
@@ -473,6 +474,33 @@ void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
     QTRY_VERIFY(!panel->isPreviewing());
     QVERIFY(!previewShown());
     document->undoStack()->undo();
+    QVERIFY(document->scenario() == original);
+
+    // Before / After: the gesture without the dependent-joint filter, then with it, each from the
+    // same time. Without it the left shoulder (outside the gesture's mask) keeps the document's
+    // motion; with it, it follows the waving arm.
+    const auto leftShoulderMoves = [&] {
+        const core::scenario::CharacterRuntime& shown = scene.scene()->runtime().characters[0];
+        return angleBetween(rotationOf(shown, bodyFrame(shown, during), "l_shoulder"),
+                            rotationOf(creon, documentFrame, "l_shoulder"));
+    };
+    clock.seek(start);
+    panel->selectRow(0);
+    QVERIFY(panel->compareButton()->isEnabled());
+    QTest::mouseClick(panel->compareButton(), Qt::LeftButton);
+    QVERIFY(panel->isPreviewing());
+    QVERIFY2(panel->playing().startsWith(QStringLiteral("Before:")), qPrintable(panel->playing()));
+    const double without = leftShoulderMoves();
+    QVERIFY2(without < 0.01, qPrintable(QString::number(without)));
+    QTRY_VERIFY_WITH_TIMEOUT(panel->playing().startsWith(QStringLiteral("After:")), 15000);
+    QVERIFY(panel->isPreviewing());
+    const double with = leftShoulderMoves();
+    QVERIFY2(with > 1.0, qPrintable(QString::number(with)));
+    QTRY_VERIFY_WITH_TIMEOUT(clock.time() >= during || !panel->isPreviewing(), 15000); // the arm up
+    saveScreenshot(&window, QStringLiteral("gesticon_before_after.png"));
+    QTRY_VERIFY_WITH_TIMEOUT(!panel->isPreviewing(), 15000);
+    QVERIFY(panel->playing().isEmpty());
+    QCOMPARE(clock.time(), start);
     QVERIFY(document->scenario() == original);
 }
 
