@@ -321,6 +321,9 @@ FrameRetarget::FrameRetarget(const Skeleton& from, const Skeleton& to, const Ret
             };
             addSoles(fromBody, from, 0, m_sourceSteps, m_sourceSoles);
             addSoles(toBody, to, placed, m_targetSteps, m_targetSoles);
+            // Soles on one joint next to each other: apply() finds each chain's pose once.
+            for (std::vector<Sole>* soles : {&m_sourceSoles, &m_targetSoles})
+                std::stable_sort(soles->begin(), soles->end(), [](const Sole& a, const Sole& b) { return a.begin < b.begin; });
         }
     }
 
@@ -407,22 +410,31 @@ void FrameRetarget::apply(std::span<const float> fromFrame, std::span<float> toF
         out[2] = fromMean.z * m_scaleF + m_placeAdd.z - toMean.z;
         if (m_matchFeet) {
             // The soles as high over the floor as the source's, scaled (few points: no allocation).
-            float fromHeights[kMaxSoles], toHeights[kMaxSoles];
-            const auto soleHeight = [](const std::vector<ChainStep>& steps, const Sole& sole, std::span<const float> frame,
-                                       bool fromOrigin) {
-                const auto [position, orientation] =
-                    chainPose(std::span(steps).subspan(sole.begin, sole.end - sole.begin), frame, fromOrigin);
-                return (position + rotate(orientation, sole.offset)).y;
+            // Soles on one joint share its chain: its pose is found once.
+            const auto soleHeights = [](const std::vector<ChainStep>& steps, const std::vector<Sole>& soles,
+                                        std::span<const float> frame, bool fromOrigin, float* heights) {
+                std::pair<Vec3, Quat> pose;
+                for (std::size_t k = 0; k < soles.size(); ++k) {
+                    const Sole& sole = soles[k];
+                    if (k == 0 || sole.begin != soles[k - 1].begin || sole.end != soles[k - 1].end)
+                        pose = chainPose(std::span(steps).subspan(sole.begin, sole.end - sole.begin), frame, fromOrigin);
+                    heights[k] = (pose.first + rotate(pose.second, sole.offset)).y;
+                }
             };
-            for (std::size_t k = 0; k < m_sourceSoles.size(); ++k)
-                fromHeights[k] = soleHeight(m_sourceSteps, m_sourceSoles[k], fromFrame, true);
-            for (std::size_t k = 0; k < m_targetSoles.size(); ++k)
-                toHeights[k] = soleHeight(m_targetSteps, m_targetSoles[k], toFrame, false);
-            const float fromFeet = footHeight<float>(std::span(fromHeights, m_sourceSoles.size()), m_sourceSoftness);
+            float fromHeights[kMaxSoles], toHeights[kMaxSoles];
+            // Standing (an infinite planted height): the source's feet need not be measured.
+            const bool standing = std::isinf(sourcePlantedFeet);
+            float lift = 0;
+            if (!standing) {
+                soleHeights(m_sourceSteps, m_sourceSoles, fromFrame, true, fromHeights);
+                lift = std::max(0.0f, footHeight<float>(std::span(fromHeights, m_sourceSoles.size()), m_sourceSoftness) -
+                                          sourcePlantedFeet);
+            }
+            soleHeights(m_targetSteps, m_targetSoles, toFrame, false, toHeights);
             const float toFeet = footHeight<float>(std::span(toHeights, m_targetSoles.size()), m_targetSoftness);
             // Never below the floor: where the performer's feet sink into it (a capture's floor is
             // rarely level), the body is lifted instead.
-            const float wanted = m_targetFeetRest + std::max(0.0f, fromFeet - sourcePlantedFeet) * m_scaleF;
+            const float wanted = m_targetFeetRest + lift * m_scaleF;
             out[1] = wanted - toFeet - m_placedBaseY;
         }
     }

@@ -72,8 +72,12 @@ public:
     ScaleSource scaleSource() const { return m_scaleSource; }
     /// `toFrame` has the target layout's floatCount().
     void apply(std::span<const float> fromFrame, std::span<float> toFrame) const;
-    /// The same with where the source's feet stand in this frame (a capture whose floor drifts).
+    /// The same with where the source's feet stand in this frame (a capture whose floor drifts);
+    /// infinity stands the target's feet at their rest height whatever the source's do.
     void apply(std::span<const float> fromFrame, std::span<float> toFrame, float sourcePlantedFeet) const;
+    /// True when apply() sets the target's feet on its floor (both bodies have feet below the
+    /// placed joint).
+    bool matchesFeet() const { return m_matchFeet; }
 
 private:
     // A mapped target rotation: local = before · conj(Π up) · (Π down) · after, with up / down

@@ -6,6 +6,7 @@
 // accurate near 0 (series) and near π (the axis comes from the vector part, never from θ).
 
 #include <cmath>
+#include <type_traits>
 
 #include "anim/quat.h"
 
@@ -27,9 +28,15 @@ inline anim::QuatT<T> expMap(anim::Vec3T<T> v)
 {
     const T theta2 = v.x * v.x + v.y * v.y + v.z * v.z;
     const T theta = std::sqrt(theta2);
+    // One call for both (postures turn into frames 25 joints at a time, every frame).
+    T sine, cosine;
+    if constexpr (std::is_same_v<T, float>)
+        ::sincosf(theta / 2, &sine, &cosine);
+    else
+        ::sincos(theta / 2, &sine, &cosine);
     // sin(θ/2)/θ, by its series where θ is tiny: 1/2 − θ²/48.
-    const T k = theta > T(1e-4) ? std::sin(theta / 2) / theta : T(0.5) - theta2 / T(48);
-    return {v.x * k, v.y * k, v.z * k, std::cos(theta / 2)};
+    const T k = theta > T(1e-4) ? sine / theta : T(0.5) - theta2 / T(48);
+    return {v.x * k, v.y * k, v.z * k, cosine};
 }
 
 } // namespace thespis::core::motion

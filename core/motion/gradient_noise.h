@@ -17,19 +17,32 @@ inline std::uint64_t mixBits(std::uint64_t x)
     return x ^ (x >> 31);
 }
 
-/// Noise at x for one channel of a seed: 0 at every integer, slopes in [−1, 1] there, values
-/// within about ±0.5 between. Two octaves make its spectrum fuller.
-inline float gradientNoise(std::uint64_t seed, std::uint32_t channel, double x)
+/// One channel of a seed's noise (what gradientNoise() takes).
+inline std::uint64_t noiseChannel(std::uint64_t seed, std::uint32_t channel)
+{
+    return mixBits(seed ^ (std::uint64_t(channel) << 40));
+}
+
+/// The slope of a channel's noise at the integer i, in [−1, 1].
+inline float noiseSlope(std::uint64_t channel, std::int64_t i)
+{
+    return float(mixBits(channel ^ std::uint64_t(i)) >> 40) * (2.0f / 16777216.0f) - 1.0f;
+}
+
+/// Noise at f ∈ [0, 1) into a cell whose ends have slopes `a` and `b`.
+inline float gradientNoiseIn(float a, float b, float f)
+{
+    const float u = f * f * f * (f * (f * 6 - 15) + 10);
+    return (1 - u) * a * f + u * b * (f - 1);
+}
+
+/// Noise at x on a channel: 0 at every integer, slopes in [−1, 1] there, values within about
+/// ±0.5 between.
+inline float gradientNoise(std::uint64_t channel, double x)
 {
     const double cell = std::floor(x);
-    const float f = float(x - cell);
-    const std::uint64_t base = mixBits(seed ^ (std::uint64_t(channel) << 40));
-    const auto slope = [base](std::int64_t i) {
-        return float(mixBits(base ^ std::uint64_t(i)) >> 40) * (2.0f / 16777216.0f) - 1.0f;
-    };
-    const std::int64_t i = std::int64_t(cell);
-    const float u = f * f * f * (f * (f * 6 - 15) + 10);
-    return (1 - u) * slope(i) * f + u * slope(i + 1) * (f - 1);
+    const auto i = std::int64_t(cell);
+    return gradientNoiseIn(noiseSlope(channel, i), noiseSlope(channel, i + 1), float(x - cell));
 }
 
 } // namespace thespis::core::motion

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "anim/curve.h"
 #include "anim/hanim.h"
+#include "anim/simd.h"
 #include "motion/gradient_noise.h"
 #include "motion/posture_clip.h"
 
@@ -21,6 +23,7 @@ constexpr int kClosest = 3;                // the next transition is picked amon
 // samples: one octave's is 0.141).
 constexpr float kNoiseScale = 1.0f / 0.1074f;
 constexpr double kNoiseFrequency = 0.4; // Hz of PC 1's variation; higher PCs a little faster
+constexpr std::size_t kMaxVariedPcs = 16; // PCs varied at most (the databases hold 10)
 
 } // namespace
 
@@ -55,12 +58,23 @@ Result<std::shared_ptr<IdleMotion>> IdleMotion::create(std::shared_ptr<const Idl
     const anim::Skeleton& postures = postureSkeleton();
     idle->m_postureMap = *PostureMap::create(postures, PostureSet::WholeBody);
     idle->m_restFrame = postures.restFrame();
-    idle->m_body = anim::measureBody(postures);
-    idle->m_rootHeight = postures.frameLayout()->floatOffset(postures.translationElement(0)) + 1;
-    idle->m_direct = character.joints() == postures.joints();
-    if (!idle->m_direct)
-        idle->m_retarget = anim::FrameRetarget(postures, character);
+    idle->m_retarget = anim::FrameRetarget(postures, character);
+    if (!idle->m_retarget.matchesFeet())
+        return makeError(ErrorCode::InvalidArgument,
+                         "The idle motion cannot stand this character on the floor: its feet were not found.");
     idle->m_program.reserve(kProgramRoom);
+    idle->m_joinOffset.assign(kPostureFloats, 0.0f);
+    const IdleDatabase& db = *idle->m_database;
+    for (std::size_t i = 0; options.amplitude > 0 && i < std::min(db.variation.size(), kMaxVariedPcs); ++i) {
+        // Higher PCs a little faster; a second octave a little over twice as fast, weaker.
+        const double spread = 1.0 + 0.15 * double(i);
+        idle->m_octaves.push_back({.channel = noiseChannel(options.seed, std::uint32_t(i)), .spread = spread, .weight = 0.7f});
+        idle->m_octaves.push_back(
+            {.channel = noiseChannel(options.seed, std::uint32_t(i) + 1000), .spread = spread, .octave = 2.13, .weight = 0.3f});
+        const float scale = options.amplitude * db.variation[i] * kNoiseScale;
+        for (float v : db.whole.component(int(i)))
+            idle->m_noiseDirections.push_back(scale * v);
+    }
     return idle;
 }
 
@@ -161,7 +175,9 @@ void IdleMotion::sample(const ProgramEntry& entry, double t, float* posture) con
 void IdleMotion::posture(double t, std::span<float> out) const
 {
     t = std::max(0.0, t);
-    ProgramEntry entry, previous;
+    ProgramEntry entry;
+    std::array<float, kPostureFloats> joinOffset;
+    std::array<float, kMaxVariedPcs> noise{};
     bool joining = false;
     {
         std::lock_guard lock(m_mutex);
@@ -171,35 +187,56 @@ void IdleMotion::posture(double t, std::span<float> out) const
         const std::size_t k = std::size_t(after - m_program.begin()) - 1; // the first entry starts at 0
         entry = m_program[k];
         if (k > 0 && t < entry.start + m_options.blendSeconds) {
-            previous = m_program[k - 1];
+            // The join: the new transition starts where the last one ended (their difference
+            // added, fading out over the blend with the engine's cubic curve), so the motion
+            // never jumps.
+            if (m_joinIndex != k) {
+                std::array<float, kPostureFloats> ended, starts;
+                const ProgramEntry& previous = m_program[k - 1];
+                sample(previous, previous.end, ended.data());
+                sample(entry, entry.start, starts.data());
+                for (std::size_t i = 0; i < kPostureFloats; ++i)
+                    m_joinOffset[i] = ended[i] - starts[i];
+                m_joinIndex = k;
+            }
+            std::copy(m_joinOffset.begin(), m_joinOffset.end(), joinOffset.begin());
             joining = true;
+        }
+        // Small variations: gradient noise along the leading PCs.
+        for (std::size_t k = 0; k < m_octaves.size(); ++k) {
+            NoiseOctave& o = m_octaves[k];
+            const double x = o.octave * (t * kNoiseFrequency * o.spread);
+            const double cell = std::floor(x);
+            if (const auto i = std::int64_t(cell); i != o.cell) {
+                o.cell = i;
+                o.a = noiseSlope(o.channel, i);
+                o.b = noiseSlope(o.channel, i + 1);
+            }
+            noise[k / 2] += o.weight * gradientNoiseIn(o.a, o.b, float(x - cell));
         }
     }
     float* posture = out.data();
     sample(entry, t, posture);
     if (joining) {
-        // The join: the new transition starts where the last one ended (their difference added,
-        // fading out over the blend with the engine's cubic curve), so the motion never jumps.
-        std::array<float, kPostureFloats> ended, starts;
-        sample(previous, previous.end, ended.data());
-        sample(entry, entry.start, starts.data());
         static const anim::Curve fade = anim::Curve::cubicFade(0.0, 1.0);
         const float w = float(fade.evaluate((t - entry.start) / m_options.blendSeconds, 1.0));
         for (std::size_t i = 0; i < kPostureFloats; ++i)
-            posture[i] += w * (ended[i] - starts[i]);
+            posture[i] += w * joinOffset[i];
     }
-    // Small variations: gradient noise along the leading PCs, each PC's own spread.
-    const IdleDatabase& db = *m_database;
-    if (m_options.amplitude > 0)
-        for (std::size_t i = 0; i < db.variation.size(); ++i) {
-            const double x = t * kNoiseFrequency * (1.0 + 0.15 * double(i));
-            const float n = 0.7f * gradientNoise(m_options.seed, std::uint32_t(i), x) +
-                            0.3f * gradientNoise(m_options.seed, std::uint32_t(i) + 1000, 2.13 * x);
-            const float c = m_options.amplitude * db.variation[i] * kNoiseScale * n;
-            const std::span<const float> v = db.whole.component(int(i));
-            for (std::size_t j = 0; j < kPostureFloats; ++j)
-                posture[j] += c * v[j];
-        }
+    // Each varied PC's noise along its direction (its own spread, times the amplitude): four
+    // posture floats at a time, summed over the PCs in a register.
+    const std::size_t varied = m_octaves.size() / 2;
+    const float* directions = m_noiseDirections.data();
+    std::size_t j = 0;
+    for (; j + 4 <= kPostureFloats; j += 4) {
+        anim::simd::F4 sum = anim::simd::load(posture + j);
+        for (std::size_t i = 0; i < varied; ++i)
+            sum += anim::simd::splat(noise[i]) * anim::simd::load(directions + i * kPostureFloats + j);
+        anim::simd::store(posture + j, sum);
+    }
+    for (; j < kPostureFloats; ++j)
+        for (std::size_t i = 0; i < varied; ++i)
+            posture[j] += noise[i] * directions[i * kPostureFloats + j];
 }
 
 void IdleMotion::evaluate(double t, std::span<float> out) const
@@ -210,20 +247,10 @@ void IdleMotion::evaluate(double t, std::span<float> out) const
     std::copy(m_restFrame.begin(), m_restFrame.end(), frame.begin());
     const std::span<float> onPostures(frame.data(), m_restFrame.size());
     m_postureMap.toFrame(posture, onPostures);
-    // The lower foot on the floor.
-    constexpr std::size_t kJoints = 25, kSoles = 32;
-    std::array<anim::Vec3d, kJoints> positions;
-    std::array<anim::Quatd, kJoints> orientations;
-    std::array<double, kSoles> heights;
-    const std::size_t soles = std::min(m_body.soles.size(), kSoles);
-    postureSkeleton().worldTransforms(onPostures, positions, orientations);
-    anim::soleHeights(m_body, positions, orientations, std::span<double>(heights.data(), soles));
-    onPostures[m_rootHeight] -= float(anim::footHeight(std::span<const double>(heights.data(), soles), m_body.footSoftness) -
-                                      m_body.footRestHeight);
-    if (m_direct)
-        std::copy(onPostures.begin(), onPostures.end(), out.begin());
-    else
-        m_retarget.apply(onPostures, out);
+    // Onto the character (its own skeleton too: then rotations are copied exactly), the lower
+    // foot on the floor: an idle always stands, so a join or a variation must neither lift both
+    // feet nor sink one.
+    m_retarget.apply(onPostures, out, std::numeric_limits<float>::infinity());
 }
 
 } // namespace thespis::core::motion

@@ -16,12 +16,12 @@
 // retargeted onto the character's.
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <vector>
 
 #include "anim/blendable.h"
-#include "anim/body_measure.h"
 #include "anim/retarget.h"
 #include "motion/idle_database.h"
 #include "motion/posture.h"
@@ -71,13 +71,26 @@ private:
     IdleOptions m_options;
     anim::FrameLayoutPtr m_layout;
     PostureMap m_postureMap;          ///< onto the posture skeleton
-    anim::FrameRetarget m_retarget;   ///< posture skeleton → character
-    bool m_direct = false;            ///< the character is the posture skeleton
+    anim::FrameRetarget m_retarget;   ///< posture skeleton → character, feet on the floor
     std::vector<float> m_restFrame;   ///< the posture skeleton's rest
-    anim::BodyMeasure m_body;         ///< the posture skeleton's soles
-    std::size_t m_rootHeight = 0;     ///< float offset of the root's height in its frame
+    // The small variations: per varied PC two octaves of noise, and its direction in posture
+    // space scaled by its spread and the amplitude (78 floats per PC, PC after PC). Each octave
+    // keeps the slopes of the cell it was last in (they change every few seconds).
+    struct NoiseOctave {
+        std::uint64_t channel = 0;
+        double spread = 1, octave = 1; ///< x = octave · (t · kNoiseFrequency · spread)
+        float weight = 1;
+        std::int64_t cell = std::numeric_limits<std::int64_t>::min();
+        float a = 0, b = 0;            ///< slopes at the cell's ends
+    };
+    mutable std::vector<NoiseOctave> m_octaves;
+    std::vector<float> m_noiseDirections;
     mutable std::mutex m_mutex;
     mutable std::vector<ProgramEntry> m_program;
+    // The join being played: its program index and the difference it fades out (frames come in
+    // order, so it is found once per join).
+    mutable std::size_t m_joinIndex = 0;
+    mutable std::vector<float> m_joinOffset;
 };
 
 } // namespace thespis::core::motion

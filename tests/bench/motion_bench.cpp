@@ -3,6 +3,8 @@
 // IdleFrame/C: C characters (H-Anim LOA 1 bodies, so each frame is also retargeted) idling on
 //   one database built from the CMU standing clips, each with its own seed; one frame of each per
 //   iteration at a new time. Reports ns per character per frame and allocations per frame.
+// IdleFrameOwnSkeleton/C: the same on the idle's own 25-joint H-Anim body (the demo's characters'):
+//   rotations are copied, not re-composed.
 // PcDistance/k: the paper's eq. 1 over k PCs between two postures already in PC space, against
 //   JointDistance: the same postures compared joint by joint (the angle between each joint's
 //   quaternions, and the roots' distance), the way a joint-based method does.
@@ -48,14 +50,13 @@ std::shared_ptr<const IdleDatabase> standingDatabase()
     return db;
 }
 
-void IdleFrame(benchmark::State& state)
+void idleFrames(benchmark::State& state, const anim::Skeleton& body)
 {
     const auto db = standingDatabase();
     if (!db) {
         state.SkipWithError("the CMU standing clips are missing");
         return;
     }
-    const anim::Skeleton& body = anim::hanim::skeleton(anim::hanim::Level::Loa1);
     std::vector<std::shared_ptr<IdleMotion>> crowd;
     for (int c = 0; c < state.range(0); ++c)
         crowd.push_back(*IdleMotion::create(db, body, {.seed = std::uint64_t(c + 1)}));
@@ -76,6 +77,16 @@ void IdleFrame(benchmark::State& state)
                                                   benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
     state.counters["allocs/frame"] =
         double(thespis::test::allocationCount() - before) / double(std::max<benchmark::IterationCount>(1, state.iterations()));
+}
+
+void IdleFrame(benchmark::State& state)
+{
+    idleFrames(state, anim::hanim::skeleton(anim::hanim::Level::Loa1));
+}
+
+void IdleFrameOwnSkeleton(benchmark::State& state)
+{
+    idleFrames(state, postureSkeleton());
 }
 
 void PcDistance(benchmark::State& state)
@@ -166,6 +177,7 @@ void TrainPca(benchmark::State& state)
 } // namespace
 
 BENCHMARK(IdleFrame)->Arg(1)->Arg(100);
+BENCHMARK(IdleFrameOwnSkeleton)->Arg(1)->Arg(100);
 BENCHMARK(PcDistance)->Arg(5)->Arg(10)->Arg(20)->Arg(78);
 BENCHMARK(JointDistance);
 BENCHMARK(TrainPca)->Unit(benchmark::kMillisecond);
