@@ -96,8 +96,21 @@ FrameRetarget::ChainStep FrameRetarget::chainStep(const Skeleton& skeleton, int 
     return step;
 }
 
-std::pair<Vec3, Quat> FrameRetarget::chainPose(std::span<const ChainStep> chain, std::span<const float> frame,
-                                              bool fromOrigin)
+std::uint32_t FrameRetarget::addChain(const Skeleton& skeleton, std::span<const int> chain, Tree& tree,
+                                      std::map<int, std::uint32_t>& places)
+{
+    int parent = -1;
+    for (int joint : chain) {
+        auto [at, added] = places.try_emplace(joint, std::uint32_t(tree.size()));
+        if (added)
+            tree.push_back({chainStep(skeleton, joint), parent});
+        parent = int(at->second);
+    }
+    return std::uint32_t(parent);
+}
+
+void FrameRetarget::treePoses(const Tree& tree, std::size_t count, std::span<const float> frame, bool fromOrigin,
+                              Vec3* positions, Quat* orientations)
 {
     const auto offsetOf = [&](const ChainStep& step) {
         if (step.translation < 0)
@@ -105,17 +118,18 @@ std::pair<Vec3, Quat> FrameRetarget::chainPose(std::span<const ChainStep> chain,
         const float* t = &frame[std::size_t(step.translation)];
         return Vec3{t[0], t[1], t[2]};
     };
-    const auto rotationOf = [&](const ChainStep& step) {
+    for (std::size_t k = 0; k < count; ++k) {
+        const ChainStep& step = tree[k].step;
         const float* q = &frame[step.rotation];
-        return Quat{q[0], q[1], q[2], q[3]};
-    };
-    Vec3 position = fromOrigin ? offsetOf(chain.front()) : Vec3{};
-    Quat orientation = rotationOf(chain.front());
-    for (std::size_t k = 1; k < chain.size(); ++k) {
-        position = position + rotate(orientation, offsetOf(chain[k]));
-        orientation = orientation * rotationOf(chain[k]);
+        const Quat rotation{q[0], q[1], q[2], q[3]};
+        if (const int parent = tree[k].parent; parent < 0) {
+            positions[k] = fromOrigin ? offsetOf(step) : Vec3{};
+            orientations[k] = rotation;
+        } else {
+            positions[k] = positions[parent] + rotate(orientations[parent], offsetOf(step));
+            orientations[k] = orientations[parent] * rotation;
+        }
     }
-    return {position, orientation};
 }
 
 FrameRetarget::FrameRetarget(const Skeleton& from, const Skeleton& to, const RetargetOptions& options)
@@ -262,20 +276,17 @@ FrameRetarget::FrameRetarget(const Skeleton& from, const Skeleton& to, const Ret
         if (points.size() != 2)
             points = {anchor};
         Vec3d fromMean{}, toMean{};
+        std::map<int, std::uint32_t> sourcePlaces, targetPlaces;
         for (int point : points) {
             const int fromPoint = source[std::size_t(point)];
             fromMean = fromMean + fromBody.restPositions[std::size_t(fromPoint)] * (1.0 / double(points.size()));
             toMean = toMean + toBody.restPositions[std::size_t(point)] * (1.0 / double(points.size()));
-            m_sourceChains.push_back({std::uint32_t(m_sourceSteps.size()), 0});
-            for (int j : chainFromRoot(from, fromPoint))
-                m_sourceSteps.push_back(chainStep(from, j));
-            m_sourceChains.back().second = std::uint32_t(m_sourceSteps.size());
-            m_targetChains.push_back({std::uint32_t(m_targetSteps.size()), 0});
+            m_sourcePoints.push_back(addChain(from, chainFromRoot(from, fromPoint), m_sourceTree, sourcePlaces));
             const std::vector<int> chain = chainFromRoot(to, point);
-            for (auto it = std::find(chain.begin(), chain.end(), placed); it != chain.end(); ++it)
-                m_targetSteps.push_back(chainStep(to, *it));
-            m_targetChains.back().second = std::uint32_t(m_targetSteps.size());
+            const auto first = std::find(chain.begin(), chain.end(), placed);
+            m_targetPoints.push_back(addChain(to, std::span(first, chain.end()), m_targetTree, targetPlaces));
         }
+        m_sourcePlacementJoints = m_sourceTree.size();
         // Where the source stands at rest: its rest pose, or, for a rig hanging from y = 0, that
         // pose lifted until its lowest foot joint is as high as the target's (scaled back).
         if (!fromBody.standsOnGround() && fromBody.hasFeet())
@@ -304,26 +315,23 @@ FrameRetarget::FrameRetarget(const Skeleton& from, const Skeleton& to, const Ret
             m_targetFeetRest = float(toBody.footRestHeight);
             m_sourceSoftness = float(fromBody.footSoftness);
             m_targetSoftness = float(toBody.footSoftness);
-            const auto addSoles = [&](const BodyMeasure& body, const Skeleton& skeleton, int firstJoint, std::vector<ChainStep>& steps,
-                                      std::vector<Sole>& soles) {
-                std::map<int, std::pair<std::uint32_t, std::uint32_t>> chains;
+            const auto addSoles = [&](const BodyMeasure& body, const Skeleton& skeleton, int firstJoint, Tree& tree,
+                                      std::map<int, std::uint32_t>& places, std::vector<Sole>& soles) {
                 for (const BodyMeasure::SolePoint& sole : body.soles) {
-                    auto [it, added] = chains.try_emplace(sole.joint);
-                    if (added) {
-                        const std::vector<int> chain = chainFromRoot(skeleton, sole.joint);
-                        it->second.first = std::uint32_t(steps.size());
-                        for (auto k = std::find(chain.begin(), chain.end(), firstJoint); k != chain.end(); ++k)
-                            steps.push_back(chainStep(skeleton, *k));
-                        it->second.second = std::uint32_t(steps.size());
-                    }
-                    soles.push_back({it->second.first, it->second.second, toFloat(sole.offset)});
+                    const std::vector<int> chain = chainFromRoot(skeleton, sole.joint);
+                    const auto first = std::find(chain.begin(), chain.end(), firstJoint);
+                    soles.push_back({addChain(skeleton, std::span(first, chain.end()), tree, places), toFloat(sole.offset)});
                 }
             };
-            addSoles(fromBody, from, 0, m_sourceSteps, m_sourceSoles);
-            addSoles(toBody, to, placed, m_targetSteps, m_targetSoles);
-            // Soles on one joint next to each other: apply() finds each chain's pose once.
-            for (std::vector<Sole>* soles : {&m_sourceSoles, &m_targetSoles})
-                std::stable_sort(soles->begin(), soles->end(), [](const Sole& a, const Sole& b) { return a.begin < b.begin; });
+            addSoles(fromBody, from, 0, m_sourceTree, sourcePlaces, m_sourceSoles);
+            addSoles(toBody, to, placed, m_targetTree, targetPlaces, m_targetSoles);
+            if (m_sourceTree.size() > kMaxTree || m_targetTree.size() > kMaxTree) { // not a body's legs
+                m_matchFeet = false;
+                m_sourceSoles.clear();
+                m_targetSoles.clear();
+                m_sourceTree.resize(m_sourcePlacementJoints);
+                m_targetTree.resize(m_targetPoints.empty() ? 0 : *std::max_element(m_targetPoints.begin(), m_targetPoints.end()) + 1);
+            }
         }
     }
 
@@ -393,16 +401,21 @@ void FrameRetarget::apply(std::span<const float> fromFrame, std::span<float> toF
         toFrame[offset + 1] = rest.y;
         toFrame[offset + 2] = rest.z;
     }
-    if (!m_sourceChains.empty()) {
+    if (!m_sourcePoints.empty()) {
         // The placed joint's translation puts the target's points (hips) where the source's are,
-        // scaled: forward kinematics down those chains only.
+        // scaled: forward kinematics down to those points (and the feet) only.
+        Vec3 fromPositions[kMaxTree], toPositions[kMaxTree];
+        Quat fromOrientations[kMaxTree], toOrientations[kMaxTree];
+        // Standing (an infinite planted height): the source's feet need not be measured.
+        const bool sourceFeet = m_matchFeet && !std::isinf(sourcePlantedFeet);
+        treePoses(m_sourceTree, sourceFeet ? m_sourceTree.size() : m_sourcePlacementJoints, fromFrame, true,
+                  fromPositions, fromOrientations);
+        treePoses(m_targetTree, m_targetTree.size(), toFrame, false, toPositions, toOrientations);
         Vec3 fromMean, toMean;
-        const float share = 1.0f / float(m_sourceChains.size());
-        for (std::size_t p = 0; p < m_sourceChains.size(); ++p) {
-            const auto [fromBegin, fromEnd] = m_sourceChains[p];
-            const auto [toBegin, toEnd] = m_targetChains[p];
-            fromMean = fromMean + chainPose(std::span(m_sourceSteps).subspan(fromBegin, fromEnd - fromBegin), fromFrame, true).first * share;
-            toMean = toMean + chainPose(std::span(m_targetSteps).subspan(toBegin, toEnd - toBegin), toFrame, false).first * share;
+        const float share = 1.0f / float(m_sourcePoints.size());
+        for (std::size_t p = 0; p < m_sourcePoints.size(); ++p) {
+            fromMean = fromMean + fromPositions[m_sourcePoints[p]] * share;
+            toMean = toMean + toPositions[m_targetPoints[p]] * share;
         }
         float* out = &toFrame[m_placedTranslation];
         out[0] = fromMean.x * m_scaleF + m_placeAdd.x - toMean.x;
@@ -410,27 +423,19 @@ void FrameRetarget::apply(std::span<const float> fromFrame, std::span<float> toF
         out[2] = fromMean.z * m_scaleF + m_placeAdd.z - toMean.z;
         if (m_matchFeet) {
             // The soles as high over the floor as the source's, scaled (few points: no allocation).
-            // Soles on one joint share its chain: its pose is found once.
-            const auto soleHeights = [](const std::vector<ChainStep>& steps, const std::vector<Sole>& soles,
-                                        std::span<const float> frame, bool fromOrigin, float* heights) {
-                std::pair<Vec3, Quat> pose;
-                for (std::size_t k = 0; k < soles.size(); ++k) {
-                    const Sole& sole = soles[k];
-                    if (k == 0 || sole.begin != soles[k - 1].begin || sole.end != soles[k - 1].end)
-                        pose = chainPose(std::span(steps).subspan(sole.begin, sole.end - sole.begin), frame, fromOrigin);
-                    heights[k] = (pose.first + rotate(pose.second, sole.offset)).y;
-                }
+            const auto soleHeights = [](const std::vector<Sole>& soles, const Vec3* positions, const Quat* orientations,
+                                        float* heights) {
+                for (std::size_t k = 0; k < soles.size(); ++k)
+                    heights[k] = (positions[soles[k].joint] + rotate(orientations[soles[k].joint], soles[k].offset)).y;
             };
             float fromHeights[kMaxSoles], toHeights[kMaxSoles];
-            // Standing (an infinite planted height): the source's feet need not be measured.
-            const bool standing = std::isinf(sourcePlantedFeet);
             float lift = 0;
-            if (!standing) {
-                soleHeights(m_sourceSteps, m_sourceSoles, fromFrame, true, fromHeights);
+            if (sourceFeet) {
+                soleHeights(m_sourceSoles, fromPositions, fromOrientations, fromHeights);
                 lift = std::max(0.0f, footHeight<float>(std::span(fromHeights, m_sourceSoles.size()), m_sourceSoftness) -
                                           sourcePlantedFeet);
             }
-            soleHeights(m_targetSteps, m_targetSoles, toFrame, false, toHeights);
+            soleHeights(m_targetSoles, toPositions, toOrientations, toHeights);
             const float toFeet = footHeight<float>(std::span(toHeights, m_targetSoles.size()), m_targetSoftness);
             // Never below the floor: where the performer's feet sink into it (a capture's floor is
             // rarely level), the body is lifted instead.

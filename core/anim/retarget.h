@@ -89,21 +89,34 @@ private:
         bool hasBefore = false, hasAfter = false;
         std::uint32_t upBegin = 0, upEnd = 0, downBegin = 0, downEnd = 0; // into m_path
     };
-    // A step of forward kinematics down a chain: the joint's rotation and its offset from its
-    // parent (a translation element, or its rest offset), as float offsets in a frame.
+    // A step of forward kinematics: the joint's rotation and its offset from its parent (a
+    // translation element, or its rest offset), as float offsets in a frame.
     struct ChainStep {
         std::size_t rotation = 0;
         int translation = -1;
         Vec3 offset;
     };
     static ChainStep chainStep(const Skeleton& skeleton, int joint);
-    /// Position and orientation of a chain's last joint: from the first joint's translation
-    /// (`fromOrigin`: the source's root) or relative to the first joint.
-    static std::pair<Vec3, Quat> chainPose(std::span<const ChainStep> chain, std::span<const float> frame,
-                                           bool fromOrigin);
-    // A sole point (body_measure.h) at the end of a chain: steps [begin, end), its offset there.
+    // The few joints placement and feet need (hips, legs, feet) as a tree walked once per frame:
+    // each joint once, parents first, with its parent's place in the tree (-1: the first joint,
+    // the source's root or the target's placed joint).
+    struct TreeStep {
+        ChainStep step;
+        int parent = -1;
+    };
+    using Tree = std::vector<TreeStep>;
+    static constexpr std::size_t kMaxTree = 128;
+    /// Adds `chain` (joints from the tree's first one down) to the tree; returns the place of its
+    /// last joint. `places` maps joints already in the tree to theirs.
+    static std::uint32_t addChain(const Skeleton& skeleton, std::span<const int> chain, Tree& tree,
+                                  std::map<int, std::uint32_t>& places);
+    /// Positions and orientations of the tree's first `count` joints: from the first joint's
+    /// translation (`fromOrigin`: the source's root) or relative to the first joint.
+    static void treePoses(const Tree& tree, std::size_t count, std::span<const float> frame, bool fromOrigin,
+                          Vec3* positions, Quat* orientations);
+    // A sole point (body_measure.h) on a joint of the tree, its offset there.
     struct Sole {
-        std::uint32_t begin = 0, end = 0;
+        std::uint32_t joint = 0;
         Vec3 offset;
     };
     struct TranslationCopy {
@@ -114,10 +127,12 @@ private:
     std::vector<RotationMap> m_rotations;
     std::vector<std::size_t> m_path;          ///< float offsets of source rotations
     std::vector<std::size_t> m_restRotations; ///< float offsets of target rotations left at rest
-    // The body's placement: points (both hips, else the anchor) as chains in the source from its
-    // root, and in the target from the joint whose translation is written.
-    std::vector<ChainStep> m_sourceSteps, m_targetSteps;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> m_sourceChains, m_targetChains;
+    // The body's placement: points (both hips, else the anchor) in the source's tree from its
+    // root, and in the target's from the joint whose translation is written; the soles follow
+    // in the trees. The source's placement needs only its tree's first joints.
+    Tree m_sourceTree, m_targetTree;
+    std::vector<std::uint32_t> m_sourcePoints, m_targetPoints;
+    std::size_t m_sourcePlacementJoints = 0;
     std::size_t m_placedTranslation = 0; ///< float offset of the translation written
     Vec3 m_placeAdd;                     ///< it is source points · scale + add − target points
     float m_placedBaseY = 0;             ///< world height of the placed joint's parent at rest
