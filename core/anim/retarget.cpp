@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <new>
 #include <string_view>
 
 #include "anim/body_measure.h"
@@ -83,6 +84,14 @@ BodyMeasure withSoles(BodyMeasure body, const std::vector<BodyMeasure::SolePoint
     body.footRestHeight = footHeight<double>(heights, body.footSoftness);
     return body;
 }
+
+// Uninitialized room for a tree's values (an array of bytes holds them: they are trivially
+// copyable and destructible).
+template <class T, std::size_t N>
+struct Room {
+    alignas(T) unsigned char bytes[sizeof(T) * N];
+    T* get() { return std::launder(reinterpret_cast<T*>(bytes)); }
+};
 
 } // namespace
 
@@ -404,8 +413,14 @@ void FrameRetarget::apply(std::span<const float> fromFrame, std::span<float> toF
     if (!m_sourcePoints.empty()) {
         // The placed joint's translation puts the target's points (hips) where the source's are,
         // scaled: forward kinematics down to those points (and the feet) only.
-        Vec3 fromPositions[kMaxTree], toPositions[kMaxTree];
-        Quat fromOrientations[kMaxTree], toOrientations[kMaxTree];
+        // The trees' poses, written before they are read: room left uninitialized (Vec3 and Quat
+        // have default values, which would be filled in every frame).
+        Room<Vec3, kMaxTree> fromPositionRoom, toPositionRoom;
+        Room<Quat, kMaxTree> fromOrientationRoom, toOrientationRoom;
+        Vec3* fromPositions = fromPositionRoom.get();
+        Vec3* toPositions = toPositionRoom.get();
+        Quat* fromOrientations = fromOrientationRoom.get();
+        Quat* toOrientations = toOrientationRoom.get();
         // Standing (an infinite planted height): the source's feet need not be measured.
         const bool sourceFeet = m_matchFeet && !std::isinf(sourcePlantedFeet);
         treePoses(m_sourceTree, sourceFeet ? m_sourceTree.size() : m_sourcePlacementJoints, fromFrame, true,

@@ -105,7 +105,7 @@ private:
         int parent = -1;
     };
     using Tree = std::vector<TreeStep>;
-    static constexpr std::size_t kMaxTree = 128;
+    static constexpr std::size_t kMaxTree = 32; // legs and feet; more, and the feet are not matched
     /// Adds `chain` (joints from the tree's first one down) to the tree; returns the place of its
     /// last joint. `places` maps joints already in the tree to theirs.
     static std::uint32_t addChain(const Skeleton& skeleton, std::span<const int> chain, Tree& tree,
