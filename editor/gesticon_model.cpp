@@ -1,6 +1,8 @@
 #include "editor/gesticon_model.h"
 
 #include <QLocale>
+#include <QPalette>
+#include <QRegularExpression>
 
 #include <cmath>
 #include <variant>
@@ -110,6 +112,8 @@ QVariant GesticonModel::data(const QModelIndex& index, int role) const
                        : tr("Only the joints of the gesture's clip move");
         return {};
     }
+    if (column == BandColumn && role == Qt::ForegroundRole && !g->dependentJointFilter)
+        return QPalette().color(QPalette::Disabled, QPalette::Text); // kept, but the filter is off
     if (role == Qt::TextAlignmentRole)
         return column == FadeInColumn || column == FadeOutColumn ? QVariant(Qt::AlignRight | Qt::AlignVCenter)
                                                                  : QVariant(Qt::AlignLeft | Qt::AlignVCenter);
@@ -134,6 +138,13 @@ QVariant GesticonModel::data(const QModelIndex& index, int role) const
             return seconds;
         return QLocale().toString(seconds, 'f', 2);
     }
+    case BandColumn:
+        if (role == Qt::ToolTipRole)
+            return tr("The filter keeps upper-body PCs 1–%1, fades them out to PC %2 and mutes the rest: a later "
+                      "start keeps the gesture closer to its keys")
+                .arg(g->filterFadeFrom)
+                .arg(g->filterMuteAbove);
+        return QStringLiteral("%1–%2").arg(g->filterFadeFrom).arg(g->filterMuteAbove);
     default:
         return {};
     }
@@ -151,6 +162,7 @@ QVariant GesticonModel::headerData(int section, Qt::Orientation orientation, int
         case FadeInColumn: return tr("Fade in (s)");
         case FadeOutColumn: return tr("Fade out (s)");
         case FilterColumn: return tr("Dependent joints");
+        case BandColumn: return tr("Filter PCs");
         default: return {};
         }
     }
@@ -170,6 +182,8 @@ QVariant GesticonModel::headerData(int section, Qt::Orientation orientation, int
         case FadeOutColumn: return tr("How long the gesture takes to blend out, in seconds");
         case FilterColumn:
             return tr("Dependent-joint filter: joints the gesture does not drive (spine, neck) follow it");
+        case BandColumn:
+            return tr("The filter's band, e.g. 20–30: PCs kept up to the first, muted above the second (paper: 20–30 of 48)");
         default: return {};
         }
     }
@@ -213,6 +227,18 @@ bool GesticonModel::setData(const QModelIndex& index, const QVariant& value, int
             next.mask = value.toString().toStdString();
             text = tr("Change Gesture Body Part");
             break;
+        case BandColumn: {
+            static const QRegularExpression band(QStringLiteral("^\\s*(\\d+)\\s*[-–]\\s*(\\d+)\\s*$"));
+            const QRegularExpressionMatch match = band.match(value.toString());
+            if (!match.hasMatch()) {
+                emit editFailed(tr("Write the filter's band as two PC numbers, e.g. 30–40."));
+                return false;
+            }
+            next.filterFadeFrom = match.captured(1).toInt();
+            next.filterMuteAbove = match.captured(2).toInt();
+            text = tr("Change Filter Band");
+            break;
+        }
         case FadeInColumn:
         case FadeOutColumn: {
             bool ok = false;

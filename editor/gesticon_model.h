@@ -1,10 +1,10 @@
 #pragma once
 // GesticonModel: the gesture database (gesticon, paper §5) of one character of a Document as a
 // table: name, clip, body part (the mask; "Whole body" without one), fade in and fade out in
-// seconds, and the dependent-joint filter as a check box. Editable in place: each setData() is
-// one undoable edit of the document (core::edit::replaceGesture); an edit the document refuses
-// (a duplicate name, a clip the character does not have, …) changes nothing and is reported
-// through editFailed(). The model follows the document's edits (do, undo, redo) on its own.
+// seconds, the dependent-joint filter as a check box and its band of PCs ("20–30"). Editable in
+// place: each setData() is one undoable edit of the document (core::edit::replaceGesture); an
+// edit the document refuses (a duplicate name, a clip the character does not have, a band out of
+// order, …) changes nothing and is reported through editFailed(). The model follows the document's edits (do, undo, redo) on its own.
 
 #include <QAbstractTableModel>
 #include <QPointer>
@@ -20,7 +20,7 @@ class Document;
 class GesticonModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { NameColumn, ClipColumn, MaskColumn, FadeInColumn, FadeOutColumn, FilterColumn, ColumnCount };
+    enum Column { NameColumn, ClipColumn, MaskColumn, FadeInColumn, FadeOutColumn, FilterColumn, BandColumn, ColumnCount };
 
     explicit GesticonModel(QObject* parent = nullptr);
 

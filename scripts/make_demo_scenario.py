@@ -96,7 +96,9 @@ WAVE_JOINTS = ["r_sternoclavicular", "r_shoulder", "r_elbow", "r_radiocarpal"]
 
 def wave_clip(name, waves, wave_period):
     """The right arm rises sideways until the forearm points up, the hand waves `waves` times,
-    and the arm comes down again."""
+    and the arm comes down again. Keyed as a body moves: the upper arm turns outwards about its
+    length, so the elbow bends about its own hinge (the PCA of captured motion reads anything
+    else as unnatural, and the dependent-joint filter would straighten it)."""
     rise = 0.6
     duration = rise + waves * wave_period + rise
 
@@ -105,10 +107,10 @@ def wave_clip(name, waves, wave_period):
         waving = min(max(t - rise, 0.0), waves * wave_period)
         swing = math.sin(2.0 * math.pi * waving / wave_period) * smooth(min(t, duration - t) / rise)
         rotations = [
-            rz(-8.0 * up),                                   # the clavicle lifts
-            mul(rx(-15.0 * up), rz(-100.0 * up)),            # upper arm out and a little forward
-            rz(-80.0 * up - 20.0 * swing),                   # forearm up, waving in the frontal plane
-            rz(-10.0 * swing),                               # the hand follows
+            rz(-8.0 * up),                                          # the clavicle lifts
+            mul(rx(-15.0 * up), mul(rz(-100.0 * up), ry(-90.0 * up))),  # upper arm out, a little forward, turned out
+            rx(-80.0 * up - 20.0 * swing),                          # the elbow bends the forearm up, waving
+            rx(-10.0 * swing),                                      # the hand follows
         ]
         return [c for q in rotations for c in q]
 
@@ -180,10 +182,13 @@ def layer(name, kind, actions):
     return {"schema": "Layer.2", "name": name, "kind": kind, "mode": "normalized", "actions": actions}
 
 
-def gesture(name, clip_name, mask_name, fade_in, fade_out, dependent_joint_filter=False):
-    return {"schema": "Gesture.1", "name": name, "clip": clip_name, "mask": mask_name,
-            "fadeIn": ticks(fade_in), "fadeOut": ticks(fade_out),
-            "dependentJointFilter": dependent_joint_filter}
+def gesture(name, clip_name, mask_name, fade_in, fade_out, dependent_joint_filter=False, filter_band=None):
+    out = {"schema": "Gesture.1", "name": name, "clip": clip_name, "mask": mask_name,
+           "fadeIn": ticks(fade_in), "fadeOut": ticks(fade_out),
+           "dependentJointFilter": dependent_joint_filter}
+    if filter_band:
+        out["filterFadeFrom"], out["filterMuteAbove"] = filter_band
+    return out
 
 
 def marker(name, time):
@@ -225,7 +230,9 @@ def scenario():
         ],
         # The gestures a speech script (or the studio's gesticon panel) can trigger.
         "gestures": [
-            gesture("greet", "wave", "rightArm", 0.4, 0.5, dependent_joint_filter=True),
+            # The shipped posture database holds no waves: the paper's 20–30 would take most of
+            # the elbow's bend for unnatural (43°); from PC 30 it keeps it within 10°.
+            gesture("greet", "wave", "rightArm", 0.4, 0.5, dependent_joint_filter=True, filter_band=(30, 40)),
             gesture("agree", "nod", "head", 0.25, 0.25),
         ],
     }

@@ -774,6 +774,26 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>Change Gesture Fade Out</source>
         <translation>Ausblendung der Geste ändern</translation>
     </message>
+    <message>
+        <source>The filter keeps upper-body PCs 1–%1, fades them out to PC %2 and mutes the rest: a later start keeps the gesture closer to its keys</source>
+        <translation>Der Filter behält die Oberkörper-HK 1–%1, blendet sie bis HK %2 aus und schaltet den Rest stumm: ein späterer Beginn hält die Geste näher an ihren Keys</translation>
+    </message>
+    <message>
+        <source>Filter PCs</source>
+        <translation>Filter-HK</translation>
+    </message>
+    <message>
+        <source>The filter&apos;s band, e.g. 20–30: PCs kept up to the first, muted above the second (paper: 20–30 of 48)</source>
+        <translation>Das Band des Filters, z. B. 20–30: HK bis zur ersten behalten, über der zweiten stumm (Artikel: 20–30 von 48)</translation>
+    </message>
+    <message>
+        <source>Write the filter&apos;s band as two PC numbers, e.g. 30–40.</source>
+        <translation>Das Band des Filters als zwei HK-Nummern schreiben, z. B. 30–40.</translation>
+    </message>
+    <message>
+        <source>Change Filter Band</source>
+        <translation>Filterband ändern</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::GesticonPanel</name>

@@ -774,6 +774,26 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>Change Gesture Fade Out</source>
         <translation>Modifier le fondu de sortie du geste</translation>
     </message>
+    <message>
+        <source>The filter keeps upper-body PCs 1–%1, fades them out to PC %2 and mutes the rest: a later start keeps the gesture closer to its keys</source>
+        <translation>Le filtre garde les CP 1–%1 du haut du corps, les atténue jusqu’à la CP %2 et coupe le reste : un début plus tardif garde le geste plus proche de ses clés</translation>
+    </message>
+    <message>
+        <source>Filter PCs</source>
+        <translation>CP du filtre</translation>
+    </message>
+    <message>
+        <source>The filter&apos;s band, e.g. 20–30: PCs kept up to the first, muted above the second (paper: 20–30 of 48)</source>
+        <translation>La bande du filtre, p. ex. 20–30 : CP gardées jusqu’à la première, coupées au-delà de la seconde (article : 20–30 sur 48)</translation>
+    </message>
+    <message>
+        <source>Write the filter&apos;s band as two PC numbers, e.g. 30–40.</source>
+        <translation>Écrire la bande du filtre comme deux numéros de CP, p. ex. 30–40.</translation>
+    </message>
+    <message>
+        <source>Change Filter Band</source>
+        <translation>Changer la bande du filtre</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::GesticonPanel</name>

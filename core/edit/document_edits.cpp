@@ -596,6 +596,10 @@ Result<void> checkGesture(const Scenario& scenario, int characterIndex, const Ge
         return invalid("The scenario has no mask named " + quote(gesture.mask) + ".");
     if (gesture.fadeIn < 0 || gesture.fadeOut < 0)
         return invalid("Fade times must not be negative.");
+    if (gesture.filterFadeFrom < 1 || gesture.filterMuteAbove > 78 || gesture.filterMuteAbove < gesture.filterFadeFrom)
+        return invalid("The dependent-joint filter's band must be two PC numbers from 1 to 78, the second not below the "
+                       "first (found " + std::to_string(gesture.filterFadeFrom) + "–" +
+                       std::to_string(gesture.filterMuteAbove) + ").");
     return {};
 }
 

@@ -14,7 +14,9 @@ ActionSpec gestureAction(Scenario& scenario, const Gesture& gesture, Tick start)
     action.weight = anim::Curve::cubicFade(ticksToSeconds(gesture.fadeIn), ticksToSeconds(gesture.fadeOut));
     if (!gesture.dependentJointFilter)
         return action;
-    action.modifiers.push_back({.kind = ModifierKind::DependentJointFilter});
+    action.modifiers.push_back({.kind = ModifierKind::DependentJointFilter,
+                                .fadeFrom = gesture.filterFadeFrom,
+                                .muteAbove = gesture.filterMuteAbove});
     const NamedMask* part = gesture.mask.empty() ? nullptr : scenario.findMask(gesture.mask);
     if (!part)
         return action; // the whole body, or a mask the runtime will report missing

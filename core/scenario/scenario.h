@@ -143,6 +143,10 @@ struct Gesture {
     /// Run the dependent-joint motion filter (paper §4.3) over the gesture, so that joints the
     /// gesture does not drive (spine, neck) follow it.
     bool dependentJointFilter = false;
+    /// The filter's band (format 5, optional): upper-body PCs 1 … filterFadeFrom kept, faded out
+    /// until filterMuteAbove, the rest muted. Later starts keep the gesture closer to its keys
+    /// (paper §4.4); the paper's 20–30 suits a posture database that holds gestures like it.
+    int filterFadeFrom = 20, filterMuteAbove = 30;
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const Gesture&) const = default;
 };

@@ -536,6 +536,11 @@ Gesture readGesture(const json& value, const std::string& path)
     gesture.fadeIn = r.ticks("fadeIn", false);
     gesture.fadeOut = r.ticks("fadeOut", false);
     gesture.dependentJointFilter = r.boolean("dependentJointFilter", false);
+    gesture.filterFadeFrom = int(r.integer("filterFadeFrom", false, 20, 1, 78));
+    gesture.filterMuteAbove = int(r.integer("filterMuteAbove", false, 30, 1, 78));
+    if (gesture.filterMuteAbove < gesture.filterFadeFrom)
+        fail(r.fieldPath("filterMuteAbove"), "must not be below filterFadeFrom (" + std::to_string(gesture.filterFadeFrom) +
+                                                 "), found " + std::to_string(gesture.filterMuteAbove));
     gesture.extra = r.extra();
     return gesture;
 }

@@ -289,6 +289,10 @@ ojson writeCharacter(const Character& character)
             entry["fadeIn"] = gesture.fadeIn;
             entry["fadeOut"] = gesture.fadeOut;
             entry["dependentJointFilter"] = gesture.dependentJointFilter;
+            if (gesture.filterFadeFrom != Gesture{}.filterFadeFrom || gesture.filterMuteAbove != Gesture{}.filterMuteAbove) {
+                entry["filterFadeFrom"] = gesture.filterFadeFrom;
+                entry["filterMuteAbove"] = gesture.filterMuteAbove;
+            }
             appendExtra(entry, gesture.extra);
             gestures.push_back(std::move(entry));
         }

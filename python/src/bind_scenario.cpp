@@ -242,6 +242,8 @@ void bindDocument(py::module_& m)
         .def_readwrite("fade_out", &Gesture::fadeOut, "Fade-out time in ticks.")
         .def_readwrite("dependent_joint_filter", &Gesture::dependentJointFilter,
                        "Run the dependent-joint motion filter, so that joints the gesture does not drive follow it.")
+        .def_readwrite("filter_fade_from", &Gesture::filterFadeFrom, "The filter keeps upper-body PCs up to it (20).")
+        .def_readwrite("filter_mute_above", &Gesture::filterMuteAbove, "The filter mutes PCs above it (30).")
         .def("__eq__", [](const Gesture& a, const Gesture& b) { return a == b; })
         .def("__repr__", [](const Gesture& g) {
             return "<thespis.Gesture '" + g.name + "' clip '" + g.clip + "'>";

@@ -116,7 +116,7 @@ TEST(Edit, EveryKindOfChangeRoundTrips)
     expectRoundTrip(s, *setMaskWeights(s, 0, std::vector<std::string>{"vt1", "vl5"}, 0.5f));
     expectRoundTrip(s, *addMask(s, "legs", anim::JointMask::preset(anim::MaskPreset::LowerBody)));
     expectRoundTrip(s, *renameMask(s, 0, "neck and head"));
-    expectRoundTrip(s, *addGesture(s, 1, Gesture{"wave hello", "wave", "leftArm", Second / 4, Second / 4, true, {}}));
+    expectRoundTrip(s, *addGesture(s, 1, Gesture{"wave hello", "wave", "leftArm", Second / 4, Second / 4, true}));
     expectRoundTrip(s, *removeGesture(s, {0, 0}));
     scene::SegmentTag tag{"l_hand", scene::SegmentRole::Receiver, std::nullopt};
     expectRoundTrip(s, *setSegmentTags(s, 0, {tag}));
@@ -482,7 +482,7 @@ TEST(DocumentEdits, MasksRenameEverywhereAndRefuseRemovalWhileUsed)
 {
     Scenario s = swingScenario({0});
     s.characters[0].layers[0].actions[0].mask = "arm";
-    s.characters[0].gestures.push_back(Gesture{"g", "swing", "arm", 0, 0, false, {}});
+    s.characters[0].gestures.push_back(Gesture{"g", "swing", "arm", 0, 0, false});
     auto removal = removeMask(s, 0);
     ASSERT_FALSE(removal.ok());
     EXPECT_NE(removal.error().message.find("action \"swing 1\""), std::string::npos) << removal.error().message;
@@ -549,14 +549,14 @@ TEST(DocumentEdits, PathsRebaseWithTheDocument)
 TEST(DocumentEdits, GesturesAreChecked)
 {
     Scenario s = swingScenario();
-    EXPECT_TRUE(addGesture(s, 0, Gesture{"g", "swing", "arm", 0, 0, false, {}}).ok());
-    EXPECT_FALSE(addGesture(s, 0, Gesture{"", "swing", "", 0, 0, false, {}}).ok());
-    EXPECT_FALSE(addGesture(s, 0, Gesture{"g", "nope", "", 0, 0, false, {}}).ok());
-    EXPECT_FALSE(addGesture(s, 0, Gesture{"g", "swing", "nope", 0, 0, false, {}}).ok());
-    EXPECT_FALSE(addGesture(s, 3, Gesture{"g", "swing", "", 0, 0, false, {}}).ok());
-    applied(s, addGesture(s, 0, Gesture{"g", "swing", "arm", 0, 0, false, {}}));
-    EXPECT_FALSE(addGesture(s, 0, Gesture{"g", "swing", "", 0, 0, false, {}}).ok()); // taken
-    EXPECT_TRUE(replaceGesture(s, {0, 0}, Gesture{"g", "swing", "", Second, 0, true, {}}).ok()); // its own name
+    EXPECT_TRUE(addGesture(s, 0, Gesture{"g", "swing", "arm", 0, 0, false}).ok());
+    EXPECT_FALSE(addGesture(s, 0, Gesture{"", "swing", "", 0, 0, false}).ok());
+    EXPECT_FALSE(addGesture(s, 0, Gesture{"g", "nope", "", 0, 0, false}).ok());
+    EXPECT_FALSE(addGesture(s, 0, Gesture{"g", "swing", "nope", 0, 0, false}).ok());
+    EXPECT_FALSE(addGesture(s, 3, Gesture{"g", "swing", "", 0, 0, false}).ok());
+    applied(s, addGesture(s, 0, Gesture{"g", "swing", "arm", 0, 0, false}));
+    EXPECT_FALSE(addGesture(s, 0, Gesture{"g", "swing", "", 0, 0, false}).ok()); // taken
+    EXPECT_TRUE(replaceGesture(s, {0, 0}, Gesture{"g", "swing", "", Second, 0, true}).ok()); // its own name
 }
 
 TEST(Edit, RuntimeScopeNamesWhatAnEditRebuilds)

@@ -746,6 +746,16 @@ TEST(ScenarioIo, MalformedFieldsAreNamed)
          "characters[0].skeleton: \"model\" plays on the model's own rig, and the character has no model"},
         {"negative light intensity", [&](json& d) { d["lighting"] = json::parse(R"({"probe": "p.hdr", "intensity": -2})"); },
          "lighting.intensity: must not be negative"},
+        {"filter band out of order",
+         [&](json& d) {
+             d["characters"][0]["gestures"] = json::parse(
+                 R"([{"name": "g", "clip": "c", "dependentJointFilter": true, "filterFadeFrom": 35, "filterMuteAbove": 25}])");
+         },
+         "characters[0].gestures[0].filterMuteAbove: must not be below filterFadeFrom (35), found 25"},
+        {"filter band past the posture", [&](json& d) {
+             d["characters"][0]["gestures"] = json::parse(R"([{"name": "g", "clip": "c", "filterFadeFrom": 90}])");
+         },
+         "characters[0].gestures[0].filterFadeFrom: "},
         {"mask weight above 1", [&](json& d) { d["masks"][0]["weights"]["r_shoulder"] = 1.5; },
          "masks[0].weights.r_shoulder: must be between 0 and 1"},
         {"mask weight text", [&](json& d) { d["masks"][0]["weights"]["r_shoulder"] = "full"; },

@@ -134,7 +134,7 @@ void GesticonPanelTest::listsEachCharactersGestures()
     QCOMPARE(panel.currentCharacter(), 0);
     QCOMPARE(panel.characterCombo()->currentText(), QStringLiteral("Creon"));
     QCOMPARE(model.rowCount(), 2);
-    QCOMPARE(model.columnCount(), 6);
+    QCOMPARE(model.columnCount(), 7);
     QCOMPARE(model.headerData(GesticonModel::MaskColumn, Qt::Horizontal).toString(), QStringLiteral("Body part"));
     QCOMPARE(cell(model, 0, GesticonModel::NameColumn), QStringLiteral("greet"));
     QCOMPARE(cell(model, 0, GesticonModel::ClipColumn), QStringLiteral("wave"));
@@ -144,6 +144,8 @@ void GesticonPanelTest::listsEachCharactersGestures()
     QCOMPARE(model.data(model.index(0, GesticonModel::FadeInColumn), Qt::EditRole).toDouble(), 0.4);
     QCOMPARE(model.data(model.index(0, GesticonModel::FilterColumn), Qt::CheckStateRole).value<Qt::CheckState>(),
              Qt::Checked);
+    QCOMPARE(cell(model, 0, GesticonModel::BandColumn), QStringLiteral("30–40"));
+    QCOMPARE(cell(model, 1, GesticonModel::BandColumn), QStringLiteral("20–30")); // the paper's, greyed: filter off
     QCOMPARE(cell(model, 1, GesticonModel::NameColumn), QStringLiteral("agree"));
     QCOMPARE(cell(model, 1, GesticonModel::ClipColumn), QStringLiteral("nod"));
     QCOMPARE(cell(model, 1, GesticonModel::MaskColumn), QStringLiteral("head"));
@@ -239,13 +241,25 @@ void GesticonPanelTest::everyEditIsOneUndoStepAndUndoAllRestores()
     QCOMPARE(undo.text(5), QStringLiteral("Turn Dependent-Joint Filter On"));
     QCOMPARE(model.data(model.index(1, GesticonModel::FilterColumn), Qt::CheckStateRole).value<Qt::CheckState>(),
              Qt::Checked);
+    // Its band: written as two PC numbers; one out of order or not numbers is refused, saying how.
+    QSignalSpy failures(&model, &GesticonModel::editFailed);
+    QVERIFY(model.setData(model.index(1, GesticonModel::BandColumn), QStringLiteral("25-35")));
+    QCOMPARE(gestures()[1].filterFadeFrom, 25);
+    QCOMPARE(gestures()[1].filterMuteAbove, 35);
+    QCOMPARE(undo.text(6), QStringLiteral("Change Filter Band"));
+    QVERIFY(!model.setData(model.index(1, GesticonModel::BandColumn), QStringLiteral("35–25")));
+    QVERIFY(!model.setData(model.index(1, GesticonModel::BandColumn), QStringLiteral("lots")));
+    QCOMPARE(failures.count(), 2);
+    QVERIFY2(failures.at(0).at(0).toString().contains(QStringLiteral("not below")), qPrintable(failures.at(0).at(0).toString()));
+    QVERIFY2(failures.at(1).at(0).toString().contains(QStringLiteral("30–40")), qPrintable(failures.at(1).at(0).toString()));
+    QCOMPARE(undo.count(), 7);
 
     // Clip and body part.
     QVERIFY(model.setData(model.index(3, GesticonModel::ClipColumn), QStringLiteral("nod")));
     QVERIFY(model.setData(model.index(3, GesticonModel::MaskColumn), QStringLiteral("head")));
     QCOMPARE(gestures()[3].clip, std::string("nod"));
     QCOMPARE(gestures()[3].mask, std::string("head"));
-    QCOMPARE(undo.count(), 8);
+    QCOMPARE(undo.count(), 9);
 
     // Remove two selected gestures: one step.
     panel.table()->clearSelection();
@@ -255,9 +269,9 @@ void GesticonPanelTest::everyEditIsOneUndoStepAndUndoAllRestores()
                                             QItemSelectionModel::Select | QItemSelectionModel::Rows);
     QCOMPARE(panel.selectedRows(), QList<int>({2, 3}));
     panel.removeSelected();
-    QCOMPARE(undo.count(), 9);
+    QCOMPARE(undo.count(), 10);
     // "Remove 2 Gestures" once thespis_en.ts has the plural forms of the new strings.
-    QVERIFY2(undo.text(8).startsWith(QStringLiteral("Remove 2 Gesture")), qPrintable(undo.text(8)));
+    QVERIFY2(undo.text(9).startsWith(QStringLiteral("Remove 2 Gesture")), qPrintable(undo.text(8)));
     QCOMPARE(model.rowCount(), 2);
     QCOMPARE(gestures().size(), std::size_t(2));
     QCOMPARE(gestures()[0].name, std::string("greet"));
