@@ -67,13 +67,13 @@ Result<std::shared_ptr<IdleMotion>> IdleMotion::create(std::shared_ptr<const Idl
     const IdleDatabase& db = *idle->m_database;
     for (std::size_t i = 0; options.amplitude > 0 && i < std::min(db.variation.size(), kMaxVariedPcs); ++i) {
         // Higher PCs a little faster; a second octave a little over twice as fast, weaker.
+        // Each PC moves by its own spread in the data, times the amplitude.
         const double spread = 1.0 + 0.15 * double(i);
-        idle->m_octaves.push_back({.channel = noiseChannel(options.seed, std::uint32_t(i)), .spread = spread, .weight = 0.7f});
-        idle->m_octaves.push_back(
-            {.channel = noiseChannel(options.seed, std::uint32_t(i) + 1000), .spread = spread, .octave = 2.13, .weight = 0.3f});
         const float scale = options.amplitude * db.variation[i] * kNoiseScale;
-        for (float v : db.whole.component(int(i)))
-            idle->m_noiseDirections.push_back(scale * v);
+        idle->m_octaves.push_back(
+            {.channel = noiseChannel(options.seed, std::uint32_t(i)), .spread = spread, .weight = 0.7f * scale});
+        idle->m_octaves.push_back({.channel = noiseChannel(options.seed, std::uint32_t(i) + 1000),
+                                   .spread = spread, .octave = 2.13, .weight = 0.3f * scale});
     }
     return idle;
 }
@@ -223,10 +223,10 @@ void IdleMotion::posture(double t, std::span<float> out) const
         for (std::size_t i = 0; i < kPostureFloats; ++i)
             posture[i] += w * joinOffset[i];
     }
-    // Each varied PC's noise along its direction (its own spread, times the amplitude): four
-    // posture floats at a time, summed over the PCs in a register.
+    // Each varied PC's noise along its eigenvector (rows of the basis every character shares):
+    // four posture floats at a time, summed over the PCs in a register.
     const std::size_t varied = m_octaves.size() / 2;
-    const float* directions = m_noiseDirections.data();
+    const float* directions = m_database->whole.components().data();
     std::size_t j = 0;
     for (; j + 4 <= kPostureFloats; j += 4) {
         anim::simd::F4 sum = anim::simd::load(posture + j);

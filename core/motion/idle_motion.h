@@ -73,9 +73,9 @@ private:
     PostureMap m_postureMap;          ///< onto the posture skeleton
     anim::FrameRetarget m_retarget;   ///< posture skeleton → character, feet on the floor
     std::vector<float> m_restFrame;   ///< the posture skeleton's rest
-    // The small variations: per varied PC two octaves of noise, and its direction in posture
-    // space scaled by its spread and the amplitude (78 floats per PC, PC after PC). Each octave
-    // keeps the slopes of the cell it was last in (they change every few seconds).
+    // The small variations: per varied PC two octaves of noise, weighted by the PC's spread and
+    // the amplitude. Each octave keeps the slopes of the cell it was last in (they change every
+    // few seconds).
     struct NoiseOctave {
         std::uint64_t channel = 0;
         double spread = 1, octave = 1; ///< x = octave · (t · kNoiseFrequency · spread)
@@ -84,7 +84,6 @@ private:
         float a = 0, b = 0;            ///< slopes at the cell's ends
     };
     mutable std::vector<NoiseOctave> m_octaves;
-    std::vector<float> m_noiseDirections;
     mutable std::mutex m_mutex;
     mutable std::vector<ProgramEntry> m_program;
     // The join being played: its program index and the difference it fades out (frames come in
