@@ -431,6 +431,15 @@ void bindEdit(py::module_& m)
         "scenario"_a, "character"_a, "clips"_a,
         "Adds clips to a character (names made unique): ClipImport.clips from thespis.plan_clip_import.");
     e.def(
+        "add_idle_action",
+        [](const Scenario& scenario, const edit::LayerPath& layer, const std::string& database, Tick start) {
+            return unwrap(edit::addIdleAction(scenario, layer, database, start));
+        },
+        "scenario"_a, "layer"_a, "database"_a, "start"_a = Tick(0),
+        "An open-ended action of idle motion from `database` (an .idle file) on a body layer: the character's idle "
+        "clip on it, else a new clip 'idle' added in the same edit (what dropping Idle from the studio's clip library "
+        "does).");
+    e.def(
         "replace_clip",
         [](const Scenario& scenario, const edit::CharacterItemPath& clip, core::scenario::ClipAsset value) {
             return unwrap(edit::replaceClip(scenario, clip, std::move(value)));

@@ -98,3 +98,21 @@ def test_train_writes_the_bases_and_reports_progress(tmp_path):
     assert bases.whole.dimension == 78 and bases.upper.dimension == 45
     assert reports and all(done <= total or total == 0 for done, total in reports)
     np.testing.assert_array_equal(motion.load_bases(tmp_path / "p.pca").whole.mean, bases.whole.mean)
+
+
+def test_idle_from_the_library_as_an_edit(tmp_path):
+    """What dropping "Idle" on a body track does in the studio, from Python: the shipped database
+    plays on a new character, which then stands and moves."""
+    from thespis import edit
+    scenario = thespis.Scenario()
+    edit.add_character(scenario, edit.new_character("Walker")).apply(scenario)
+    database = str(RESOURCES / "motion" / "cmu_standing.idle")
+    edit.add_idle_action(scenario, (0, 0), database, thespis.seconds_to_ticks(1.0)).apply(scenario)
+    clip = scenario.characters[0].clips[-1]
+    assert clip.name == "idle" and clip.idle.database == database and clip.idle.seed == 1
+    assert scenario.characters[0].layers[0].actions[-1].clip == "idle"
+    with pytest.raises(ValueError, match="body layer"):
+        edit.add_idle_action(scenario, (0, 1), database)
+    walker = thespis.build_runtime(scenario, tmp_path).characters[0]
+    frames = np.array([walker.evaluate_body(t) for t in (5.0, 6.0, 30.0)])
+    assert np.abs(frames[0] - frames[1]).max() > 1e-3 and np.abs(frames[0] - frames[2]).max() > 1e-3
