@@ -27,6 +27,29 @@ constexpr std::size_t kMaxVariedPcs = 16; // PCs varied at most (the databases h
 
 } // namespace
 
+struct IdleMotion::Rig {
+    std::vector<anim::Joint> character; ///< the skeleton it is for
+    PostureMap map;                     ///< onto the posture skeleton
+    std::vector<float> rest;            ///< the posture skeleton's rest frame
+    anim::FrameRetarget retarget;       ///< posture skeleton → character, feet on the floor
+};
+
+std::shared_ptr<const IdleMotion::Rig> IdleMotion::rigFor(const anim::Skeleton& character)
+{
+    static std::mutex mutex;
+    static std::vector<std::weak_ptr<const Rig>> rigs;
+    std::lock_guard lock(mutex);
+    std::erase_if(rigs, [](const std::weak_ptr<const Rig>& rig) { return rig.expired(); });
+    for (const std::weak_ptr<const Rig>& weak : rigs)
+        if (auto rig = weak.lock(); rig && rig->character == character.joints())
+            return rig;
+    const anim::Skeleton& postures = postureSkeleton();
+    auto rig = std::make_shared<const Rig>(Rig{character.joints(), *PostureMap::create(postures, PostureSet::WholeBody),
+                                               postures.restFrame(), anim::FrameRetarget(postures, character)});
+    rigs.push_back(rig);
+    return rig;
+}
+
 Result<std::shared_ptr<IdleMotion>> IdleMotion::create(std::shared_ptr<const IdleDatabase> database,
                                                        const anim::Skeleton& character, const IdleOptions& options)
 {
@@ -55,11 +78,8 @@ Result<std::shared_ptr<IdleMotion>> IdleMotion::create(std::shared_ptr<const Idl
     idle->m_database = std::move(database);
     idle->m_options = options;
     idle->m_layout = character.frameLayout();
-    const anim::Skeleton& postures = postureSkeleton();
-    idle->m_postureMap = *PostureMap::create(postures, PostureSet::WholeBody);
-    idle->m_restFrame = postures.restFrame();
-    idle->m_retarget = anim::FrameRetarget(postures, character);
-    if (!idle->m_retarget.matchesFeet())
+    idle->m_rig = rigFor(character);
+    if (!idle->m_rig->retarget.matchesFeet())
         return makeError(ErrorCode::InvalidArgument,
                          "The idle motion cannot stand this character on the floor: its feet were not found.");
     idle->m_program.reserve(kProgramRoom);
@@ -244,13 +264,13 @@ void IdleMotion::evaluate(double t, std::span<float> out) const
     std::array<float, kPostureFloats> posture;
     this->posture(t, posture);
     std::array<float, kFrameFloats> frame;
-    std::copy(m_restFrame.begin(), m_restFrame.end(), frame.begin());
-    const std::span<float> onPostures(frame.data(), m_restFrame.size());
-    m_postureMap.toFrame(posture, onPostures);
+    std::copy(m_rig->rest.begin(), m_rig->rest.end(), frame.begin());
+    const std::span<float> onPostures(frame.data(), m_rig->rest.size());
+    m_rig->map.toFrame(posture, onPostures);
     // Onto the character (its own skeleton too: then rotations are copied exactly), the lower
     // foot on the floor: an idle always stands, so a join or a variation must neither lift both
     // feet nor sink one.
-    m_retarget.apply(onPostures, out, std::numeric_limits<float>::infinity());
+    m_rig->retarget.apply(onPostures, out, std::numeric_limits<float>::infinity());
 }
 
 } // namespace thespis::core::motion

@@ -70,9 +70,12 @@ private:
     std::shared_ptr<const IdleDatabase> m_database;
     IdleOptions m_options;
     anim::FrameLayoutPtr m_layout;
-    PostureMap m_postureMap;          ///< onto the posture skeleton
-    anim::FrameRetarget m_retarget;   ///< posture skeleton → character, feet on the floor
-    std::vector<float> m_restFrame;   ///< the posture skeleton's rest
+    // What turns a posture into the character's frame (the posture skeleton's map and rest, the
+    // retarget that stands the character's feet on the floor): one per character skeleton,
+    // shared by every idle on it, so that a crowd reads one copy.
+    struct Rig;
+    static std::shared_ptr<const Rig> rigFor(const anim::Skeleton& character);
+    std::shared_ptr<const Rig> m_rig;
     // The small variations: per varied PC two octaves of noise, weighted by the PC's spread and
     // the amplitude. Each octave keeps the slopes of the cell it was last in (they change every
     // few seconds).
