@@ -17,6 +17,7 @@ const std::vector<Command>& commands()
         {renderSpec(), &runRender},
         {trainPcaSpec(), &runTrainPca},
         {buildIdleSpec(), &runBuildIdle},
+        {calibrateSpec(), &runCalibrate},
 #ifdef THESPIS_WITH_PYTHON
         {runSpec(), &runRun},
 #endif

@@ -35,6 +35,8 @@ CommandSpec trainPcaSpec();
 int runTrainPca(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec buildIdleSpec();
 int runBuildIdle(const CommandSpec& spec, const ParsedArguments& arguments);
+CommandSpec calibrateSpec();
+int runCalibrate(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec infoSpec();
 int runInfo(const CommandSpec& spec, const ParsedArguments& arguments);
 #ifdef THESPIS_WITH_PYTHON
