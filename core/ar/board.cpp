@@ -43,7 +43,48 @@ bool gridSize(std::string_view part, int& columns, int& rows)
     return parse(part.substr(0, x), columns) && parse(part.substr(x + 1), rows);
 }
 
+struct Dictionary {
+    std::string_view name;
+    int markers;
+};
+// In the order of OpenCV 4.6's PREDEFINED_DICTIONARY_NAME: the index is its number.
+constexpr Dictionary Dictionaries[] = {
+    {"DICT_4X4_50", 50},       {"DICT_4X4_100", 100},       {"DICT_4X4_250", 250},         {"DICT_4X4_1000", 1000},
+    {"DICT_5X5_50", 50},       {"DICT_5X5_100", 100},       {"DICT_5X5_250", 250},         {"DICT_5X5_1000", 1000},
+    {"DICT_6X6_50", 50},       {"DICT_6X6_100", 100},       {"DICT_6X6_250", 250},         {"DICT_6X6_1000", 1000},
+    {"DICT_7X7_50", 50},       {"DICT_7X7_100", 100},       {"DICT_7X7_250", 250},         {"DICT_7X7_1000", 1000},
+    {"DICT_ARUCO_ORIGINAL", 1024}, {"DICT_APRILTAG_16h5", 30}, {"DICT_APRILTAG_25h9", 35},
+    {"DICT_APRILTAG_36h10", 2320}, {"DICT_APRILTAG_36h11", 587},
+};
+
 } // namespace
+
+int arucoDictionaryId(std::string_view name)
+{
+    for (int id = 0; id < int(std::size(Dictionaries)); ++id)
+        if (Dictionaries[id].name == name)
+            return id;
+    return -1;
+}
+
+int arucoDictionarySize(std::string_view name)
+{
+    const int id = arucoDictionaryId(name);
+    return id < 0 ? 0 : Dictionaries[id].markers;
+}
+
+int boardMarkerCount(const BoardSpec& board)
+{
+    switch (board.kind) {
+    case BoardKind::Chessboard:
+        return 0;
+    case BoardKind::ArucoGrid:
+        return board.columns * board.rows;
+    case BoardKind::Charuco:
+        return board.columns * board.rows / 2; // the white squares of a chessboard starting black
+    }
+    return 0;
+}
 
 Result<BoardSpec> parseBoard(std::string_view text)
 {
@@ -64,7 +105,7 @@ Result<BoardSpec> parseBoard(std::string_view text)
                                    : "expected aruco-grid:DICTIONARY:COLUMNSxROWS:MARKER:GAP");
         board.inverted = inverted;
         board.dictionary = std::string(parts[1]);
-        if (!board.dictionary.starts_with("DICT_"))
+        if (arucoDictionaryId(board.dictionary) < 0)
             return wrong(text, "\"" + board.dictionary + "\" is not an ArUco dictionary (DICT_4X4_50, DICT_6X6_250, …)");
         next = 2;
     } else {
@@ -82,6 +123,11 @@ Result<BoardSpec> parseBoard(std::string_view text)
     }
     if (board.kind == BoardKind::Chessboard && (board.columns < 2 || board.rows < 2))
         return wrong(text, "a chessboard needs at least 2 × 2 inner corners");
+    if (board.kind == BoardKind::Charuco && (board.columns < 2 || board.rows < 2))
+        return wrong(text, "a ChArUco board needs at least 2 × 2 squares");
+    if (const int size = arucoDictionarySize(board.dictionary); boardMarkerCount(board) > size && size > 0)
+        return wrong(text, "the board needs " + std::to_string(boardMarkerCount(board)) + " markers but " +
+                               board.dictionary + " has only " + std::to_string(size));
     return board;
 }
 

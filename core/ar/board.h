@@ -30,6 +30,14 @@ Result<BoardSpec> parseBoard(std::string_view text);
 /// The text parseBoard() reads back as `board`.
 std::string formatBoard(const BoardSpec& board);
 
+/// OpenCV's number for a predefined ArUco dictionary name (DICT_4X4_50 … DICT_APRILTAG_36h11), or
+/// −1 for a name it does not have.
+int arucoDictionaryId(std::string_view name);
+/// How many markers the named dictionary holds (0 for an unknown name).
+int arucoDictionarySize(std::string_view name);
+/// How many markers the board carries (0 for a chessboard).
+int boardMarkerCount(const BoardSpec& board);
+
 /// A chessboard's inner corners in its own plane (z = 0), row after row, in metres.
 std::vector<std::array<float, 3>> chessboardCorners(const BoardSpec& board);
 

@@ -1,0 +1,37 @@
+#pragma once
+// What finds a target in a frame: a marker board (marker_tracker.h) or a planar picture
+// (planar_tracker.h). A tracker estimates each frame on its own, but may use what it saw last to
+// search faster or to choose between ambiguous poses; TrackingSession (tracking_session.h) adds
+// the temporal filter, the lost / recovered events and the latency.
+
+#include <array>
+#include <string>
+
+#include "ar/pose.h"
+#include "ar/video_frame.h"
+
+namespace thespis::core::ar {
+
+struct TrackerEstimate {
+    bool found = false;
+    TargetPose pose;               ///< when found
+    int features = 0;              ///< markers, ChArUco corners or matched points used
+    double reprojectionError = -1; ///< RMS, pixels, of the pose against what was found
+    /// How well the pose is known: its information matrix (the inverse covariance) over
+    /// [translation (m), rotation (rad) about the target's own axes], row-major, as the
+    /// reprojection's Jacobian and the pixel noise left give it. The temporal filter weighs the
+    /// frame by it: one small marker seen edge-on counts for less than a whole board face-on.
+    std::array<double, 36> information{};
+};
+
+class Tracker {
+public:
+    virtual ~Tracker() = default;
+    /// What it tracks, for people ("ArUco grid 4 × 3 of DICT_4X4_50", "graf1.png, 0.30 m wide").
+    virtual std::string description() const = 0;
+    virtual TrackerEstimate estimate(const VideoFrame& frame) = 0;
+    /// Forgets what it saw (a new video, a jump).
+    virtual void reset() = 0;
+};
+
+} // namespace thespis::core::ar
