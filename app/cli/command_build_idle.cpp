@@ -70,12 +70,8 @@ int runBuildIdle(const CommandSpec& spec, const ParsedArguments& arguments)
 
     const auto built = runJobWithProgress(spec.name, job, {core::motion::BuildIdleJob::ReadingStage, "recordings"}, quiet,
                                           job.output.string() + " was not written");
-    if (!built) {
-        if (built.error().code == core::ErrorCode::Cancelled)
-            return ExitCancelled;
-        printError(spec.name, built.error());
-        return built.error().code == core::ErrorCode::IoError ? ExitFailure : ExitInvalidInput;
-    }
+    if (!built)
+        return reportJobFailure(spec.name, built.error());
     if (quiet)
         return ExitOk;
     const core::motion::IdleDatabase& db = job.database;

@@ -58,12 +58,8 @@ int runTrainPca(const CommandSpec& spec, const ParsedArguments& arguments)
 
     const auto trained = runJobWithProgress(spec.name, job, {core::motion::TrainPcaJob::ReadingStage, "clips"}, quiet,
                                             job.output.string() + " was not written");
-    if (!trained) {
-        if (trained.error().code == core::ErrorCode::Cancelled)
-            return ExitCancelled;
-        printError(spec.name, trained.error());
-        return trained.error().code == core::ErrorCode::IoError ? ExitFailure : ExitInvalidInput;
-    }
+    if (!trained)
+        return reportJobFailure(spec.name, trained.error());
     if (!quiet) {
         std::printf("Trained on %ld postures of %zu clips; wrote %s.\n", job.frameCount, job.sources.size(),
                     job.output.string().c_str());

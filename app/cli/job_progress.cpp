@@ -5,6 +5,8 @@
 #include <optional>
 
 #include "cancel.h"
+#include "commands.h"
+#include "exit_codes.h"
 #include "progress.h"
 
 namespace thespis::cli {
@@ -35,6 +37,14 @@ core::Result<void> runJobWithProgress(const std::string& command, core::Job& job
     if (progress)
         progress->finish();
     return done;
+}
+
+int reportJobFailure(const std::string& command, const core::Error& error)
+{
+    if (error.code == core::ErrorCode::Cancelled)
+        return ExitCancelled;
+    printError(command, error);
+    return error.code == core::ErrorCode::IoError ? ExitFailure : ExitInvalidInput;
 }
 
 } // namespace thespis::cli

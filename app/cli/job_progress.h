@@ -22,4 +22,9 @@ struct JobBar {
 core::Result<void> runJobWithProgress(const std::string& command, core::Job& job, const JobBar& bar, bool quiet,
                                       const std::string& afterCancel);
 
+/// The exit code for a job that failed (exit_codes.h), after printing its error (a cancel was
+/// printed already): cancelled → ExitCancelled, a write that failed → ExitFailure, anything
+/// else wrong with the inputs → ExitInvalidInput.
+int reportJobFailure(const std::string& command, const core::Error& error);
+
 } // namespace thespis::cli

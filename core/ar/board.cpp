@@ -20,6 +20,15 @@ std::vector<std::string_view> split(std::string_view text, char separator)
     }
 }
 
+// "text" with its quotes (built by appending: GCC 12 warns falsely on "\"" + std::string).
+std::string quoted(std::string_view text)
+{
+    std::string result(1, '"');
+    result += text;
+    result += '"';
+    return result;
+}
+
 Error wrong(std::string_view text, const std::string& what)
 {
     return makeError(ErrorCode::InvalidArgument, "Board \"" + std::string(text) + "\": " + what);
@@ -106,18 +115,18 @@ Result<BoardSpec> parseBoard(std::string_view text)
         board.inverted = inverted;
         board.dictionary = std::string(parts[1]);
         if (arucoDictionaryId(board.dictionary) < 0)
-            return wrong(text, "\"" + board.dictionary + "\" is not an ArUco dictionary (DICT_4X4_50, DICT_6X6_250, …)");
+            return wrong(text, quoted(board.dictionary) + " is not an ArUco dictionary (DICT_4X4_50, DICT_6X6_250, …)");
         next = 2;
     } else {
         return wrong(text, "unknown kind \"" + std::string(kind) + "\" (chessboard, aruco-grid or charuco)");
     }
     if (!gridSize(parts[next], board.columns, board.rows))
-        return wrong(text, "\"" + std::string(parts[next]) + "\" is not COLUMNSxROWS (e.g. 9x6)");
+        return wrong(text, quoted(parts[next]) + " is not COLUMNSxROWS (e.g. 9x6)");
     if (!positiveLength(parts[next + 1], board.square))
-        return wrong(text, "\"" + std::string(parts[next + 1]) + "\" is not a positive length in metres");
+        return wrong(text, quoted(parts[next + 1]) + " is not a positive length in metres");
     if (board.kind != BoardKind::Chessboard) {
         if (!positiveLength(parts[next + 2], board.second))
-            return wrong(text, "\"" + std::string(parts[next + 2]) + "\" is not a positive length in metres");
+            return wrong(text, quoted(parts[next + 2]) + " is not a positive length in metres");
         if (board.kind == BoardKind::Charuco && board.second >= board.square)
             return wrong(text, "the markers must be smaller than the squares");
     }

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "ar/aruco_board.h"
+#include "ar/charuco_corners.h"
 #include "ar/opencv_bridge.h"
 #include "ar/pose_fit.h"
 
@@ -20,6 +21,9 @@ constexpr int RememberPoseFrames = 15;
 // ChArUco corners are interpolated from the markers around them; fewer than this many markers
 // give corners too loosely placed.
 constexpr int CharucoMinimumMarkers = 2;
+// The search region around the board's last place reaches this much farther (pixels) than a
+// quarter of its size, for a small board moving fast.
+constexpr int SearchMarginPixels = 24;
 
 cv::Ptr<cv::aruco::DetectorParameters> detectorParameters()
 {
@@ -126,7 +130,7 @@ Result<std::vector<DetectedMarker>> detectMarkers(const VideoFrame& frame, std::
     const int id = arucoDictionaryId(dictionary);
     if (id < 0)
         return makeError(ErrorCode::InvalidArgument,
-                         "\"" + std::string(dictionary) + "\" is not an ArUco dictionary (DICT_4X4_50, DICT_6X6_250, …)");
+                         std::string(dictionary).append(" is not an ArUco dictionary (DICT_4X4_50, DICT_6X6_250, …)"));
     cv::Mat grey;
     cv::cvtColor(bgrMat(frame), grey, cv::COLOR_BGR2GRAY);
     std::vector<std::vector<cv::Point2f>> corners;
@@ -158,10 +162,39 @@ struct MarkerTracker::State {
     std::vector<cv::Point3f> objectPoints;
     std::vector<cv::Point2f> imagePoints;
 
+    std::vector<cv::Point3f> outline; // the board's extent in its plane, for the search region
+    std::vector<cv::Point2f> projectedOutline;
     std::optional<TargetPose> lastPose;
     int framesSinceSeen = 0;
     std::vector<DetectedMarker> markers;
     std::vector<std::pair<int, std::array<float, 2>>> charucoCorners;
+
+    // Where to look for the board: around where it was in the last frame, when it was seen there
+    // (the detector's cost grows with the pixels it thresholds); else the whole frame.
+    cv::Rect searchRegion()
+    {
+        const cv::Rect whole(0, 0, grey.cols, grey.rows);
+        if (!lastPose || framesSinceSeen > 0)
+            return whole;
+        cv::projectPoints(outline, rvec(*lastPose), tvec(*lastPose), cameraMat(camera), distortionMat(camera),
+                          projectedOutline);
+        const cv::Rect seen = cv::boundingRect(projectedOutline);
+        // Room for the board to move between frames: a quarter of its size each way, and more.
+        const int marginX = seen.width / 4 + SearchMarginPixels, marginY = seen.height / 4 + SearchMarginPixels;
+        const cv::Rect region = cv::Rect(seen.x - marginX, seen.y - marginY, seen.width + 2 * marginX,
+                                         seen.height + 2 * marginY) & whole;
+        return region.area() > whole.area() * 7 / 10 || region.empty() ? whole : region;
+    }
+
+    void detect(const cv::Rect& region)
+    {
+        cv::aruco::detectMarkers(grey(region), board->dictionary, corners, ids, parameters, rejected);
+        const cv::Point2f offset(float(region.x), float(region.y));
+        for (auto* found : {&corners, &rejected})
+            for (std::vector<cv::Point2f>& marker : *found)
+                for (cv::Point2f& corner : marker)
+                    corner += offset;
+    }
 
     // The board's points and where they are seen, from the markers found in `grey`.
     void correspondences()
@@ -180,13 +213,7 @@ struct MarkerTracker::State {
                                              distortionMat(camera), CharucoMinimumMarkers);
         if (cornerIds.size() < 4 || cv::aruco::testCharucoCornersCollinear(charuco, cornerIds))
             return;
-        // OpenCV places the corners from the markers' own corners (whole pixels, half a pixel
-        // inside the black) and refines them with too small a window to move that far. Refined
-        // again here with a window of a quarter of a square, they land on the saddle.
-        const double squarePixels = std::sqrt(cv::contourArea(corners.front())) * spec.square / spec.second;
-        const int window = std::clamp(int(squarePixels / 4), 2, 8);
-        cv::cornerSubPix(grey, charucoPixels, cv::Size(window, window), cv::Size(-1, -1),
-                         cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 30, 0.01));
+        refineCharucoCorners(grey, charucoPixels, corners, spec);
         for (std::size_t i = 0; i < cornerIds.size(); ++i) {
             objectPoints.push_back(charuco->chessboardCorners[std::size_t(cornerIds[i])]);
             imagePoints.push_back(charucoPixels[i]);
@@ -211,7 +238,18 @@ Result<std::unique_ptr<MarkerTracker>> MarkerTracker::create(const BoardSpec& bo
     state->camera = camera;
     if (board.kind == BoardKind::Charuco)
         state->charuco = charucoBoard(board);
+    else // the edges place a grid's corners (refineAlongEdges); cv::cornerSubPix would only cost time
+        state->parameters->cornerRefinementMethod = cv::aruco::CORNER_REFINE_NONE;
     state->board = state->charuco ? cv::Ptr<cv::aruco::Board>(state->charuco) : arucoBoard(board);
+    float minX = 1e9f, minY = 1e9f, maxX = -1e9f, maxY = -1e9f;
+    for (const auto& marker : state->board->objPoints)
+        for (const cv::Point3f& corner : marker) {
+            minX = std::min(minX, corner.x), maxX = std::max(maxX, corner.x);
+            minY = std::min(minY, corner.y), maxY = std::max(maxY, corner.y);
+        }
+    if (state->charuco) // the squares reach beyond the markers
+        minX = minY = 0, maxX = float(board.columns * board.square), maxY = float(board.rows * board.square);
+    state->outline = {{minX, minY, 0}, {maxX, minY, 0}, {maxX, maxY, 0}, {minX, maxY, 0}};
     return std::unique_ptr<MarkerTracker>(new MarkerTracker(std::move(state)));
 }
 
@@ -228,7 +266,10 @@ TrackerEstimate MarkerTracker::estimate(const VideoFrame& frame)
     cv::cvtColor(bgrMat(frame), s.grey, cv::COLOR_BGR2GRAY);
     if (s.spec.inverted)
         cv::bitwise_not(s.grey, s.grey);
-    cv::aruco::detectMarkers(s.grey, s.board->dictionary, s.corners, s.ids, s.parameters, s.rejected);
+    const cv::Rect region = s.searchRegion();
+    s.detect(region);
+    if (s.ids.empty() && region.area() < s.grey.cols * s.grey.rows)
+        s.detect(cv::Rect(0, 0, s.grey.cols, s.grey.rows)); // it moved farther than expected
     if (!s.ids.empty())
         cv::aruco::refineDetectedMarkers(s.grey, s.board, s.corners, s.ids, s.rejected, cameraMat(s.camera),
                                          distortionMat(s.camera), 10.f, 3.f, true, cv::noArray(), s.parameters);
