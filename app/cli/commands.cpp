@@ -18,6 +18,7 @@ const std::vector<Command>& commands()
         {trainPcaSpec(), &runTrainPca},
         {buildIdleSpec(), &runBuildIdle},
         {calibrateSpec(), &runCalibrate},
+        {trackSpec(), &runTrack},
 #ifdef THESPIS_WITH_PYTHON
         {runSpec(), &runRun},
 #endif

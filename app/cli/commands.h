@@ -37,6 +37,8 @@ CommandSpec buildIdleSpec();
 int runBuildIdle(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec calibrateSpec();
 int runCalibrate(const CommandSpec& spec, const ParsedArguments& arguments);
+CommandSpec trackSpec();
+int runTrack(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec infoSpec();
 int runInfo(const CommandSpec& spec, const ParsedArguments& arguments);
 #ifdef THESPIS_WITH_PYTHON

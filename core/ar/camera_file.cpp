@@ -80,8 +80,11 @@ std::string encodeCameraFile(const CameraIntrinsics& camera)
     cv::FileStorage file(".yml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY);
     file << "image_width" << camera.width << "image_height" << camera.height;
     file << "camera_matrix" << cv::Mat(3, 3, CV_64F, const_cast<double*>(camera.matrix.data())).clone();
+    // No distortion is written as OpenCV writes it: five zeros.
     file << "distortion_coefficients"
-         << cv::Mat(int(camera.distortion.size()), 1, CV_64F, const_cast<double*>(camera.distortion.data())).clone();
+         << (camera.distortion.empty()
+                 ? cv::Mat::zeros(5, 1, CV_64F)
+                 : cv::Mat(int(camera.distortion.size()), 1, CV_64F, const_cast<double*>(camera.distortion.data())).clone());
     if (camera.reprojectionError >= 0)
         file << "avg_reprojection_error" << camera.reprojectionError;
     return file.releaseAndGetString();

@@ -64,7 +64,11 @@ public:
                 m_start = frame.captured;
             frame.time = std::chrono::duration<double>(frame.captured - m_start).count();
         } else {
+            // FFmpeg's position reads 0 at the last frames of some files: the frame rate goes on then.
             frame.time = m_capture.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
+            if (m_next > 1 && frame.time <= m_lastTime)
+                frame.time = m_lastTime + 1.0 / (fps() > 0 ? fps() : 30.0);
+            m_lastTime = frame.time;
         }
         return true;
     }
@@ -74,6 +78,7 @@ private:
     std::string m_description;
     bool m_live;
     std::int64_t m_next = 0;
+    double m_lastTime = 0;
     cv::Mat m_decoded;
     std::chrono::steady_clock::time_point m_start;
 };
