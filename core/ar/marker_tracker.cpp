@@ -291,6 +291,19 @@ TrackerEstimate MarkerTracker::estimate(const VideoFrame& frame)
     return *fit;
 }
 
+TargetGeometry MarkerTracker::geometry() const
+{
+    const std::vector<cv::Point3f>& outline = m_state->outline; // min x, min y … max x, max y
+    TargetGeometry geometry;
+    geometry.centre = {0.5 * (outline[0].x + outline[2].x), 0.5 * (outline[0].y + outline[2].y), 0};
+    geometry.size = {double(outline[2].x - outline[0].x), double(outline[2].y - outline[0].y)};
+    // A marker's corners go clockwise on the printed side: with its bottom-left below its
+    // top-left, y runs up the print and the printed side faces +z.
+    const std::vector<cv::Point3f>& marker = m_state->board->objPoints.front();
+    geometry.faceNormal = marker[3].y < marker[0].y ? 1 : -1;
+    return geometry;
+}
+
 void MarkerTracker::reset()
 {
     m_state->lastPose.reset();

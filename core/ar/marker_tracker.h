@@ -41,6 +41,7 @@ public:
     std::string description() const override;
     TrackerEstimate estimate(const VideoFrame& frame) override;
     void reset() override;
+    TargetGeometry geometry() const override;
 
     /// The last frame's markers of the board, for the overlay.
     const std::vector<DetectedMarker>& markers() const;

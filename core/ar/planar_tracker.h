@@ -55,6 +55,10 @@ public:
     std::string description() const override;
     TrackerEstimate estimate(const VideoFrame& frame) override;
     void reset() override;
+    TargetGeometry geometry() const override
+    {
+        return {{m_width / 2, m_height / 2, 0}, {m_width, m_height}, -1}; // y down the picture: its face looks along −z
+    }
 
     double widthMetres() const { return m_width; }
     double heightMetres() const { return m_height; }

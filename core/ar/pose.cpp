@@ -10,7 +10,7 @@
 namespace thespis::core::ar {
 
 namespace {
-cv::Matx33d rotationMatrix(const TargetPose& pose)
+cv::Matx33d matrixOf(const TargetPose& pose)
 {
     cv::Matx33d r;
     cv::Rodrigues(rvec(pose), r);
@@ -18,15 +18,23 @@ cv::Matx33d rotationMatrix(const TargetPose& pose)
 }
 } // namespace
 
+std::array<double, 9> rotationMatrix(const TargetPose& pose)
+{
+    const cv::Matx33d r = matrixOf(pose);
+    std::array<double, 9> out;
+    std::copy(r.val, r.val + 9, out.begin());
+    return out;
+}
+
 std::array<double, 3> toCamera(const TargetPose& pose, const std::array<double, 3>& point)
 {
-    const cv::Vec3d p = rotationMatrix(pose) * cv::Vec3d(point[0], point[1], point[2]) + tvec(pose);
+    const cv::Vec3d p = matrixOf(pose) * cv::Vec3d(point[0], point[1], point[2]) + tvec(pose);
     return {p[0], p[1], p[2]};
 }
 
 double rotationDifference(const TargetPose& a, const TargetPose& b)
 {
-    const cv::Matx33d relative = rotationMatrix(a).t() * rotationMatrix(b);
+    const cv::Matx33d relative = matrixOf(a).t() * matrixOf(b);
     const double cosine = std::clamp((cv::trace(relative) - 1.0) / 2.0, -1.0, 1.0);
     return std::acos(cosine);
 }

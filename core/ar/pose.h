@@ -13,6 +13,8 @@ struct TargetPose {
     bool operator==(const TargetPose&) const = default;
 };
 
+/// The pose's rotation as a matrix, row by row (target → camera).
+std::array<double, 9> rotationMatrix(const TargetPose& pose);
 /// A point of the target's plane (metres) as the camera sees it (metres, camera frame).
 std::array<double, 3> toCamera(const TargetPose& pose, const std::array<double, 3>& point);
 /// The angle (radians) of the rotation between two poses.

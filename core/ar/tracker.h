@@ -24,6 +24,15 @@ struct TrackerEstimate {
     std::array<double, 36> information{};
 };
 
+/// The target's shape in its own frame, for placing a scene on it.
+struct TargetGeometry {
+    std::array<double, 3> centre{};  ///< the middle of the printed area (metres)
+    std::array<double, 2> size{};    ///< its extent along the target's x and y (metres)
+    /// Which way the printed side faces along the target's z: +1 or −1 (OpenCV 4.6's ArUco grid
+    /// has y up and +z out of the print; a picture target has y down and −z out of it).
+    double faceNormal = 1;
+};
+
 class Tracker {
 public:
     virtual ~Tracker() = default;
@@ -32,6 +41,7 @@ public:
     virtual TrackerEstimate estimate(const VideoFrame& frame) = 0;
     /// Forgets what it saw (a new video, a jump).
     virtual void reset() = 0;
+    virtual TargetGeometry geometry() const = 0;
 };
 
 } // namespace thespis::core::ar

@@ -56,6 +56,12 @@ osg::Matrixd viewMatrix(const CameraView& view)
 
 osg::Matrixd projectionMatrix(const CameraView& view, double aspect)
 {
+    if (const std::optional<Pinhole>& p = view.pinhole) {
+        // The image spans pixel edges −½ … width − ½; OpenCV's y runs down, GL's up.
+        const double n = view.zNear;
+        return osg::Matrixd::frustum((-0.5 - p->cx) / p->fx * n, (p->width - 0.5 - p->cx) / p->fx * n,
+                                     -(p->height - 0.5 - p->cy) / p->fy * n, (p->cy + 0.5) / p->fy * n, n, view.zFar);
+    }
     return osg::Matrixd::perspective(view.fovYDegrees, aspect, view.zNear, view.zFar);
 }
 

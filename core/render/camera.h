@@ -3,6 +3,7 @@
 // matrices OSG draws with, framing a bounding box, and projecting points to pixels — so that the
 // CLI, the studio viewport and the picture tests agree on where things land.
 
+#include <optional>
 #include <span>
 
 #include <osg/Matrixd>
@@ -21,6 +22,14 @@ struct Bounds {
     anim::Vec3d centre() const { return (min + max) * 0.5; }
 };
 
+/// A real camera's projection (OpenCV's intrinsics, pixel centres at whole numbers): for drawing
+/// over its video, where the view is off-centre and fx and fy may differ.
+struct Pinhole {
+    double fx = 0, fy = 0, cx = 0, cy = 0;
+    int width = 0, height = 0;
+    bool operator==(const Pinhole&) const = default;
+};
+
 struct CameraView {
     anim::Vec3d eye{0, 1, 4};
     anim::Vec3d centre{0, 1, 0};
@@ -28,6 +37,8 @@ struct CameraView {
     double fovYDegrees = 30;
     double zNear = 0.1;
     double zFar = 100;
+    /// When set, the projection is this camera's (fovYDegrees and the aspect are not used).
+    std::optional<Pinhole> pinhole;
 };
 
 /// A camera looking at the box's centre from `azimuthDegrees` about +y (0: from +z, in front of a

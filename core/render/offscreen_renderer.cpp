@@ -108,7 +108,8 @@ Result<void> OffscreenRenderer::render(const RenderScene& scene, const CameraVie
     }
     osg::Camera* camera = m_viewer->getCamera();
     const std::array<float, 3>& background = scene.backgroundColor();
-    camera->setClearColor(osg::Vec4(background[0], background[1], background[2], 1.0f));
+    camera->setClearColor(scene.transparentBackground() ? osg::Vec4(0, 0, 0, 0)
+                                                        : osg::Vec4(background[0], background[1], background[2], 1.0f));
     camera->setViewMatrix(viewMatrix(view));
     camera->setProjectionMatrix(projectionMatrix(view, double(m_width) / m_height));
     m_viewer->frame();

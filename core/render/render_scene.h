@@ -67,6 +67,10 @@ public:
     /// Display-referred (sRGB-encoded) colour where nothing is drawn; (0.18, 0.2, 0.23) by default.
     void setBackgroundColor(const std::array<float, 3>& color) { m_backgroundColor = color; }
     const std::array<float, 3>& backgroundColor() const { return m_backgroundColor; }
+    /// Where nothing is drawn the picture is transparent (alpha 0, black): a layer to put over
+    /// video. Off by default.
+    void setTransparentBackground(bool transparent) { m_transparentBackground = transparent; }
+    bool transparentBackground() const { return m_transparentBackground; }
     /// Shows a probe behind everything, resampled to a width × width/2 lat-long texture.
     /// `degrees` and `intensity` turn and scale it as lighting::turnedLight() does the light.
     void setBackgroundProbe(const lighting::LightProbe& probe, int width = 512, double degrees = 0, double intensity = 1);
@@ -81,6 +85,7 @@ private:
     Shading m_shading = Shading::Prt;
     lighting::ShRgb m_light;
     std::array<float, 3> m_backgroundColor{0.18f, 0.2f, 0.23f};
+    bool m_transparentBackground = false;
 
     osg::ref_ptr<osg::Group> m_root;
     osg::ref_ptr<osg::Group> m_characterGroup;

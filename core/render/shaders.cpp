@@ -152,6 +152,41 @@ void main()
 }
 )";
 
+// Over video: the real ground shows through, darkened where the characters hide the sky from it.
+// Each character is a few spheres (ArCompositor); a sphere of radius r at distance d above the
+// point, at angle θ from its normal, hides the fraction (r/d)²·cos θ of the cosine-weighted sky —
+// ambient occlusion of sphere proxies, soft and moving with the motion. The colour is black and
+// the alpha the shadow, so compositing over the video darkens it.
+constexpr const char* kShadowCatcherFragment = R"(
+uniform vec4 occluders[64];
+uniform int occluderCount;
+uniform float shadowStrength;
+varying vec3 v_position;
+void main()
+{
+    float visible = 1.0;
+    for (int i = 0; i < 64; ++i) {
+        if (i >= occluderCount)
+            break;
+        vec3 d = occluders[i].xyz - v_position;
+        float r2 = occluders[i].w * occluders[i].w;
+        float d2 = max(dot(d, d), r2);
+        float cosine = max(d.y, 0.0) * inversesqrt(d2);
+        visible *= 1.0 - clamp(r2 / d2 * cosine, 0.0, 1.0);
+    }
+    gl_FragColor = vec4(0.0, 0.0, 0.0, shadowStrength * (1.0 - visible));
+}
+)";
+
+// Phantom occluders write depth only (their colour is masked off); the program keeps GL's
+// fixed-function path out of a scene that is all shaders.
+constexpr const char* kDepthOnlyVertex = R"(#version 120
+void main() { gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; }
+)";
+constexpr const char* kDepthOnlyFragment = R"(#version 120
+void main() { gl_FragColor = vec4(0.0); }
+)";
+
 // The quad covers the screen at the far plane (z = w), so it shows only where nothing was drawn.
 constexpr const char* kBackgroundVertex = R"(#version 120
 varying vec2 v_ndc;
@@ -220,6 +255,16 @@ osg::ref_ptr<osg::Program> characterProgram(Shading shading, int order)
 osg::ref_ptr<osg::Program> groundProgram()
 {
     return makeProgram("thespis-ground", kWorldVertex, fragmentSource(kGroundFragment, false));
+}
+
+osg::ref_ptr<osg::Program> shadowCatcherProgram()
+{
+    return makeProgram("thespis-shadow-catcher", kWorldVertex, fragmentSource(kShadowCatcherFragment, false));
+}
+
+osg::ref_ptr<osg::Program> depthOnlyProgram()
+{
+    return makeProgram("thespis-depth-only", kDepthOnlyVertex, kDepthOnlyFragment);
 }
 
 osg::ref_ptr<osg::Program> backgroundProgram()

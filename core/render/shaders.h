@@ -30,6 +30,12 @@ constexpr int transferAttributeCount(int order) { return (order * order + 3) / 4
 osg::ref_ptr<osg::Program> characterProgram(Shading shading, int order);
 /// The ground: uniform groundColor (linear radiance), exposure; a faint 1 m grid.
 osg::ref_ptr<osg::Program> groundProgram();
+/// The shadow catcher over video: uniforms occluders (vec4[64]: sphere centres and radii, world
+/// metres), occluderCount, shadowStrength; black with the shadow as alpha.
+inline constexpr int kMaxShadowSpheres = 64;
+osg::ref_ptr<osg::Program> shadowCatcherProgram();
+/// Phantom occluders: depth only (draw with the colour masked off).
+osg::ref_ptr<osg::Program> depthOnlyProgram();
 /// Full-screen environment background: probeTexture (lat-long, linear RGB), exposure.
 osg::ref_ptr<osg::Program> backgroundProgram();
 

@@ -26,6 +26,8 @@ void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const st
     }
     scenario.lighting.probe = rebasedPath(scenario.lighting.probe, from, to);
     scenario.postureBases = rebasedPath(scenario.postureBases, from, to);
+    for (PhantomOccluder& occluder : scenario.ar.occluders)
+        occluder.model = rebasedPath(occluder.model, from, to);
 }
 
 const Character* Scenario::findCharacter(const std::string& characterName) const

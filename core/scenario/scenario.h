@@ -7,6 +7,7 @@
 // Times are exact integer ticks (util/tick.h). Fields this version does not know are kept in
 // `extra` and written back unchanged.
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -197,6 +198,40 @@ struct LightingSpec {
     bool operator==(const LightingSpec&) const = default;
 };
 
+/// A real object that hides the characters behind it when they play over video (paper §7.2's
+/// phantom objects): drawn into depth only, so the video shows through it and covers what is
+/// behind it. In the scenario's world (metres, y up), like the characters (format 5, optional).
+struct PhantomOccluder {
+    enum class Shape { Box, Plane, Model };
+    std::string name;
+    Shape shape = Shape::Box;
+    /// Box: the centre of its bottom face; plane: the middle of its bottom edge; model: its origin.
+    std::array<double, 3> position{};
+    /// Box: width (x), height (y), depth (z); plane: width and height (upright, facing +z; the
+    /// third is unused); model: its scale along x, y, z.
+    std::array<double, 3> size{0.3, 0.3, 0.3};
+    double heading = 0;    ///< degrees about the vertical axis
+    std::string model;     ///< a glTF file (relative to the scenario) for a Model
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const PhantomOccluder&) const = default;
+};
+
+/// How the scenario plays over tracked video (format 5, optional): where its world sits on the
+/// tracked target, what real objects hide the characters, and whether their shadows fall on the
+/// real ground.
+struct ArSpec {
+    /// The world's origin on the target's plane: metres from the target's centre along its x and
+    /// y axes (the board's or the picture's).
+    std::array<double, 2> offset{};
+    double heading = 0;  ///< degrees the world turns about the target's normal
+    double scale = 1;    ///< of life size: 0.1 stands a 1.8 m character 18 cm tall on a desk
+    std::vector<PhantomOccluder> occluders;
+    /// Soft shadows of the characters darken the real ground (no ground disc is drawn over video).
+    bool shadowCatcher = true;
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const ArSpec&) const = default;
+};
+
 /// A named point on the timeline (format 2): a cue the animator snaps actions to.
 struct Marker {
     std::string name;
@@ -225,6 +260,7 @@ struct Scenario {
     /// The posture bases (.pca, thespis-cli train-pca; path relative to the scenario) the
     /// dependent-joint filter works in (format 5); empty: no filter can play.
     std::string postureBases;
+    ArSpec ar;                         ///< format 5, optional
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const Scenario&) const = default;
 
@@ -238,8 +274,8 @@ struct Scenario {
 std::string rebasedPath(const std::string& path, const std::filesystem::path& from, const std::filesystem::path& to);
 /// rebasedPath() on the files a clip names: its motion file or its idle motion database.
 void rebaseClip(ClipAsset& clip, const std::filesystem::path& from, const std::filesystem::path& to);
-/// rebasedPath() on every file path of the scenario: models, bakes, clips, the light probe and
-/// the posture bases.
+/// rebasedPath() on every file path of the scenario: models, bakes, clips, the light probe, the
+/// posture bases and the phantom occluders' models.
 void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const std::filesystem::path& to);
 
 } // namespace thespis::core::scenario

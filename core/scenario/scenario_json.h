@@ -97,6 +97,14 @@ std::string namesOf(const NamedValue<E> (&table)[N])
 }
 
 
+/// Known fields first, in the writer's order; unknown ones (`extra`) after, never replacing a
+/// known one. `skip` names a member written separately (empty: none).
+void appendExtra(ojson& out, const json& extra, std::string_view skip = {});
+
+/// The scenario's AR section (scenario_ar_io.cpp); throws FieldError naming the field.
+ArSpec readArSpec(const json& value, const std::string& path);
+ojson writeArSpec(const ArSpec& ar);
+
 /// The document (already upgraded to the current version) as a Scenario; throws FieldError.
 Scenario readScenario(const json& document);
 /// The scenario as the current version's JSON, members in the writer's order.

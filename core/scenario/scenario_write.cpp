@@ -8,9 +8,6 @@
 namespace thespis::core::scenario {
 namespace detail {
 
-namespace {
-
-
 ojson toOrdered(const json& value)
 {
     switch (value.type()) {
@@ -38,7 +35,7 @@ ojson toOrdered(const json& value)
 // Known fields first, in the writer's order; unknown ones after, never replacing a known one.
 // `skip` names a member written separately (empty: none; an unknown member may itself be
 // named "", so the empty name must not mean "skip").
-void appendExtra(ojson& out, const json& extra, std::string_view skip = {})
+void appendExtra(ojson& out, const json& extra, std::string_view skip)
 {
     if (!extra.is_object())
         return;
@@ -46,6 +43,8 @@ void appendExtra(ojson& out, const json& extra, std::string_view skip = {})
         if ((skip.empty() || key != skip) && !out.contains(key))
             out[key] = toOrdered(value);
 }
+
+namespace {
 
 ojson writeCurve(const anim::Curve& curve, const json& extra)
 {
@@ -408,6 +407,8 @@ ojson writeScenario(const Scenario& scenario)
     }
     if (!scenario.postureBases.empty())
         out["postureBases"] = scenario.postureBases;
+    if (scenario.ar != ArSpec{})
+        out["ar"] = writeArSpec(scenario.ar);
     if (!scenario.markers.empty()) {
         ojson markers = ojson::array();
         for (const Marker& marker : scenario.markers) {

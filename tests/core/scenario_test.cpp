@@ -520,6 +520,30 @@ TEST(ScenarioIo, ModelSegmentTagsAndLightingRoundTrip)
         EXPECT_EQ(plainText.find(member), std::string::npos) << member;
 }
 
+TEST(ScenarioIo, TheArPlacementAndPhantomOccludersRoundTrip)
+{
+    Scenario s;
+    s.characters.push_back(Character{.name = "Hero"});
+    s.ar.offset = {0.02, -0.015};
+    s.ar.heading = 90;
+    s.ar.scale = 0.1;
+    s.ar.shadowCatcher = false;
+    s.ar.occluders.push_back({"cup", PhantomOccluder::Shape::Model, {0.3, 0, 0.1}, {1, 1, 1}, 15, "props/cup.glb"});
+    s.ar.occluders.push_back({"", PhantomOccluder::Shape::Box, {0, 0, 0.5}, {1.2, 0.8, 0.3}, 0, ""});
+    const std::string text = serializeScenario(s);
+    EXPECT_NE(text.find("\"schema\": \"PhantomOccluder.1\""), std::string::npos) << text;
+    auto again = parseScenario(text);
+    ASSERT_TRUE(again.ok()) << describe(again.error());
+    EXPECT_EQ(*again, s);
+    // Rebased with the rest of the scenario's files.
+    rebasePaths(s, "/a/scenes", "/a");
+    EXPECT_EQ(s.ar.occluders[0].model, "scenes/props/cup.glb");
+    // The defaults write nothing: scenarios without AR stay as they were.
+    Scenario plain;
+    plain.characters.push_back(Character{.name = "Plain"});
+    EXPECT_EQ(serializeScenario(plain).find("\"ar\""), std::string::npos);
+}
+
 TEST(ScenarioIo, UnknownFieldsSurviveAtEveryLevel)
 {
     json doc = minimalDocument();
@@ -724,6 +748,15 @@ TEST(ScenarioIo, MalformedFieldsAreNamed)
         {"bake not text", [&](json& d) { d["characters"][0]["bake"] = 5; }, "characters[0].bake: expected a text"},
         {"unknown member of a tag", [&](json& d) { d["characters"][0]["segments"] = json::parse(R"([{"name": "hair", "colour": 1}])"); },
          "characters[0].segments[0].colour: unknown member of a segment tag"},
+        {"ar scale zero", [&](json& d) { d["ar"] = json::parse(R"({"scale": 0})"); }, "ar.scale: must be greater than 0"},
+        {"ar offset short", [&](json& d) { d["ar"] = json::parse(R"({"offset": [0.1]})"); },
+         "ar.offset: expected 2 numbers"},
+        {"occluder shape", [&](json& d) { d["ar"] = json::parse(R"({"occluders": [{"shape": "sphere"}]})"); },
+         "ar.occluders[0].shape: "},
+        {"occluder size", [&](json& d) { d["ar"] = json::parse(R"({"occluders": [{"shape": "box", "size": [1, -2, 1]}]})"); },
+         "ar.occluders[0].size[1]: must be greater than 0"},
+        {"occluder model missing", [&](json& d) { d["ar"] = json::parse(R"({"occluders": [{"shape": "model"}]})"); },
+         "ar.occluders[0].model: this field is required but missing"},
         {"unknown probe layout", [&](json& d) { d["lighting"] = json::parse(R"({"probe": "p.hdr", "layout": "fisheye"})"); },
          "lighting.layout: "},
         {"layer not an object", [&](json& d) { d["characters"][0]["layers"][0] = 7; },
