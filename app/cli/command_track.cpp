@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "exit_codes.h"
 #include "job_progress.h"
+#include "target_options.h"
 
 namespace thespis::cli {
 
@@ -20,14 +21,12 @@ CommandSpec trackSpec()
     spec.repeatsLast = true;
     spec.options = {
         {"camera", "FILE.yml", "the camera's calibration (OpenCV YAML, e.g. from `calibrate`)", true},
-        {"board", "SPEC", "aruco-grid:DICT:COLSxROWS:MARKER:GAP or charuco:DICT:COLSxROWS:SQUARE:MARKER[:inverted]"},
-        {"target", "IMAGE", "a printed picture to track instead of a board (with --width)"},
-        {"width", "METRES", "the printed picture's width"},
         {"fps", "N", "frames per second when VIDEO is a list of pictures (default 30)"},
         {"no-filter", "", "each frame's own pose, without the temporal filter"},
         {"out", "FILE.csv", "the poses to write; replaced atomically", true},
         {"quiet", "", "no progress and no summary"},
     };
+    addTargetOptions(spec);
     spec.description =
         "VIDEO is a video file, or several pictures played in order at --fps.\n"
         "Rows: frame,tracked,rx,ry,rz,tx,ty,tz (target -> camera: Rodrigues vector, metres; for an\n"
@@ -49,20 +48,8 @@ int runTrack(const CommandSpec& spec, const ParsedArguments& arguments)
         for (const std::string& picture : arguments.positionals)
             job.pictures.emplace_back(picture);
     job.cameraFile = *arguments.value("camera");
-    if (const auto board = arguments.value("board")) {
-        auto parsed = core::ar::parseBoard(*board);
-        if (!parsed)
-            return usageError(spec, parsed.error().message);
-        job.target.board = *parsed;
-    }
-    if (const auto target = arguments.value("target")) {
-        job.target.picture = *target;
-        const auto width = arguments.value("width");
-        const auto metres = width ? parseNumber(*width) : std::nullopt;
-        if (!metres || !(*metres > 0))
-            return usageError(spec, "--target needs --width, the picture's printed width in metres");
-        job.target.pictureWidth = *metres;
-    }
+    if (const int status = readTargetOptions(spec, arguments, job.target); status != ExitOk)
+        return status;
     if (const auto fps = arguments.value("fps")) {
         const auto rate = parseNumber(*fps);
         if (!rate || !(*rate > 0))

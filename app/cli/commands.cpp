@@ -19,6 +19,7 @@ const std::vector<Command>& commands()
         {buildIdleSpec(), &runBuildIdle},
         {calibrateSpec(), &runCalibrate},
         {trackSpec(), &runTrack},
+        {playSpec(), &runPlay},
 #ifdef THESPIS_WITH_PYTHON
         {runSpec(), &runRun},
 #endif

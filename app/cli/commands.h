@@ -39,6 +39,8 @@ CommandSpec calibrateSpec();
 int runCalibrate(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec trackSpec();
 int runTrack(const CommandSpec& spec, const ParsedArguments& arguments);
+CommandSpec playSpec();
+int runPlay(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec infoSpec();
 int runInfo(const CommandSpec& spec, const ParsedArguments& arguments);
 #ifdef THESPIS_WITH_PYTHON
