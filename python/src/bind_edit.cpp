@@ -87,6 +87,8 @@ std::string describeEdit(const edit::Edit& e)
                     return "lighting";
                 else if constexpr (std::is_same_v<C, edit::ScriptsChange>)
                     return "scripts";
+                else if constexpr (std::is_same_v<C, edit::ArChange>)
+                    return "ar";
                 else {
                     std::string element = std::is_same_v<C, edit::ActionChange>    ? "action"
                                           : std::is_same_v<C, edit::LayerChange>   ? "layer"

@@ -5,6 +5,8 @@
 
 namespace thespis::python {
 
+void bindAr(py::module_& m); // thespis.ar: boards, calibration, tracking, capture (bind_ar.cpp)
+
 void defineModule(py::module_& m)
 {
     m.doc() = "Thespis core bindings (use the `thespis` package, which re-exports these).";
@@ -21,6 +23,7 @@ void defineModule(py::module_& m)
     bindEdit(m);
     bindRuntime(m);
     bindMotion(m);
+    bindAr(m);
 }
 
 } // namespace thespis::python

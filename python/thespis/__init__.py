@@ -11,7 +11,8 @@ floats in the engine, integer ticks in documents. Frames are NumPy float32 array
 clips, or the built-in humanoid; segments with receiver / occluder tags; skinning);
 ``thespis.lighting`` has spherical harmonics, HDR probes and the transfer bake;
 ``thespis.render`` draws scenarios headless into NumPy images; ``thespis.edit`` makes the studio's
-undoable scenario edits (each returns an ``Edit``: ``apply(scenario)``, ``inverse()``).
+undoable scenario edits (each returns an ``Edit``: ``apply(scenario)``, ``inverse()``);
+``thespis.ar`` calibrates cameras and tracks boards and pictures in frames (NumPy BGR images).
 
 Errors from the core raise ``FileNotFoundError``, ``thespis.FormatError`` (a ``ValueError``:
 not our format, malformed data naming the line or field, or a newer version), ``ValueError``
@@ -29,7 +30,7 @@ if "_thespis" in _sys.builtin_module_names:
 else:
     from . import _thespis
 from ._thespis import *  # noqa: F401,F403  (the public API is the compiled module's)
-from ._thespis import __version__, bvh, edit, hanim, lighting, motion, render, runtime, scene  # noqa: F401
+from ._thespis import __version__, ar, bvh, edit, hanim, lighting, motion, render, runtime, scene  # noqa: F401
 from ._thespis import Cancelled, FormatError  # noqa: F401
 
 AnimationService, Stage = runtime.AnimationService, runtime.Stage
@@ -37,7 +38,7 @@ ExternalClock, ManualClock, RealTimeClock = runtime.ExternalClock, runtime.Manua
 
 # The compiled submodules are attributes of _thespis; registering them also makes
 # `import thespis.edit` (and `from thespis.scene import ...`) work.
-for _name in ("bvh", "edit", "hanim", "lighting", "render", "runtime", "scene"):
+for _name in ("ar", "bvh", "edit", "hanim", "lighting", "motion", "render", "runtime", "scene"):
     _sys.modules[f"{__name__}.{_name}"] = getattr(_thespis, _name)
 del _name
 
