@@ -8,6 +8,7 @@
 #include <osg/Depth>
 #include <osg/Geometry>
 #include <osg/MatrixTransform>
+#include <osg/Texture2D>
 
 #include "lighting/sh_rotation.h"
 #include "render/ar_view.h"
@@ -20,12 +21,15 @@ namespace {
 
 // Draw order: phantoms fill the depth buffer first, then the shadow catcher, then the characters.
 constexpr int OccluderBin = -2, ShadowBin = -1;
-// The shadow catcher's extent around the world's origin (metres of the world).
-constexpr float ShadowCatcherRadius = 6.0f;
 // Characters become spheres by gathering their posed vertices in cubes this wide (metres).
 constexpr double ShadowCellSize = 0.16;
 constexpr int ShadowCellMinimumVertices = 6;
 constexpr std::size_t ShadowGridSlots = 4096; // a power of two
+constexpr int MaxShadowSpheres = 64;
+// The shadow's texture: texels over a square reaching this far beyond the characters' footprint
+// (metres), where a standing person's shadow has faded to a few per cent.
+constexpr int ShadowTexels = 48;
+constexpr double ShadowReach = 1.5;
 
 osg::ref_ptr<osg::Geometry> triangles(const std::vector<osg::Vec3f>& vertices, const std::vector<unsigned>& indices)
 {
@@ -54,25 +58,17 @@ osg::ref_ptr<osg::Geometry> unitPlane()
     return triangles({{-0.5f, 0, 0}, {0.5f, 0, 0}, {0.5f, 1, 0}, {-0.5f, 1, 0}}, {0, 1, 2, 0, 2, 3});
 }
 
-osg::ref_ptr<osg::Node> makeShadowCatcher(osg::Uniform* spheres, osg::Uniform* count, float strength)
+osg::ref_ptr<osg::Node> makeShadowCatcher(osg::Texture2D* texture, osg::Uniform* area, float strength)
 {
-    std::vector<osg::Vec3f> disc{{0, 0, 0}};
-    std::vector<unsigned> fan;
-    constexpr int Sides = 48;
-    for (int i = 0; i <= Sides; ++i) {
-        const double a = 2 * std::numbers::pi * i / Sides;
-        disc.emplace_back(ShadowCatcherRadius * float(std::cos(a)), 0, -ShadowCatcherRadius * float(std::sin(a)));
-        if (i > 0)
-            fan.insert(fan.end(), {0u, unsigned(i), unsigned(i + 1)});
-    }
-    osg::ref_ptr<osg::Geometry> ground = triangles(disc, fan);
+    osg::ref_ptr<osg::Geometry> ground = triangles({{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}}, {0, 2, 1, 0, 3, 2});
     ground->setName("shadow catcher");
+    ground->setCullingActive(false); // its vertex shader places it
     osg::StateSet* state = ground->getOrCreateStateSet();
     state->setAttributeAndModes(shaders::shadowCatcherProgram().get());
-    state->addUniform(spheres);
-    state->addUniform(count);
+    state->setTextureAttributeAndModes(0, texture);
+    state->addUniform(new osg::Uniform("shadowTexture", 0));
+    state->addUniform(area);
     state->addUniform(new osg::Uniform("shadowStrength", strength));
-    state->addUniform(new osg::Uniform("exposure", 1.0f));
     state->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0, 1, false)); // the characters' feet go under it
     state->setRenderBinDetails(ShadowBin, "RenderBin");
     return ground;
@@ -122,10 +118,17 @@ Result<std::unique_ptr<ArCompositor>> ArCompositor::create(const scenario::Scena
     state->setAttributeAndModes(new osg::ColorMask(false, false, false, false));
     state->setRenderBinDetails(OccluderBin, "RenderBin");
     render.root()->addChild(self->m_occluders.get());
-    self->m_spheres = new osg::Uniform(osg::Uniform::FLOAT_VEC4, "occluders", shaders::kMaxShadowSpheres);
-    self->m_sphereCountUniform = new osg::Uniform("occluderCount", 0);
-    self->m_shadowCatcher = makeShadowCatcher(self->m_spheres.get(), self->m_sphereCountUniform.get(),
-                                              settings.shadowStrength);
+    self->m_shadowImage = new osg::Image;
+    self->m_shadowImage->allocateImage(ShadowTexels, ShadowTexels, 1, GL_LUMINANCE, GL_UNSIGNED_BYTE);
+    self->m_shadowImage->setDataVariance(osg::Object::DYNAMIC);
+    osg::ref_ptr<osg::Texture2D> texture = new osg::Texture2D(self->m_shadowImage.get());
+    texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
+    texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
+    texture->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
+    texture->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
+    texture->setResizeNonPowerOfTwoHint(false);
+    self->m_shadowArea = new osg::Uniform("shadowArea", osg::Vec3f(0, 0, 1));
+    self->m_shadowCatcher = makeShadowCatcher(texture.get(), self->m_shadowArea.get(), settings.shadowStrength);
     render.root()->addChild(self->m_shadowCatcher.get());
     self->m_cells.resize(ShadowGridSlots);
     if (auto placed = self->setPlacement(scenario.ar); !placed)
@@ -190,7 +193,7 @@ void ArCompositor::setCameraLight(const lighting::ShRgb& light, const ar::Target
     m_scene->scene().setLight(turned);
 }
 
-void ArCompositor::updateShadowSpheres()
+void ArCompositor::updateShadow()
 {
     // Posed vertices gathered in cubes: each cube with enough of them is a sphere at their mean.
     for (Cell& cell : m_cells)
@@ -201,7 +204,7 @@ void ArCompositor::updateShadowSpheres()
             const auto ix = std::int64_t(std::floor(p.x / ShadowCellSize)), iy = std::int64_t(std::floor(p.y / ShadowCellSize)),
                        iz = std::int64_t(std::floor(p.z / ShadowCellSize));
             const std::int64_t key = (ix & 0xFFFFF) | ((iy & 0xFFFFF) << 20) | ((iz & 0xFFFFF) << 40);
-            std::size_t slot = std::size_t((key * 0x9E3779B97F4A7C15ull) >> 52) & (ShadowGridSlots - 1);
+            std::size_t slot = std::size_t((std::uint64_t(key) * 0x9E3779B97F4A7C15ull) >> 52) & (ShadowGridSlots - 1);
             for (std::size_t probe = 0; probe < ShadowGridSlots; ++probe, slot = (slot + 1) & (ShadowGridSlots - 1)) {
                 Cell& cell = m_cells[slot];
                 if (cell.count == 0) {
@@ -214,19 +217,51 @@ void ArCompositor::updateShadowSpheres()
                 }
             }
         }
-    // The fullest cubes first, as many as the shader takes.
-    std::partial_sort(m_cells.begin(), m_cells.begin() + shaders::kMaxShadowSpheres, m_cells.end(),
+    // The fullest cubes first, as many as are worth it.
+    std::partial_sort(m_cells.begin(), m_cells.begin() + MaxShadowSpheres, m_cells.end(),
                       [](const Cell& a, const Cell& b) { return a.count > b.count; });
     m_sphereCount = 0;
-    for (int i = 0; i < shaders::kMaxShadowSpheres; ++i) {
-        const Cell& cell = m_cells[std::size_t(i)];
+    double minX = 1e300, maxX = -1e300, minZ = 1e300, maxZ = -1e300;
+    for (int i = 0; i < MaxShadowSpheres; ++i) {
+        Cell& cell = m_cells[std::size_t(i)];
         if (cell.count < ShadowCellMinimumVertices)
             break;
-        m_spheres->setElement(unsigned(i), osg::Vec4f(float(cell.x / cell.count), float(cell.y / cell.count),
-                                                      float(cell.z / cell.count), float(0.55 * ShadowCellSize)));
+        cell.x /= cell.count, cell.y /= cell.count, cell.z /= cell.count; // the sphere's centre
+        minX = std::min(minX, cell.x), maxX = std::max(maxX, cell.x);
+        minZ = std::min(minZ, cell.z), maxZ = std::max(maxZ, cell.z);
         ++m_sphereCount;
     }
-    m_sphereCountUniform->set(m_sphereCount);
+    std::uint8_t* texels = m_shadowImage->data();
+    if (m_sphereCount == 0) {
+        std::fill(texels, texels + ShadowTexels * ShadowTexels, std::uint8_t(0));
+        m_shadowImage->dirty();
+        return;
+    }
+    // The ground under the spheres, and the reach of their shadow around it. A sphere of radius r
+    // at distance d above a point, at angle θ from the ground's normal, hides the fraction
+    // (r/d)²·cos θ of the cosine-weighted sky: ambient occlusion of sphere proxies, soft and
+    // moving with the motion. Towards the square's edge the shadow fades out, so it has no border.
+    const double centreX = 0.5 * (minX + maxX), centreZ = 0.5 * (minZ + maxZ);
+    const double half = 0.5 * std::max(maxX - minX, maxZ - minZ) + ShadowReach;
+    const double radius2 = (0.55 * ShadowCellSize) * (0.55 * ShadowCellSize);
+    for (int row = 0; row < ShadowTexels; ++row)
+        for (int column = 0; column < ShadowTexels; ++column) {
+            const double u = (column + 0.5) / ShadowTexels * 2 - 1, v = (row + 0.5) / ShadowTexels * 2 - 1;
+            const double x = centreX + u * half, z = centreZ + v * half;
+            double visible = 1;
+            for (int i = 0; i < m_sphereCount; ++i) {
+                const Cell& s = m_cells[std::size_t(i)];
+                const double dx = s.x - x, dy = s.y, dz = s.z - z;
+                const double d2 = std::max(dx * dx + dy * dy + dz * dz, radius2);
+                const double cosine = std::max(dy, 0.0) / std::sqrt(d2);
+                visible *= 1 - std::min(1.0, radius2 / d2 * cosine);
+            }
+            const double edge = std::max(std::abs(u), std::abs(v));
+            const double fade = edge < 0.8 ? 1 : std::max(0.0, (1 - edge) / 0.2);
+            texels[row * ShadowTexels + column] = std::uint8_t(std::lround(255 * (1 - visible) * fade));
+        }
+    m_shadowImage->dirty();
+    m_shadowArea->set(osg::Vec3f(float(centreX), float(centreZ), float(half)));
 }
 
 Result<void> ArCompositor::compose(ar::VideoFrame& frame, const ar::TargetPose& pose)
@@ -237,7 +272,7 @@ Result<void> ArCompositor::compose(ar::VideoFrame& frame, const ar::TargetPose& 
                              " frame, but the camera is calibrated for " + std::to_string(m_camera.width) + " × " +
                              std::to_string(m_camera.height));
     if (m_placement.shadowCatcher)
-        updateShadowSpheres();
+        updateShadow();
     const CameraView view = arCameraView(m_camera, pose, m_target, m_placement);
     if (auto drawn = m_renderer->render(m_scene->scene(), view, m_layer); !drawn)
         return drawn.error();

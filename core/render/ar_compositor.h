@@ -6,7 +6,8 @@
 //   drawn into depth only, first, so that the video shows through them and hides what of the
 //   characters is behind them;
 // - a shadow catcher instead of the ground disc: the real ground darkened where the characters
-//   hide the sky from it (sphere proxies of each posed character, shaders.h), so they stand on it.
+//   hide the sky from it (ambient occlusion of sphere proxies of each posed character, worked out
+//   into a small texture over their footprint each frame), so they stand on it.
 // The layer is drawn with a transparent background; compositing is frame = video·(1 − α) + layer.
 // Draw on the thread that created the compositor (its GL context's).
 
@@ -24,7 +25,9 @@
 namespace thespis::core::render {
 
 struct ArCompositorSettings {
-    int samples = 4;   ///< supersampling of the layer (OffscreenRenderer): 4 draws 2 × 2 per pixel
+    /// Supersampling of the layer (OffscreenRenderer): 4 draws 2 × 2 per pixel, smoother edges at
+    /// about a third of the frame rate on llvmpipe; live previews draw once per pixel.
+    int samples = 1;
     Shading shading = Shading::Prt;
     scene::SkinningMethod skinning = scene::SkinningMethod::Linear;
     float shadowStrength = 0.6f; ///< how dark a fully covered patch of ground gets
@@ -57,12 +60,13 @@ public:
     Result<void> compose(ar::VideoFrame& frame, const ar::TargetPose& pose);
     /// The last layer drawn (premultiplied: black and transparent where nothing was drawn).
     const RgbaImage& layer() const { return m_layer; }
+    /// The spheres the characters' shadow was worked out from, last frame.
     int shadowSpheres() const { return m_sphereCount; }
 
 private:
     ArCompositor() = default;
     Result<void> buildOccluders();
-    void updateShadowSpheres();
+    void updateShadow();
 
     ar::CameraIntrinsics m_camera;
     ar::TargetGeometry m_target;
@@ -73,7 +77,8 @@ private:
     std::unique_ptr<OffscreenRenderer> m_renderer;
     osg::ref_ptr<osg::Group> m_occluders;
     osg::ref_ptr<osg::Node> m_shadowCatcher;
-    osg::ref_ptr<osg::Uniform> m_spheres, m_sphereCountUniform;
+    osg::ref_ptr<osg::Image> m_shadowImage;  // the shadow over the characters' footprint
+    osg::ref_ptr<osg::Uniform> m_shadowArea;
     int m_sphereCount = 0;
     struct Cell;
     std::vector<Cell> m_cells; // the shadow spheres' hash grid, reused per frame

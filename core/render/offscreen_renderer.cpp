@@ -125,18 +125,21 @@ Result<void> OffscreenRenderer::render(const RenderScene& scene, const CameraVie
             std::memcpy(out.rgba.data() + std::size_t(y) * rowBytes, m_image->data(0, m_height - 1 - y), rowBytes);
         return {};
     }
-    // Supersampled: each output pixel is the mean of its factor × factor block (rounded).
+    // Supersampled: each output pixel is the mean of its factor × factor block (rounded). The
+    // block's rows are looked up once per output row (osg::Image::data works out the pixel size
+    // on every call).
     const int blockSize = m_factor * m_factor;
+    const std::uint8_t* rows[4]; // the factor is at most 4 (16 samples)
     for (int y = 0; y < m_height; ++y) {
         std::uint8_t* target = out.rgba.data() + std::size_t(y) * rowBytes;
+        for (int by = 0; by < m_factor; ++by)
+            rows[by] = m_image->data(0, (m_height - 1 - y) * m_factor + by);
         for (int x = 0; x < m_width; ++x)
             for (int c = 0; c < 4; ++c) {
                 int sum = 0;
-                for (int by = 0; by < m_factor; ++by) {
-                    const std::uint8_t* row = m_image->data(0, (m_height - 1 - y) * m_factor + by);
+                for (int by = 0; by < m_factor; ++by)
                     for (int bx = 0; bx < m_factor; ++bx)
-                        sum += row[4 * (x * m_factor + bx) + c];
-                }
+                        sum += rows[by][4 * (x * m_factor + bx) + c];
                 target[4 * x + c] = std::uint8_t((sum + blockSize / 2) / blockSize);
             }
     }

@@ -153,29 +153,24 @@ void main()
 )";
 
 // Over video: the real ground shows through, darkened where the characters hide the sky from it.
-// Each character is a few spheres (ArCompositor); a sphere of radius r at distance d above the
-// point, at angle θ from its normal, hides the fraction (r/d)²·cos θ of the cosine-weighted sky —
-// ambient occlusion of sphere proxies, soft and moving with the motion. The colour is black and
-// the alpha the shadow, so compositing over the video darkens it.
-constexpr const char* kShadowCatcherFragment = R"(
-uniform vec4 occluders[64];
-uniform int occluderCount;
-uniform float shadowStrength;
-varying vec3 v_position;
+// The shadow is worked out on the CPU into a small texture over the characters' footprint
+// (ArCompositor): here a square of the ground, placed by shadowArea (centre x, z and half side),
+// only looks it up.
+constexpr const char* kShadowCatcherVertex = R"(#version 120
+uniform vec3 shadowArea;
+varying vec2 v_uv;
 void main()
 {
-    float visible = 1.0;
-    for (int i = 0; i < 64; ++i) {
-        if (i >= occluderCount)
-            break;
-        vec3 d = occluders[i].xyz - v_position;
-        float r2 = occluders[i].w * occluders[i].w;
-        float d2 = max(dot(d, d), r2);
-        float cosine = max(d.y, 0.0) * inversesqrt(d2);
-        visible *= 1.0 - clamp(r2 / d2 * cosine, 0.0, 1.0);
-    }
-    gl_FragColor = vec4(0.0, 0.0, 0.0, shadowStrength * (1.0 - visible));
+    vec2 ground = shadowArea.xy + gl_Vertex.xz * shadowArea.z;
+    gl_Position = gl_ModelViewProjectionMatrix * vec4(ground.x, 0.0, ground.y, 1.0);
+    v_uv = gl_Vertex.xz * 0.5 + 0.5;
 }
+)";
+constexpr const char* kShadowCatcherFragment = R"(#version 120
+uniform sampler2D shadowTexture;
+uniform float shadowStrength;
+varying vec2 v_uv;
+void main() { gl_FragColor = vec4(0.0, 0.0, 0.0, shadowStrength * texture2D(shadowTexture, v_uv).r); }
 )";
 
 // Phantom occluders write depth only (their colour is masked off); the program keeps GL's
@@ -259,7 +254,7 @@ osg::ref_ptr<osg::Program> groundProgram()
 
 osg::ref_ptr<osg::Program> shadowCatcherProgram()
 {
-    return makeProgram("thespis-shadow-catcher", kWorldVertex, fragmentSource(kShadowCatcherFragment, false));
+    return makeProgram("thespis-shadow-catcher", kShadowCatcherVertex, kShadowCatcherFragment);
 }
 
 osg::ref_ptr<osg::Program> depthOnlyProgram()

@@ -30,9 +30,9 @@ constexpr int transferAttributeCount(int order) { return (order * order + 3) / 4
 osg::ref_ptr<osg::Program> characterProgram(Shading shading, int order);
 /// The ground: uniform groundColor (linear radiance), exposure; a faint 1 m grid.
 osg::ref_ptr<osg::Program> groundProgram();
-/// The shadow catcher over video: uniforms occluders (vec4[64]: sphere centres and radii, world
-/// metres), occluderCount, shadowStrength; black with the shadow as alpha.
-inline constexpr int kMaxShadowSpheres = 64;
+/// The shadow catcher over video: a square [−1, 1]² in x and z placed on the ground by the uniform
+/// shadowArea (vec3: centre x, z, half side), shadowTexture (unit 0: the shadow over it, red
+/// channel), shadowStrength; black with the shadow as alpha.
 osg::ref_ptr<osg::Program> shadowCatcherProgram();
 /// Phantom occluders: depth only (draw with the colour masked off).
 osg::ref_ptr<osg::Program> depthOnlyProgram();

@@ -63,8 +63,12 @@ TEST(ArSession, FootageIsTrackedDrawnOverRecordedAndEnds)
     ASSERT_TRUE((*session)->startRecording(recording));
     ArSnapshot snapshot;
     std::int64_t taken = 0, tracked = 0, last = -1;
-    while ((*session)->state() == ArSessionState::Running || (*session)->takeSnapshot(snapshot)) {
+    while (true) {
+        // The state is read first: a frame published before the session ended is still taken.
+        const bool running = (*session)->state() == ArSessionState::Running;
         if (!(*session)->takeSnapshot(snapshot)) {
+            if (!running)
+                break;
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
             continue;
         }
