@@ -130,6 +130,43 @@ TEST(LiveCapture, TheNewestFrameWinsAndASlowConsumerDropsFrames)
     EXPECT_EQ(last, 59) << "the last frame is never lost";
 }
 
+namespace {
+// A camera that stops answering after a few frames, as one unplugged while running does.
+class UnpluggedCamera final : public FrameSource {
+public:
+    std::string description() const override { return "camera /dev/video9"; }
+    Result<bool> read(VideoFrame& frame) override
+    {
+        if (m_next == 5)
+            return makeError(ErrorCode::IoError, "camera /dev/video9 stopped sending frames after frame 5 (unplugged?)");
+        frame.resize(64, 48);
+        frame.index = m_next++;
+        frame.time = double(frame.index) / 30;
+        frame.captured = std::chrono::steady_clock::now();
+        return true;
+    }
+    double fps() const override { return 30; }
+    int width() const override { return 64; }
+    int height() const override { return 48; }
+    std::int64_t frameCount() const override { return -1; }
+
+private:
+    std::int64_t m_next = 0;
+};
+} // namespace
+
+TEST(LiveCapture, ACameraUnpluggedWhileRunningStopsWithItsReason)
+{
+    LiveCapture capture(std::make_unique<UnpluggedCamera>(), true);
+    VideoFrame frame;
+    std::int64_t last = -1;
+    while (capture.waitNewest(frame, std::chrono::seconds(5)))
+        last = frame.index;
+    EXPECT_EQ(capture.state(), CaptureState::Failed);
+    EXPECT_NE(capture.message().find("stopped sending frames after frame 5"), std::string::npos) << capture.message();
+    EXPECT_EQ(last, 4) << "the frames before it are still delivered";
+}
+
 TEST(LiveCapture, RealTimePlaybackIsPacedAndStopsOnRequest)
 {
     SyntheticScene scene = smallScene(1000);
