@@ -31,6 +31,7 @@
 #include "ar/video_frame.h"
 #include <pybind11/operators.h>
 
+#include "bind_ar.h"
 #include "bind_common.h"
 #include "errors.h"
 #include "run_job.h"
@@ -40,12 +41,6 @@ namespace thespis::python {
 using namespace pybind11::literals;
 namespace ar = core::ar;
 
-// Shared with bind_ar_live.cpp (declared there too).
-ar::VideoFrame frameFromArray(const py::handle& image);
-const ar::VideoFrame& frameArgument(const py::handle& frame, ar::VideoFrame& storage);
-ar::BoardSpec boardArgument(const py::handle& board);
-ar::CameraIntrinsics cameraArgument(const py::handle& camera);
-void bindArLive(py::module_& a);
 
 ar::VideoFrame frameFromArray(const py::handle& image)
 {

@@ -18,6 +18,7 @@
 #include "ar/live_probe.h"
 #include "ar/synthetic_source.h"
 #include "ar/video_writer.h"
+#include "bind_ar.h"
 #include "bind_common.h"
 #include "errors.h"
 
@@ -26,12 +27,6 @@ namespace thespis::python {
 using namespace pybind11::literals;
 namespace ar = core::ar;
 
-// Defined in bind_ar.cpp.
-ar::VideoFrame frameFromArray(const py::handle& image);
-const ar::VideoFrame& frameArgument(const py::handle& frame, ar::VideoFrame& storage);
-ar::BoardSpec boardArgument(const py::handle& board);
-ar::CameraIntrinsics cameraArgument(const py::handle& camera);
-void bindArLive(py::module_& a);
 
 namespace {
 
