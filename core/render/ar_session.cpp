@@ -145,9 +145,9 @@ void ArSession::draw(std::stop_token stop)
                 s.finish(ArSessionState::Failed, describe(placed.error()));
                 break;
             }
-        bool lit = false;
+        bool lit = false, probeChanged = false;
         if (probe) {
-            probe->update(frame);
+            probeChanged = probe->update(frame);
             if (probe->hasLight() && tracking.hasPose) {
                 ar.setCameraLight(probe->light(), tracking.pose);
                 lit = true;
@@ -172,6 +172,12 @@ void ArSession::draw(std::stop_token stop)
         s.snapshot.latency = std::chrono::duration<double>(now - frame.captured).count();
         s.snapshot.dropped = s.capture->dropped();
         s.snapshot.lit = lit;
+        if (probeChanged) {
+            s.snapshot.probePicture = probe->picture();
+            ++s.snapshot.probeVersion;
+        }
+        if (probe)
+            s.snapshot.probeStatus = probe->ball().found ? std::string("mirror ball found") : probe->ball().reason;
         std::swap(s.snapshot.frame, frame);
         s.snapshotFresh = true;
     }
@@ -200,6 +206,11 @@ bool ArSession::takeSnapshot(ArSnapshot& snapshot)
     snapshot.latency = m_shared->snapshot.latency;
     snapshot.dropped = m_shared->snapshot.dropped;
     snapshot.lit = m_shared->snapshot.lit;
+    if (snapshot.probeVersion != m_shared->snapshot.probeVersion) {
+        snapshot.probePicture = m_shared->snapshot.probePicture;
+        snapshot.probeVersion = m_shared->snapshot.probeVersion;
+    }
+    snapshot.probeStatus = m_shared->snapshot.probeStatus;
     m_shared->snapshotFresh = false;
     return true;
 }

@@ -23,6 +23,7 @@
 #include "ar/live_probe.h"
 #include "ar/tracking_session.h"
 #include "ar/tracking_target.h"
+#include "lighting/probe_preview.h"
 #include "render/ar_compositor.h"
 
 namespace thespis::core::render {
@@ -44,6 +45,11 @@ struct ArSnapshot {
     double latency = 0;            ///< seconds from the frame's capture to its composition
     std::int64_t dropped = 0;      ///< frames the capture dropped because tracking was busy
     bool lit = false;              ///< the characters are lit by the live probe
+    /// The mirror ball as the camera sees it (RGBA, transparent outside the ball) when a live
+    /// probe runs, and why it is not found when it is not.
+    lighting::PreviewImage probePicture;
+    std::string probeStatus;
+    std::uint64_t probeVersion = 0; ///< grows when the picture changes (it is copied only then)
 };
 
 enum class ArSessionState { Running, Ended, Failed, Stopped };

@@ -97,6 +97,38 @@ TEST(ArSession, FootageIsTrackedDrawnOverRecordedAndEnds)
     EXPECT_LE(frames, 45);
 }
 
+TEST(ArSession, AMirrorBallLightsTheCharacters)
+{
+    const SyntheticScene scene = boardScene(20);
+    ArSessionSettings settings = settingsFor(scene);
+    LiveProbeSettings probe;
+    probe.location = BallLocation::Given;
+    probe.givenCircle = {560, 80, 60}; // the top right of the frame, where the user marked it
+    probe.updateEvery = 1;
+    settings.probe = probe;
+    auto session = ArSession::start(SyntheticSource::create(scene).value(), standingOnTheBoard(), scenario::Assets(),
+                                    settings);
+    ASSERT_TRUE(session) << session.error().message;
+    ArSnapshot snapshot;
+    bool lit = false;
+    while (true) {
+        const bool running = (*session)->state() == ArSessionState::Running;
+        if ((*session)->takeSnapshot(snapshot)) {
+            lit = lit || snapshot.lit;
+            continue;
+        }
+        if (!running)
+            break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    if ((*session)->state() == ArSessionState::Failed && !std::getenv("THESPIS_REQUIRE_GL"))
+        GTEST_SKIP() << (*session)->message();
+    EXPECT_EQ((*session)->state(), ArSessionState::Ended) << (*session)->message();
+    EXPECT_TRUE(lit) << "the characters were lit by the ball";
+    EXPECT_GT(snapshot.probePicture.width, 0) << "the captured probe is there to show";
+    EXPECT_GT(snapshot.probeVersion, 0u);
+}
+
 TEST(ArSession, StoppingIsClean)
 {
     const SyntheticScene scene = boardScene(100000);
