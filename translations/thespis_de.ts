@@ -28,6 +28,625 @@
     </message>
 </context>
 <context>
+    <name>thespis::editor::ArCalibrationDialog</name>
+    <message>
+        <source>Calibrate the Camera</source>
+        <translation>Kamera kalibrieren</translation>
+    </message>
+    <message>
+        <source>chessboard:COLUMNSxROWS:SQUARE (inner corners, metres) or charuco:DICTIONARY:COLUMNSxROWS:SQUARE:MARKER</source>
+        <translation>chessboard:SPALTENxZEILEN:FELD (innere Ecken, Meter) oder charuco:WÖRTERBUCH:SPALTENxZEILEN:FELD:MARKER</translation>
+    </message>
+    <message>
+        <source>Square pixels (fx = fy)</source>
+        <translation>Quadratische Pixel (fx = fy)</translation>
+    </message>
+    <message>
+        <source>Capture View</source>
+        <translation>Ansicht aufnehmen</translation>
+    </message>
+    <message>
+        <source>Keep the picture shown as a view of the board; hold the board at many angles</source>
+        <translation>Das gezeigte Bild als Ansicht des Musters behalten; das Muster in vielen Winkeln halten</translation>
+    </message>
+    <message>
+        <source>Add Photos…</source>
+        <translation>Fotos hinzufügen…</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Calibrate</source>
+        <translation>Kalibrieren</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Not calibrating</source>
+        <translation>Keine Kalibrierung läuft</translation>
+    </message>
+    <message>
+        <source>Save Camera File…</source>
+        <translation>Kameradatei speichern…</translation>
+    </message>
+    <message>
+        <source>Board:</source>
+        <translation>Muster:</translation>
+    </message>
+    <message>
+        <source>Views of the board:</source>
+        <translation>Ansichten des Musters:</translation>
+    </message>
+    <message>
+        <source>Choose Photos of the Board</source>
+        <translation>Fotos des Musters wählen</translation>
+    </message>
+    <message>
+        <source>Pictures (*.png *.jpg *.jpeg *.bmp *.tif *.tiff)</source>
+        <translation>Bilder (*.png *.jpg *.jpeg *.bmp *.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>Save the Camera File</source>
+        <translation>Kameradatei speichern</translation>
+    </message>
+    <message>
+        <source>Camera files (*.yml *.yaml *.xml *.json)</source>
+        <translation>Kameradateien (*.yml *.yaml *.xml *.json)</translation>
+    </message>
+    <message>
+        <source>The camera file could not be written: %1</source>
+        <translation>Die Kameradatei konnte nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>No picture</source>
+        <translation>Kein Bild</translation>
+    </message>
+    <message>
+        <source>The test pattern shows the board typed here: fix its spec.</source>
+        <translation>Das Testbild zeigt das hier eingegebene Muster: Beschreibung korrigieren.</translation>
+    </message>
+    <message>
+        <source>No live picture</source>
+        <translation>Kein Livebild</translation>
+    </message>
+    <message>
+        <source>%1
+Add photos of the board instead.</source>
+        <translation>%1
+Stattdessen Fotos des Musters hinzufügen.</translation>
+    </message>
+    <message>
+        <source>Waiting for the first picture…</source>
+        <translation>Warte auf das erste Bild…</translation>
+    </message>
+    <message>
+        <source>Hold the board at many angles, filling the picture</source>
+        <translation>Das Muster in vielen Winkeln halten, bildfüllend</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n view(s) so far</source>
+        <translation>
+            <numerusform>%n Ansicht bisher</numerusform>
+            <numerusform>%n Ansichten bisher</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Ended</source>
+        <translation>Zu Ende</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Angehalten</translation>
+    </message>
+    <message>
+        <source>The view could not be kept in %1.</source>
+        <translation>Die Ansicht konnte nicht in %1 abgelegt werden.</translation>
+    </message>
+    <message>
+        <source>An ArUco grid is for tracking only: calibrate with a chessboard or a ChArUco board.</source>
+        <translation>Ein ArUco-Raster dient nur dem Tracking: mit einem Schachbrett oder einem ChArUco-Muster kalibrieren.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Calibrating from %n view(s)…</source>
+        <translation>
+            <numerusform>Kalibriere aus %n Ansicht…</numerusform>
+            <numerusform>Kalibriere aus %n Ansichten…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Calibrating</source>
+        <translation>Kalibrieren</translation>
+    </message>
+    <message>
+        <source>Finding the board</source>
+        <translation>Muster suchen</translation>
+    </message>
+    <message>
+        <source>%1: %2 / %3</source>
+        <translation>%1: %2 / %3</translation>
+    </message>
+    <message>
+        <source>%1 — %2 px</source>
+        <translation>%1 — %2 px</translation>
+    </message>
+    <message>
+        <source>%1 — found</source>
+        <translation>%1 — gefunden</translation>
+    </message>
+    <message>
+        <source>%1 — board not found</source>
+        <translation>%1 — Muster nicht gefunden</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>Abgebrochen</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>Fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Fertig</translation>
+    </message>
+    <message>
+        <source>RMS reprojection error %1 px over %2 of %3 views, %4 × %5.
+fx %6 ± %7, fy %8 ± %9, centre (%10, %11) px.</source>
+        <translation>RMS-Rückprojektionsfehler %1 px über %2 von %3 Ansichten, %4 × %5.
+fx %6 ± %7, fy %8 ± %9, Mitte (%10, %11) px.</translation>
+    </message>
+    <message>
+        <source>Calibrate first.</source>
+        <translation>Zuerst kalibrieren.</translation>
+    </message>
+    <message>
+        <source>At least %1 views of the board are needed</source>
+        <translation>Mindestens %1 Ansichten des Musters sind nötig</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::ArPreviewPanel</name>
+    <message>
+        <source>Test pattern (a synthetic board)</source>
+        <translation>Testbild (ein synthetisches Muster)</translation>
+    </message>
+    <message>
+        <source>Video file</source>
+        <translation>Videodatei</translation>
+    </message>
+    <message>
+        <source>Folder of pictures</source>
+        <translation>Bilderordner</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <source>A board moving as if hand-held, seen by a known camera: nothing to print or calibrate. It shows the target&apos;s board.</source>
+        <translation>Ein wie von Hand gehaltenes, bewegtes Muster, gesehen von einer bekannten Kamera: nichts zu drucken oder zu kalibrieren. Es zeigt das Muster des Ziels.</translation>
+    </message>
+    <message>
+        <source>No video chosen</source>
+        <translation>Kein Video gewählt</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Wählen…</translation>
+    </message>
+    <message>
+        <source>Choose a Video</source>
+        <translation>Video wählen</translation>
+    </message>
+    <message>
+        <source>Videos (*.mp4 *.avi *.mov *.mkv *.webm);;All files (*)</source>
+        <translation>Videos (*.mp4 *.avi *.mov *.mkv *.webm);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>No folder chosen</source>
+        <translation>Kein Ordner gewählt</translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation> B/s</translation>
+    </message>
+    <message>
+        <source>How many pictures a second the folder plays</source>
+        <translation>Wie viele Bilder pro Sekunde der Ordner abspielt</translation>
+    </message>
+    <message>
+        <source>Choose a Folder of Pictures</source>
+        <translation>Bilderordner wählen</translation>
+    </message>
+    <message>
+        <source>Rescan</source>
+        <translation>Neu suchen</translation>
+    </message>
+    <message>
+        <source>Look for cameras again (after plugging one in)</source>
+        <translation>Erneut nach Kameras suchen (nach dem Anstecken einer Kamera)</translation>
+    </message>
+    <message>
+        <source>No camera file chosen</source>
+        <translation>Keine Kameradatei gewählt</translation>
+    </message>
+    <message>
+        <source>The camera&apos;s intrinsics as OpenCV writes them (.yml, .yaml, .xml, .json)</source>
+        <translation>Die inneren Parameter der Kamera, wie OpenCV sie schreibt (.yml, .yaml, .xml, .json)</translation>
+    </message>
+    <message>
+        <source>Calibrate…</source>
+        <translation>Kalibrieren…</translation>
+    </message>
+    <message>
+        <source>Calibrate the camera from views of a chessboard or a ChArUco board</source>
+        <translation>Die Kamera aus Ansichten eines Schachbretts oder eines ChArUco-Musters kalibrieren</translation>
+    </message>
+    <message>
+        <source>Choose a Camera File</source>
+        <translation>Kameradatei wählen</translation>
+    </message>
+    <message>
+        <source>Camera files (*.yml *.yaml *.xml *.json);;All files (*)</source>
+        <translation>Kameradateien (*.yml *.yaml *.xml *.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Board:</source>
+        <translation>Muster:</translation>
+    </message>
+    <message>
+        <source>Picture:</source>
+        <translation>Bild:</translation>
+    </message>
+    <message>
+        <source>aruco-grid:DICTIONARY:COLUMNSxROWS:MARKER:GAP or charuco:DICTIONARY:COLUMNSxROWS:SQUARE:MARKER, lengths in metres</source>
+        <translation>aruco-grid:WÖRTERBUCH:SPALTENxZEILEN:MARKER:ABSTAND oder charuco:WÖRTERBUCH:SPALTENxZEILEN:FELD:MARKER, Längen in Metern</translation>
+    </message>
+    <message>
+        <source>A printed picture (PNG, JPEG)</source>
+        <translation>Ein gedrucktes Bild (PNG, JPEG)</translation>
+    </message>
+    <message>
+        <source> m wide</source>
+        <translation> m breit</translation>
+    </message>
+    <message>
+        <source>Printed:</source>
+        <translation>Gedruckt:</translation>
+    </message>
+    <message>
+        <source>Choose the Printed Picture</source>
+        <translation>Gedrucktes Bild wählen</translation>
+    </message>
+    <message>
+        <source>Pictures (*.png *.jpg *.jpeg *.bmp)</source>
+        <translation>Bilder (*.png *.jpg *.jpeg *.bmp)</translation>
+    </message>
+    <message>
+        <source>Of life size: 0.1 stands a 1.8 m character 18 cm tall on a desk</source>
+        <translation>Der Lebensgröße: 0,1 stellt eine 1,8 m große Figur 18 cm hoch auf einen Tisch</translation>
+    </message>
+    <message>
+        <source>How far the world turns about the target&apos;s normal</source>
+        <translation>Wie weit sich die Welt um die Normale des Ziels dreht</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Where the world&apos;s origin is on the target, from its centre along its own axes</source>
+        <translation>Wo der Ursprung der Welt auf dem Ziel liegt, von seiner Mitte entlang seiner eigenen Achsen</translation>
+    </message>
+    <message>
+        <source>Shadows on the real ground</source>
+        <translation>Schatten auf dem echten Boden</translation>
+    </message>
+    <message>
+        <source>Scale:</source>
+        <translation>Maßstab:</translation>
+    </message>
+    <message>
+        <source>Heading:</source>
+        <translation>Drehung:</translation>
+    </message>
+    <message>
+        <source>Offset:</source>
+        <translation>Versatz:</translation>
+    </message>
+    <message>
+        <source>Show AR Shadows</source>
+        <translation>AR-Schatten zeigen</translation>
+    </message>
+    <message>
+        <source>Hide AR Shadows</source>
+        <translation>AR-Schatten ausblenden</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>No camera found</source>
+        <translation>Keine Kamera gefunden</translation>
+    </message>
+    <message>
+        <source>No camera found: plug one in and press Rescan, or choose a video file or the test pattern.</source>
+        <translation>Keine Kamera gefunden: eine anstecken und „Neu suchen“ drücken, oder eine Videodatei oder das Testbild wählen.</translation>
+    </message>
+    <message>
+        <source>Its size is known once it runs; the camera file&apos;s is asked for.</source>
+        <translation>Ihre Bildgröße ist erst bekannt, wenn sie läuft; die der Kameradatei wird angefordert.</translation>
+    </message>
+    <message>
+        <source>Choose a video file.</source>
+        <translation>Eine Videodatei wählen.</translation>
+    </message>
+    <message>
+        <source>Choose a folder of pictures.</source>
+        <translation>Einen Bilderordner wählen.</translation>
+    </message>
+    <message>
+        <source>, %1 fps</source>
+        <translation>, %1 B/s</translation>
+    </message>
+    <message>
+        <source>, %1 frames (%2 s)</source>
+        <translation>, %1 Bilder (%2 s)</translation>
+    </message>
+    <message>
+        <source>, %1 frames</source>
+        <translation>, %1 Bilder</translation>
+    </message>
+    <message>
+        <source>This camera file cannot be used: %1</source>
+        <translation>Diese Kameradatei ist nicht verwendbar: %1</translation>
+    </message>
+    <message>
+        <source>The test pattern&apos;s camera is known exactly: no file needed.</source>
+        <translation>Die Kamera des Testbilds ist genau bekannt: keine Datei nötig.</translation>
+    </message>
+    <message>
+        <source>The camera file is for %1 pictures, but the source gives %2: calibrate the camera at the size it films at.</source>
+        <translation>Die Kameradatei gilt für Bilder von %1, die Quelle liefert aber %2: die Kamera in der Größe kalibrieren, in der sie filmt.</translation>
+    </message>
+    <message>
+        <source>%1, fx %2 px</source>
+        <translation>%1, fx %2 px</translation>
+    </message>
+    <message>
+        <source>, RMS %1 px</source>
+        <translation>, RMS %1 px</translation>
+    </message>
+    <message>
+        <source>Choose the camera file of the camera that filmed it, or calibrate one.</source>
+        <translation>Die Kameradatei der Kamera wählen, die es gefilmt hat, oder eine kalibrieren.</translation>
+    </message>
+    <message>
+        <source>The board spec does not parse: %1</source>
+        <translation>Die Musterbeschreibung ist ungültig: %1</translation>
+    </message>
+    <message>
+        <source>A chessboard calibrates a camera but cannot be tracked: use an ArUco grid or a ChArUco board.</source>
+        <translation>Ein Schachbrett kalibriert eine Kamera, kann aber nicht verfolgt werden: ein ArUco-Raster oder ein ChArUco-Muster verwenden.</translation>
+    </message>
+    <message>
+        <source>ArUco grid, %1 × %2 markers of %3 cm, %4 × %5 cm in all</source>
+        <translation>ArUco-Raster, %1 × %2 Marker zu %3 cm, insgesamt %4 × %5 cm</translation>
+    </message>
+    <message>
+        <source>ChArUco board, %1 × %2 squares of %3 cm</source>
+        <translation>ChArUco-Muster, %1 × %2 Felder zu %3 cm</translation>
+    </message>
+    <message>
+        <source>Choose the printed picture to track.</source>
+        <translation>Das zu verfolgende gedruckte Bild wählen.</translation>
+    </message>
+    <message>
+        <source>%1: no such picture.</source>
+        <translation>%1: kein solches Bild.</translation>
+    </message>
+    <message>
+        <source>The test pattern shows a board: track a board with it.</source>
+        <translation>Das Testbild zeigt ein Muster: damit ein Muster verfolgen.</translation>
+    </message>
+    <message>
+        <source>%1, %2 m wide</source>
+        <translation>%1, %2 m breit</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Placement on the Target</source>
+        <translation>Platzierung auf dem Ziel</translation>
+    </message>
+    <message>
+        <source>Preview</source>
+        <translation>Vorschau</translation>
+    </message>
+    <message>
+        <source>Light from a mirror ball in view</source>
+        <translation>Licht aus einer Spiegelkugel im Bild</translation>
+    </message>
+    <message>
+        <source>Find a chrome ball in the picture and light the characters with what it mirrors</source>
+        <translation>Eine Chromkugel im Bild finden und die Figuren mit dem beleuchten, was sie spiegelt</translation>
+    </message>
+    <message>
+        <source>Smooth edges (slower)</source>
+        <translation>Glatte Kanten (langsamer)</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Starten</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Anhalten</translation>
+    </message>
+    <message>
+        <source>Record…</source>
+        <translation>Aufnehmen…</translation>
+    </message>
+    <message>
+        <source>Write what the preview shows to a video (.mp4 or .avi)</source>
+        <translation>Was die Vorschau zeigt, als Video schreiben (.mp4 oder .avi)</translation>
+    </message>
+    <message>
+        <source>Record the AR Preview</source>
+        <translation>AR-Vorschau aufnehmen</translation>
+    </message>
+    <message>
+        <source>Videos (*.mp4 *.avi)</source>
+        <translation>Videos (*.mp4 *.avi)</translation>
+    </message>
+    <message>
+        <source>The scenario changed: Stop and Start again to see it over the video.</source>
+        <translation>Das Szenario hat sich geändert: Anhalten und erneut starten, um es über dem Video zu sehen.</translation>
+    </message>
+    <message>
+        <source>Place the World on the Target</source>
+        <translation>Welt auf dem Ziel platzieren</translation>
+    </message>
+    <message>
+        <source>Cannot start</source>
+        <translation>Start nicht möglich</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>Starte…</translation>
+    </message>
+    <message>
+        <source>Reading the first frames and preparing the scene.</source>
+        <translation>Die ersten Bilder werden gelesen und die Szene vorbereitet.</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Angehalten</translation>
+    </message>
+    <message>
+        <source>Press Start to go on.</source>
+        <translation>„Starten“ drücken, um fortzufahren.</translation>
+    </message>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 B/s</translation>
+    </message>
+    <message>
+        <source>latency %1 ms</source>
+        <translation>Latenz %1 ms</translation>
+    </message>
+    <message numerus="yes">
+        <source>Tracking: %n feature(s)</source>
+        <translation>
+            <numerusform>Verfolgt: %n Merkmal</numerusform>
+            <numerusform>Verfolgt: %n Merkmale</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Target lost: holding its last place</source>
+        <translation>Ziel verloren: letzte Lage wird gehalten</translation>
+    </message>
+    <message>
+        <source>Searching for the target…</source>
+        <translation>Suche das Ziel…</translation>
+    </message>
+    <message>
+        <source>frame %1</source>
+        <translation>Bild %1</translation>
+    </message>
+    <message>
+        <source>dropped: %1</source>
+        <translation>verworfen: %1</translation>
+    </message>
+    <message>
+        <source>lit by the mirror ball</source>
+        <translation>von der Spiegelkugel beleuchtet</translation>
+    </message>
+    <message>
+        <source>REC</source>
+        <translation>REC</translation>
+    </message>
+    <message>
+        <source>Ended</source>
+        <translation>Zu Ende</translation>
+    </message>
+    <message>
+        <source>%1.
+Press Start to play it again.</source>
+        <translation>%1.
+„Starten“ drücken, um es erneut abzuspielen.</translation>
+    </message>
+    <message>
+        <source>Stopped by a problem</source>
+        <translation>Wegen eines Problems angehalten</translation>
+    </message>
+    <message>
+        <source>%1
+Fix it, then press Start.</source>
+        <translation>%1
+Beheben, dann „Starten“ drücken.</translation>
+    </message>
+    <message>
+        <source>Recorded to %1.</source>
+        <translation>Aufgenommen in %1.</translation>
+    </message>
+    <message>
+        <source>Start the preview first, then record it.</source>
+        <translation>Zuerst die Vorschau starten, dann aufnehmen.</translation>
+    </message>
+    <message>
+        <source>Cannot record: %1</source>
+        <translation>Aufnahme nicht möglich: %1</translation>
+    </message>
+    <message>
+        <source>Recording to %1…</source>
+        <translation>Nehme auf in %1…</translation>
+    </message>
+    <message>
+        <source>The recording could not be finished: %1</source>
+        <translation>Die Aufnahme konnte nicht abgeschlossen werden: %1</translation>
+    </message>
+    <message>
+        <source>Play the scenario over the video</source>
+        <translation>Das Szenario über dem Video abspielen</translation>
+    </message>
+    <message>
+        <source>Stop Recording</source>
+        <translation>Aufnahme beenden</translation>
+    </message>
+    <message>
+        <source>AR Preview</source>
+        <translation>AR-Vorschau</translation>
+    </message>
+    <message>
+        <source>Press Start to play the scenario over the video.</source>
+        <translation>„Starten“ drücken, um das Szenario über dem Video abzuspielen.</translation>
+    </message>
+    <message>
+        <source>mirror ball: %1</source>
+        <translation>Spiegelkugel: %1</translation>
+    </message>
+    <message>
+        <source>Mirror ball</source>
+        <translation>Spiegelkugel</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::Autosaver</name>
     <message>
         <source>Autosave failed: %1</source>
@@ -2894,6 +3513,10 @@ Führen Sie die Skripte des Szenarios nur aus, wenn Sie der Herkunft dieser Date
     <message>
         <source>Posture PCs</source>
         <translation>Haltungs-HK</translation>
+    </message>
+    <message>
+        <source>AR Preview</source>
+        <translation>AR-Vorschau</translation>
     </message>
 </context>
 <context>

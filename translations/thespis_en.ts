@@ -2,6 +2,33 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>thespis::editor::ArCalibrationDialog</name>
+    <message numerus="yes">
+        <source>%n view(s) so far</source>
+        <translation>
+            <numerusform>%n view so far</numerusform>
+            <numerusform>%n views so far</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Calibrating from %n view(s)…</source>
+        <translation>
+            <numerusform>Calibrating from %n view…</numerusform>
+            <numerusform>Calibrating from %n views…</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::ArPreviewPanel</name>
+    <message numerus="yes">
+        <source>Tracking: %n feature(s)</source>
+        <translation>
+            <numerusform>Tracking: %n feature</numerusform>
+            <numerusform>Tracking: %n features</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::CharacterDialog</name>
     <message numerus="yes">
         <source>Import its %n animation(s) as clips</source>

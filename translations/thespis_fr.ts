@@ -28,6 +28,625 @@
     </message>
 </context>
 <context>
+    <name>thespis::editor::ArCalibrationDialog</name>
+    <message>
+        <source>Calibrate the Camera</source>
+        <translation>Calibrer la caméra</translation>
+    </message>
+    <message>
+        <source>chessboard:COLUMNSxROWS:SQUARE (inner corners, metres) or charuco:DICTIONARY:COLUMNSxROWS:SQUARE:MARKER</source>
+        <translation>chessboard:COLONNESxLIGNES:CASE (coins intérieurs, mètres) ou charuco:DICTIONNAIRE:COLONNESxLIGNES:CASE:MARQUEUR</translation>
+    </message>
+    <message>
+        <source>Square pixels (fx = fy)</source>
+        <translation>Pixels carrés (fx = fy)</translation>
+    </message>
+    <message>
+        <source>Capture View</source>
+        <translation>Capturer la vue</translation>
+    </message>
+    <message>
+        <source>Keep the picture shown as a view of the board; hold the board at many angles</source>
+        <translation>Garder l’image affichée comme vue de la mire ; tenir la mire sous de nombreux angles</translation>
+    </message>
+    <message>
+        <source>Add Photos…</source>
+        <translation>Ajouter des photos…</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Retirer</translation>
+    </message>
+    <message>
+        <source>Calibrate</source>
+        <translation>Calibrer</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Not calibrating</source>
+        <translation>Aucun calibrage en cours</translation>
+    </message>
+    <message>
+        <source>Save Camera File…</source>
+        <translation>Enregistrer le fichier caméra…</translation>
+    </message>
+    <message>
+        <source>Board:</source>
+        <translation>Mire :</translation>
+    </message>
+    <message>
+        <source>Views of the board:</source>
+        <translation>Vues de la mire :</translation>
+    </message>
+    <message>
+        <source>Choose Photos of the Board</source>
+        <translation>Choisir des photos de la mire</translation>
+    </message>
+    <message>
+        <source>Pictures (*.png *.jpg *.jpeg *.bmp *.tif *.tiff)</source>
+        <translation>Images (*.png *.jpg *.jpeg *.bmp *.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>Save the Camera File</source>
+        <translation>Enregistrer le fichier caméra</translation>
+    </message>
+    <message>
+        <source>Camera files (*.yml *.yaml *.xml *.json)</source>
+        <translation>Fichiers caméra (*.yml *.yaml *.xml *.json)</translation>
+    </message>
+    <message>
+        <source>The camera file could not be written: %1</source>
+        <translation>Le fichier caméra n’a pas pu être écrit : %1</translation>
+    </message>
+    <message>
+        <source>No picture</source>
+        <translation>Pas d’image</translation>
+    </message>
+    <message>
+        <source>The test pattern shows the board typed here: fix its spec.</source>
+        <translation>La mire de test montre la mire saisie ici : corrigez sa description.</translation>
+    </message>
+    <message>
+        <source>No live picture</source>
+        <translation>Pas d’image en direct</translation>
+    </message>
+    <message>
+        <source>%1
+Add photos of the board instead.</source>
+        <translation>%1
+Ajoutez plutôt des photos de la mire.</translation>
+    </message>
+    <message>
+        <source>Waiting for the first picture…</source>
+        <translation>En attente de la première image…</translation>
+    </message>
+    <message>
+        <source>Hold the board at many angles, filling the picture</source>
+        <translation>Tenez la mire sous de nombreux angles, en remplissant l’image</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n view(s) so far</source>
+        <translation>
+            <numerusform>%n vue pour l’instant</numerusform>
+            <numerusform>%n vues pour l’instant</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Ended</source>
+        <translation>Terminé</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Arrêté</translation>
+    </message>
+    <message>
+        <source>The view could not be kept in %1.</source>
+        <translation>La vue n’a pas pu être gardée dans %1.</translation>
+    </message>
+    <message>
+        <source>An ArUco grid is for tracking only: calibrate with a chessboard or a ChArUco board.</source>
+        <translation>Une grille ArUco ne sert qu’au suivi : calibrez avec un damier ou une mire ChArUco.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Calibrating from %n view(s)…</source>
+        <translation>
+            <numerusform>Calibrage à partir de %n vue…</numerusform>
+            <numerusform>Calibrage à partir de %n vues…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Calibrating</source>
+        <translation>Calibrage</translation>
+    </message>
+    <message>
+        <source>Finding the board</source>
+        <translation>Recherche de la mire</translation>
+    </message>
+    <message>
+        <source>%1: %2 / %3</source>
+        <translation>%1 : %2 / %3</translation>
+    </message>
+    <message>
+        <source>%1 — %2 px</source>
+        <translation>%1 — %2 px</translation>
+    </message>
+    <message>
+        <source>%1 — found</source>
+        <translation>%1 — trouvée</translation>
+    </message>
+    <message>
+        <source>%1 — board not found</source>
+        <translation>%1 — mire introuvable</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>Annulé</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>Échec</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Annulé.</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Terminé</translation>
+    </message>
+    <message>
+        <source>RMS reprojection error %1 px over %2 of %3 views, %4 × %5.
+fx %6 ± %7, fy %8 ± %9, centre (%10, %11) px.</source>
+        <translation>Erreur de reprojection RMS %1 px sur %2 de %3 vues, %4 × %5.
+fx %6 ± %7, fy %8 ± %9, centre (%10, %11) px.</translation>
+    </message>
+    <message>
+        <source>Calibrate first.</source>
+        <translation>Calibrez d’abord.</translation>
+    </message>
+    <message>
+        <source>At least %1 views of the board are needed</source>
+        <translation>Il faut au moins %1 vues de la mire</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::ArPreviewPanel</name>
+    <message>
+        <source>Test pattern (a synthetic board)</source>
+        <translation>Mire de test (synthétique)</translation>
+    </message>
+    <message>
+        <source>Video file</source>
+        <translation>Fichier vidéo</translation>
+    </message>
+    <message>
+        <source>Folder of pictures</source>
+        <translation>Dossier d’images</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Caméra</translation>
+    </message>
+    <message>
+        <source>A board moving as if hand-held, seen by a known camera: nothing to print or calibrate. It shows the target&apos;s board.</source>
+        <translation>Une mire qui bouge comme tenue à la main, vue par une caméra connue : rien à imprimer ni à calibrer. Elle montre la mire de la cible.</translation>
+    </message>
+    <message>
+        <source>No video chosen</source>
+        <translation>Aucune vidéo choisie</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Choisir…</translation>
+    </message>
+    <message>
+        <source>Choose a Video</source>
+        <translation>Choisir une vidéo</translation>
+    </message>
+    <message>
+        <source>Videos (*.mp4 *.avi *.mov *.mkv *.webm);;All files (*)</source>
+        <translation>Vidéos (*.mp4 *.avi *.mov *.mkv *.webm);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>No folder chosen</source>
+        <translation>Aucun dossier choisi</translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation> i/s</translation>
+    </message>
+    <message>
+        <source>How many pictures a second the folder plays</source>
+        <translation>Combien d’images par seconde le dossier joue</translation>
+    </message>
+    <message>
+        <source>Choose a Folder of Pictures</source>
+        <translation>Choisir un dossier d’images</translation>
+    </message>
+    <message>
+        <source>Rescan</source>
+        <translation>Rechercher</translation>
+    </message>
+    <message>
+        <source>Look for cameras again (after plugging one in)</source>
+        <translation>Chercher à nouveau des caméras (après en avoir branché une)</translation>
+    </message>
+    <message>
+        <source>No camera file chosen</source>
+        <translation>Aucun fichier caméra choisi</translation>
+    </message>
+    <message>
+        <source>The camera&apos;s intrinsics as OpenCV writes them (.yml, .yaml, .xml, .json)</source>
+        <translation>Les paramètres intrinsèques de la caméra, tels qu’OpenCV les écrit (.yml, .yaml, .xml, .json)</translation>
+    </message>
+    <message>
+        <source>Calibrate…</source>
+        <translation>Calibrer…</translation>
+    </message>
+    <message>
+        <source>Calibrate the camera from views of a chessboard or a ChArUco board</source>
+        <translation>Calibrer la caméra à partir de vues d’un damier ou d’une mire ChArUco</translation>
+    </message>
+    <message>
+        <source>Choose a Camera File</source>
+        <translation>Choisir un fichier caméra</translation>
+    </message>
+    <message>
+        <source>Camera files (*.yml *.yaml *.xml *.json);;All files (*)</source>
+        <translation>Fichiers caméra (*.yml *.yaml *.xml *.json);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Board:</source>
+        <translation>Mire :</translation>
+    </message>
+    <message>
+        <source>Picture:</source>
+        <translation>Image :</translation>
+    </message>
+    <message>
+        <source>aruco-grid:DICTIONARY:COLUMNSxROWS:MARKER:GAP or charuco:DICTIONARY:COLUMNSxROWS:SQUARE:MARKER, lengths in metres</source>
+        <translation>aruco-grid:DICTIONNAIRE:COLONNESxLIGNES:MARQUEUR:ÉCART ou charuco:DICTIONNAIRE:COLONNESxLIGNES:CASE:MARQUEUR, longueurs en mètres</translation>
+    </message>
+    <message>
+        <source>A printed picture (PNG, JPEG)</source>
+        <translation>Une image imprimée (PNG, JPEG)</translation>
+    </message>
+    <message>
+        <source> m wide</source>
+        <translation> m de large</translation>
+    </message>
+    <message>
+        <source>Printed:</source>
+        <translation>Imprimée :</translation>
+    </message>
+    <message>
+        <source>Choose the Printed Picture</source>
+        <translation>Choisir l’image imprimée</translation>
+    </message>
+    <message>
+        <source>Pictures (*.png *.jpg *.jpeg *.bmp)</source>
+        <translation>Images (*.png *.jpg *.jpeg *.bmp)</translation>
+    </message>
+    <message>
+        <source>Of life size: 0.1 stands a 1.8 m character 18 cm tall on a desk</source>
+        <translation>De la taille réelle : 0,1 pose un personnage de 1,8 m haut de 18 cm sur un bureau</translation>
+    </message>
+    <message>
+        <source>How far the world turns about the target&apos;s normal</source>
+        <translation>De combien le monde tourne autour de la normale de la cible</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Where the world&apos;s origin is on the target, from its centre along its own axes</source>
+        <translation>Où l’origine du monde se trouve sur la cible, depuis son centre le long de ses propres axes</translation>
+    </message>
+    <message>
+        <source>Shadows on the real ground</source>
+        <translation>Ombres sur le sol réel</translation>
+    </message>
+    <message>
+        <source>Scale:</source>
+        <translation>Échelle :</translation>
+    </message>
+    <message>
+        <source>Heading:</source>
+        <translation>Orientation :</translation>
+    </message>
+    <message>
+        <source>Offset:</source>
+        <translation>Décalage :</translation>
+    </message>
+    <message>
+        <source>Show AR Shadows</source>
+        <translation>Afficher les ombres RA</translation>
+    </message>
+    <message>
+        <source>Hide AR Shadows</source>
+        <translation>Masquer les ombres RA</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>No camera found</source>
+        <translation>Aucune caméra trouvée</translation>
+    </message>
+    <message>
+        <source>No camera found: plug one in and press Rescan, or choose a video file or the test pattern.</source>
+        <translation>Aucune caméra trouvée : branchez-en une et cliquez sur « Rechercher », ou choisissez un fichier vidéo ou la mire de test.</translation>
+    </message>
+    <message>
+        <source>Its size is known once it runs; the camera file&apos;s is asked for.</source>
+        <translation>Sa taille n’est connue qu’une fois lancée ; celle du fichier caméra est demandée.</translation>
+    </message>
+    <message>
+        <source>Choose a video file.</source>
+        <translation>Choisissez un fichier vidéo.</translation>
+    </message>
+    <message>
+        <source>Choose a folder of pictures.</source>
+        <translation>Choisissez un dossier d’images.</translation>
+    </message>
+    <message>
+        <source>, %1 fps</source>
+        <translation>, %1 i/s</translation>
+    </message>
+    <message>
+        <source>, %1 frames (%2 s)</source>
+        <translation>, %1 images (%2 s)</translation>
+    </message>
+    <message>
+        <source>, %1 frames</source>
+        <translation>, %1 images</translation>
+    </message>
+    <message>
+        <source>This camera file cannot be used: %1</source>
+        <translation>Ce fichier caméra est inutilisable : %1</translation>
+    </message>
+    <message>
+        <source>The test pattern&apos;s camera is known exactly: no file needed.</source>
+        <translation>La caméra de la mire de test est connue exactement : aucun fichier nécessaire.</translation>
+    </message>
+    <message>
+        <source>The camera file is for %1 pictures, but the source gives %2: calibrate the camera at the size it films at.</source>
+        <translation>Le fichier caméra est pour des images de %1, mais la source donne %2 : calibrez la caméra à la taille à laquelle elle filme.</translation>
+    </message>
+    <message>
+        <source>%1, fx %2 px</source>
+        <translation>%1, fx %2 px</translation>
+    </message>
+    <message>
+        <source>, RMS %1 px</source>
+        <translation>, RMS %1 px</translation>
+    </message>
+    <message>
+        <source>Choose the camera file of the camera that filmed it, or calibrate one.</source>
+        <translation>Choisissez le fichier de la caméra qui l’a filmé, ou calibrez-en une.</translation>
+    </message>
+    <message>
+        <source>The board spec does not parse: %1</source>
+        <translation>La description de la mire est invalide : %1</translation>
+    </message>
+    <message>
+        <source>A chessboard calibrates a camera but cannot be tracked: use an ArUco grid or a ChArUco board.</source>
+        <translation>Un damier calibre une caméra mais ne peut pas être suivi : utilisez une grille ArUco ou une mire ChArUco.</translation>
+    </message>
+    <message>
+        <source>ArUco grid, %1 × %2 markers of %3 cm, %4 × %5 cm in all</source>
+        <translation>Grille ArUco, %1 × %2 marqueurs de %3 cm, %4 × %5 cm en tout</translation>
+    </message>
+    <message>
+        <source>ChArUco board, %1 × %2 squares of %3 cm</source>
+        <translation>Mire ChArUco, %1 × %2 cases de %3 cm</translation>
+    </message>
+    <message>
+        <source>Choose the printed picture to track.</source>
+        <translation>Choisissez l’image imprimée à suivre.</translation>
+    </message>
+    <message>
+        <source>%1: no such picture.</source>
+        <translation>%1 : image introuvable.</translation>
+    </message>
+    <message>
+        <source>The test pattern shows a board: track a board with it.</source>
+        <translation>La mire de test montre une mire : suivez une mire avec elle.</translation>
+    </message>
+    <message>
+        <source>%1, %2 m wide</source>
+        <translation>%1, %2 m de large</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Source</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Cible</translation>
+    </message>
+    <message>
+        <source>Placement on the Target</source>
+        <translation>Placement sur la cible</translation>
+    </message>
+    <message>
+        <source>Preview</source>
+        <translation>Aperçu</translation>
+    </message>
+    <message>
+        <source>Light from a mirror ball in view</source>
+        <translation>Lumière d’une boule miroir visible</translation>
+    </message>
+    <message>
+        <source>Find a chrome ball in the picture and light the characters with what it mirrors</source>
+        <translation>Trouver une boule chromée dans l’image et éclairer les personnages avec ce qu’elle reflète</translation>
+    </message>
+    <message>
+        <source>Smooth edges (slower)</source>
+        <translation>Bords lissés (plus lent)</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Démarrer</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Arrêter</translation>
+    </message>
+    <message>
+        <source>Record…</source>
+        <translation>Enregistrer…</translation>
+    </message>
+    <message>
+        <source>Write what the preview shows to a video (.mp4 or .avi)</source>
+        <translation>Écrire ce que montre l’aperçu dans une vidéo (.mp4 ou .avi)</translation>
+    </message>
+    <message>
+        <source>Record the AR Preview</source>
+        <translation>Enregistrer l’aperçu RA</translation>
+    </message>
+    <message>
+        <source>Videos (*.mp4 *.avi)</source>
+        <translation>Vidéos (*.mp4 *.avi)</translation>
+    </message>
+    <message>
+        <source>The scenario changed: Stop and Start again to see it over the video.</source>
+        <translation>Le scénario a changé : arrêtez puis redémarrez pour le voir sur la vidéo.</translation>
+    </message>
+    <message>
+        <source>Place the World on the Target</source>
+        <translation>Placer le monde sur la cible</translation>
+    </message>
+    <message>
+        <source>Cannot start</source>
+        <translation>Démarrage impossible</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>Démarrage…</translation>
+    </message>
+    <message>
+        <source>Reading the first frames and preparing the scene.</source>
+        <translation>Lecture des premières images et préparation de la scène.</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Arrêté</translation>
+    </message>
+    <message>
+        <source>Press Start to go on.</source>
+        <translation>Cliquez sur « Démarrer » pour continuer.</translation>
+    </message>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 i/s</translation>
+    </message>
+    <message>
+        <source>latency %1 ms</source>
+        <translation>latence %1 ms</translation>
+    </message>
+    <message numerus="yes">
+        <source>Tracking: %n feature(s)</source>
+        <translation>
+            <numerusform>Suivi : %n repère</numerusform>
+            <numerusform>Suivi : %n repères</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Target lost: holding its last place</source>
+        <translation>Cible perdue : dernière position conservée</translation>
+    </message>
+    <message>
+        <source>Searching for the target…</source>
+        <translation>Recherche de la cible…</translation>
+    </message>
+    <message>
+        <source>frame %1</source>
+        <translation>image %1</translation>
+    </message>
+    <message>
+        <source>dropped: %1</source>
+        <translation>perdues : %1</translation>
+    </message>
+    <message>
+        <source>lit by the mirror ball</source>
+        <translation>éclairé par la boule miroir</translation>
+    </message>
+    <message>
+        <source>REC</source>
+        <translation>REC</translation>
+    </message>
+    <message>
+        <source>Ended</source>
+        <translation>Terminé</translation>
+    </message>
+    <message>
+        <source>%1.
+Press Start to play it again.</source>
+        <translation>%1.
+Cliquez sur « Démarrer » pour la rejouer.</translation>
+    </message>
+    <message>
+        <source>Stopped by a problem</source>
+        <translation>Arrêté par un problème</translation>
+    </message>
+    <message>
+        <source>%1
+Fix it, then press Start.</source>
+        <translation>%1
+Corrigez-le, puis cliquez sur « Démarrer ».</translation>
+    </message>
+    <message>
+        <source>Recorded to %1.</source>
+        <translation>Enregistré dans %1.</translation>
+    </message>
+    <message>
+        <source>Start the preview first, then record it.</source>
+        <translation>Démarrez d’abord l’aperçu, puis enregistrez-le.</translation>
+    </message>
+    <message>
+        <source>Cannot record: %1</source>
+        <translation>Enregistrement impossible : %1</translation>
+    </message>
+    <message>
+        <source>Recording to %1…</source>
+        <translation>Enregistrement dans %1…</translation>
+    </message>
+    <message>
+        <source>The recording could not be finished: %1</source>
+        <translation>L’enregistrement n’a pas pu être terminé : %1</translation>
+    </message>
+    <message>
+        <source>Play the scenario over the video</source>
+        <translation>Jouer le scénario sur la vidéo</translation>
+    </message>
+    <message>
+        <source>Stop Recording</source>
+        <translation>Arrêter l’enregistrement</translation>
+    </message>
+    <message>
+        <source>AR Preview</source>
+        <translation>Aperçu RA</translation>
+    </message>
+    <message>
+        <source>Press Start to play the scenario over the video.</source>
+        <translation>Cliquez sur « Démarrer » pour jouer le scénario sur la vidéo.</translation>
+    </message>
+    <message>
+        <source>mirror ball: %1</source>
+        <translation>boule miroir : %1</translation>
+    </message>
+    <message>
+        <source>Mirror ball</source>
+        <translation>Boule miroir</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::Autosaver</name>
     <message>
         <source>Autosave failed: %1</source>
@@ -2894,6 +3513,10 @@ N’exécutez les scripts du scénario que si vous faites confiance à la proven
     <message>
         <source>Posture PCs</source>
         <translation>CP de posture</translation>
+    </message>
+    <message>
+        <source>AR Preview</source>
+        <translation>Aperçu RA</translation>
     </message>
 </context>
 <context>

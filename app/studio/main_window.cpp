@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "editor/ar_preview_panel.h"
 #include "editor/autosave.h"
 #include "editor/bake_panel.h"
 #include "editor/clip_library_panel.h"
@@ -150,6 +151,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     m_session->addPanel(m_segments);
     m_session->addPanel(m_bake);
     m_session->addPanel(m_postureChart);
+    m_session->addPanel(m_arPreview);
     m_session->addPanel(m_autosaver);
 
     m_fpsTimer = new QTimer(this);

@@ -32,6 +32,7 @@ class QUndoGroup;
 class QTreeView;
 
 namespace thespis::editor {
+class ArPreviewPanel;
 class Autosaver;
 class MessagesPanel;
 class ScriptPanel;
@@ -87,6 +88,7 @@ public:
     editor::SegmentPanel* segments() const { return m_segments; }
     editor::BakePanel* bakePanel() const { return m_bake; }
     editor::PostureChartPanel* postureChart() const { return m_postureChart; }
+    editor::ArPreviewPanel* arPreview() const { return m_arPreview; }
     editor::Autosaver* autosaver() const { return m_autosaver; }
     QAction* undoAction() const { return m_undoAction; }
     QAction* redoAction() const { return m_redoAction; }
@@ -179,6 +181,7 @@ private:
     editor::SegmentPanel* m_segments = nullptr;
     editor::BakePanel* m_bake = nullptr;
     editor::PostureChartPanel* m_postureChart = nullptr;
+    editor::ArPreviewPanel* m_arPreview = nullptr;
     editor::Autosaver* m_autosaver = nullptr;
     editor::MessagesPanel* m_messages = nullptr;
     QDockWidget* m_messagesDock = nullptr;

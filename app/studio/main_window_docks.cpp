@@ -19,6 +19,7 @@
 #include "content_actions.h"
 #include "startup.h"
 #include "edit/content_edits.h"
+#include "editor/ar_preview_panel.h"
 #include "editor/bake_panel.h"
 #include "editor/clip_library_panel.h"
 #include "editor/curve_panel.h"
@@ -271,6 +272,10 @@ void MainWindow::createEditorDocks()
     tabifyDockWidget(timelineDock, curveDock);
     QDockWidget* postureDock = dock(tr("Posture PCs"), QStringLiteral("postureChartDock"), m_postureChart, Qt::BottomDockWidgetArea);
     tabifyDockWidget(curveDock, postureDock);
+    // The AR preview: wide at the bottom (video beside its controls), or floated as a window.
+    m_arPreview = new editor::ArPreviewPanel(this);
+    QDockWidget* arDock = dock(tr("AR Preview"), QStringLiteral("arPreviewDock"), m_arPreview, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(postureDock, arDock);
     timelineDock->raise();
     QDockWidget* propertiesDock = dock(tr("Properties"), QStringLiteral("propertiesDock"), m_properties, Qt::RightDockWidgetArea);
     QDockWidget* maskDock = dock(tr("Joint Mask"), QStringLiteral("maskDock"), m_masks, Qt::RightDockWidgetArea);

@@ -113,6 +113,11 @@ Result<void> applyChange(Scenario& s, const Change& change)
                     return makeError(ErrorCode::InvalidArgument, "The edit does not fit the document (the scripts).");
                 s.scripts = c.after;
                 return {};
+            } else if constexpr (std::is_same_v<C, ArChange>) {
+                if (s.ar != c.before)
+                    return makeError(ErrorCode::InvalidArgument, "The edit does not fit the document (the AR section).");
+                s.ar = c.after;
+                return {};
             } else if constexpr (std::is_same_v<C, CharacterBakeChange>) {
                 Character* character = characterAt(s, c.character);
                 if (!character || character->bake != c.before)
@@ -157,7 +162,7 @@ bool samePlaceReplace(const Change& a, const Change& b)
             const auto& second = std::get<C>(b);
             if constexpr (std::is_same_v<C, SegmentTagsChange>)
                 return first.character == second.character;
-            else if constexpr (std::is_same_v<C, LightingChange>)
+            else if constexpr (std::is_same_v<C, LightingChange> || std::is_same_v<C, ArChange>)
                 return true;
             else if constexpr (std::is_same_v<C, ScriptsChange>)
                 return false; // each save of a script is a step of its own
@@ -340,6 +345,10 @@ void Edit::rebasePaths(const std::filesystem::path& from, const std::filesystem:
         } else if (auto* bake = std::get_if<CharacterBakeChange>(&change)) {
             bake->before = scenario::rebasedPath(bake->before, from, to);
             bake->after = scenario::rebasedPath(bake->after, from, to);
+        } else if (auto* ar = std::get_if<ArChange>(&change)) {
+            for (scenario::ArSpec* spec : {&ar->before, &ar->after})
+                for (scenario::PhantomOccluder& occluder : spec->occluders)
+                    occluder.model = scenario::rebasedPath(occluder.model, from, to);
         }
     }
 }

@@ -2,7 +2,8 @@
 // Edit: a reversible change to a scenario document (STYLE.md §5), the one way editors and
 // scripts change a Scenario. An edit is a list of changes, each inserting, removing or replacing
 // one element of one of the scenario's lists (a character, an action of a layer, a layer, a mask,
-// a marker, a gesture, a clip) or replacing a character's segment tags or bake file, or the light. Each change keeps the value before
+// a marker, a gesture, a clip) or replacing a character's segment tags or bake file, the light, the
+// scripts or the AR section. Each change keeps the value before
 // and after, so an edit is undone by applying its inverse, and a drag's many small edits of the
 // same elements merge into one.
 //
@@ -88,11 +89,20 @@ struct ScriptsChange {
     bool operator==(const ScriptsChange&) const = default;
 };
 
+/// Replaces how the scenario plays over tracked video (its ArSpec: where the world sits on the
+/// target, the phantom occluders, the shadow catcher). Merges like the light: a drag of the
+/// placement is one step.
+struct ArChange {
+    scenario::ArSpec before, after;
+    bool operator==(const ArChange&) const = default;
+};
+
 using Change = std::variant<ActionChange, LayerChange, MaskChange, MarkerChange, GestureChange, ClipChange,
-                            SegmentTagsChange, CharacterBakeChange, CharacterChange, LightingChange, ScriptsChange>;
+                            SegmentTagsChange, CharacterBakeChange, CharacterChange, LightingChange, ScriptsChange,
+                            ArChange>;
 
 /// What an edit changes of a scenario's runtime (its schedules): nothing (the light, markers,
-/// scripts, segment tags, bakes), some characters' (their actions, layers, clips, gestures, or the
+/// scripts, segment tags, bakes, the AR placement), some characters' (their actions, layers, clips, gestures, or the
 /// character replaced under the same name), or everything (characters added, removed or renamed,
 /// the masks every character may use).
 struct RuntimeScope {

@@ -1,0 +1,396 @@
+// The studio's AR Preview (issue 16 §6) on the real window and the demo scenario: a synthetic
+// board video (written here with its camera file) played with the board's spec, tracked, the
+// characters drawn over the board (the shown picture differs from the raw video there), the
+// overlay with fps, latency and tracking, a recording that decodes, and the video's end said in
+// the view; the test pattern started and stopped (a mirror ball asked for, the overlay says
+// whether one lights the characters), the world's placement edited, one undo step each; bad input said beside the field and in the view with Start disabled (a board spec that
+// does not parse, a camera file for another size or corrupt, a video that cannot be decoded, no
+// camera); a camera calibrated from photos of a chessboard and used. Screenshots of the preview
+// while it tracks and after the video ended.
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "ar/camera_file.h"
+#include "ar/frame_source.h"
+#include "ar/synthetic_source.h"
+#include "ar/video_writer.h"
+#include "editor/ar_calibration_dialog.h"
+#include "editor/ar_preview_panel.h"
+#include "editor/document.h"
+#include "editor/qt_conversions.h"
+#include "main_window.h"
+#include "widgets/video_view.h"
+
+using namespace thespis;
+namespace ar = core::ar;
+
+namespace {
+
+constexpr int kTimeout = 60000; // ms: the scene is drawn by a software renderer on a shared machine
+const QString kBoard = QStringLiteral("aruco-grid:DICT_4X4_50:4x3:0.04:0.01");
+
+QString demoPath() { return QStringLiteral(THESPIS_RESOURCES "/demo.thespis"); }
+
+void saveScreenshot(QWidget* widget, const QString& name)
+{
+    QDir().mkpath(QStringLiteral(THESPIS_SCREENSHOT_DIR));
+    QTest::qWait(50); // let the layout follow texts that just changed
+    QVERIFY(widget->grab().save(QStringLiteral(THESPIS_SCREENSHOT_DIR "/") + name));
+}
+
+ar::SyntheticScene boardScene(const QString& board, std::int64_t frames)
+{
+    ar::SyntheticScene scene;
+    scene.board = *ar::parseBoard(board.toStdString());
+    scene.camera.width = 640;
+    scene.camera.height = 480;
+    scene.camera.matrix = {600, 0, 320, 0, 600, 240, 0, 0, 1};
+    scene.camera.distortion = {0, 0, 0, 0, 0};
+    scene.frames = frames;
+    return scene;
+}
+
+// Pixels of `area` where the picture shown and the raw frame differ by more than a video codec
+// or a resampling would make them.
+int differingPixels(const QImage& shown, const ar::VideoFrame& raw, QRect area)
+{
+    area &= QRect(0, 0, raw.width, raw.height);
+    int count = 0;
+    for (int y = area.top(); y <= area.bottom(); ++y)
+        for (int x = area.left(); x <= area.right(); ++x) {
+            const QRgb s = shown.pixel(x, y);
+            const std::uint8_t* r = &raw.bgr[(std::size_t(y) * std::size_t(raw.width) + std::size_t(x)) * 3];
+            const int d = std::max({std::abs(qRed(s) - r[2]), std::abs(qGreen(s) - r[1]), std::abs(qBlue(s) - r[0])});
+            count += d > 60 ? 1 : 0;
+        }
+    return count;
+}
+
+QDockWidget* dockOf(QWidget* content)
+{
+    return qobject_cast<QDockWidget*>(content->parentWidget());
+}
+
+} // namespace
+
+class ArPreviewTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+    void videoFileIsTrackedDrawnRecordedAndEnds();
+    void testPatternStartsAndStopsAndPlacementIsUndoable();
+    void badInputIsSaidAndStartWaits();
+    void calibrationFromPhotos();
+
+private:
+    editor::ArPreviewPanel* panel() const { return m_window->arPreview(); }
+    QString file(const QString& name) const { return m_data.filePath(name); }
+    void showPanel();
+
+    QTemporaryDir m_data;
+    ar::SyntheticScene m_scene;
+    std::unique_ptr<studio::MainWindow> m_window;
+};
+
+void ArPreviewTest::initTestCase()
+{
+    QVERIFY(m_data.isValid());
+    // A board video of 7 s (long enough for the scene to be ready while it plays) and its camera.
+    m_scene = boardScene(kBoard, 210);
+    auto source = ar::SyntheticSource::create(m_scene);
+    QVERIFY(source);
+    auto writer = ar::VideoWriter::create(editor::toFsPath(file("board.mp4")), 640, 480, m_scene.fps);
+    QVERIFY2(writer, writer ? "" : writer.error().message.c_str());
+    ar::VideoFrame frame;
+    while (*(*source)->read(frame))
+        QVERIFY((*writer)->write(frame));
+    QVERIFY((*writer)->finish());
+    QVERIFY(ar::writeCameraFile(editor::toFsPath(file("camera.yml")), m_scene.camera));
+    ar::CameraIntrinsics hd = m_scene.camera;
+    hd.width = 1280;
+    hd.height = 720;
+    QVERIFY(ar::writeCameraFile(editor::toFsPath(file("camera_720p.yml")), hd));
+    QFile corrupt(file("corrupt.yml"));
+    QVERIFY(corrupt.open(QIODevice::WriteOnly));
+    corrupt.write("%YAML:1.0\nimage_width: 640\nimage_height: [ 480\ncamera_matrix: nonsense\n");
+    corrupt.close();
+    QFile broken(file("broken.mp4"));
+    QVERIFY(broken.open(QIODevice::WriteOnly));
+    broken.write(QByteArray(4096, '\x42'));
+    broken.close();
+}
+
+void ArPreviewTest::init()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings().clear();
+    m_window = std::make_unique<studio::MainWindow>();
+    m_window->resize(1500, 950);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QVERIFY(m_window->openScenario(demoPath()));
+}
+
+void ArPreviewTest::cleanup()
+{
+    m_window.reset();
+}
+
+void ArPreviewTest::showPanel()
+{
+    QDockWidget* dock = dockOf(panel());
+    QVERIFY(dock);
+    dock->show();
+    dock->raise();
+    m_window->resizeDocks({dock}, {560}, Qt::Vertical);
+    QApplication::processEvents();
+}
+
+void ArPreviewTest::videoFileIsTrackedDrawnRecordedAndEnds()
+{
+    showPanel();
+    editor::ArPreviewPanel* p = panel();
+    // The world stands on the board at a tenth of life size: 18 cm characters.
+    p->scaleSpin()->setValue(0.1);
+    QCOMPARE(m_window->document()->scenario().ar.scale, 0.1);
+    p->smoothCheck()->setChecked(false);
+
+    p->chooseVideoFile(file("board.mp4"));
+    QVERIFY2(p->sourceInfoLabel()->text().contains(QStringLiteral("640 × 480")), qPrintable(p->sourceInfoLabel()->text()));
+    QVERIFY2(p->sourceInfoLabel()->text().contains(QStringLiteral("210 frames")), qPrintable(p->sourceInfoLabel()->text()));
+    p->setCameraFile(file("camera.yml"));
+    p->setBoardSpec(kBoard);
+    QVERIFY2(p->readiness().isEmpty(), qPrintable(p->readiness()));
+    QVERIFY(p->startButton()->isEnabled());
+    QVERIFY(!p->stopButton()->isEnabled());
+
+    QTest::mouseClick(p->startButton(), Qt::LeftButton);
+    QVERIFY2(p->isRunning(), qPrintable(p->view()->messageTitle() + QStringLiteral(": ") + p->view()->messageText()));
+    QVERIFY(p->stopButton()->isEnabled());
+    QVERIFY(!p->startButton()->isEnabled());
+    // Tracked, and the picture moves on.
+    QTRY_VERIFY_WITH_TIMEOUT(p->view()->overlayText().contains(QStringLiteral("Tracking")) || !p->isRunning(), kTimeout);
+    QVERIFY2(p->isRunning(), qPrintable(p->view()->messageTitle() + QStringLiteral(": ") + p->view()->messageText()));
+    const std::int64_t first = p->shownFrame();
+    QTRY_VERIFY_WITH_TIMEOUT(p->shownFrame() > first + 3 || !p->isRunning(), kTimeout);
+    QTRY_VERIFY_WITH_TIMEOUT(p->lastSnapshot().tracking.tracked || !p->isRunning(), kTimeout);
+    QVERIFY(p->isRunning());
+    // Looked at where the board leans most (a table top seen from a chair, not a wall), the
+    // characters are seen standing on it.
+    auto truth = ar::SyntheticSource::create(m_scene);
+    std::int64_t leaning = 90;
+    double mostLean = 0;
+    for (std::int64_t f = 90; f < 170; ++f) {
+        const double lean = std::acos(std::abs(ar::rotationMatrix((*truth)->truth(f))[8]));
+        if (lean > mostLean)
+            mostLean = lean, leaning = f;
+    }
+    QTRY_VERIFY_WITH_TIMEOUT((p->shownFrame() >= leaning && p->lastSnapshot().tracking.tracked) || !p->isRunning(), kTimeout);
+    QVERIFY(p->isRunning());
+    const QString overlay = p->view()->overlayText();
+    QVERIFY2(overlay.contains(QStringLiteral(" fps")) && overlay.contains(QStringLiteral("latency")), qPrintable(overlay));
+    QVERIFY(!p->view()->hasMessage());
+
+    // A character is drawn over the board: the picture shown differs from the raw video there.
+    const QImage shown = p->view()->image();
+    const std::int64_t index = p->shownFrame();
+    QCOMPARE(shown.size(), QSize(640, 480));
+    auto video = ar::openVideoFile(editor::toFsPath(file("board.mp4")));
+    QVERIFY(video);
+    ar::VideoFrame raw;
+    while (raw.index < index) {
+        const auto read = (*video)->read(raw);
+        QVERIFY2(read && *read, read ? "the video ended early" : read.error().message.c_str());
+    }
+    const std::array<double, 3> centre = ar::toCamera((*truth)->truth(index), {0.095, 0.07, 0});
+    const QPoint onBoard(int(600 * centre[0] / centre[2] + 320), int(600 * centre[1] / centre[2] + 240));
+    const QRect boardArea(onBoard - QPoint(180, 180), QSize(360, 360));
+    const int drawn = differingPixels(shown, raw, boardArea);
+    const int elsewhere = differingPixels(shown, raw, QRect(0, 0, 640, 480)) - drawn;
+    QVERIFY2(drawn > 400, qPrintable(QStringLiteral("%1 pixels drawn over the board at (%2, %3), frame %4")
+                                         .arg(drawn).arg(onBoard.x()).arg(onBoard.y()).arg(index)));
+    QVERIFY2(elsewhere < drawn, qPrintable(QStringLiteral("%1 pixels changed away from the board").arg(elsewhere)));
+    saveScreenshot(m_window.get(), QStringLiteral("ar_preview.png"));
+
+    // Recorded while it plays: a video that decodes.
+    const QString recording = file("recording.avi");
+    QVERIFY(p->startRecording(recording));
+    QVERIFY(p->isRecording());
+    QCOMPARE(p->recordButton()->text(), QStringLiteral("Stop Recording"));
+    const std::int64_t recordedFrom = p->shownFrame();
+    QTRY_VERIFY_WITH_TIMEOUT(p->shownFrame() > recordedFrom + 5 || !p->isRunning(), kTimeout);
+    p->stopRecording();
+    QVERIFY(!p->isRecording());
+    QVERIFY2(p->statusText().contains(QStringLiteral("Recorded to")), qPrintable(p->statusText()));
+    auto recorded = ar::openVideoFile(editor::toFsPath(recording));
+    QVERIFY2(recorded, recorded ? "" : recorded.error().message.c_str());
+    const auto read = (*recorded)->read(raw);
+    QVERIFY2(read && *read, read ? "the recording is empty" : read.error().message.c_str());
+    QCOMPARE(raw.width, 640);
+
+    // The video ends: the view says so, and the preview can start again.
+    QTRY_VERIFY_WITH_TIMEOUT(!p->isRunning(), kTimeout);
+    QVERIFY2(p->view()->messageTitle().contains(QStringLiteral("Ended")), qPrintable(p->view()->messageTitle()));
+    QVERIFY2(p->view()->messageText().contains(QStringLiteral("ended after")), qPrintable(p->view()->messageText()));
+    QVERIFY(!p->view()->image().isNull()); // the last picture stays behind the message
+    QVERIFY(p->startButton()->isEnabled());
+    QVERIFY(!p->stopButton()->isEnabled());
+    saveScreenshot(p, QStringLiteral("ar_preview_ended.png"));
+}
+
+void ArPreviewTest::testPatternStartsAndStopsAndPlacementIsUndoable()
+{
+    showPanel();
+    editor::ArPreviewPanel* p = panel();
+    editor::Document& document = *m_window->document();
+    p->smoothCheck()->setChecked(false);
+    p->mirrorBallCheck()->setChecked(true); // the overlay says whether it lights the characters
+    p->chooseTestPattern();
+    p->setBoardSpec(kBoard);
+    QVERIFY2(p->readiness().isEmpty(), qPrintable(p->readiness()));
+    QVERIFY(p->start());
+    QTRY_VERIFY_WITH_TIMEOUT(p->view()->overlayText().contains(QStringLiteral("Tracking")) || !p->isRunning(), kTimeout);
+    QVERIFY2(p->isRunning(), qPrintable(p->view()->messageText()));
+    QTRY_VERIFY_WITH_TIMEOUT(p->view()->overlayText().contains(QStringLiteral("mirror ball")) || !p->isRunning(), kTimeout);
+    QVERIFY2(p->isRunning(), qPrintable(p->view()->messageText()));
+
+    // The placement, edited while it plays: one undo step per change, undone and redone.
+    const int steps = document.undoStack()->count();
+    p->headingSpin()->setValue(30);
+    p->scaleSpin()->setValue(0.08);
+    QCOMPARE(document.undoStack()->count(), steps + 2);
+    QCOMPARE(document.scenario().ar.heading, 30.0);
+    QCOMPARE(document.scenario().ar.scale, 0.08);
+    document.undoStack()->undo();
+    QCOMPARE(document.scenario().ar.scale, 1.0);
+    QCOMPARE(p->scaleSpin()->value(), 1.0);
+    document.undoStack()->redo();
+    QCOMPARE(p->scaleSpin()->value(), 0.08);
+    QVERIFY(p->isRunning());
+
+    QTest::mouseClick(p->stopButton(), Qt::LeftButton);
+    QVERIFY(!p->isRunning());
+    QCOMPARE(p->view()->messageTitle(), QStringLiteral("Stopped"));
+    QVERIFY(p->startButton()->isEnabled());
+}
+
+void ArPreviewTest::badInputIsSaidAndStartWaits()
+{
+    showPanel();
+    editor::ArPreviewPanel* p = panel();
+    p->chooseVideoFile(file("board.mp4"));
+    p->setCameraFile(file("camera.yml"));
+    p->setBoardSpec(kBoard);
+    QVERIFY(p->startButton()->isEnabled());
+
+    // A board spec that does not parse: its message beside it and in the view, Start disabled.
+    p->setBoardSpec(QStringLiteral("aruco-grid:DICT_4X4_50:4x:0.04:0.01"));
+    QVERIFY2(p->targetMessageLabel()->text().contains(QStringLiteral("does not parse")),
+             qPrintable(p->targetMessageLabel()->text()));
+    QVERIFY(!p->startButton()->isEnabled());
+    QVERIFY(!p->start());
+    QVERIFY(p->view()->messageText().contains(p->targetMessageLabel()->text()));
+    // A chessboard parses but cannot be tracked.
+    p->setBoardSpec(QStringLiteral("chessboard:9x6:0.025"));
+    QVERIFY2(p->targetMessageLabel()->text().contains(QStringLiteral("cannot be tracked")),
+             qPrintable(p->targetMessageLabel()->text()));
+    QVERIFY(!p->startButton()->isEnabled());
+    p->setBoardSpec(kBoard);
+    QVERIFY(p->startButton()->isEnabled());
+
+    // A camera file for another size is refused before starting; a corrupt one names its file.
+    p->setCameraFile(file("camera_720p.yml"));
+    QVERIFY2(p->cameraFileLabel()->text().contains(QStringLiteral("1280 × 720")) &&
+                 p->cameraFileLabel()->text().contains(QStringLiteral("640 × 480")),
+             qPrintable(p->cameraFileLabel()->text()));
+    QVERIFY(!p->startButton()->isEnabled());
+    QVERIFY(!p->start());
+    QVERIFY(!p->isRunning());
+    p->setCameraFile(file("corrupt.yml"));
+    QVERIFY2(p->cameraFileLabel()->text().contains(QStringLiteral("corrupt.yml")), qPrintable(p->cameraFileLabel()->text()));
+    QVERIFY(!p->startButton()->isEnabled());
+    p->setCameraFile(file("camera.yml"));
+    QVERIFY(p->startButton()->isEnabled());
+
+    // A video that cannot be decoded.
+    p->chooseVideoFile(file("broken.mp4"));
+    QVERIFY2(p->sourceInfoLabel()->text().contains(QStringLiteral("broken.mp4")), qPrintable(p->sourceInfoLabel()->text()));
+    QVERIFY(!p->startButton()->isEnabled());
+    QVERIFY(p->view()->messageText().contains(QStringLiteral("broken.mp4")));
+
+    // No camera: the choice says so, and so does the view.
+    if (!ar::listCameras().empty())
+        QSKIP("This machine has a camera: the no-camera state cannot be shown.");
+    p->chooseCamera();
+    QCOMPARE(p->cameraCombo()->currentText(), QStringLiteral("No camera found"));
+    QVERIFY(!p->cameraCombo()->isEnabled());
+    QVERIFY(!p->startButton()->isEnabled());
+    QVERIFY2(p->view()->messageText().contains(QStringLiteral("No camera found")), qPrintable(p->view()->messageText()));
+    saveScreenshot(p, QStringLiteral("ar_preview_no_camera.png"));
+}
+
+void ArPreviewTest::calibrationFromPhotos()
+{
+    showPanel();
+    editor::ArPreviewPanel* p = panel();
+    // Photos of a chessboard held at several angles.
+    const QString chessboard = QStringLiteral("chessboard:9x6:0.025");
+    ar::SyntheticScene scene = boardScene(chessboard, 300);
+    scene.nearest = 0.45;
+    scene.farthest = 0.7;
+    auto source = ar::SyntheticSource::create(scene);
+    QVERIFY(source);
+    QStringList photos;
+    ar::VideoFrame frame;
+    while (*(*source)->read(frame))
+        if (frame.index % 25 == 0) {
+            photos << file(QStringLiteral("view-%1.png").arg(frame.index));
+            QVERIFY(ar::writePicture(editor::toFsPath(photos.back()), frame));
+        }
+    p->chooseVideoFile(file("board.mp4"));
+    editor::ArCalibrationDialog* dialog = p->openCalibration();
+    QVERIFY(dialog);
+    QVERIFY(QTest::qWaitForWindowExposed(dialog));
+    dialog->boardEdit()->setText(chessboard);
+    QVERIFY(!dialog->calibrateButton()->isEnabled());
+    dialog->addPhotos(photos);
+    QCOMPARE(dialog->viewCount(), int(photos.size()));
+    QVERIFY(dialog->calibrateButton()->isEnabled());
+    // The live video is there to capture views from, too.
+    QTRY_VERIFY_WITH_TIMEOUT(dialog->captureButton()->isEnabled(), kTimeout);
+    QTest::mouseClick(dialog->calibrateButton(), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!dialog->isRunning(), kTimeout);
+    QVERIFY2(dialog->camera().has_value(), qPrintable(dialog->resultText()));
+    QVERIFY2(dialog->resultText().contains(QStringLiteral("RMS")), qPrintable(dialog->resultText()));
+    QVERIFY(std::abs(dialog->camera()->fx() - 600) < 30);
+    QVERIFY(dialog->saveButton()->isEnabled());
+    saveScreenshot(dialog, QStringLiteral("ar_calibration.png"));
+    QVERIFY(dialog->saveTo(file("calibrated.yml")));
+    // The preview uses the camera just calibrated.
+    QVERIFY2(p->cameraFileLabel()->text().contains(QStringLiteral("640 × 480")), qPrintable(p->cameraFileLabel()->text()));
+    QVERIFY2(p->readiness().isEmpty(), qPrintable(p->readiness()));
+    dialog->close();
+}
+
+QTEST_MAIN(ArPreviewTest)
+#include "ar_preview_test.moc"
