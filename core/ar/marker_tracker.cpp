@@ -270,7 +270,10 @@ TrackerEstimate MarkerTracker::estimate(const VideoFrame& frame)
     s.detect(region);
     if (s.ids.empty() && region.area() < s.grey.cols * s.grey.rows)
         s.detect(cv::Rect(0, 0, s.grey.cols, s.grey.rows)); // it moved farther than expected
-    if (!s.ids.empty())
+    // Markers the first pass missed are looked for again against the board's layout; a grid
+    // whose every marker was found needs no second look (a ChArUco board's corners still gain
+    // from the refined markers).
+    if (!s.ids.empty() && (s.charuco || s.ids.size() < s.board->ids.size()))
         cv::aruco::refineDetectedMarkers(s.grey, s.board, s.corners, s.ids, s.rejected, cameraMat(s.camera),
                                          distortionMat(s.camera), 10.f, 3.f, true, cv::noArray(), s.parameters);
     if (!s.charuco)

@@ -191,6 +191,40 @@ TEST(ArComposition, APhantomBoxHidesTheLegsBehindIt)
             ASSERT_EQ(hidden.bgr[i], 150);
 }
 
+TEST(ArComposition, AGltfPhantomHidesWhatIsBehindIt)
+{
+    // CesiumMan (glTF, 1.5 m tall in its own units) stands for a real person between the camera
+    // and the character.
+    const CameraIntrinsics camera = camera640();
+    scenario::Scenario s = oneCharacter(0.1);
+    s.ar.shadowCatcher = false;
+    auto ar = ArCompositor::create(s, scenario::Assets(sharedData("characters/CesiumMan")), camera, gridGeometry());
+    if (!ar) {
+        if (std::getenv("THESPIS_REQUIRE_GL"))
+            FAIL() << describe(ar.error());
+        GTEST_SKIP() << "no OpenGL context";
+    }
+    VideoFrame frame = greyFrame(camera);
+    ASSERT_TRUE((*ar)->compose(frame, tableTopPose()));
+    const Coverage whole = coverage((*ar)->layer());
+    const auto near = toCamera(tableTopPose(), worldToTarget({0, 0, 1}, gridGeometry(), s.ar));
+    const auto far = toCamera(tableTopPose(), worldToTarget({0, 0, -1}, gridGeometry(), s.ar));
+    s.ar.occluders.push_back({"passer-by", scenario::PhantomOccluder::Shape::Model, {0, 0, near[2] < far[2] ? 0.6 : -0.6},
+                              {1, 1, 1}, 0, "CesiumMan.glb"});
+    ASSERT_TRUE((*ar)->setPlacement(s.ar));
+    frame = greyFrame(camera);
+    ASSERT_TRUE((*ar)->compose(frame, tableTopPose()));
+    (void)writePicture(picture("phantom_model.png"), frame);
+    const Coverage hidden = coverage((*ar)->layer());
+    std::cout << "character pixels: " << whole.pixels << " in the open, " << hidden.pixels << " behind the model\n";
+    EXPECT_LT(hidden.pixels, whole.pixels * 0.8);
+    // A model that cannot be read is named.
+    s.ar.occluders.back().model = "missing.glb";
+    const auto refused = (*ar)->setPlacement(s.ar);
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().message.find("passer-by (missing.glb)"), std::string::npos) << refused.error().message;
+}
+
 TEST(ArComposition, TheShadowCatcherDarkensTheGroundAtTheFeet)
 {
     const CameraIntrinsics camera = camera640();
