@@ -158,6 +158,16 @@ Result<std::unique_ptr<FrameSource>> openImageSequence(std::vector<std::filesyst
     return std::unique_ptr<FrameSource>(new PictureSequence(std::move(pictures), fps, first.size()));
 }
 
+Result<void> checkCameraFits(const CameraIntrinsics& camera, const std::string& cameraName, const FrameSource& source)
+{
+    if (source.width() <= 0 || (source.width() == camera.width && source.height() == camera.height))
+        return {};
+    return makeError(ErrorCode::InvalidArgument,
+                     cameraName + " is for " + std::to_string(camera.width) + " × " + std::to_string(camera.height) +
+                         " pictures but " + source.description() + " is " + std::to_string(source.width()) + " × " +
+                         std::to_string(source.height()) + ": calibrate the camera at the resolution it films at");
+}
+
 Result<VideoFrame> readPicture(const std::filesystem::path& path)
 {
     const cv::Mat picture = cv::imread(path.string(), cv::IMREAD_COLOR);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ar/camera_file.h"
 #include "ar/video_frame.h"
 #include "util/error.h"
 
@@ -39,6 +40,11 @@ Result<std::unique_ptr<FrameSource>> openVideoFile(const std::filesystem::path& 
 /// Pictures read one after another at `fps` (frame i at i / fps seconds). Errors: none given, a
 /// file missing (named), fps not positive.
 Result<std::unique_ptr<FrameSource>> openImageSequence(std::vector<std::filesystem::path> pictures, double fps);
+
+/// Whether `camera` (called `cameraName` in the message) was calibrated at the size `source`
+/// gives; a source that does not say its size yet passes. Errors: "camera.yml is for 640 × 480
+/// pictures but clip.mp4 is 1280 × 720: calibrate the camera at the resolution it films at".
+Result<void> checkCameraFits(const CameraIntrinsics& camera, const std::string& cameraName, const FrameSource& source);
 
 /// One picture as a frame (index 0, time 0). Errors name the file.
 Result<VideoFrame> readPicture(const std::filesystem::path& path);

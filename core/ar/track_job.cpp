@@ -37,12 +37,8 @@ Result<void> TrackJob::run(JobContext& context)
     if (!source)
         return source.error();
     FrameSource& frameSource = **source;
-    if (frameSource.width() != camera->width || frameSource.height() != camera->height)
-        return makeError(ErrorCode::InvalidArgument,
-                         cameraFile.filename().string() + " is for " + std::to_string(camera->width) + " × " +
-                             std::to_string(camera->height) + " pictures but " + frameSource.description() + " is " +
-                             std::to_string(frameSource.width()) + " × " + std::to_string(frameSource.height()) +
-                             ": calibrate the camera at the resolution it films at");
+    if (auto fits = checkCameraFits(*camera, cameraFile.filename().string(), frameSource); !fits)
+        return fits.error();
     auto tracker = makeTracker(target, *camera);
     if (!tracker)
         return tracker.error();

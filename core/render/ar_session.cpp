@@ -55,12 +55,8 @@ Result<std::unique_ptr<ArSession>> ArSession::start(std::unique_ptr<ar::FrameSou
                                                     const scenario::Assets& assets, const ArSessionSettings& settings)
 {
     const ar::CameraIntrinsics& camera = settings.camera;
-    if (source->width() > 0 && (source->width() != camera.width || source->height() != camera.height))
-        return makeError(ErrorCode::InvalidArgument,
-                         "The camera file is for " + std::to_string(camera.width) + " × " +
-                             std::to_string(camera.height) + " pictures but " + source->description() + " gives " +
-                             std::to_string(source->width()) + " × " + std::to_string(source->height()) +
-                             ": calibrate at the resolution it films at");
+    if (auto fits = ar::checkCameraFits(camera, "The camera file", *source); !fits)
+        return fits.error();
     auto tracker = ar::makeTracker(settings.target, camera);
     if (!tracker)
         return tracker.error();

@@ -46,11 +46,8 @@ Result<void> PlayJob::overVideo(JobContext& context)
     if (!source)
         return source.error();
     ar::FrameSource& input = **source;
-    if (input.width() != camera->width || input.height() != camera->height)
-        return makeError(ErrorCode::InvalidArgument,
-                         cameraFile.filename().string() + " is for " + std::to_string(camera->width) + " × " +
-                             std::to_string(camera->height) + " pictures but " + input.description() + " is " +
-                             std::to_string(input.width()) + " × " + std::to_string(input.height()));
+    if (auto fits = ar::checkCameraFits(*camera, cameraFile.filename().string(), input); !fits)
+        return fits.error();
     auto tracker = ar::makeTracker(target, *camera);
     if (!tracker)
         return tracker.error();
