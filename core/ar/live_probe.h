@@ -8,12 +8,14 @@
 // (probe.h's layout: the camera is taken as orthographic, so a small or distant ball is best) in
 // linear radiance (the video is sRGB 8-bit: decoded, then scaled by the exposure) →
 // lighting::ProbeProjector, the projector every probe goes through → exponential smoothing over
-// the frames' timestamps. The circle is given by the user, or found: Hough circles on the grey
-// frame reduced to searchSize, strongest first, each refined on the full frame (along radial
-// profiles, the outermost clear step is the rim — the ball's outer ring mirrors what is beside
-// it, so the true rim is often fainter than reflections just inside — then a robust circle fit)
-// and kept only if a third of the rays agree on it. The pixel of the rim the frame blends with
-// the background is left out (samples there are pulled in by one pixel).
+// the frames' timestamps. The circle is given by the user, or found: first where the ball was
+// last seen, else by Hough circles on the grey frame reduced to searchSize, strongest first.
+// Each is refined on the full frame (along radial profiles, the outermost clear step is the rim —
+// the ball's outer ring mirrors what is beside it, so the true rim is often fainter than
+// reflections just inside — then a robust circle fit) and kept only if a third of the rays agree
+// on it and their edges run along the circle (a checkerboard has edges near any circle, but
+// across it). The pixel of the rim the frame blends with the background is left out (samples
+// there are pulled in by one pixel).
 //
 // The light is in the probe's frame, the camera's view of the ball: −z towards the camera, +y the
 // picture's up, +x its left. Where the world is not the camera's, turn it with the camera's pose

@@ -187,8 +187,9 @@ TEST(ArComposition, APhantomBoxHidesTheLegsBehindIt)
     EXPECT_EQ(partly.top, whole.top) << "the head shows above the box";
     // Where the box hides the character, the video shows: the box itself is never drawn.
     for (std::size_t i = 0; i < hidden.bgr.size(); i += 3)
-        if (open->layer().rgba[i / 3 * 4 + 3] == 0)
+        if (open->layer().rgba[i / 3 * 4 + 3] == 0) {
             ASSERT_EQ(hidden.bgr[i], 150);
+        }
 }
 
 TEST(ArComposition, AGltfPhantomHidesWhatIsBehindIt)

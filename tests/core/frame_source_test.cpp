@@ -94,8 +94,9 @@ TEST(FrameSources, NoCameraIsAClearAnswer)
     ASSERT_FALSE(camera);
     EXPECT_EQ(camera.error().code, ErrorCode::NotFound);
     EXPECT_NE(camera.error().message.find("No camera found at /dev/video63"), std::string::npos);
-    if (cameras.empty())
+    if (cameras.empty()) {
         EXPECT_NE(camera.error().message.find("this machine has none"), std::string::npos);
+    }
 }
 
 namespace {

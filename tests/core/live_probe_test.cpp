@@ -8,13 +8,15 @@
 // follows a sudden change by 1 − 1/e after one time constant. The real chrome-ball photos of
 // ../shared/data/vision/mirrorball (reduced to 1024 / 1000 px) are found within 2.0 px (centre)
 // and 3.5 px (radius) of their hand-tuned crops, which are not ground truth: the balls' lower
-// rims meet a dark stand. Frames without a ball, circles outside the frame and bad settings are
-// said so.
+// rims meet a dark stand. A ball that moves is followed. No ball is found in marker-board footage
+// or in the other real photos of ../shared/data/vision. Frames without a ball, circles outside
+// the frame and bad settings are said so.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <numbers>
 #include <random>
@@ -22,6 +24,7 @@
 #include "allocation_counter.h"
 #include "ar/frame_source.h"
 #include "ar/live_probe.h"
+#include "ar/synthetic_source.h"
 #include "lighting/probe.h"
 #include "lighting/probe_projection_job.h"
 #include "render/shading.h"
@@ -189,6 +192,27 @@ TEST(LiveProbe, RecoversABandLimitedLightFromASyntheticMirrorBall)
     ASSERT_TRUE(captured) << captured.error().message;
     EXPECT_EQ(captured->layout(), lighting::ProbeLayout::MirrorBall);
     EXPECT_EQ(captured->image().width, 128);
+}
+
+TEST(LiveProbe, FollowsTheBallAsTheCameraMoves)
+{
+    // A small move is confirmed where the ball was; a jump further than the rim search reaches
+    // makes the probe search the whole frame again. Both land on the true circle.
+    LiveProbeSettings settings;
+    settings.updateEvery = 1;
+    auto probe = LiveProbe::create(settings);
+    ASSERT_TRUE(probe);
+    const BallCircle path[] = {kBall, {kBall.centerX + 2.6, kBall.centerY - 1.9, kBall.radius + 1.2},
+                               {kBall.centerX - 90.4, kBall.centerY + 40.2, kBall.radius - 30.3}};
+    for (int i = 0; i < 3; ++i) {
+        VideoFrame frame = mirrorBallFrame(640, 480, path[i], bandLimitedLight, 0.06, 1.0, unsigned(i + 1));
+        frame.index = i;
+        frame.time = i / 30.0;
+        ASSERT_TRUE(probe->update(frame)) << "frame " << i << ": " << probe->ball().reason;
+        const BallCircle found = probe->ball().circle;
+        EXPECT_LT(std::hypot(found.centerX - path[i].centerX, found.centerY - path[i].centerY), 0.25) << "frame " << i;
+        EXPECT_NEAR(found.radius, path[i].radius, 0.15) << "frame " << i;
+    }
 }
 
 TEST(LiveProbe, RecoversASunnySkyAndItsSunDirection)
@@ -504,4 +528,48 @@ TEST(LiveProbe, AllocatesOnlyInTheProjectorOnceRunning)
     std::printf("allocations in a steady-state update with a given circle: %ld\n", allocations);
     // ProbeProjector::project's per-call partial sums; nothing of the live probe's own.
     EXPECT_LE(allocations, 1);
+}
+
+TEST(LiveProbe, FindsNoBallWhereThereIsNone)
+{
+    // The studio's test pattern (a marker board moved by hand, with noise, blur and a hand over
+    // it) and OpenCV's real photos of boards, markers and scenes: their squares and corners
+    // suggest circles to a Hough search (before the rim had to run along its circle, 13 of these
+    // 29 photos and nearly every board frame had a "ball"); the rim check turns each one down.
+    // Also checked once over 1500 frames of five boards and two seeds: none.
+    LiveProbeSettings settings;
+    settings.updateEvery = 1;
+    int looked = 0;
+    const auto expectNoBall = [&](const VideoFrame& frame, const std::string& what) {
+        auto probe = LiveProbe::create(settings);
+        ASSERT_TRUE(probe);
+        ++looked;
+        EXPECT_FALSE(probe->update(frame)) << what << ": a ball at (" << probe->ball().circle.centerX << ", "
+                                           << probe->ball().circle.centerY << "), radius " << probe->ball().circle.radius;
+    };
+    for (const char* spec : {"aruco-grid:DICT_4X4_50:4x3:0.04:0.01", "charuco:DICT_4X4_1000:5x7:0.03:0.022"}) {
+        SyntheticScene scene;
+        scene.board = parseBoard(spec).value();
+        scene.camera.width = 640;
+        scene.camera.height = 480;
+        scene.camera.matrix = {600, 0, 320, 0, 600, 240, 0, 0, 1};
+        scene.frames = 90;
+        scene.handOver = {30, 60};
+        auto source = SyntheticSource::create(scene);
+        ASSERT_TRUE(source);
+        VideoFrame frame;
+        while (source.value()->read(frame).value())
+            if (frame.index % 3 == 0)
+                expectNoBall(frame, std::string(spec) + " frame " + std::to_string(frame.index));
+    }
+    for (const char* folder : {"vision/aruco", "vision/aruco_real", "vision/calibration", "vision/features"})
+        for (const auto& entry : std::filesystem::directory_iterator(thespis::test::sharedData(folder))) {
+            const std::string extension = entry.path().extension().string();
+            if (extension != ".jpg" && extension != ".png")
+                continue;
+            auto picture = readPicture(entry.path());
+            ASSERT_TRUE(picture) << picture.error().message;
+            expectNoBall(*picture, entry.path().string());
+        }
+    EXPECT_EQ(looked, 60 + 29);
 }
