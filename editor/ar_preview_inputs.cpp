@@ -136,14 +136,39 @@ void ArPreviewPanel::buildSourceGroup(QGroupBox* group)
     m_cameras->setObjectName(QStringLiteral("arCameras"));
     auto* rescan = new QPushButton(tr("Rescan"), group);
     rescan->setToolTip(tr("Look for cameras again (after plugging one in)"));
-    auto* cameraRow = new QWidget(group);
-    auto* cameraLayout = new QHBoxLayout(cameraRow);
+    m_cameraSize = new QComboBox(group);
+    m_cameraSize->setObjectName(QStringLiteral("arCameraSize"));
+    m_cameraSize->setToolTip(tr("The picture size asked of the camera; its camera file must be for the same size"));
+    m_cameraSize->addItem(tr("Camera file's size"), QSize());
+    for (const QSize size : {QSize(640, 480), QSize(1280, 720), QSize(1920, 1080)})
+        m_cameraSize->addItem(sizeText(size), size);
+    m_cameraRate = new QComboBox(group);
+    m_cameraRate->setObjectName(QStringLiteral("arCameraRate"));
+    m_cameraRate->setToolTip(tr("Frames a second asked of the camera (it may give fewer in dim light)"));
+    for (const double fps : {15.0, 24.0, 25.0, 30.0, 60.0})
+        m_cameraRate->addItem(tr("%1 fps").arg(fps), fps);
+    m_cameraRate->setCurrentIndex(m_cameraRate->findData(30.0));
+    auto* cameraPage = new QWidget(group);
+    auto* cameraLayout = new QGridLayout(cameraPage);
     cameraLayout->setContentsMargins(0, 0, 0, 0);
-    cameraLayout->addWidget(m_cameras, 1);
-    cameraLayout->addWidget(rescan);
-    m_sourcePages->addWidget(cameraRow);
+    cameraLayout->addWidget(m_cameras, 0, 0, 1, 2);
+    cameraLayout->addWidget(rescan, 0, 2);
+    cameraLayout->addWidget(m_cameraSize, 1, 0);
+    cameraLayout->addWidget(m_cameraRate, 1, 1, 1, 2);
+    m_sourcePages->addWidget(cameraPage);
     connect(rescan, &QPushButton::clicked, this, &ArPreviewPanel::refreshCameras);
     connect(m_cameras, &QComboBox::activated, this, [this] { chooseCamera(m_cameras->currentData().toInt()); });
+    connect(m_cameraSize, &QComboBox::activated, this, [this] {
+        const QSize size = m_cameraSize->currentData().toSize();
+        storeSetting("cameraSize", size.isEmpty() ? QString() : QStringLiteral("%1x%2").arg(size.width()).arg(size.height()));
+        if (m_source.kind == ArSource::Kind::Camera)
+            chooseCamera();
+    });
+    connect(m_cameraRate, &QComboBox::activated, this, [this] {
+        storeSetting("cameraFps", m_cameraRate->currentData());
+        if (m_source.kind == ArSource::Kind::Camera)
+            chooseCamera();
+    });
 
     m_sourceInfo = new QLabel(group);
     m_sourceInfo->setObjectName(QStringLiteral("arSourceInfo"));
@@ -347,6 +372,8 @@ void ArPreviewPanel::chooseCamera(int index)
         m_cameras->setCurrentIndex(std::max(0, m_cameras->findData(index)));
     m_source = ArSource{ArSource::Kind::Camera};
     m_source.camera = m_cameras->currentData().isValid() ? m_cameras->currentData().toInt() : -1;
+    m_source.size = m_cameraSize->currentData().toSize();
+    m_source.fps = m_cameraRate->currentData().toDouble();
     storeSetting("source", QStringLiteral("camera"));
     probeSource();
 }
@@ -386,8 +413,10 @@ void ArPreviewPanel::probeSource()
     case Kind::Camera:
         if (m_source.camera < 0)
             m_sourceError = tr("No camera found: plug one in and press Rescan, or choose a video file or the test pattern.");
+        else if (!m_source.size.isEmpty())
+            m_sourceInfoValue = ArSourceInfo{m_source.size, m_source.fps, -1};
         else
-            info = tr("Its size is known once it runs; the camera file's is asked for.");
+            info = tr("The camera file's size is asked for, at %1 fps.").arg(m_source.fps);
         break;
     case Kind::VideoFile:
     case Kind::ImageFolder:

@@ -126,6 +126,10 @@ ArPreviewPanel::ArPreviewPanel(QWidget* parent) : QWidget(parent), m_timer(new Q
     m_board->setText(setting("board", kDefaultBoard));
     m_videoPath->setText(QDir::toNativeSeparators(setting("video")));
     m_folderPath->setText(QDir::toNativeSeparators(setting("folder")));
+    const QStringList cameraSize = setting("cameraSize").split(QLatin1Char('x'));
+    if (cameraSize.size() == 2)
+        m_cameraSize->setCurrentIndex(std::max(0, m_cameraSize->findData(QSize(cameraSize[0].toInt(), cameraSize[1].toInt()))));
+    m_cameraRate->setCurrentIndex(std::max(0, m_cameraRate->findData(setting("cameraFps", QStringLiteral("30")).toDouble())));
     m_refreshing = false;
     refreshCameras();
     const QString kind = setting("source", m_cameras->isEnabled() ? QStringLiteral("camera") : QStringLiteral("test"));

@@ -102,6 +102,8 @@ public:
     widgets::VideoView* view() const { return m_view; }
     QComboBox* sourceKindCombo() const { return m_sourceKind; }
     QComboBox* cameraCombo() const { return m_cameras; }
+    QComboBox* cameraSizeCombo() const { return m_cameraSize; }
+    QComboBox* cameraRateCombo() const { return m_cameraRate; }
     QLabel* sourceInfoLabel() const { return m_sourceInfo; }
     QLabel* cameraFileLabel() const { return m_cameraMessage; }
     QLineEdit* boardEdit() const { return m_board; }
@@ -179,6 +181,8 @@ private:
     QLineEdit* m_folderPath = nullptr;
     QDoubleSpinBox* m_folderFps = nullptr;
     QComboBox* m_cameras = nullptr;
+    QComboBox* m_cameraSize = nullptr; ///< data: the size asked of the camera (empty: the camera file's)
+    QComboBox* m_cameraRate = nullptr; ///< data: frames a second asked of the camera
     QLabel* m_sourceInfo = nullptr;
     QLineEdit* m_cameraFile = nullptr;
     QPushButton* m_chooseCameraFile = nullptr;

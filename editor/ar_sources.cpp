@@ -59,6 +59,19 @@ core::ar::SyntheticScene testPatternScene(const core::ar::BoardSpec& board)
     return scene;
 }
 
+core::ar::CameraRequest cameraRequest(const ArSource& source, QSize cameraFileSize)
+{
+    core::ar::CameraRequest request;
+    request.index = source.camera;
+    request.fps = source.fps;
+    const QSize size = source.size.isEmpty() ? cameraFileSize : source.size;
+    if (!size.isEmpty()) {
+        request.width = size.width();
+        request.height = size.height();
+    }
+    return request;
+}
+
 core::Result<std::unique_ptr<core::ar::FrameSource>> openArSource(const ArSource& source,
                                                                   const core::ar::BoardSpec& board, QSize cameraSize)
 {
@@ -75,15 +88,8 @@ core::Result<std::unique_ptr<core::ar::FrameSource>> openArSource(const ArSource
                                    QDir::toNativeSeparators(source.path).toStdString() + " holds no pictures");
         return core::ar::openImageSequence(std::move(pictures), source.fps);
     }
-    case Kind::Camera: {
-        core::ar::CameraRequest request;
-        request.index = source.camera;
-        if (!cameraSize.isEmpty()) {
-            request.width = cameraSize.width();
-            request.height = cameraSize.height();
-        }
-        return core::ar::openCamera(request);
-    }
+    case Kind::Camera:
+        return core::ar::openCamera(cameraRequest(source, cameraSize));
     case Kind::TestPattern:
         break;
     }

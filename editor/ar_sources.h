@@ -25,7 +25,8 @@ struct ArSource {
     Kind kind = Kind::TestPattern;
     QString path;     ///< the video file or the picture folder
     int camera = 0;   ///< /dev/video<camera>
-    double fps = 30;  ///< the picture folder's frame rate
+    QSize size;       ///< asked of a camera; empty: the camera file's
+    double fps = 30;  ///< the picture folder's frame rate, or the one asked of a camera
 };
 
 /// What a source gives, known before it plays.
@@ -44,8 +45,12 @@ QStringList picturesIn(const QString& folder);
 /// The test pattern: `board` seen by a 640 × 480 camera, hand-held for two minutes.
 core::ar::SyntheticScene testPatternScene(const core::ar::BoardSpec& board);
 
-/// Opens the source. `board` is what the test pattern shows; `cameraSize` is asked of a camera
-/// (it may choose another; empty: 640 × 480).
+/// What a camera source asks of its camera: the source's size, else `cameraFileSize`, else
+/// 640 × 480, and the source's frame rate (the camera may give others).
+core::ar::CameraRequest cameraRequest(const ArSource& source, QSize cameraFileSize);
+
+/// Opens the source. `board` is what the test pattern shows; a camera is opened with
+/// cameraRequest(source, cameraSize).
 core::Result<std::unique_ptr<core::ar::FrameSource>> openArSource(const ArSource& source,
                                                                   const core::ar::BoardSpec& board, QSize cameraSize);
 

@@ -383,10 +383,6 @@ fx %6 ± %7, fy %8 ± %9, Mitte (%10, %11) px.</translation>
         <translation>Keine Kamera gefunden: eine anstecken und „Neu suchen“ drücken, oder eine Videodatei oder das Testbild wählen.</translation>
     </message>
     <message>
-        <source>Its size is known once it runs; the camera file&apos;s is asked for.</source>
-        <translation>Ihre Bildgröße ist erst bekannt, wenn sie läuft; die der Kameradatei wird angefordert.</translation>
-    </message>
-    <message>
         <source>Choose a video file.</source>
         <translation>Eine Videodatei wählen.</translation>
     </message>
@@ -644,6 +640,22 @@ Beheben, dann „Starten“ drücken.</translation>
     <message>
         <source>Mirror ball</source>
         <translation>Spiegelkugel</translation>
+    </message>
+    <message>
+        <source>The picture size asked of the camera; its camera file must be for the same size</source>
+        <translation>Die von der Kamera angeforderte Bildgröße; ihre Kameradatei muss für dieselbe Größe sein</translation>
+    </message>
+    <message>
+        <source>Camera file&apos;s size</source>
+        <translation>Größe der Kameradatei</translation>
+    </message>
+    <message>
+        <source>Frames a second asked of the camera (it may give fewer in dim light)</source>
+        <translation>Von der Kamera angeforderte Bilder pro Sekunde (bei wenig Licht liefert sie eventuell weniger)</translation>
+    </message>
+    <message>
+        <source>The camera file&apos;s size is asked for, at %1 fps.</source>
+        <translation>Die Größe der Kameradatei wird angefordert, mit %1 fps.</translation>
     </message>
 </context>
 <context>

@@ -383,10 +383,6 @@ fx %6 ± %7, fy %8 ± %9, centre (%10, %11) px.</translation>
         <translation>Aucune caméra trouvée : branchez-en une et cliquez sur « Rechercher », ou choisissez un fichier vidéo ou la mire de test.</translation>
     </message>
     <message>
-        <source>Its size is known once it runs; the camera file&apos;s is asked for.</source>
-        <translation>Sa taille n’est connue qu’une fois lancée ; celle du fichier caméra est demandée.</translation>
-    </message>
-    <message>
         <source>Choose a video file.</source>
         <translation>Choisissez un fichier vidéo.</translation>
     </message>
@@ -644,6 +640,22 @@ Corrigez-le, puis cliquez sur « Démarrer ».</translation>
     <message>
         <source>Mirror ball</source>
         <translation>Boule miroir</translation>
+    </message>
+    <message>
+        <source>The picture size asked of the camera; its camera file must be for the same size</source>
+        <translation>La taille d’image demandée à la caméra ; son fichier de caméra doit être pour la même taille</translation>
+    </message>
+    <message>
+        <source>Camera file&apos;s size</source>
+        <translation>Taille du fichier de caméra</translation>
+    </message>
+    <message>
+        <source>Frames a second asked of the camera (it may give fewer in dim light)</source>
+        <translation>Images par seconde demandées à la caméra (elle peut en donner moins en faible lumière)</translation>
+    </message>
+    <message>
+        <source>The camera file&apos;s size is asked for, at %1 fps.</source>
+        <translation>La taille du fichier de caméra est demandée, à %1 i/s.</translation>
     </message>
 </context>
 <context>

@@ -347,6 +347,34 @@ void ArPreviewTest::badInputIsSaidAndStartWaits()
     QVERIFY(!p->startButton()->isEnabled());
     QVERIFY2(p->view()->messageText().contains(QStringLiteral("No camera found")), qPrintable(p->view()->messageText()));
     saveScreenshot(p, QStringLiteral("ar_preview_no_camera.png"));
+
+    // The size and frame rate asked of a camera are chosen beside it, kept for the next session,
+    // and are what opening the camera asks for; by default the camera file's size at 30 fps.
+    QVERIFY(p->cameraSizeCombo()->isVisible() && p->cameraRateCombo()->isVisible());
+    editor::ArSource camera = p->source();
+    camera.camera = 0; // as if a camera were plugged in
+    core::ar::CameraRequest asked = editor::cameraRequest(camera, QSize(800, 600));
+    QCOMPARE(QSize(asked.width, asked.height), QSize(800, 600));
+    QCOMPARE(asked.fps, 30.0);
+    const auto choose = [](QComboBox* combo, const QString& text) {
+        const int index = combo->findText(text);
+        QVERIFY2(index >= 0, qPrintable(text));
+        combo->setCurrentIndex(index);
+        emit combo->activated(index);
+    };
+    choose(p->cameraSizeCombo(), QStringLiteral("1280 × 720"));
+    choose(p->cameraRateCombo(), QStringLiteral("60 fps"));
+    camera = p->source();
+    QCOMPARE(camera.kind, editor::ArSource::Kind::Camera);
+    camera.camera = 0;
+    asked = editor::cameraRequest(camera, QSize(800, 600));
+    QCOMPARE(QSize(asked.width, asked.height), QSize(1280, 720));
+    QCOMPARE(asked.fps, 60.0);
+    QCOMPARE(QSettings().value(QStringLiteral("arPreview/cameraSize")).toString(), QStringLiteral("1280x720"));
+    QCOMPARE(QSettings().value(QStringLiteral("arPreview/cameraFps")).toDouble(), 60.0);
+    choose(p->cameraSizeCombo(), QStringLiteral("Camera file's size"));
+    choose(p->cameraRateCombo(), QStringLiteral("30 fps"));
+    QVERIFY(p->source().size.isEmpty());
 }
 
 void ArPreviewTest::calibrationFromPhotos()
