@@ -9,7 +9,7 @@ packages=(
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   gstreamer1.0-plugins-base gstreamer1.0-plugins-good
   libopenscenegraph-dev libopencv-dev libopencv-contrib-dev libglm-dev libembree-dev
-  libopenexr-dev libtinygltf-dev libstb-dev libsndfile1-dev
+  libopenexr-dev libtinygltf-dev libstb-dev libsndfile1-dev libzip-dev libssl-dev
   pybind11-dev python3-dev python3-numpy python3-pytest
   libeigen3-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri libegl-mesa0 libegl-dev libgl-dev mesa-utils

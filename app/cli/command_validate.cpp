@@ -1,36 +1,43 @@
-// thespis-cli validate SCENARIO: reads the file, lists every problem validateScenario finds,
-// then builds the runtime (loading every clip) to catch what only loading reveals.
+// thespis-cli validate SCENARIO|PACKAGE: reads the file, lists every problem validateScenario
+// finds, then builds the runtime (loading every clip) to catch what only loading reveals. A
+// package is opened first (every check of core/scenario/package.h), and its scenario checked
+// as it will be used: imported into a temporary folder, removed afterwards.
 
 #include <cstdio>
+#include <random>
 
 #include "cancel.h"
 #include "commands.h"
 #include "exit_codes.h"
+#include "scenario/package.h"
 #include "scenario/scenario_runtime.h"
 
 namespace thespis::cli {
 
-CommandSpec validateSpec()
-{
-    CommandSpec spec;
-    spec.name = "validate";
-    spec.summary = "Check a scenario file: its format, every field, and that every clip loads.";
-    spec.positionals = {"SCENARIO"};
-    spec.options = {{"quiet", "", "print only problems, not the summary"}};
-    spec.description = "Each problem is printed with the character, action and field it concerns.\n"
-                       "Exit status: 0 valid, 3 invalid or unreadable, 2 bad command line.";
-    return spec;
-}
+namespace {
 
-int runValidate(const CommandSpec& spec, const ParsedArguments& arguments)
+/// A folder of its own under the system's temporary folder, removed with this object.
+struct TemporaryFolder {
+    std::filesystem::path path;
+    TemporaryFolder()
+    {
+        std::random_device random;
+        path = std::filesystem::temp_directory_path() / ("thespis-validate-" + std::to_string(random()));
+    }
+    ~TemporaryFolder()
+    {
+        std::error_code error;
+        std::filesystem::remove_all(path, error);
+    }
+};
+
+int validateScenario(const CommandSpec& spec, const std::filesystem::path& file, const std::filesystem::path& path, bool quiet)
 {
-    const std::filesystem::path path = arguments.positionals[0];
-    const bool quiet = arguments.has("quiet");
-    const auto scenario = loadScenarioReporting(spec.name, path);
+    const auto scenario = loadScenarioReporting(spec.name, file);
     if (!scenario)
         return ExitInvalidInput;
 
-    const core::scenario::Assets assets = core::scenario::Assets::besideFile(path);
+    const core::scenario::Assets assets = core::scenario::Assets::besideFile(file);
     const std::vector<core::Error> problems = core::scenario::validateScenario(*scenario, assets);
     if (interrupted())
         return ExitCancelled;
@@ -65,6 +72,51 @@ int runValidate(const CommandSpec& spec, const ParsedArguments& arguments)
                     clips, clips == 1 ? "" : "s", actions, actions == 1 ? "" : "s", runtime->duration);
     }
     return ExitOk;
+}
+
+int validatePackage(const CommandSpec& spec, const std::filesystem::path& path, bool quiet)
+{
+    auto package = core::scenario::Package::open(path);
+    if (!package) {
+        std::printf("%s: 1 problem\n  - %s\n", path.string().c_str(), core::describe(package.error()).c_str());
+        printError(spec.name, path.string() + " is not a valid package.");
+        return ExitInvalidInput;
+    }
+    const core::scenario::PackageManifest& manifest = (*package)->manifest();
+    if (!quiet)
+        std::printf("%s: a package by %s; %zu entries, each as its manifest says.\n", path.string().c_str(),
+                    manifest.writer.c_str(), manifest.entries.size() + 1);
+    TemporaryFolder folder;
+    auto scenario = (*package)->extractTo(folder.path);
+    if (!scenario) {
+        printError(spec.name, scenario.error());
+        return ExitFailure;
+    }
+    return validateScenario(spec, *scenario, path / manifest.scenario, quiet);
+}
+
+} // namespace
+
+CommandSpec validateSpec()
+{
+    CommandSpec spec;
+    spec.name = "validate";
+    spec.summary = "Check a scenario or a package: its format, every field, and that every clip loads.";
+    spec.positionals = {"SCENARIO|PACKAGE"};
+    spec.options = {{"quiet", "", "print only problems, not the summary"}};
+    spec.description = "Each problem is printed with the character, action and field it concerns. A package\n"
+                       "(.thespkg) is checked as `import` checks it, then its scenario as above.\n"
+                       "Exit status: 0 valid, 3 invalid or unreadable, 2 bad command line.";
+    return spec;
+}
+
+int runValidate(const CommandSpec& spec, const ParsedArguments& arguments)
+{
+    const std::filesystem::path path = arguments.positionals[0];
+    const bool quiet = arguments.has("quiet");
+    if (path.extension() == core::scenario::kPackageExtension)
+        return validatePackage(spec, path, quiet);
+    return validateScenario(spec, path, path, quiet);
 }
 
 } // namespace thespis::cli

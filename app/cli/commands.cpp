@@ -20,6 +20,8 @@ const std::vector<Command>& commands()
         {calibrateSpec(), &runCalibrate},
         {trackSpec(), &runTrack},
         {playSpec(), &runPlay},
+        {exportSpec(), &runExport},
+        {importSpec(), &runImport},
 #ifdef THESPIS_WITH_PYTHON
         {runSpec(), &runRun},
 #endif
