@@ -1,44 +1,25 @@
 // thespis-cli validate SCENARIO|PACKAGE: reads the file, lists every problem validateScenario
 // finds, then builds the runtime (loading every clip) to catch what only loading reveals. A
 // package is opened first (every check of core/scenario/package.h), and its scenario checked
-// as it will be used: imported into a temporary folder, removed afterwards.
+// as it plays: from the package (package_resolver.h).
 
 #include <cstdio>
-#include <random>
 
 #include "cancel.h"
 #include "commands.h"
 #include "exit_codes.h"
-#include "scenario/package.h"
+#include "scenario/package_resolver.h"
 #include "scenario/scenario_runtime.h"
 
 namespace thespis::cli {
 
 namespace {
 
-/// A folder of its own under the system's temporary folder, removed with this object.
-struct TemporaryFolder {
-    std::filesystem::path path;
-    TemporaryFolder()
-    {
-        std::random_device random;
-        path = std::filesystem::temp_directory_path() / ("thespis-validate-" + std::to_string(random()));
-    }
-    ~TemporaryFolder()
-    {
-        std::error_code error;
-        std::filesystem::remove_all(path, error);
-    }
-};
-
-int validateScenario(const CommandSpec& spec, const std::filesystem::path& file, const std::filesystem::path& path, bool quiet)
+/// `path` names the scenario in messages.
+int validateScenario(const CommandSpec& spec, const core::scenario::Scenario& scenario, const core::scenario::Assets& assets,
+                     const std::filesystem::path& path, bool quiet)
 {
-    const auto scenario = loadScenarioReporting(spec.name, file);
-    if (!scenario)
-        return ExitInvalidInput;
-
-    const core::scenario::Assets assets = core::scenario::Assets::besideFile(file);
-    const std::vector<core::Error> problems = core::scenario::validateScenario(*scenario, assets);
+    const std::vector<core::Error> problems = core::scenario::validateScenario(scenario, assets);
     if (interrupted())
         return ExitCancelled;
     if (!problems.empty()) {
@@ -50,7 +31,7 @@ int validateScenario(const CommandSpec& spec, const std::filesystem::path& file,
         return ExitInvalidInput;
     }
 
-    auto runtime = core::scenario::buildRuntime(*scenario, assets);
+    auto runtime = core::scenario::buildRuntime(scenario, assets);
     if (!runtime) {
         std::printf("%s: 1 problem\n  - %s\n", path.string().c_str(), core::describe(runtime.error()).c_str());
         printError(spec.name, path.string() + " is not valid.");
@@ -62,13 +43,13 @@ int validateScenario(const CommandSpec& spec, const std::filesystem::path& file,
 
     if (!quiet) {
         std::size_t actions = 0, clips = 0;
-        for (const auto& character : scenario->characters) {
+        for (const auto& character : scenario.characters) {
             clips += character.clips.size();
             for (const auto& layer : character.layers)
                 actions += layer.actions.size();
         }
         std::printf("%s: valid. '%s': %zu character%s, %zu clip%s, %zu action%s, %.3f s.\n", path.string().c_str(),
-                    scenario->name.c_str(), scenario->characters.size(), scenario->characters.size() == 1 ? "" : "s",
+                    scenario.name.c_str(), scenario.characters.size(), scenario.characters.size() == 1 ? "" : "s",
                     clips, clips == 1 ? "" : "s", actions, actions == 1 ? "" : "s", runtime->duration);
     }
     return ExitOk;
@@ -76,23 +57,17 @@ int validateScenario(const CommandSpec& spec, const std::filesystem::path& file,
 
 int validatePackage(const CommandSpec& spec, const std::filesystem::path& path, bool quiet)
 {
-    auto package = core::scenario::Package::open(path);
-    if (!package) {
-        std::printf("%s: 1 problem\n  - %s\n", path.string().c_str(), core::describe(package.error()).c_str());
+    auto opened = core::scenario::openPackage(path);
+    if (!opened) {
+        std::printf("%s: 1 problem\n  - %s\n", path.string().c_str(), core::describe(opened.error()).c_str());
         printError(spec.name, path.string() + " is not a valid package.");
         return ExitInvalidInput;
     }
-    const core::scenario::PackageManifest& manifest = (*package)->manifest();
+    const core::scenario::PackageManifest& manifest = opened->package->manifest();
     if (!quiet)
         std::printf("%s: a package by %s; %zu entries, each as its manifest says.\n", path.string().c_str(),
                     manifest.writer.c_str(), manifest.entries.size() + 1);
-    TemporaryFolder folder;
-    auto scenario = (*package)->extractTo(folder.path);
-    if (!scenario) {
-        printError(spec.name, scenario.error());
-        return ExitFailure;
-    }
-    return validateScenario(spec, *scenario, path / manifest.scenario, quiet);
+    return validateScenario(spec, opened->scenario, opened->assets, path / manifest.scenario, quiet);
 }
 
 } // namespace
@@ -116,7 +91,10 @@ int runValidate(const CommandSpec& spec, const ParsedArguments& arguments)
     const bool quiet = arguments.has("quiet");
     if (path.extension() == core::scenario::kPackageExtension)
         return validatePackage(spec, path, quiet);
-    return validateScenario(spec, path, path, quiet);
+    const auto scenario = loadScenarioReporting(spec.name, path);
+    if (!scenario)
+        return ExitInvalidInput;
+    return validateScenario(spec, *scenario, core::scenario::Assets::besideFile(path), path, quiet);
 }
 
 } // namespace thespis::cli

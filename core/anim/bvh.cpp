@@ -560,7 +560,12 @@ Result<ImportedClip> load(const std::filesystem::path& path, const ImportOptions
     auto text = readTextFile(path);
     if (!text)
         return text.error();
-    auto imported = parse(*text, options, path.stem().string());
+    return parseFile(*text, path, options);
+}
+
+Result<ImportedClip> parseFile(std::string_view text, const std::filesystem::path& path, const ImportOptions& options)
+{
+    auto imported = parse(text, options, path.stem().string());
     if (!imported)
         return inFile(path, imported.error());
     return imported;

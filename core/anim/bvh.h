@@ -64,6 +64,8 @@ struct ImportedClip {
 /// 'OFFSET'"), NotOurFormat when the text does not start with HIERARCHY.
 Result<ImportedClip> parse(std::string_view text, const ImportOptions& options = {}, std::string_view clipName = {});
 Result<ImportedClip> load(const std::filesystem::path& path, const ImportOptions& options = {});
+/// load() on the text of `path` read elsewhere (from a package): errors name the file.
+Result<ImportedClip> parseFile(std::string_view text, const std::filesystem::path& path, const ImportOptions& options = {});
 
 /// Writes `clip` (on `skeleton`'s layout) as BVH text: each joint's source name when it has one
 /// (else its name), its rotation order, its End Site; 9 significant digits, so that a round

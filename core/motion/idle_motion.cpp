@@ -223,8 +223,8 @@ void IdleMotion::posture(double t, std::span<float> out) const
             joining = true;
         }
         // Small variations: gradient noise along the leading PCs.
-        for (std::size_t k = 0; k < m_octaves.size(); ++k) {
-            NoiseOctave& o = m_octaves[k];
+        for (std::size_t n = 0; n < m_octaves.size(); ++n) {
+            NoiseOctave& o = m_octaves[n];
             const double x = o.octave * (t * kNoiseFrequency * o.spread);
             const double cell = std::floor(x);
             if (const auto i = std::int64_t(cell); i != o.cell) {
@@ -232,7 +232,7 @@ void IdleMotion::posture(double t, std::span<float> out) const
                 o.a = noiseSlope(o.channel, i);
                 o.b = noiseSlope(o.channel, i + 1);
             }
-            noise[k / 2] += o.weight * gradientNoiseIn(o.a, o.b, float(x - cell));
+            noise[n / 2] += o.weight * gradientNoiseIn(o.a, o.b, float(x - cell));
         }
     }
     float* posture = out.data();

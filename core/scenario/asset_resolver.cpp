@@ -35,6 +35,11 @@ std::string FolderResolver::nameOf(const std::filesystem::path& file) const
     return absolute.lexically_relative(std::filesystem::absolute(m_folder).lexically_normal()).generic_string();
 }
 
+std::string FolderResolver::where(const std::string& name) const
+{
+    return path(name).lexically_normal().string();
+}
+
 std::string FolderResolver::describe() const
 {
     return "the folder " + m_folder.string();

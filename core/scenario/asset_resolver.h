@@ -1,8 +1,10 @@
 #pragma once
 // Where a scenario's files are found. A scenario names its assets (clips, models, probes, bakes,
 // sounds) by relative names; every reader asks an AssetResolver for them instead of joining a
-// base folder itself. FolderResolver serves a scenario file's folder; a package resolver (zip)
-// comes with scenario packages. `Assets` is the cheap, shared handle readers take: a folder path
+// base folder itself. FolderResolver serves a scenario file's folder; PackageResolver
+// (package_resolver.h) a scenario package. Readers that parse bytes ask for read(), which a
+// package serves straight from the zip; readers that need a file (a glTF model, a probe, a
+// sound) ask for path(). `Assets` is the cheap, shared handle readers take: a folder path
 // converts to it, so "the scenario's folder" stays as easy to say as before.
 
 #include <filesystem>
@@ -25,6 +27,8 @@ public:
     virtual long long stamp(const std::string& name) const = 0;
     /// The name under which this resolver finds `file` (an import's relative name).
     virtual std::string nameOf(const std::filesystem::path& file) const = 0;
+    /// Where the asset is, for messages and cache keys, without making it a file.
+    virtual std::string where(const std::string& name) const = 0;
     /// Where the assets come from, for messages ("the folder /home/me/play").
     virtual std::string describe() const = 0;
 };
@@ -39,6 +43,7 @@ public:
     Result<std::string> read(const std::string& name) const override;
     long long stamp(const std::string& name) const override;
     std::string nameOf(const std::filesystem::path& file) const override;
+    std::string where(const std::string& name) const override;
     std::string describe() const override;
 
 private:
@@ -61,6 +66,7 @@ public:
     Result<std::string> read(const std::string& name) const { return m_resolver->read(name); }
     long long stamp(const std::string& name) const { return m_resolver->stamp(name); }
     std::string nameOf(const std::filesystem::path& file) const { return m_resolver->nameOf(file); }
+    std::string where(const std::string& name) const { return m_resolver->where(name); }
     std::string describe() const { return m_resolver->describe(); }
     const AssetResolver& resolver() const { return *m_resolver; }
 

@@ -51,7 +51,7 @@ void guessUnit(const std::string& convention, const anim::Skeleton& skeleton, Cl
         }
 }
 
-Result<ClipFile> readBvh(const ClipAsset& asset, const std::filesystem::path& path)
+Result<ClipFile> readBvh(const ClipAsset& asset, const Assets& assets)
 {
     anim::bvh::ImportOptions options;
     if (asset.frameRateOverride > 0)
@@ -59,7 +59,12 @@ Result<ClipFile> readBvh(const ClipAsset& asset, const std::filesystem::path& pa
     if (!asset.mapping.empty())
         options.mapping = anim::bvh::JointMapping(asset.mapping.begin(), asset.mapping.end());
     options.dropCalibrationFrame = !asset.keepCalibrationFrame;
-    auto imported = anim::bvh::load(path, options);
+    // Parsed from the resolver's bytes: a package serves them straight from its zip.
+    const std::filesystem::path where(assets.where(asset.file));
+    auto text = assets.read(asset.file);
+    if (!text)
+        return text.error();
+    auto imported = anim::bvh::parseFile(*text, where, options);
     if (!imported)
         return imported.error();
     ClipFile file;
@@ -148,13 +153,13 @@ std::vector<std::string> unmappedJointsMovingNothing(const ClipFile& file, const
 
 Result<ClipFile> readClipFile(const ClipAsset& asset, const Assets& assets)
 {
-    const std::filesystem::path path = assets.path(asset.file);
-    if (isGltf(path))
-        return readGltf(asset, path);
+    const std::filesystem::path name(asset.file);
+    if (isGltf(name))
+        return readGltf(asset, assets.path(asset.file));
     if (!asset.animation.empty())
         return makeError(ErrorCode::InvalidArgument, "animation: only a glTF file holds named animations, and "
-                                                         + path.filename().string() + " is read as BVH.");
-    return readBvh(asset, path);
+                                                         + name.filename().string() + " is read as BVH.");
+    return readBvh(asset, assets);
 }
 
 Result<ModelRig> readModelRig(const std::filesystem::path& path)
@@ -171,7 +176,7 @@ Result<ModelRig> readModelRig(const std::filesystem::path& path)
 // ---- the cache ---------------------------------------------------------------------------------
 
 struct AssetCache::Entry {
-    std::filesystem::file_time_type modified;
+    long long stamp = 0; ///< the resolver's (AssetResolver::stamp) when it was read
     std::shared_ptr<const ClipFile> clip;
     std::shared_ptr<const ModelRig> rig;
     std::shared_ptr<const motion::IdleDatabase> idle;
@@ -183,18 +188,18 @@ namespace {
 // The file and every option that changes what is read.
 std::string keyOf(const ClipAsset& asset, const Assets& assets)
 {
-    std::string key = "clip\n" + assets.path(asset.file).lexically_normal().string() + "\n" + asset.animation + "\n"
+    std::string key = "clip\n" + assets.where(asset.file) + "\n" + asset.animation + "\n"
                       + std::to_string(asset.frameRateOverride) + "\n" + (asset.keepCalibrationFrame ? "keep" : "drop");
     for (const auto& [joint, name] : asset.mapping)
         key += "\n" + joint + "=" + name;
     return key;
 }
 
-std::filesystem::file_time_type modifiedTime(const std::filesystem::path& path)
+long long modifiedTime(const std::filesystem::path& path)
 {
     std::error_code error;
     const auto time = std::filesystem::last_write_time(path, error);
-    return error ? std::filesystem::file_time_type::min() : time;
+    return error ? 0 : static_cast<long long>(time.time_since_epoch().count());
 }
 
 } // namespace
@@ -205,14 +210,14 @@ AssetCache::~AssetCache() = default;
 bool AssetCache::holds(const ClipAsset& asset, const Assets& assets) const
 {
     const auto it = m_entries.find(keyOf(asset, assets));
-    return it != m_entries.end() && it->second->modified == modifiedTime(assets.path(asset.file));
+    return it != m_entries.end() && it->second->stamp == assets.stamp(asset.file);
 }
 
 Result<std::shared_ptr<const ClipFile>> AssetCache::clipFile(const ClipAsset& asset, const Assets& assets)
 {
     const std::string key = keyOf(asset, assets);
-    const auto modified = modifiedTime(assets.path(asset.file));
-    if (const auto it = m_entries.find(key); it != m_entries.end() && it->second->modified == modified)
+    const long long stamp = assets.stamp(asset.file);
+    if (const auto it = m_entries.find(key); it != m_entries.end() && it->second->stamp == stamp)
         return it->second->clip;
     auto read = readClipFile(asset, assets);
     if (!read) {
@@ -220,7 +225,7 @@ Result<std::shared_ptr<const ClipFile>> AssetCache::clipFile(const ClipAsset& as
         return read.error();
     }
     auto entry = std::make_unique<Entry>();
-    entry->modified = modified;
+    entry->stamp = stamp;
     entry->clip = std::make_shared<const ClipFile>(std::move(read).value());
     auto clip = entry->clip;
     m_entries[key] = std::move(entry);
@@ -230,8 +235,8 @@ Result<std::shared_ptr<const ClipFile>> AssetCache::clipFile(const ClipAsset& as
 Result<std::shared_ptr<const ModelRig>> AssetCache::modelRig(const std::filesystem::path& path)
 {
     const std::string key = "rig\n" + path.lexically_normal().string();
-    const auto modified = modifiedTime(path);
-    if (const auto it = m_entries.find(key); it != m_entries.end() && it->second->modified == modified)
+    const long long stamp = modifiedTime(path);
+    if (const auto it = m_entries.find(key); it != m_entries.end() && it->second->stamp == stamp)
         return it->second->rig;
     auto read = readModelRig(path);
     if (!read) {
@@ -239,7 +244,7 @@ Result<std::shared_ptr<const ModelRig>> AssetCache::modelRig(const std::filesyst
         return read.error();
     }
     auto entry = std::make_unique<Entry>();
-    entry->modified = modified;
+    entry->stamp = stamp;
     entry->rig = std::make_shared<const ModelRig>(std::move(read).value());
     auto rig = entry->rig;
     m_entries[key] = std::move(entry);
@@ -251,19 +256,19 @@ Result<std::shared_ptr<const T>> AssetCache::motionFile(const std::string& kind,
                                                         const Assets& assets, Parse parse,
                                                         std::shared_ptr<const T> Entry::*slot)
 {
-    const std::string key = kind + "\n" + assets.path(name).lexically_normal().string();
-    const auto modified = modifiedTime(assets.path(name));
-    if (const auto it = m_entries.find(key); it != m_entries.end() && it->second->modified == modified)
+    const std::string key = kind + "\n" + assets.where(name);
+    const long long stamp = assets.stamp(name);
+    if (const auto it = m_entries.find(key); it != m_entries.end() && it->second->stamp == stamp)
         return (*it->second).*slot;
     m_entries.erase(key);
     auto bytes = assets.read(name);
     if (!bytes)
         return bytes.error();
-    auto parsed = parse(*bytes, assets.path(name));
+    auto parsed = parse(*bytes, std::filesystem::path(assets.where(name)));
     if (!parsed)
         return parsed.error();
     auto entry = std::make_unique<Entry>();
-    entry->modified = modified;
+    entry->stamp = stamp;
     (*entry).*slot = std::make_shared<const T>(std::move(parsed).value());
     auto value = (*entry).*slot;
     m_entries[key] = std::move(entry);

@@ -184,7 +184,7 @@ private:
             if (!database) {
                 const Error& e = database.error();
                 problem(e.code, where + ", idle database " + quote(asset.idle->database) + ": " + e.message,
-                        "looked for " + m_assets.path(asset.idle->database).string() + (e.detail.empty() ? "" : "; " + e.detail));
+                        "looked for " + m_assets.where(asset.idle->database) + (e.detail.empty() ? "" : "; " + e.detail));
                 return std::nullopt;
             }
             source.idle = *database;
@@ -203,7 +203,7 @@ private:
             if (!read) {
                 const Error& e = read.error();
                 problem(e.code, where + ", file " + quote(asset.file) + ": " + e.message,
-                        "looked for " + m_assets.path(asset.file).string() + (e.detail.empty() ? "" : "; " + e.detail));
+                        "looked for " + m_assets.where(asset.file) + (e.detail.empty() ? "" : "; " + e.detail));
                 return std::nullopt;
             }
             const ClipFile& file = **read;
@@ -310,7 +310,7 @@ private:
         options.fitGround = source.asset->fitGround;
         options.retarget.targetSoles = m_soles;
         // Kept between builds: the file as read, the options and the skeleton (with its body).
-        std::string key = "retarget\n" + m_assets.path(source.asset->file).lexically_normal().string() + "\n"
+        std::string key = "retarget\n" + m_assets.where(source.asset->file) + "\n"
                           + std::to_string(m_assets.stamp(source.asset->file)) + "\n"
                           + source.asset->animation + "\n" + std::to_string(source.asset->frameRateOverride) + "\n"
                           + std::to_string(options.retarget.sourceUnit) + (options.fitGround ? " fit" : " keep")
@@ -370,7 +370,7 @@ private:
         auto read = m_cache->postureBases(m_scenario.postureBases, m_assets);
         if (!read) {
             problem(read.error().code, "Posture bases " + quote(m_scenario.postureBases) + ": " + read.error().message,
-                    "looked for " + m_assets.path(m_scenario.postureBases).string());
+                    "looked for " + m_assets.where(m_scenario.postureBases));
             m_basesError = makeError(read.error().code, "the posture bases cannot be read (reported above).");
             return *m_basesError;
         }

@@ -19,6 +19,7 @@
 
 #include "scenario/package.h"
 #include "scenario/package_export_job.h"
+#include "scenario/package_resolver.h"
 #include "scenario/scenario_io.h"
 #include "scenario/scenario_runtime.h"
 #include "test_support.h"
@@ -112,6 +113,13 @@ void roundTrip(const Scenario& scenario, const Assets& assets, const std::string
     EXPECT_EQ(poses(*reloaded, importedAssets), poses(scenario, assets)) << name;
     // Importing again into the same folder finds the same files: nothing to refuse.
     EXPECT_TRUE(p.extractTo(folder));
+
+    // Played straight from the package, without importing it: the same poses.
+    auto played = openPackage(package);
+    ASSERT_TRUE(played) << played.error().message;
+    EXPECT_EQ(played->scenario, job.plan.scenario);
+    EXPECT_TRUE(validateScenario(played->scenario, played->assets).empty());
+    EXPECT_EQ(poses(played->scenario, played->assets), poses(scenario, assets)) << name;
 }
 
 // ---- Packages made to be refused ----------------------------------------------------------------
@@ -179,6 +187,37 @@ TEST(Package, TheDemoTravelsWhole)
     // Both characters' idle clips name one database: it goes in once.
     EXPECT_EQ(names, (std::vector<std::string>{"motion/cmu_standing.idle", "motion/cmu_postures.pca"}));
     roundTrip(*scenario, Assets::besideFile(demo), "demo");
+}
+
+TEST(Package, ClipsAndMotionDatabasesPlayFromTheZipItself)
+{
+    // The demo's idle motion database and posture bases, and a CMU clip, are read from the zip:
+    // nothing of them is written anywhere to play the package.
+    const fs::path demo = thespis::test::resources("demo.thespis");
+    auto scenario = loadScenario(demo);
+    ASSERT_TRUE(scenario);
+    ClipAsset walk;
+    walk.name = "walk";
+    walk.file = thespis::test::sharedData("mocap/cmu/02_01.bvh").string();
+    scenario->characters[0].clips.push_back(walk);
+    const fs::path package = freshFolder("from_zip") / "demo.thespkg";
+    ASSERT_TRUE(exportPackage(*scenario, Assets::besideFile(demo), package));
+    auto opened = openPackage(package);
+    ASSERT_TRUE(opened) << opened.error().message;
+    const auto& resolver = dynamic_cast<const PackageResolver&>(opened->assets.resolver());
+    fs::remove_all(resolver.fileFolder());
+    auto runtime = buildRuntime(opened->scenario, opened->assets);
+    ASSERT_TRUE(runtime) << runtime.error().message;
+    EXPECT_TRUE(runtime->characters[0].clips.contains("walk"));
+    EXPECT_FALSE(fs::exists(resolver.fileFolder())) << "files were written to play the package";
+    // A file the package does not hold is named with the package.
+    auto missing = opened->assets.read("motion/none.bvh");
+    ASSERT_FALSE(missing);
+    EXPECT_EQ(missing.error().code, ErrorCode::FileNotFound);
+    EXPECT_NE(missing.error().message.find("not in the package"), std::string::npos);
+    // A model is a file for its reader: written once into the package's own folder, checked.
+    EXPECT_EQ(opened->assets.path("motion/cmu_postures.pca"), resolver.fileFolder() / "motion/cmu_postures.pca");
+    EXPECT_EQ(bytesOf(resolver.fileFolder() / "motion/cmu_postures.pca"), bytesOf(demo.parent_path() / "motion/cmu_postures.pca"));
 }
 
 TEST(Package, RealFilesFromElsewhereMoveIntoTheAssetsFolder)
