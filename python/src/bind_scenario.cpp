@@ -10,6 +10,7 @@
 #include <string>
 
 #include "bind_common.h"
+#include "bind_package.h"
 #include "errors.h"
 #include "run_job.h"
 #include "scenario/clip_import.h"
@@ -477,6 +478,7 @@ void bindScenario(py::module_& m)
     bindDocument(m);
     bindScenarioRuntime(m);
     bindImport(m);
+    bindPackages(m);
 
     m.def(
         "parse_scenario", [](const std::string& text) { return unwrap(withoutGil([&] { return parseScenario(text); })); },
@@ -494,22 +496,22 @@ void bindScenario(py::module_& m)
         "path"_a, "scenario"_a, "Writes a .thespis file atomically (temporary file, then rename).");
     m.def(
         "build_runtime",
-        [](const Scenario& scenario, const std::filesystem::path& baseDir) {
+        [](const Scenario& scenario, const py::object& baseDir) {
             // A copy, so that other Python threads may touch the document while clips load.
             const Scenario snapshot = scenario;
-            return unwrap(withoutGil([&] { return buildRuntime(snapshot, baseDir); }));
+            const Assets assets = assetsArgument(baseDir);
+            return unwrap(withoutGil([&] { return buildRuntime(snapshot, assets); }));
         },
-        "scenario"_a, "base_dir"_a = std::filesystem::path("."),
-        "Loads every clip (BVH files relative to base_dir, the scenario file's folder) and builds the schedules. "
-        "Errors name the character, action and field.");
+        "scenario"_a, "base_dir"_a = ".",
+        "Loads every clip (files relative to base_dir: the scenario file's folder, or an open thespis.Package) and "
+        "builds the schedules. Errors name the character, action and field.");
     m.def(
         "bake_motion",
         [](const Scenario& scenario, const std::string& character, const std::filesystem::path& out,
-           const std::filesystem::path& baseDir, double fps, double start, std::optional<double> end,
-           const py::object& progress) {
+           const py::object& baseDir, double fps, double start, std::optional<double> end, const py::object& progress) {
             MotionBakeJob job;
             job.scenario = scenario;
-            job.assets = baseDir;
+            job.assets = assetsArgument(baseDir);
             job.character = character;
             job.output = out;
             job.fps = fps;
@@ -518,18 +520,19 @@ void bindScenario(py::module_& m)
             runJob(job, progress);
             return job.frameCount;
         },
-        "scenario"_a, "character"_a, "out"_a, py::kw_only(), "base_dir"_a = std::filesystem::path("."),
+        "scenario"_a, "character"_a, "out"_a, py::kw_only(), "base_dir"_a = ".",
         "fps"_a = 30.0, "start"_a = 0.0, "end"_a = py::none(), "progress"_a = py::none(),
         "Bakes a character's body animation into a BVH file, as `thespis-cli bake-motion` does (the same job): "
         "frames from start to end (default: the scenario's duration) at fps; returns the number of frames. "
         "Releases the GIL; progress(done, total); Ctrl-C stops it and nothing is written.");
     m.def(
         "validate_scenario",
-        [](const Scenario& scenario, const std::filesystem::path& baseDir) {
+        [](const Scenario& scenario, const py::object& baseDir) {
             const Scenario snapshot = scenario;
-            return withoutGil([&] { return validateScenario(snapshot, baseDir); });
+            const Assets assets = assetsArgument(baseDir);
+            return withoutGil([&] { return validateScenario(snapshot, assets); });
         },
-        "scenario"_a, "base_dir"_a = std::filesystem::path("."),
+        "scenario"_a, "base_dir"_a = ".",
         "Every problem of the scenario as a list of thespis.Error; empty when it is valid.");
 }
 
