@@ -6,6 +6,7 @@
 
 #include "editor/commands/edit_command.h"
 #include "editor/qt_conversions.h"
+#include "scenario/package_resolver.h"
 #include "scenario/scenario_io.h"
 
 namespace thespis::editor {
@@ -29,6 +30,24 @@ core::Result<std::unique_ptr<Document>> Document::open(const QString& path)
 {
     const QFileInfo info(path);
     const std::filesystem::path file = toFsPath(info.absoluteFilePath());
+    if (file.extension() == core::scenario::kPackageExtension) {
+        // Names the package does not hold resolve beside it, as a scenario file's do.
+        auto opened = core::scenario::openPackage(file, {}, file.parent_path());
+        if (!opened)
+            return opened.error();
+        auto runtime = core::scenario::buildRuntime(opened->scenario, opened->assets);
+        if (!runtime) {
+            core::Error error = runtime.error();
+            error.detail = (error.detail.empty() ? std::string() : error.detail + "; ") + "in " + file.string();
+            return error;
+        }
+        std::unique_ptr<Document> document(new Document(std::move(opened->scenario), std::move(*runtime), QString(),
+                                                        info.absolutePath()));
+        document->m_assets = opened->assets;
+        document->m_package = opened->package;
+        document->m_packagePath = info.absoluteFilePath();
+        return document;
+    }
     core::Result<core::scenario::Scenario> scenario = core::scenario::loadScenario(file);
     if (!scenario)
         return scenario.error();
@@ -66,15 +85,16 @@ core::Result<std::unique_ptr<Document>> Document::fromScenario(core::scenario::S
 
 QString Document::fileName() const
 {
-    return m_filePath.isEmpty() ? tr("Untitled") : QFileInfo(m_filePath).fileName();
+    const QString source = sourceFile();
+    return source.isEmpty() ? tr("Untitled") : QFileInfo(source).fileName();
 }
 
 QString Document::scenarioName() const
 {
     if (!m_scenario.name.empty())
         return QString::fromStdString(m_scenario.name);
-    if (!m_filePath.isEmpty())
-        return QFileInfo(m_filePath).completeBaseName();
+    if (!sourceFile().isEmpty())
+        return QFileInfo(sourceFile()).completeBaseName();
     return tr("Untitled");
 }
 
@@ -175,8 +195,16 @@ core::Result<void> Document::saveAs(const QString& path)
     const QFileInfo info(path);
     core::scenario::Scenario saved = m_scenario;
     const std::filesystem::path oldBase = toFsPath(m_baseDir), newBase = toFsPath(info.absolutePath());
+    // A package's files are written beside the scenario first, under their names: those names
+    // stay as they are, where the other relative paths are rebased.
+    core::scenario::KeptNames inPackage;
+    if (m_package) {
+        if (auto written = m_package->extractTo(newBase, false); !written)
+            return written.error();
+        inPackage = [package = m_package](const std::string& name) { return package->manifest().find(name) != nullptr; };
+    }
     // Relative paths (clips, models, bakes, the probe) must name the same files from the new folder.
-    core::scenario::rebasePaths(saved, oldBase, newBase);
+    core::scenario::rebasePaths(saved, oldBase, newBase, inPackage);
     if (auto written = core::scenario::saveScenario(toFsPath(info.absoluteFilePath()), saved); !written) {
         core::Error error = written.error();
         error.detail = (error.detail.empty() ? std::string() : error.detail + "; ") + "file "
@@ -187,7 +215,9 @@ core::Result<void> Document::saveAs(const QString& path)
     if (oldBase != newBase) // the undo history must still fit the document
         for (int i = 0; i < m_undoStack->count(); ++i)
             if (auto* command = dynamic_cast<const EditCommand*>(m_undoStack->command(i)))
-                const_cast<EditCommand*>(command)->rebasePaths(oldBase, newBase);
+                const_cast<EditCommand*>(command)->rebasePaths(oldBase, newBase, inPackage);
+    m_package.reset();
+    m_packagePath.clear();
     m_baseDir = info.absolutePath();
     m_assets = core::scenario::Assets(toFsPath(m_baseDir));
     setFilePath(info.absoluteFilePath());

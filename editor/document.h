@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "edit/scenario_edit.h"
+#include "scenario/package.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_runtime.h"
 #include "util/error.h"
@@ -32,7 +33,10 @@ public:
     ~Document() override;
 
     /// Reads a .thespis file and builds its schedules (clip files resolve next to it). Errors
-    /// are the reader's or the builder's, with the file name added to the detail.
+    /// are the reader's or the builder's, with the file name added to the detail. A package
+    /// (.thespkg, core/scenario/package.h) opens the same way, checked first: its scenario plays
+    /// from it; the document has no file of its own until saved, when the package's files are
+    /// written beside it.
     static core::Result<std::unique_ptr<Document>> open(const QString& path);
     /// Reads an autosaved copy (Autosaver) back: the document takes the original file's path
     /// (empty for a never-saved one) and folder, and starts modified, so that saving writes the
@@ -49,6 +53,10 @@ public:
 
     /// Absolute path of the file, empty when the document was never saved.
     QString filePath() const { return m_filePath; }
+    /// The file the document was read from: its own, else the package it was opened from.
+    QString sourceFile() const { return m_filePath.isEmpty() ? m_packagePath : m_filePath; }
+    /// The package the document plays from until it is saved (empty: none).
+    QString packagePath() const { return m_packagePath; }
     /// The folder the scenario's relative paths (clips, models, probe) resolve in.
     QString baseDir() const { return m_baseDir; }
     /// Where the scenario's files are found (the resolver every reader asks).
@@ -118,6 +126,10 @@ private:
     core::scenario::Assets m_assets; // m_baseDir's
     QUndoStack* m_undoStack = nullptr; // child QObject
     std::unique_ptr<core::scenario::AssetCache> m_cache; // files the runtime reads, kept between edits
+    // The package opened, until the first save writes its files out (names it holds are its
+    // entries; other relative names are the user's, beside the package).
+    std::shared_ptr<const core::scenario::Package> m_package;
+    QString m_packagePath;
 };
 
 } // namespace thespis::editor

@@ -1304,6 +1304,88 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     </message>
 </context>
 <context>
+    <name>thespis::editor::ExportPackageDialog</name>
+    <message>
+        <source>Export Package</source>
+        <translation>Paket exportieren</translation>
+    </message>
+    <message>
+        <source>One file with the scenario and every file it names, which Thespis opens anywhere (File ▸ Open) and thespis-cli plays or imports.</source>
+        <translation>Eine Datei mit dem Szenario und allen Dateien, die es nennt; Thespis öffnet sie überall (Datei ▸ Öffnen), thespis-cli spielt oder importiert sie.</translation>
+    </message>
+    <message>
+        <source>In the package</source>
+        <translation>Im Paket</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <source>Named by</source>
+        <translation>Genannt von</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Wählen…</translation>
+    </message>
+    <message>
+        <source>Write to:</source>
+        <translation>Schreiben nach:</translation>
+    </message>
+    <message>
+        <source>Not exported yet</source>
+        <translation>Noch nicht exportiert</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <source>Thespis packages (*.thespkg)</source>
+        <translation>Thespis-Pakete (*.thespkg)</translation>
+    </message>
+    <message>
+        <source>the scenario itself, with its scripts and gestures</source>
+        <translation>das Szenario selbst, mit seinen Skripten und Gesten</translation>
+    </message>
+    <message numerus="yes">
+        <source>The scenario and %n file(s), %1 before compression.</source>
+        <translation>
+            <numerusform>Das Szenario und %n Datei, %1 vor der Kompression.</numerusform>
+            <numerusform>Das Szenario und %n Dateien, %1 vor der Kompression.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>Starte…</translation>
+    </message>
+    <message>
+        <source>%1 — %p%</source>
+        <translation>%1 — %p%</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>Abgebrochen</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>Fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was written.</source>
+        <translation>Abgebrochen: nichts wurde geschrieben.</translation>
+    </message>
+    <message>
+        <source>Exported</source>
+        <translation>Exportiert</translation>
+    </message>
+    <message>
+        <source>Wrote %1: %2 (%3 before compression).</source>
+        <translation>%1 geschrieben: %2 (%3 vor der Kompression).</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::GesticonModel</name>
     <message>
         <source>The dependent-joint filter runs over this gesture: spine and neck follow it</source>
@@ -3094,10 +3176,6 @@ Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
         <translation>&amp;Öffnen…</translation>
     </message>
     <message>
-        <source>Open a scenario file (.thespis)</source>
-        <translation>Eine Szenariodatei (.thespis) öffnen</translation>
-    </message>
-    <message>
         <source>&amp;Reload</source>
         <translation>&amp;Neu laden</translation>
     </message>
@@ -3210,10 +3288,6 @@ Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
     <message>
         <source>Open Scenario</source>
         <translation>Szenario öffnen</translation>
-    </message>
-    <message>
-        <source>Thespis scenarios (*.thespis);;All files (*)</source>
-        <translation>Thespis-Szenarien (*.thespis);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>About Thespis Studio</source>
@@ -3529,6 +3603,26 @@ Führen Sie die Skripte des Szenarios nur aus, wenn Sie der Herkunft dieser Date
     <message>
         <source>AR Preview</source>
         <translation>AR-Vorschau</translation>
+    </message>
+    <message>
+        <source>&amp;Export Package…</source>
+        <translation>Paket &amp;exportieren…</translation>
+    </message>
+    <message>
+        <source>Write the scenario and every file it names into one package (.thespkg)</source>
+        <translation>Das Szenario und alle Dateien, die es nennt, in ein Paket (.thespkg) schreiben</translation>
+    </message>
+    <message>
+        <source>Open a scenario file (.thespis) or a package (.thespkg)</source>
+        <translation>Eine Szenariodatei (.thespis) oder ein Paket (.thespkg) öffnen</translation>
+    </message>
+    <message>
+        <source>Thespis scenarios and packages (*.thespis *.thespkg);;All files (*)</source>
+        <translation>Thespis-Szenarien und -Pakete (*.thespis *.thespkg);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
     </message>
 </context>
 <context>

@@ -73,6 +73,16 @@
     </message>
 </context>
 <context>
+    <name>thespis::editor::ExportPackageDialog</name>
+    <message numerus="yes">
+        <source>The scenario and %n file(s), %1 before compression.</source>
+        <translation>
+            <numerusform>The scenario and %n file, %1 before compression.</numerusform>
+            <numerusform>The scenario and %n files, %1 before compression.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::GesticonPanel</name>
     <message numerus="yes">
         <source>Remove %n Gesture(s)</source>

@@ -1304,6 +1304,88 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     </message>
 </context>
 <context>
+    <name>thespis::editor::ExportPackageDialog</name>
+    <message>
+        <source>Export Package</source>
+        <translation>Exporter un paquet</translation>
+    </message>
+    <message>
+        <source>One file with the scenario and every file it names, which Thespis opens anywhere (File ▸ Open) and thespis-cli plays or imports.</source>
+        <translation>Un seul fichier avec le scénario et tous les fichiers qu’il nomme, que Thespis ouvre partout (Fichier ▸ Ouvrir) et que thespis-cli joue ou importe.</translation>
+    </message>
+    <message>
+        <source>In the package</source>
+        <translation>Dans le paquet</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Taille</translation>
+    </message>
+    <message>
+        <source>Named by</source>
+        <translation>Nommé par</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Choisir…</translation>
+    </message>
+    <message>
+        <source>Write to:</source>
+        <translation>Écrire dans :</translation>
+    </message>
+    <message>
+        <source>Not exported yet</source>
+        <translation>Pas encore exporté</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exporter</translation>
+    </message>
+    <message>
+        <source>Thespis packages (*.thespkg)</source>
+        <translation>Paquets Thespis (*.thespkg)</translation>
+    </message>
+    <message>
+        <source>the scenario itself, with its scripts and gestures</source>
+        <translation>le scénario lui-même, avec ses scripts et ses gestes</translation>
+    </message>
+    <message numerus="yes">
+        <source>The scenario and %n file(s), %1 before compression.</source>
+        <translation>
+            <numerusform>Le scénario et %n fichier, %1 avant compression.</numerusform>
+            <numerusform>Le scénario et %n fichiers, %1 avant compression.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>Démarrage…</translation>
+    </message>
+    <message>
+        <source>%1 — %p%</source>
+        <translation>%1 — %p%</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>Annulé</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>Échec</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was written.</source>
+        <translation>Annulé : rien n’a été écrit.</translation>
+    </message>
+    <message>
+        <source>Exported</source>
+        <translation>Exporté</translation>
+    </message>
+    <message>
+        <source>Wrote %1: %2 (%3 before compression).</source>
+        <translation>%1 écrit : %2 (%3 avant compression).</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::GesticonModel</name>
     <message>
         <source>The dependent-joint filter runs over this gesture: spine and neck follow it</source>
@@ -3094,10 +3176,6 @@ Utilisez Fichier ▸ Ouvrir… (Ctrl+O) pour ouvrir un fichier .thespis.</transl
         <translation>&amp;Ouvrir…</translation>
     </message>
     <message>
-        <source>Open a scenario file (.thespis)</source>
-        <translation>Ouvrir un fichier de scénario (.thespis)</translation>
-    </message>
-    <message>
         <source>&amp;Reload</source>
         <translation>&amp;Recharger</translation>
     </message>
@@ -3210,10 +3288,6 @@ Utilisez Fichier ▸ Ouvrir… (Ctrl+O) pour ouvrir un fichier .thespis.</transl
     <message>
         <source>Open Scenario</source>
         <translation>Ouvrir un scénario</translation>
-    </message>
-    <message>
-        <source>Thespis scenarios (*.thespis);;All files (*)</source>
-        <translation>Scénarios Thespis (*.thespis);;Tous les fichiers (*)</translation>
     </message>
     <message>
         <source>About Thespis Studio</source>
@@ -3529,6 +3603,26 @@ N’exécutez les scripts du scénario que si vous faites confiance à la proven
     <message>
         <source>AR Preview</source>
         <translation>Aperçu RA</translation>
+    </message>
+    <message>
+        <source>&amp;Export Package…</source>
+        <translation>&amp;Exporter un paquet…</translation>
+    </message>
+    <message>
+        <source>Write the scenario and every file it names into one package (.thespkg)</source>
+        <translation>Écrire le scénario et tous les fichiers qu’il nomme dans un paquet (.thespkg)</translation>
+    </message>
+    <message>
+        <source>Open a scenario file (.thespis) or a package (.thespkg)</source>
+        <translation>Ouvrir un fichier de scénario (.thespis) ou un paquet (.thespkg)</translation>
+    </message>
+    <message>
+        <source>Thespis scenarios and packages (*.thespis *.thespkg);;All files (*)</source>
+        <translation>Scénarios et paquets Thespis (*.thespis *.thespkg);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exporté</translation>
     </message>
 </context>
 <context>

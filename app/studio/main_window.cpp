@@ -193,6 +193,10 @@ void MainWindow::createActions()
     m_saveAsAction = new QAction(tr("Save &As…"), this);
     m_saveAsAction->setShortcut(QKeySequence::SaveAs);
     connect(m_saveAsAction, &QAction::triggered, this, &MainWindow::onSaveAs);
+    m_exportPackageAction = new QAction(tr("&Export Package…"), this);
+    m_exportPackageAction->setObjectName(QStringLiteral("exportPackage"));
+    m_exportPackageAction->setStatusTip(tr("Write the scenario and every file it names into one package (.thespkg)"));
+    connect(m_exportPackageAction, &QAction::triggered, this, &MainWindow::onExportPackage);
 
     m_undoGroup = new QUndoGroup(this);
     m_undoAction = m_undoGroup->createUndoAction(this, tr("&Undo"));
@@ -204,7 +208,7 @@ void MainWindow::createActions()
 
     m_openAction = new QAction(tr("&Open…"), this);
     m_openAction->setShortcut(QKeySequence::Open);
-    m_openAction->setStatusTip(tr("Open a scenario file (.thespis)"));
+    m_openAction->setStatusTip(tr("Open a scenario file (.thespis) or a package (.thespkg)"));
     connect(m_openAction, &QAction::triggered, this, &MainWindow::onOpen);
 
     m_reloadAction = new QAction(tr("&Reload"), this);
@@ -329,6 +333,7 @@ void MainWindow::createMenus()
     file->addSeparator();
     file->addAction(m_saveAction);
     file->addAction(m_saveAsAction);
+    file->addAction(m_exportPackageAction);
     file->addSeparator();
     file->addAction(m_quitAction);
 
@@ -460,6 +465,7 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> next)
     m_reloadAction->setEnabled(open && !document()->filePath().isEmpty());
     m_saveAction->setEnabled(open);
     m_saveAsAction->setEnabled(open);
+    m_exportPackageAction->setEnabled(open);
     m_playPauseAction->setEnabled(open);
     m_toStartAction->setEnabled(open);
     m_toEndAction->setEnabled(open);
@@ -605,7 +611,7 @@ void MainWindow::updateTitle()
     setWindowTitle(tr("%1[*] — Thespis Studio").arg(document()->scenarioName()));
     setWindowModified(document()->isModified());
     m_fileLabel->setText(document()->fileName());
-    m_fileLabel->setToolTip(QDir::toNativeSeparators(document()->filePath()));
+    m_fileLabel->setToolTip(QDir::toNativeSeparators(document()->sourceFile()));
 }
 
 void MainWindow::refreshFigures(bool frame)

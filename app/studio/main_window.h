@@ -63,7 +63,7 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /// Opens a .thespis file. On failure shows the error over the window, keeps what was open,
+    /// Opens a .thespis file or a package (.thespkg). On failure shows the error over the window, keeps what was open,
     /// and returns false.
     bool openScenario(const QString& path);
     /// Shows a document built elsewhere (a scenario made in code, tests); null closes it.
@@ -130,6 +130,7 @@ private:
     void createEditorDocks();
     void onNew();
     bool onSaveAs();
+    void onExportPackage();
     void updateRecentMenu();
     bool maybeSave();
     void onDocumentEdited();
@@ -198,6 +199,7 @@ private:
     QAction* m_openAction = nullptr;
     QAction* m_saveAction = nullptr;
     QAction* m_saveAsAction = nullptr;
+    QAction* m_exportPackageAction = nullptr;
     QAction* m_undoAction = nullptr;
     QAction* m_redoAction = nullptr;
     QAction* m_reloadAction = nullptr;

@@ -149,8 +149,10 @@ void MainWindow::refreshScripts()
 
 bool MainWindow::confirmScriptTrust()
 {
-    if (!document() || document()->filePath().isEmpty() || editor::ScriptTrust::isTrusted(document()->filePath()))
-        return true; // a scenario never saved holds only what the user made here
+    // A scenario never saved holds only what the user made here; one opened from a package is the
+    // package's until saved.
+    if (!document() || document()->sourceFile().isEmpty() || editor::ScriptTrust::isTrusted(document()->sourceFile()))
+        return true;
     QMessageBox box(QMessageBox::Warning, tr("Run Scripts From This File?"),
                     tr("“%1” keeps Python scripts. A script can do anything your user account can: read, change "
                        "and delete files, or use the network.\n\nRun the scenario's scripts only if you trust where "
@@ -162,7 +164,7 @@ bool MainWindow::confirmScriptTrust()
     box.exec();
     if (box.clickedButton() != trust)
         return false;
-    editor::ScriptTrust::trust(document()->filePath());
+    editor::ScriptTrust::trust(document()->sourceFile());
     return true;
 }
 

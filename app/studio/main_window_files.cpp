@@ -1,5 +1,5 @@
-// MainWindow's file handling: new (with a starting point), open, reload, save, save as, recent
-// files and recovering autosaved work. The rest of the window is in main_window.cpp.
+// MainWindow's file handling: new (with a starting point), open (a scenario or a package),
+// reload, save, save as, export a package, recent files and recovering autosaved work. The rest of the window is in main_window.cpp.
 
 #include "main_window.h"
 
@@ -18,6 +18,7 @@
 #include "editor/script_trust.h"
 #include "editor/autosave.h"
 #include "editor/error_dialog.h"
+#include "editor/export_package_dialog.h"
 #include "editor/qt_conversions.h"
 #include "scenario/scenario_io.h"
 #include "startup.h"
@@ -39,7 +40,7 @@ bool MainWindow::openScenario(const QString& path)
         return false;
     }
     setDocument(std::move(*document));
-    addRecentFile(this->document()->filePath());
+    addRecentFile(this->document()->sourceFile());
     return true;
 }
 
@@ -49,7 +50,7 @@ void MainWindow::onOpen()
                               ? QFileInfo(document()->filePath()).absolutePath()
                               : QString();
     const QString path = QFileDialog::getOpenFileName(this, tr("Open Scenario"), start,
-                                                      tr("Thespis scenarios (*.thespis);;All files (*)"));
+                                                      tr("Thespis scenarios and packages (*.thespis *.thespkg);;All files (*)"));
     if (!path.isEmpty())
         openScenario(path);
 }
@@ -155,6 +156,17 @@ bool MainWindow::onSaveAs()
     if (!path.endsWith(QStringLiteral(".thespis")))
         path += QStringLiteral(".thespis");
     return saveAs(path);
+}
+
+void MainWindow::onExportPackage()
+{
+    if (!document())
+        return;
+    editor::ExportPackageDialog dialog(*document(), this);
+    connect(&dialog, &editor::ExportPackageDialog::exported, this, [this](const QString& path) {
+        statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(path)), 5000);
+    });
+    dialog.exec();
 }
 
 bool MainWindow::maybeSave()

@@ -318,18 +318,18 @@ RuntimeScope Edit::runtimeScope() const
     return scope;
 }
 
-void Edit::rebasePaths(const std::filesystem::path& from, const std::filesystem::path& to)
+void Edit::rebasePaths(const std::filesystem::path& from, const std::filesystem::path& to, const scenario::KeptNames& keep)
 {
     const auto rebaseClip = [&](std::optional<scenario::ClipAsset>& clip) {
         if (clip)
-            scenario::rebaseClip(*clip, from, to);
+            scenario::rebaseClip(*clip, from, to, keep);
     };
     const auto rebaseCharacter = [&](std::optional<scenario::Character>& character) {
         if (!character)
             return;
         scenario::Scenario holder;
         holder.characters.push_back(std::move(*character));
-        scenario::rebasePaths(holder, from, to);
+        scenario::rebasePaths(holder, from, to, keep);
         character = std::move(holder.characters.front());
     };
     for (Change& change : m_changes) {
@@ -340,15 +340,15 @@ void Edit::rebasePaths(const std::filesystem::path& from, const std::filesystem:
             rebaseCharacter(character->before);
             rebaseCharacter(character->after);
         } else if (auto* light = std::get_if<LightingChange>(&change)) {
-            light->before.probe = scenario::rebasedPath(light->before.probe, from, to);
-            light->after.probe = scenario::rebasedPath(light->after.probe, from, to);
+            light->before.probe = scenario::rebasedPath(light->before.probe, from, to, keep);
+            light->after.probe = scenario::rebasedPath(light->after.probe, from, to, keep);
         } else if (auto* bake = std::get_if<CharacterBakeChange>(&change)) {
-            bake->before = scenario::rebasedPath(bake->before, from, to);
-            bake->after = scenario::rebasedPath(bake->after, from, to);
+            bake->before = scenario::rebasedPath(bake->before, from, to, keep);
+            bake->after = scenario::rebasedPath(bake->after, from, to, keep);
         } else if (auto* ar = std::get_if<ArChange>(&change)) {
             for (scenario::ArSpec* spec : {&ar->before, &ar->after})
                 for (scenario::PhantomOccluder& occluder : spec->occluders)
-                    occluder.model = scenario::rebasedPath(occluder.model, from, to);
+                    occluder.model = scenario::rebasedPath(occluder.model, from, to, keep);
         }
     }
 }

@@ -148,7 +148,7 @@ public:
     RuntimeScope runtimeScope() const;
     /// Rewrites the file paths the edit carries (clips, bakes) as scenario::rebasePaths() does the
     /// document's, so that it still fits the document after a save to another folder.
-    void rebasePaths(const std::filesystem::path& from, const std::filesystem::path& to);
+    void rebasePaths(const std::filesystem::path& from, const std::filesystem::path& to, const scenario::KeptNames& keep = {});
 
     bool operator==(const Edit&) const = default;
 

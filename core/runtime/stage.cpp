@@ -142,9 +142,9 @@ Result<void> Stage::initPerformer(Performer& performer, const anim::Skeleton& sk
                                                                                         {&performer.face, face}};
     for (auto [track, authored] : tracks) {
         track->authored = std::move(authored);
+        const bool isBody = track == &performer.body; // clang 14 cannot capture a structured binding
         const auto make = [&] {
-            return track == &performer.body ? std::make_shared<BlendingSchedule>(skeleton)
-                                            : std::make_shared<BlendingSchedule>(faceLayout);
+            return isBody ? std::make_shared<BlendingSchedule>(skeleton) : std::make_shared<BlendingSchedule>(faceLayout);
         };
         track->synthesizers = make();
         track->live = make();

@@ -204,7 +204,7 @@ Result<Scenario> Package::scenario() const
     return scenario;
 }
 
-Result<fs::path> Package::extractTo(const fs::path& folder) const
+Result<fs::path> Package::extractTo(const fs::path& folder, bool withScenario) const
 {
     std::error_code error;
     fs::create_directories(folder, error);
@@ -213,6 +213,8 @@ Result<fs::path> Package::extractTo(const fs::path& folder) const
     // Everything is read and compared before anything is written: a refusal leaves the folder as it was.
     std::vector<std::pair<fs::path, std::string>> files;
     for (const PackageEntry& entry : m_state->manifest.entries) {
+        if (!withScenario && entry.name == m_state->manifest.scenario)
+            continue;
         auto bytes = read(entry.name);
         if (!bytes)
             return bytes.error();

@@ -49,7 +49,8 @@ public:
     Result<Scenario> scenario() const;
     /// Writes every entry under `folder` (created if missing), each file atomically, and returns
     /// the scenario's path there. Refuses to replace a file that is already there and differs.
-    Result<std::filesystem::path> extractTo(const std::filesystem::path& folder) const;
+    /// Without `withScenario`, the scenario's own entry is left out (its caller writes it).
+    Result<std::filesystem::path> extractTo(const std::filesystem::path& folder, bool withScenario = true) const;
 
 private:
     struct State;

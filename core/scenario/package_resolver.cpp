@@ -19,8 +19,10 @@ std::string entryName(const std::string& name)
 
 } // namespace
 
-PackageResolver::PackageResolver(std::shared_ptr<const Package> package) : m_package(std::move(package))
+PackageResolver::PackageResolver(std::shared_ptr<const Package> package, fs::path beside) : m_package(std::move(package))
 {
+    if (!beside.empty())
+        m_beside.emplace(std::move(beside));
     // The digest of the manifest names this package's contents exactly.
     const std::string digest = sha256Hex(serializeManifest(m_package->manifest())).substr(0, 24);
     std::error_code error;
@@ -33,7 +35,7 @@ fs::path PackageResolver::path(const std::string& name) const
     const fs::path file = m_folder / fs::path(entry);
     const PackageEntry* listed = m_package->manifest().find(entry);
     if (!listed)
-        return file; // not in the package: the reader reports the missing file
+        return m_beside ? m_beside->path(name) : file; // else the reader reports the missing file
     std::lock_guard lock(m_mutex);
     if (m_written.contains(entry))
         return file;
@@ -52,6 +54,8 @@ fs::path PackageResolver::path(const std::string& name) const
 
 Result<std::string> PackageResolver::read(const std::string& name) const
 {
+    if (m_beside && !m_package->manifest().find(entryName(name)))
+        return m_beside->read(name);
     auto bytes = m_package->read(entryName(name));
     if (!bytes && bytes.error().code == ErrorCode::NotFound)
         return makeError(ErrorCode::FileNotFound, "The file " + name + " is not in the package " + m_package->file().string() + ".");
@@ -61,16 +65,22 @@ Result<std::string> PackageResolver::read(const std::string& name) const
 long long PackageResolver::stamp(const std::string& name) const
 {
     // A package does not change while it is open.
-    return m_package->manifest().find(entryName(name)) ? 1 : 0;
+    if (m_package->manifest().find(entryName(name)))
+        return 1;
+    return m_beside ? m_beside->stamp(name) : 0;
 }
 
 std::string PackageResolver::nameOf(const fs::path& file) const
 {
+    if (m_beside)
+        return m_beside->nameOf(file);
     return fs::absolute(file).lexically_normal().lexically_relative(m_folder).generic_string();
 }
 
 std::string PackageResolver::where(const std::string& name) const
 {
+    if (m_beside && !m_package->manifest().find(entryName(name)))
+        return m_beside->where(name);
     return (m_package->file() / fs::path(entryName(name))).string();
 }
 
@@ -79,7 +89,7 @@ std::string PackageResolver::describe() const
     return "the package " + m_package->file().string();
 }
 
-Result<OpenedPackage> openPackage(const fs::path& file, const PackageLimits& limits)
+Result<OpenedPackage> openPackage(const fs::path& file, const PackageLimits& limits, const fs::path& beside)
 {
     auto package = Package::open(file, limits);
     if (!package)
@@ -88,7 +98,7 @@ Result<OpenedPackage> openPackage(const fs::path& file, const PackageLimits& lim
     auto scenario = shared->scenario();
     if (!scenario)
         return scenario.error();
-    Assets assets(std::make_shared<PackageResolver>(shared));
+    Assets assets(std::make_shared<PackageResolver>(shared, beside));
     return OpenedPackage{shared, std::move(assets), std::move(scenario).value()};
 }
 

@@ -4,11 +4,14 @@
 // manifest (clips, idle motion databases, posture bases). path() is for the readers that need a
 // file (a glTF model, a probe, a sound): the entry is written once, checked, into a folder of the
 // package's own under the system's temporary folder, named by the manifest's digest so that two
-// packages never share one and the same package is not written twice.
+// packages never share one and the same package is not written twice. A resolver may also look
+// beside the package for names it does not hold (the studio, for files a user adds to a package
+// it opened); a package alone is self-contained.
 
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -19,7 +22,8 @@ namespace thespis::core::scenario {
 
 class PackageResolver final : public AssetResolver {
 public:
-    explicit PackageResolver(std::shared_ptr<const Package> package);
+    /// `beside`: where names the package does not hold are found (empty: nowhere).
+    explicit PackageResolver(std::shared_ptr<const Package> package, std::filesystem::path beside = {});
 
     const Package& package() const { return *m_package; }
     /// Where path() puts the entries it is asked for.
@@ -35,6 +39,7 @@ public:
 private:
     std::shared_ptr<const Package> m_package;
     std::filesystem::path m_folder;
+    std::optional<FolderResolver> m_beside;
     mutable std::mutex m_mutex;
     mutable std::set<std::string> m_written; // entries path() has put in m_folder
 };
@@ -45,6 +50,7 @@ struct OpenedPackage {
     Assets assets;
     Scenario scenario;
 };
-Result<OpenedPackage> openPackage(const std::filesystem::path& file, const PackageLimits& limits = {});
+Result<OpenedPackage> openPackage(const std::filesystem::path& file, const PackageLimits& limits = {},
+                                  const std::filesystem::path& beside = {});
 
 } // namespace thespis::core::scenario

@@ -2,32 +2,34 @@
 
 namespace thespis::core::scenario {
 
-std::string rebasedPath(const std::string& path, const std::filesystem::path& from, const std::filesystem::path& to)
+std::string rebasedPath(const std::string& path, const std::filesystem::path& from, const std::filesystem::path& to,
+                        const KeptNames& keep)
 {
-    if (path.empty() || std::filesystem::path(path).is_absolute() || from == to)
+    if (path.empty() || std::filesystem::path(path).is_absolute() || from == to || (keep && keep(path)))
         return path;
     return (from / path).lexically_normal().lexically_relative(to).generic_string();
 }
 
-void rebaseClip(ClipAsset& clip, const std::filesystem::path& from, const std::filesystem::path& to)
+void rebaseClip(ClipAsset& clip, const std::filesystem::path& from, const std::filesystem::path& to, const KeptNames& keep)
 {
-    clip.file = rebasedPath(clip.file, from, to);
+    clip.file = rebasedPath(clip.file, from, to, keep);
     if (clip.idle)
-        clip.idle->database = rebasedPath(clip.idle->database, from, to);
+        clip.idle->database = rebasedPath(clip.idle->database, from, to, keep);
 }
 
-void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const std::filesystem::path& to)
+void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const std::filesystem::path& to,
+                 const KeptNames& keep)
 {
     for (Character& character : scenario.characters) {
-        character.model = rebasedPath(character.model, from, to);
-        character.bake = rebasedPath(character.bake, from, to);
+        character.model = rebasedPath(character.model, from, to, keep);
+        character.bake = rebasedPath(character.bake, from, to, keep);
         for (ClipAsset& clip : character.clips)
-            rebaseClip(clip, from, to);
+            rebaseClip(clip, from, to, keep);
     }
-    scenario.lighting.probe = rebasedPath(scenario.lighting.probe, from, to);
-    scenario.postureBases = rebasedPath(scenario.postureBases, from, to);
+    scenario.lighting.probe = rebasedPath(scenario.lighting.probe, from, to, keep);
+    scenario.postureBases = rebasedPath(scenario.postureBases, from, to, keep);
     for (PhantomOccluder& occluder : scenario.ar.occluders)
-        occluder.model = rebasedPath(occluder.model, from, to);
+        occluder.model = rebasedPath(occluder.model, from, to, keep);
 }
 
 const Character* Scenario::findCharacter(const std::string& characterName) const

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -269,13 +270,19 @@ struct Scenario {
     const ScriptSpec* findScript(const std::string& name) const;
 };
 
+/// Names a rebase leaves as they are (a package's entries, which travel with it).
+using KeptNames = std::function<bool(const std::string&)>;
 /// A file path relative to folder `from`, rewritten to name the same file relative to folder `to`
-/// (saving a scenario to another folder). Empty and absolute paths are returned as they are.
-std::string rebasedPath(const std::string& path, const std::filesystem::path& from, const std::filesystem::path& to);
+/// (saving a scenario to another folder). Empty and absolute paths, and those `keep` says, are
+/// returned as they are.
+std::string rebasedPath(const std::string& path, const std::filesystem::path& from, const std::filesystem::path& to,
+                        const KeptNames& keep = {});
 /// rebasedPath() on the files a clip names: its motion file or its idle motion database.
-void rebaseClip(ClipAsset& clip, const std::filesystem::path& from, const std::filesystem::path& to);
+void rebaseClip(ClipAsset& clip, const std::filesystem::path& from, const std::filesystem::path& to,
+                const KeptNames& keep = {});
 /// rebasedPath() on every file path of the scenario: models, bakes, clips, the light probe, the
 /// posture bases and the phantom occluders' models.
-void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const std::filesystem::path& to);
+void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const std::filesystem::path& to,
+                 const KeptNames& keep = {});
 
 } // namespace thespis::core::scenario

@@ -28,7 +28,10 @@ public:
 
     const core::edit::Edit& edit() const { return m_edit; }
     /// See core::edit::Edit::rebasePaths (Document::saveAs to another folder).
-    void rebasePaths(const std::filesystem::path& from, const std::filesystem::path& to) { m_edit.rebasePaths(from, to); }
+    void rebasePaths(const std::filesystem::path& from, const std::filesystem::path& to, const core::scenario::KeptNames& keep = {})
+    {
+        m_edit.rebasePaths(from, to, keep);
+    }
     /// Ends merging: a drag finished with a step that changed nothing more.
     void finish() { m_finished = true; }
 

@@ -35,6 +35,7 @@
 #include <functional>
 
 #include "content_actions.h"
+#include "gui_support.h"
 #include "editor/character_dialog.h"
 #include "editor/character_properties.h"
 #include "editor/document.h"
@@ -53,43 +54,14 @@
 #include "widgets/timeline_view.h"
 
 using namespace thespis;
+using test::saveScreenshot;
+using test::whenModal;
 
 namespace {
 
 QString shared(const QString& relative)
 {
     return QStringLiteral(THESPIS_SHARED_DATA "/") + relative;
-}
-
-void saveScreenshot(QWidget* widget, const QString& name)
-{
-    QDir().mkpath(QStringLiteral(THESPIS_SCREENSHOT_DIR));
-    QVERIFY(widget->grab().save(QStringLiteral(THESPIS_SCREENSHOT_DIR "/") + name));
-}
-
-// Runs `act` on the next modal dialog of type T once it is up (a user answering it), then lets
-// the caller's exec() return. Fails the test when none comes within 10 s of no dialog.
-template <class T>
-void whenModal(std::function<void(T*)> act, const QString& screenshot = {})
-{
-    auto* timer = new QTimer;
-    timer->setInterval(50);
-    auto tries = std::make_shared<int>(0);
-    QObject::connect(timer, &QTimer::timeout, [timer, tries, act, screenshot] {
-        if (auto* dialog = qobject_cast<T*>(QApplication::activeModalWidget())) {
-            timer->stop();
-            timer->deleteLater();
-            if (!screenshot.isEmpty())
-                saveScreenshot(dialog, screenshot);
-            act(dialog);
-        } else if (QApplication::activeModalWidget() == nullptr && ++*tries > 200) {
-            // Only time without any dialog counts: an earlier dialog may still be up.
-            timer->stop();
-            timer->deleteLater();
-            QFAIL("no dialog came");
-        }
-    });
-    timer->start();
 }
 
 int trackOf(widgets::TimelineView* view, const QString& character, const QString& layer)
