@@ -46,7 +46,7 @@ CommandSpec bakeMotionSpec()
     CommandSpec spec;
     spec.name = "bake-motion";
     spec.summary = "Evaluate a character's body animation and write it as a BVH clip.";
-    spec.positionals = {"SCENARIO"};
+    spec.positionals = {"SCENARIO|PACKAGE"};
     spec.options = {
         {"character", "NAME", "the character whose body schedule is baked", true},
         {"out", "FILE.bvh", "the BVH file to write; an existing file is replaced atomically", true},
@@ -89,12 +89,12 @@ int runBakeMotion(const CommandSpec& spec, const ParsedArguments& arguments)
         return usageError(spec, "--end (" + std::to_string(*endOption) + " s) is before --start ("
                                     + std::to_string(startOption.value_or(0.0)) + " s)");
 
-    auto document = loadScenarioReporting(spec.name, scenarioPath);
+    auto document = openScenarioReporting(spec.name, scenarioPath);
     if (!document)
         return ExitInvalidInput;
     core::scenario::MotionBakeJob job;
-    job.scenario = std::move(*document);
-    job.assets = core::scenario::Assets::besideFile(scenarioPath);
+    job.scenario = std::move(document->scenario);
+    job.assets = std::move(document->assets);
     job.character = characterName;
     job.output = outPath;
     job.fps = fps;

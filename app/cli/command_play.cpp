@@ -17,7 +17,7 @@ CommandSpec playSpec()
     CommandSpec spec;
     spec.name = "play";
     spec.summary = "Play a scenario to a video file, over a tracked video or on its own.";
-    spec.positionals = {"SCENARIO"};
+    spec.positionals = {"SCENARIO|PACKAGE"};
     spec.options = {
         {"out", "FILE.mp4", "the video to write (.mp4 or .avi); replaced when finished", true},
         {"video", "IN", "a video to play the scenario over, its characters standing on the tracked target"},
@@ -59,16 +59,16 @@ int runPlay(const CommandSpec& spec, const ParsedArguments& arguments)
         job.fps = *fps;
     if (exitCode != ExitOk)
         return exitCode;
-    auto document = loadScenarioReporting(spec.name, scenarioPath);
+    auto document = openScenarioReporting(spec.name, scenarioPath);
     if (!document)
         return ExitInvalidInput;
-    if (const int status = readPictureSettings(spec, arguments, *document, job.picture); status != ExitOk)
+    if (const int status = readPictureSettings(spec, arguments, document->scenario, job.picture); status != ExitOk)
         return status;
     job.compositor.samples = job.picture.samples;
     job.compositor.shading = job.picture.shading;
     job.compositor.skinning = job.picture.skinning;
-    job.scenario = std::move(*document);
-    job.assets = core::scenario::Assets::besideFile(scenarioPath);
+    job.scenario = std::move(document->scenario);
+    job.assets = std::move(document->assets);
     if (auto valid = job.validate(); !valid)
         return usageError(spec, valid.error().message);
 

@@ -20,7 +20,7 @@ CommandSpec renderSpec()
     CommandSpec spec;
     spec.name = "render";
     spec.summary = "Render frames of a scenario to PNG, headless (no X server needed).";
-    spec.positionals = {"SCENARIO"};
+    spec.positionals = {"SCENARIO|PACKAGE"};
     spec.options = {
         {"out", "FILE.png|DIR/", "the picture to write, or the folder of a --frames sequence", true},
         {"time", "SECONDS", "the moment to render (default 0)"},
@@ -83,14 +83,14 @@ int runRender(const CommandSpec& spec, const ParsedArguments& arguments)
         return ExitOk;
     }
 
-    auto document = loadScenarioReporting(spec.name, scenarioPath);
+    auto document = openScenarioReporting(spec.name, scenarioPath);
     if (!document)
         return ExitInvalidInput;
     core::render::FrameSequenceJob job;
-    if (const int status = readPictureSettings(spec, arguments, *document, job.picture); status != ExitOk)
+    if (const int status = readPictureSettings(spec, arguments, document->scenario, job.picture); status != ExitOk)
         return status;
-    job.scenario = std::move(*document);
-    job.assets = core::scenario::Assets::besideFile(scenarioPath);
+    job.scenario = std::move(document->scenario);
+    job.assets = std::move(document->assets);
     job.first = frames->first;
     job.last = frames->last;
     job.fps = *fps;

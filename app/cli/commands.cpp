@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "exit_codes.h"
+#include "scenario/package_resolver.h"
 #include "scenario/scenario_io.h"
 
 namespace thespis::cli {
@@ -56,6 +57,22 @@ std::optional<core::scenario::Scenario> loadScenarioReporting(const std::string&
         return std::nullopt;
     }
     return std::move(scenario).value();
+}
+
+std::optional<OpenedScenario> openScenarioReporting(const std::string& command, const std::filesystem::path& path)
+{
+    if (path.extension() == core::scenario::kPackageExtension) {
+        auto opened = core::scenario::openPackage(path);
+        if (!opened) {
+            printError(command, opened.error());
+            return std::nullopt;
+        }
+        return OpenedScenario{std::move(opened->scenario), std::move(opened->assets)};
+    }
+    auto scenario = loadScenarioReporting(command, path);
+    if (!scenario)
+        return std::nullopt;
+    return OpenedScenario{std::move(*scenario), core::scenario::Assets::besideFile(path)};
 }
 
 std::optional<long> integerOption(const CommandSpec& spec, const ParsedArguments& arguments, const std::string& name,

@@ -62,6 +62,13 @@ int usageError(const CommandSpec& spec, const std::string& problem);
 /// Loads a scenario file, printing the error when it cannot be read.
 std::optional<core::scenario::Scenario> loadScenarioReporting(const std::string& command,
                                                               const std::filesystem::path& path);
+/// A scenario and where its files are: a .thespis file and its folder, or a package (.thespkg,
+/// checked, playing from the zip). Prints the error and returns nothing on failure.
+struct OpenedScenario {
+    core::scenario::Scenario scenario;
+    core::scenario::Assets assets;
+};
+std::optional<OpenedScenario> openScenarioReporting(const std::string& command, const std::filesystem::path& path);
 /// Reads an integer option within [min, max]; on a bad value prints the usage error and sets
 /// exitCode (to ExitUsage).
 std::optional<long> integerOption(const CommandSpec& spec, const ParsedArguments& arguments, const std::string& name,

@@ -198,3 +198,22 @@ def test_command_lines(tmp_path):
     assert run("import", tmp_path / "none.thespkg").returncode == USAGE
     result = run("import", tmp_path / "none.thespkg", "--to", tmp_path / "x")
     assert result.returncode == INVALID and "none.thespkg does not exist" in result.stderr
+
+
+def test_a_package_plays_renders_and_bakes_without_import(tmp_path):
+    package = tmp_path / "demo.thespkg"
+    assert run("export", DEMO, "--out", package, "--quiet").returncode == 0
+    from_package = tmp_path / "from_package.bvh"
+    from_folder = tmp_path / "from_folder.bvh"
+    result = run("bake-motion", package, "--character", "Creon", "--end", "2", "--out", from_package)
+    assert result.returncode == 0, result.stderr
+    assert run("bake-motion", DEMO, "--character", "Creon", "--end", "2", "--out", from_folder).returncode == 0
+    assert from_package.read_bytes() == from_folder.read_bytes()
+    picture = tmp_path / "frame.png"
+    result = run("render", package, "--time", "1.5", "--size", "160x120", "--out", picture)
+    assert result.returncode == 0, result.stderr
+    assert picture.stat().st_size > 0
+    video = tmp_path / "demo.avi"
+    result = run("play", package, "--size", "160x120", "--out", video)
+    assert result.returncode == 0, result.stderr
+    assert video.stat().st_size > 0
