@@ -8,8 +8,7 @@
 #include <mutex>
 #include <set>
 
-#include <zip.h>
-
+#include "scenario/package_zip.h"
 #include "scenario/scenario_io.h"
 #include "util/file_io.h"
 #include "util/json_document.h"
@@ -25,9 +24,6 @@ using json_document::quote;
 constexpr std::uint64_t kRatioFloorBytes = 64 * 1024; // smaller entries may compress as they like
 constexpr std::size_t kReadChunk = 1 << 16;
 
-struct ZipDiscard {
-    void operator()(zip_t* archive) const { zip_discard(archive); }
-};
 struct ZipFileClose {
     void operator()(zip_file_t* file) const { zip_fclose(file); }
 };
@@ -36,7 +32,7 @@ struct ZipFileClose {
 
 struct Package::State {
     fs::path file;
-    std::unique_ptr<zip_t, ZipDiscard> archive;
+    detail::ZipArchive archive;
     PackageManifest manifest;
     std::map<std::string, zip_uint64_t> indexOf; // entry name → its index in the zip
     mutable std::mutex mutex;                    // a zip_t reads one entry at a time
@@ -94,10 +90,7 @@ Result<std::unique_ptr<Package>> Package::open(const fs::path& file, const Packa
     int openError = 0;
     state->archive.reset(zip_open(file.c_str(), ZIP_RDONLY, &openError));
     if (!state->archive) {
-        zip_error_t error;
-        zip_error_init_with_code(&error, openError);
-        const std::string why = zip_error_strerror(&error);
-        zip_error_fini(&error);
+        const std::string why = detail::zipOpenError(openError);
         return makeError(openError == ZIP_ER_OPEN || openError == ZIP_ER_READ ? ErrorCode::FileNotFound : ErrorCode::NotOurFormat,
                          "The package " + file.string() + " cannot be opened as a zip: " + why + ".");
     }

@@ -5,8 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include <zip.h>
-
+#include "scenario/package_zip.h"
 #include "scenario/scenario_io.h"
 #include "util/file_io.h"
 #include "util/sha256.h"
@@ -14,10 +13,6 @@
 namespace thespis::core::scenario {
 
 namespace {
-
-struct ZipDiscard {
-    void operator()(zip_t* archive) const { zip_discard(archive); }
-};
 
 /// What libzip's progress and cancel callbacks see while zip_close() writes.
 struct Writing {
@@ -75,13 +70,10 @@ Result<void> ExportPackageJob::run(JobContext& context)
     const std::string manifestText = serializeManifest(manifest);
 
     int openError = 0;
-    std::unique_ptr<zip_t, ZipDiscard> archive(zip_open(output.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &openError));
+    detail::ZipArchive archive(zip_open(output.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &openError));
     if (!archive) {
-        zip_error_t error;
-        zip_error_init_with_code(&error, openError);
-        const std::string why = zip_error_strerror(&error);
-        zip_error_fini(&error);
-        return makeError(ErrorCode::IoError, "Cannot write the package " + output.string() + ": " + why + ".");
+        return makeError(ErrorCode::IoError,
+                         "Cannot write the package " + output.string() + ": " + detail::zipOpenError(openError) + ".");
     }
     const auto failed = [&](const std::string& what) {
         return makeError(ErrorCode::IoError, "Writing the package " + output.string() + " failed at " + what + ": "
