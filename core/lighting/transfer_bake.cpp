@@ -5,6 +5,7 @@
 #include <cassert>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <numbers>
@@ -268,7 +269,7 @@ void sampleVertexDirections(int rays, std::uint64_t seed, std::uint32_t vertex, 
 struct Chunk {
     std::uint32_t firstVertex = 0;
     std::uint32_t vertexCount = 0;
-    std::uint64_t transferOffset = 0;
+    float* output = nullptr;               ///< order² floats per vertex
     const OcclusionScene* scene = nullptr; ///< null for DU
     anim::Quatd bindRotation;
 };
@@ -412,40 +413,58 @@ void sampleBakeDirections(int raysPerVertex, std::uint64_t seed, std::uint32_t v
         directions[std::size_t(k)] = {world.x[k], world.y[k], world.z[k]};
 }
 
-Result<TransferBake> bakeTransfer(const scene::CharacterMesh& mesh, const BakeSettings& settings,
-                                  std::stop_token stop, const BakeProgressCallback& progress,
-                                  BakeStatistics* statistics)
-{
-    const auto started = std::chrono::steady_clock::now();
-    if (Result<void> valid = validateBakeSettings(settings); !valid)
-        return valid.error();
-    if (Result<void> valid = mesh.validate(); !valid)
-        return valid.error();
+namespace {
 
-    TransferBake bake;
-    bake.order = settings.order;
-    bake.transferKind = settings.transfer;
-    bake.raysPerVertex = settings.raysPerVertex;
-    bake.epsilon = settings.epsilon;
-    bake.seed = settings.seed;
-    bake.vertexCount = mesh.vertexCount();
-    bake.geometryHash = meshGeometryHash(mesh);
-    const std::size_t perVertex = std::size_t(settings.order) * settings.order;
-    std::uint64_t bakedVertices = 0;
-    for (const scene::Segment& segment : mesh.segments) {
-        BakedSegment baked;
-        baked.name = segment.name;
-        baked.firstVertex = segment.firstVertex;
-        baked.vertexCount = segment.vertexCount;
-        baked.role = segment.role;
-        baked.baked = isBaked(settings.transfer, segment.role);
-        if (baked.baked) {
-            baked.transferOffset = bakedVertices * perVertex;
-            bakedVertices += segment.vertexCount;
-        }
-        bake.segments.push_back(std::move(baked));
+std::string describeRange(const VertexRange& range)
+{
+    return "the vertex range " + std::to_string(range.firstVertex) + " + " + std::to_string(range.vertexCount);
+}
+
+/// The plan's segment holding the whole range, or InvalidArgument naming the range and why.
+Result<std::size_t> segmentOfRange(const TransferBake& plan, const VertexRange& range)
+{
+    for (std::size_t s = 0; s < plan.segments.size(); ++s) {
+        const BakedSegment& segment = plan.segments[s];
+        if (range.firstVertex < segment.firstVertex || range.firstVertex - segment.firstVertex >= segment.vertexCount)
+            continue;
+        const std::string where = " (segment \"" + segment.name + "\" holds vertices "
+                                  + std::to_string(segment.firstVertex) + " to "
+                                  + std::to_string(std::uint64_t(segment.firstVertex) + segment.vertexCount - 1) + ")";
+        if (!segment.baked)
+            return makeError(ErrorCode::InvalidArgument,
+                             "Cannot bake " + describeRange(range) + ": its segment is an occluder, which is not baked" + where + ".");
+        if (range.vertexCount == 0
+            || std::uint64_t(range.firstVertex) + range.vertexCount > std::uint64_t(segment.firstVertex) + segment.vertexCount)
+            return makeError(ErrorCode::InvalidArgument,
+                             "Cannot bake " + describeRange(range) + ": a range must be non-empty and inside one segment" + where + ".");
+        return s;
     }
-    bake.transfer.assign(bakedVertices * perVertex, 0.0f);
+    return makeError(ErrorCode::InvalidArgument, "Cannot bake " + describeRange(range) + ": no segment holds vertex "
+                                                     + std::to_string(range.firstVertex) + " (the mesh has "
+                                                     + std::to_string(plan.vertexCount) + " vertices).");
+}
+
+/// A range and where its floats go.
+struct Piece {
+    VertexRange range;
+    float* output = nullptr;
+};
+
+/// The one path every bake takes: builds the occlusion scenes, cuts the pieces into chunks and
+/// bakes them on settings.threads workers. `plan` is the mesh's planTransferBake.
+Result<void> bakePieces(const scene::CharacterMesh& mesh, const BakeSettings& settings, const TransferBake& plan,
+                        std::span<const Piece> pieces, std::stop_token stop, const BakeProgressCallback& progress,
+                        BakeStatistics* statistics, std::chrono::steady_clock::time_point started)
+{
+    std::vector<std::size_t> segmentOfPiece;
+    std::uint64_t vertices = 0;
+    for (const Piece& piece : pieces) {
+        Result<std::size_t> segment = segmentOfRange(plan, piece.range);
+        if (!segment)
+            return segment.error();
+        segmentOfPiece.push_back(*segment);
+        vertices += piece.range.vertexCount;
+    }
 
     // Occlusion scenes: DS one per segment (its own triangles), DSM one for M′ (every segment
     // but the receivers), DU none.
@@ -478,24 +497,23 @@ Result<TransferBake> bakeTransfer(const scene::CharacterMesh& mesh, const BakeSe
 
     // Work: runs of at most ~0.5 % of the vertices (and at most 64) within one segment, so threads
     // balance, progress comes about every 1 % and a cancel is seen quickly.
-    const std::uint32_t chunkSize = std::uint32_t(std::clamp<std::uint64_t>(bakedVertices / 200, 1, 64));
+    const std::size_t perVertex = std::size_t(settings.order) * settings.order;
+    const std::uint32_t chunkSize = std::uint32_t(std::clamp<std::uint64_t>(vertices / 200, 1, 64));
     std::vector<Chunk> chunks;
-    for (std::size_t s = 0; s < mesh.segments.size(); ++s) {
-        const scene::Segment& segment = mesh.segments[s];
-        const BakedSegment& baked = bake.segments[s];
-        if (!baked.baked)
-            continue;
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+        const Piece& piece = pieces[p];
+        const std::size_t s = segmentOfPiece[p];
         const OcclusionScene* scene = settings.transfer == TransferKind::DiffuseShadowed          ? scenes[s].get()
                                       : settings.transfer == TransferKind::DiffuseShadowedMerged ? scenes[0].get()
                                                                                                   : nullptr;
-        for (std::uint32_t first = 0; first < segment.vertexCount; first += chunkSize) {
-            const std::uint32_t count = std::min(chunkSize, segment.vertexCount - first);
-            chunks.push_back({segment.firstVertex + first, count, baked.transferOffset + first * perVertex, scene,
-                              segment.bindRotation});
+        for (std::uint32_t first = 0; first < piece.range.vertexCount; first += chunkSize) {
+            const std::uint32_t count = std::min(chunkSize, piece.range.vertexCount - first);
+            chunks.push_back({piece.range.firstVertex + first, count, piece.output + std::size_t(first) * perVertex,
+                              scene, mesh.segments[s].bindRotation});
         }
     }
 
-    ProgressReporter reporter(progress, bakedVertices);
+    ProgressReporter reporter(progress, vertices);
     std::atomic<std::size_t> nextChunk{0};
     auto work = [&] {
         enableFlushToZero();
@@ -508,8 +526,7 @@ Result<TransferBake> bakeTransfer(const scene::CharacterMesh& mesh, const BakeSe
                 return;
             const Chunk& chunk = chunks[c];
             for (std::uint32_t v = 0; v < chunk.vertexCount; ++v)
-                bakeVertex(mesh, settings, chunk, chunk.firstVertex + v, scratch,
-                           bake.transfer.data() + chunk.transferOffset + std::size_t(v) * perVertex);
+                bakeVertex(mesh, settings, chunk, chunk.firstVertex + v, scratch, chunk.output + std::size_t(v) * perVertex);
             reporter.add(chunk.vertexCount);
         }
     };
@@ -522,17 +539,127 @@ Result<TransferBake> bakeTransfer(const scene::CharacterMesh& mesh, const BakeSe
             workers.emplace_back(work);
     } // joined here
 
-    if (reporter.done() != bakedVertices)
+    if (reporter.done() != vertices)
         return makeError(ErrorCode::Cancelled, "The lighting bake was cancelled.",
-                         std::to_string(reporter.done()) + " of " + std::to_string(bakedVertices) + " vertices baked");
+                         std::to_string(reporter.done()) + " of " + std::to_string(vertices) + " vertices baked");
     reporter.finish();
     if (statistics) {
-        statistics->vertices = bakedVertices;
-        statistics->rays = bakedVertices * std::uint64_t(settings.raysPerVertex);
+        statistics->vertices = vertices;
+        statistics->rays = vertices * std::uint64_t(settings.raysPerVertex);
         statistics->seconds = secondsSince(started);
         statistics->sceneSeconds = sceneSeconds;
     }
+    return {};
+}
+
+} // namespace
+
+Result<TransferBake> planTransferBake(const scene::CharacterMesh& mesh, const BakeSettings& settings)
+{
+    if (Result<void> valid = validateBakeSettings(settings); !valid)
+        return valid.error();
+    if (Result<void> valid = mesh.validate(); !valid)
+        return valid.error();
+
+    TransferBake bake;
+    bake.order = settings.order;
+    bake.transferKind = settings.transfer;
+    bake.raysPerVertex = settings.raysPerVertex;
+    bake.epsilon = settings.epsilon;
+    bake.seed = settings.seed;
+    bake.vertexCount = mesh.vertexCount();
+    bake.geometryHash = meshGeometryHash(mesh);
+    const std::size_t perVertex = std::size_t(settings.order) * settings.order;
+    std::uint64_t bakedVertices = 0;
+    for (const scene::Segment& segment : mesh.segments) {
+        BakedSegment baked;
+        baked.name = segment.name;
+        baked.firstVertex = segment.firstVertex;
+        baked.vertexCount = segment.vertexCount;
+        baked.role = segment.role;
+        baked.baked = isBaked(settings.transfer, segment.role);
+        if (baked.baked) {
+            baked.transferOffset = bakedVertices * perVertex;
+            bakedVertices += segment.vertexCount;
+        }
+        bake.segments.push_back(std::move(baked));
+    }
+    bake.transfer.assign(bakedVertices * perVertex, 0.0f);
     return bake;
+}
+
+std::vector<VertexRange> splitTransferBake(const TransferBake& plan, std::uint32_t maxVertices)
+{
+    assert(maxVertices >= 1);
+    maxVertices = std::max<std::uint32_t>(maxVertices, 1);
+    std::vector<VertexRange> ranges;
+    for (const BakedSegment& segment : plan.segments)
+        if (segment.baked)
+            for (std::uint32_t first = 0; first < segment.vertexCount; first += maxVertices)
+                ranges.push_back({segment.firstVertex + first, std::min(maxVertices, segment.vertexCount - first)});
+    return ranges;
+}
+
+Result<TransferBake> bakeTransfer(const scene::CharacterMesh& mesh, const BakeSettings& settings,
+                                  std::stop_token stop, const BakeProgressCallback& progress,
+                                  BakeStatistics* statistics)
+{
+    const auto started = std::chrono::steady_clock::now();
+    Result<TransferBake> bake = planTransferBake(mesh, settings);
+    if (!bake)
+        return bake.error();
+    // Whole segments, in transfer order: their floats follow one another in bake->transfer.
+    const std::size_t perVertex = std::size_t(settings.order) * settings.order;
+    std::vector<Piece> pieces;
+    std::size_t offset = 0;
+    for (const VertexRange& range : splitTransferBake(*bake, std::numeric_limits<std::uint32_t>::max())) {
+        pieces.push_back({range, bake->transfer.data() + offset});
+        offset += std::size_t(range.vertexCount) * perVertex;
+    }
+    if (Result<void> baked = bakePieces(mesh, settings, *bake, pieces, stop, progress, statistics, started); !baked)
+        return baked.error();
+    return bake;
+}
+
+Result<std::vector<float>> bakeTransferRanges(const scene::CharacterMesh& mesh, const BakeSettings& settings,
+                                              std::span<const VertexRange> ranges, std::stop_token stop,
+                                              const BakeProgressCallback& progress, BakeStatistics* statistics)
+{
+    const auto started = std::chrono::steady_clock::now();
+    Result<TransferBake> plan = planTransferBake(mesh, settings);
+    if (!plan)
+        return plan.error();
+    const std::size_t perVertex = std::size_t(settings.order) * settings.order;
+    std::uint64_t vertices = 0;
+    for (const VertexRange& range : ranges)
+        vertices += range.vertexCount;
+    std::vector<float> transfer(vertices * perVertex);
+    std::vector<Piece> pieces;
+    std::size_t offset = 0;
+    for (const VertexRange& range : ranges) {
+        pieces.push_back({range, transfer.data() + offset});
+        offset += std::size_t(range.vertexCount) * perVertex;
+    }
+    if (Result<void> baked = bakePieces(mesh, settings, *plan, pieces, stop, progress, statistics, started); !baked)
+        return baked.error();
+    return transfer;
+}
+
+Result<void> placeTransferRange(TransferBake& plan, const VertexRange& range, std::span<const float> transfer)
+{
+    Result<std::size_t> s = segmentOfRange(plan, range);
+    if (!s)
+        return s.error();
+    const BakedSegment& segment = plan.segments[*s];
+    const std::size_t perVertex = std::size_t(plan.order) * plan.order;
+    if (transfer.size() != std::size_t(range.vertexCount) * perVertex)
+        return makeError(ErrorCode::InvalidArgument,
+                         "Cannot place " + describeRange(range) + ": it needs " + std::to_string(range.vertexCount)
+                             + " × " + std::to_string(perVertex) + " floats, not " + std::to_string(transfer.size()) + ".");
+    std::copy(transfer.begin(), transfer.end(),
+              plan.transfer.begin() + std::ptrdiff_t(segment.transferOffset
+                                                     + std::size_t(range.firstVertex - segment.firstVertex) * perVertex));
+    return {};
 }
 
 std::array<double, 3> shadeVertex(const TransferBake& bake, [[maybe_unused]] const scene::CharacterMesh& mesh,

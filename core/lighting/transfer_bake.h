@@ -111,6 +111,35 @@ Result<TransferBake> bakeTransfer(const scene::CharacterMesh& mesh, const BakeSe
                                   std::stop_token stop = {}, const BakeProgressCallback& progress = {},
                                   BakeStatistics* statistics = nullptr);
 
+// A bake in pieces (farm bakes, thespis.farm): plan it, split the plan into vertex ranges, bake
+// the ranges anywhere (another process or machine, in any order), and place each range's floats
+// into the plan. Since each vertex's result depends only on the mesh, the settings and its index,
+// the assembled bake equals bakeTransfer(mesh, settings) bit for bit.
+
+/// A run of vertices inside one baked segment; `firstVertex` indexes the whole character mesh.
+struct VertexRange {
+    std::uint32_t firstVertex = 0;
+    std::uint32_t vertexCount = 0;
+    bool operator==(const VertexRange&) const = default;
+};
+
+/// The bake of `mesh` with everything but the transfer filled in: settings, segments and their
+/// offsets, geometry hash; `transfer` is sized and zero. The settings and the mesh must validate.
+Result<TransferBake> planTransferBake(const scene::CharacterMesh& mesh, const BakeSettings& settings);
+/// Every baked segment of a plan cut into ranges of at most `maxVertices` (≥ 1) vertices, in
+/// transfer order (so their floats, concatenated, are the plan's `transfer`).
+std::vector<VertexRange> splitTransferBake(const TransferBake& plan, std::uint32_t maxVertices);
+/// Bakes only `ranges`, each inside one baked segment (else InvalidArgument naming the range):
+/// order² floats per vertex, range after range, equal to those vertices of bakeTransfer.
+/// Cancelled → ErrorCode::Cancelled. Progress counts the ranges' vertices.
+Result<std::vector<float>> bakeTransferRanges(const scene::CharacterMesh& mesh, const BakeSettings& settings,
+                                              std::span<const VertexRange> ranges, std::stop_token stop = {},
+                                              const BakeProgressCallback& progress = {},
+                                              BakeStatistics* statistics = nullptr);
+/// Copies a range's floats (order² per vertex) into the plan; InvalidArgument when the range is not
+/// inside one baked segment of the plan or the float count does not fit it.
+Result<void> placeTransferRange(TransferBake& plan, const VertexRange& range, std::span<const float> transfer);
+
 /// The bake file: little-endian binary, magic "THSPPRT\0", format version, order, transfer kind,
 /// rays, ε, seed, vertex count, segment table (name, ranges, role, baked), the floats, and a
 /// CRC-32 of everything before it. Written atomically (a cancelled or failed write leaves no
