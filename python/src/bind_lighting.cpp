@@ -1,5 +1,6 @@
 // Bindings of core/lighting as the submodule thespis.lighting: spherical harmonics (evaluate,
-// rotate, irradiance), HDR probes and their projection, and the PRT transfer bake.
+// rotate, irradiance), HDR probes and their projection, and the PRT transfer bake — whole, or in
+// vertex ranges for farm bakes (thespis.farm: plan_bake, split_bake, bake_ranges, place_range).
 //
 // Coefficients are NumPy float64 arrays whose last axis has order² entries (index l(l+1)+m);
 // an RGB light is shaped (3, order²). The bake runs on worker threads with the GIL released; the
@@ -19,7 +20,9 @@
 #include "lighting/sh_rotation.h"
 #include "lighting/transfer_bake.h"
 #include "lighting/transfer_bake_job.h"
+#include "lighting/transfer_ranges_job.h"
 #include "run_job.h"
+#include "scenario/bake_character.h"
 
 namespace thespis::python {
 
@@ -244,6 +247,88 @@ void bindProbes(py::module_& l)
             "direction"_a, "RGB radiance arriving from a world direction (bilinear).");
 }
 
+BakeSettings makeBakeSettings(int order, int rays, const std::string& transfer, const std::string& backend,
+                              float epsilon, std::uint64_t seed, int threads)
+{
+    BakeSettings settings;
+    settings.order = order;
+    settings.raysPerVertex = rays;
+    settings.transfer = unwrap(parseTransferKind(transfer));
+    settings.backend = unwrap(parseOcclusionBackend(backend));
+    settings.epsilon = epsilon;
+    settings.seed = seed;
+    settings.threads = threads;
+    return settings;
+}
+
+using RangeTuple = std::pair<std::uint32_t, std::uint32_t>; // (first vertex, vertex count)
+
+/// A bake in vertex ranges, for thespis.farm: the settings as an object, the plan, its ranges,
+/// a range's floats and their place in the plan (transfer_bake.h, "A bake in pieces").
+void bindBakePieces(py::module_& l)
+{
+    py::class_<BakeSettings>(l, "BakeSettings", "The settings of a transfer bake (the keywords of thespis.lighting.bake).")
+        .def(py::init(&makeBakeSettings), py::kw_only(), "order"_a = 5, "rays"_a = 1024, "transfer"_a = "dsm",
+             "backend"_a = "embree", "epsilon"_a = 1.71e-4f, "seed"_a = 1, "threads"_a = 0)
+        .def_readonly("order", &BakeSettings::order)
+        .def_readonly("rays", &BakeSettings::raysPerVertex)
+        .def_property_readonly("transfer", [](const BakeSettings& s) { return transferKindName(s.transfer); })
+        .def_property_readonly("backend", [](const BakeSettings& s) { return occlusionBackendName(s.backend); })
+        .def_readonly("epsilon", &BakeSettings::epsilon)
+        .def_readonly("seed", &BakeSettings::seed)
+        .def_readonly("threads", &BakeSettings::threads);
+
+    l.def(
+        "load_bake_character",
+        [](const std::filesystem::path& file, const std::string& character, const std::optional<std::filesystem::path>& tags,
+           const std::optional<std::filesystem::path>& tagsScenario, bool splitSkinnedByJoint) {
+            core::scenario::BakeCharacter source{file, character, tags.value_or(""), tagsScenario.value_or(""),
+                                                 splitSkinnedByJoint};
+            return unwrap(withoutGil([&] { return core::scenario::loadBakeCharacter(source); }));
+        },
+        "file"_a, py::kw_only(), "character"_a = "", "tags"_a = py::none(), "tags_scenario"_a = py::none(),
+        "split_skinned_by_joint"_a = true,
+        "The mesh `thespis-cli bake` bakes: a .gltf/.glb file, or a scenario's character (.thespis or .thespkg; "
+        "`character` names it when there are several) with its tags; then a tags file's tags, or (glTF only) "
+        "those of tags_scenario's character. Errors name the file, field or character.");
+    l.def("geometry_hash", &meshGeometryHash, "mesh"_a,
+          "The hash a bake records of the mesh's shape (TransferBake.geometry_hash).");
+    l.def(
+        "plan_bake",
+        [](const scene::CharacterMesh& mesh, const BakeSettings& settings) { return unwrap(planTransferBake(mesh, settings)); },
+        "mesh"_a, "settings"_a,
+        "The bake of mesh with every field but the transfer filled in (it is zero): place ranges into it.");
+    l.def(
+        "split_bake",
+        [](const TransferBake& plan, std::uint32_t maxVertices) {
+            if (maxVertices < 1)
+                throw py::value_error("max_vertices must be at least 1.");
+            std::vector<RangeTuple> ranges;
+            for (const VertexRange& range : splitTransferBake(plan, maxVertices))
+                ranges.emplace_back(range.firstVertex, range.vertexCount);
+            return ranges;
+        },
+        "plan"_a, "max_vertices"_a,
+        "Every baked segment cut into (first_vertex, vertex_count) ranges of at most max_vertices, in the order "
+        "of the transfer.");
+    l.def(
+        "bake_ranges",
+        [](const scene::CharacterMesh& mesh, const BakeSettings& settings, const std::vector<RangeTuple>& ranges,
+           const py::object& progress) {
+            TransferRangesJob job;
+            job.mesh = mesh;
+            job.settings = settings;
+            for (const auto& [first, count] : ranges)
+                job.ranges.push_back({first, count});
+            runJob(job, progress);
+            return toArray(std::span<const float>(job.transfer));
+        },
+        "mesh"_a, "settings"_a, "ranges"_a, py::kw_only(), "progress"_a = py::none(),
+        "Bakes only the (first_vertex, vertex_count) ranges (each inside one baked segment): a flat float32 array, "
+        "order² floats per vertex, range after range, equal bit for bit to those vertices of the whole bake. "
+        "Releases the GIL; progress(done, total); Ctrl-C cancels and raises KeyboardInterrupt.");
+}
+
 void bindBake(py::module_& l)
 {
     py::class_<BakedSegment>(l, "BakedSegment", "A segment's entry in a bake.")
@@ -314,6 +399,15 @@ void bindBake(py::module_& l)
                 return out;
             },
             "mesh"_a, "light"_a, "Exit radiance (V, 3) of every vertex in the bind pose under an RGB light (3, order²).")
+        .def(
+            "place_range",
+            [](TransferBake& b, std::uint32_t first, std::uint32_t count,
+               const py::array_t<float, py::array::c_style>& transfer) {
+                unwrap(placeTransferRange(b, {first, count}, std::span<const float>(transfer.data(), std::size_t(transfer.size()))));
+            },
+            "first_vertex"_a, "vertex_count"_a, "transfer"_a,
+            "Copies a range's float32 transfer (bake_ranges' result) into this bake (a plan_bake); ValueError when the "
+            "range is not inside one baked segment or the count does not fit.")
         .def("__eq__", [](const TransferBake& a, const TransferBake& b) { return a == b; })
         .def("__repr__", [](const TransferBake& b) {
             return std::string("<thespis.lighting.TransferBake ") + transferKindName(b.transferKind) + " order "
@@ -325,17 +419,9 @@ void bindBake(py::module_& l)
         "bake",
         [](const scene::CharacterMesh& mesh, int order, int rays, const std::string& transfer, const std::string& backend,
            float epsilon, std::uint64_t seed, int threads, const py::object& progress) {
-            BakeSettings settings;
-            settings.order = order;
-            settings.raysPerVertex = rays;
-            settings.transfer = unwrap(parseTransferKind(transfer));
-            settings.backend = unwrap(parseOcclusionBackend(backend));
-            settings.epsilon = epsilon;
-            settings.seed = seed;
-            settings.threads = threads;
             TransferBakeJob job;
             job.mesh = mesh;
-            job.settings = settings;
+            job.settings = makeBakeSettings(order, rays, transfer, backend, epsilon, seed, threads);
             runJob(job, progress);
             return std::move(*job.bake);
         },
@@ -354,6 +440,7 @@ void bindLighting(py::module_& m)
     bindSphericalHarmonics(l);
     bindProbes(l);
     bindBake(l);
+    bindBakePieces(l);
 }
 
 } // namespace thespis::python
