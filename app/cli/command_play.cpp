@@ -8,7 +8,12 @@
 #include "job_progress.h"
 #include "render/play_job.h"
 #include "scene_render.h"
+#include "script_source.h"
 #include "target_options.h"
+
+#ifdef THESPIS_WITH_PYTHON
+#include "script_runner.h"
+#endif
 
 namespace thespis::cli {
 
@@ -23,6 +28,8 @@ CommandSpec playSpec()
         {"video", "IN", "a video to play the scenario over, its characters standing on the tracked target"},
         {"camera", "FILE.yml", "the calibration of the camera that filmed --video"},
         {"fps", "N", "frames per second without --video (default 30)"},
+        {"script", "S.py|NAME", "a Python script that plays along (a file, or a script kept in the scenario), as `run` runs it"},
+        {"audio", "", "also write the sounds played (the script's voiceService) as a WAV beside the video: OUT.wav"},
     };
     addTargetOptions(spec);
     addPictureOptions(spec);
@@ -31,9 +38,13 @@ CommandSpec playSpec()
         "drawn over it on the video's clock, placed, scaled and hidden by phantom occluders as its \"ar\"\n"
         "section says; frames where the target is lost stay as filmed. Without --video the scenario\n"
         "plays over its timeline as `render` draws it.\n"
+        "With --script the script drives the clock: each of its waits writes the frames up to the wait's end,\n"
+        "and the video lasts until the scenario's end or the script's, whichever is later; its prints go to\n"
+        "the terminal. The video file holds no sound (OpenCV's writer has none): --audio writes it beside.\n"
+        "Example: thespis-cli play demo.thespis --script wave.py --audio --out wave.mp4\n"
         "Example: thespis-cli play demo.thespis --video clip.mp4 --camera camera.yml --board aruco-grid:DICT_4X4_50:4x3:0.04:0.01 --out ar.mp4\n"
         "Exit status: 0 written, 2 bad command line, 3 inputs that cannot be used,\n"
-        "4 the file could not be written, 130 cancelled.";
+        "4 the file could not be written, 130 cancelled; 3 also when the script raised (its traceback is printed).";
     return spec;
 }
 
@@ -67,6 +78,34 @@ int runPlay(const CommandSpec& spec, const ParsedArguments& arguments)
     job.compositor.samples = job.picture.samples;
     job.compositor.shading = job.picture.shading;
     job.compositor.skinning = job.picture.skinning;
+    if (arguments.has("audio")) {
+        job.audio = job.output;
+        job.audio.replace_extension(".wav");
+    }
+#ifdef THESPIS_WITH_PYTHON
+    script::ScriptRunner runner;
+    std::optional<ScriptSource> source;
+    if (const auto scriptName = arguments.value("script")) {
+        source = readScriptReporting(spec.name, *scriptName, document->scenario);
+        if (!source)
+            return ExitInvalidInput;
+        job.script = core::render::PlayScript{
+            [&](const core::render::PlayScriptStage& stage) {
+                auto service = std::make_shared<core::runtime::AnimationService>(stage.stage, stage.clock);
+                // Unbuffered, so that the script's prints show between the progress lines.
+                const auto sink = [](script::Stream stream, std::string_view text) {
+                    std::FILE* out = stream == script::Stream::Out ? stdout : stderr;
+                    std::fwrite(text.data(), 1, text.size(), out);
+                    std::fflush(out);
+                };
+                return runner.run(source->text, source->fileName, service, sink, stage.sound);
+            },
+            [&] { runner.stop(); }};
+    }
+#else
+    if (arguments.has("script"))
+        return usageError(spec, "--script needs Python, and this thespis-cli was built without it");
+#endif
     job.scenario = std::move(document->scenario);
     job.assets = std::move(document->assets);
     if (auto valid = job.validate(); !valid)
@@ -89,6 +128,11 @@ int runPlay(const CommandSpec& spec, const ParsedArguments& arguments)
                         scenarioPath.filename().string().c_str(), job.video.filename().string().c_str(),
                         static_cast<long long>(job.tracked), static_cast<long long>(job.frames),
                         job.output.string().c_str());
+        if (job.script)
+            std::printf("The script played %zu sound%s; the video lasts %.3f s.\n", job.sounds, job.sounds == 1 ? "" : "s",
+                        job.seconds);
+        if (!job.audio.empty())
+            std::printf("Wrote the sound into %s.\n", job.audio.string().c_str());
     }
     return ExitOk;
 }

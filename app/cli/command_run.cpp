@@ -5,8 +5,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "cancel.h"
@@ -18,6 +16,7 @@
 #include "scenario/scenario_runtime.h"
 #include "scene_render.h"
 #include "script_runner.h"
+#include "script_source.h"
 
 namespace thespis::cli {
 
@@ -26,7 +25,7 @@ CommandSpec runSpec()
     CommandSpec spec;
     spec.name = "run";
     spec.summary = "Play a scenario with a Python script (animService, as in the paper), rendering frames headless.";
-    spec.positionals = {"SCENARIO"};
+    spec.positionals = {"SCENARIO|PACKAGE"};
     spec.options = {
         {"script", "S.py|NAME", "the script to run (a file, or a script kept in the scenario): it sees `animService` (also `anim`) and `thespis`", true},
         {"frames", "A:B", "render frames A to B (inclusive) at --fps into --out while the script plays"},
@@ -63,32 +62,12 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
     if (exitCode != ExitOk)
         return exitCode;
 
-    // A file, or else a script the scenario keeps under that name.
-    std::string source;
-    if (std::error_code ec; std::filesystem::is_regular_file(scriptPath, ec)) {
-        std::ifstream file(scriptPath, std::ios::binary);
-        std::ostringstream text;
-        text << file.rdbuf();
-        if (!file) {
-            printError(spec.name, "cannot read the script " + scriptPath.string() + ".");
-            return ExitInvalidInput;
-        }
-        source = text.str();
-    } else {
-        const auto document = loadScenarioReporting(spec.name, scenarioPath);
-        if (!document)
-            return ExitInvalidInput;
-        const core::scenario::ScriptSpec* kept = document->findScript(scriptPath.string());
-        if (!kept) {
-            std::vector<std::string> names;
-            for (const core::scenario::ScriptSpec& script : document->scripts)
-                names.push_back(script.name);
-            printError(spec.name, "there is no file " + scriptPath.string() + ", and the scenario keeps no script of that name (it has: " +
-                                      joinNames(names) + ").");
-            return ExitInvalidInput;
-        }
-        source = kept->source;
-    }
+    auto document = openScenarioReporting(spec.name, scenarioPath);
+    if (!document)
+        return ExitInvalidInput;
+    const auto script = readScriptReporting(spec.name, scriptPath, document->scenario);
+    if (!script)
+        return ExitInvalidInput;
 
     // The stage: the rendered scene's, or one of its own when nothing is rendered.
     std::unique_ptr<core::render::ScenarioPicture> picture;
@@ -102,10 +81,7 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
             return status;
         stage = picture->scene().sharedStage();
     } else {
-        const auto document = loadScenarioReporting(spec.name, scenarioPath);
-        if (!document)
-            return ExitInvalidInput;
-        auto runtime = core::scenario::buildRuntime(*document, core::scenario::Assets::besideFile(scenarioPath));
+        auto runtime = core::scenario::buildRuntime(document->scenario, document->assets);
         if (!runtime) {
             printError(spec.name, runtime.error());
             return ExitInvalidInput;
@@ -117,7 +93,7 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
     script::ScriptRunner runner;
     auto clock = std::make_shared<core::runtime::ManualClock>();
     auto service = std::make_shared<core::runtime::AnimationService>(stage, clock);
-    auto sound = std::make_shared<core::runtime::SoundService>(core::scenario::Assets::besideFile(scenarioPath), clock);
+    auto sound = std::make_shared<core::runtime::SoundService>(document->assets, clock);
     const long count = frames ? frames->last - frames->first + 1 : 0;
     ProgressReporter progress(stderr, "run", "frames", count, quiet || !frames);
     long next = frames ? frames->first : 0;
@@ -155,7 +131,7 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
         std::fwrite(text.data(), 1, text.size(), out);
         std::fflush(out);
     };
-    auto ran = runner.run(source, scriptPath.filename().string(), service, sink, sound);
+    auto ran = runner.run(script->text, script->fileName, service, sink, sound);
     watcher.request_stop();
     if (ran && renderStatus == ExitOk)
         renderUntil(std::numeric_limits<core::Tick>::max());
@@ -187,7 +163,7 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
                         sound->activations().size() == 1 ? "" : "s", audio->c_str(), core::ticksToSeconds(to - from));
     }
     if (!quiet)
-        std::printf("Ran %s on %s: the script ended at %.3f s%s.\n", scriptPath.filename().string().c_str(),
+        std::printf("Ran %s on %s: the script ended at %.3f s%s.\n", script->fileName.c_str(),
                     scenarioPath.filename().string().c_str(), core::ticksToSeconds(clock->now()),
                     frames ? (", " + std::to_string(count) + " frames rendered into " + outDir.string()).c_str() : "");
     return ExitOk;
