@@ -45,6 +45,23 @@ Result<std::size_t> chooseCharacter(const Scenario& scenario, const std::filesys
                          + " (its characters: " + (names.empty() ? "none" : names) + ").");
 }
 
+/// The scenario of `file` and the index of its character `name` (or its only one).
+struct ScenarioCharacter {
+    OpenScenario opened;
+    std::size_t index = 0;
+};
+
+Result<ScenarioCharacter> openCharacter(const std::filesystem::path& file, const std::string& name)
+{
+    Result<OpenScenario> opened = openScenarioFile(file);
+    if (!opened)
+        return opened.error();
+    Result<std::size_t> index = chooseCharacter(opened->scenario, file, name);
+    if (!index)
+        return index.error();
+    return ScenarioCharacter{std::move(opened).value(), *index};
+}
+
 } // namespace
 
 bool isScenarioFile(const std::filesystem::path& file)
@@ -61,13 +78,10 @@ Result<scene::CharacterMesh> loadBakeCharacter(const BakeCharacter& source)
                              "The scenario " + source.file.string()
                                  + " brings its character's own tags and segments: take no tags from another scenario "
                                    "and keep skinned meshes split.");
-        Result<OpenScenario> opened = openScenarioFile(source.file);
-        if (!opened)
-            return opened.error();
-        Result<std::size_t> index = chooseCharacter(opened->scenario, source.file, source.character);
-        if (!index)
-            return index.error();
-        Result<scene::Character> body = loadCharacterBody(opened->scenario, *index, opened->assets);
+        Result<ScenarioCharacter> found = openCharacter(source.file, source.character);
+        if (!found)
+            return found.error();
+        Result<scene::Character> body = loadCharacterBody(found->opened.scenario, found->index, found->opened.assets);
         if (!body)
             return body.error();
         mesh = std::move(body->mesh);
@@ -82,13 +96,11 @@ Result<scene::CharacterMesh> loadBakeCharacter(const BakeCharacter& source)
             return loaded.error();
         mesh = std::move(loaded).value();
         if (!source.tagsScenario.empty()) {
-            Result<OpenScenario> opened = openScenarioFile(source.tagsScenario);
-            if (!opened)
-                return opened.error();
-            Result<std::size_t> index = chooseCharacter(opened->scenario, source.tagsScenario, source.character);
-            if (!index)
-                return index.error();
-            if (Result<void> tagged = scene::applySegmentTags(mesh, opened->scenario.characters[*index].segmentTags); !tagged)
+            Result<ScenarioCharacter> found = openCharacter(source.tagsScenario, source.character);
+            if (!found)
+                return found.error();
+            const Character& character = found->opened.scenario.characters[found->index];
+            if (Result<void> tagged = scene::applySegmentTags(mesh, character.segmentTags); !tagged)
                 return tagged.error();
         }
     }
