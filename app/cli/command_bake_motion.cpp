@@ -1,6 +1,6 @@
 // thespis-cli bake-motion: runs core's MotionBakeJob (a character's body schedule evaluated at a
-// fixed frame rate, written as a BVH clip) with a progress bar; Ctrl-C stops it and nothing is
-// written.
+// fixed frame rate, written as a BVH clip or a glTF animation) with a progress bar; Ctrl-C stops
+// it and nothing is written.
 
 #include <chrono>
 #include <cmath>
@@ -45,11 +45,12 @@ CommandSpec bakeMotionSpec()
 {
     CommandSpec spec;
     spec.name = "bake-motion";
-    spec.summary = "Evaluate a character's body animation and write it as a BVH clip.";
+    spec.summary = "Evaluate a character's animation and write it as a BVH clip or a glTF 2.0 animation (.glb).";
     spec.positionals = {"SCENARIO|PACKAGE"};
     spec.options = {
         {"character", "NAME", "the character whose body schedule is baked", true},
-        {"out", "FILE.bvh", "the BVH file to write; an existing file is replaced atomically", true},
+        {"out", "FILE.bvh|FILE.glb", "the file to write; an existing file is replaced atomically", true},
+        {"animation-only", "", ".glb: only the model's nodes and the animation, without meshes and images"},
         {"fps", "N", "frames per second (default 30)"},
         {"start", "SECONDS", "first frame's time (default 0)"},
         {"end", "SECONDS", "last frame's time (default: the scenario's duration)"},
@@ -58,7 +59,12 @@ CommandSpec bakeMotionSpec()
     spec.description =
         "Frames are taken at start, start + 1/fps, ... up to end, so a bake has (end - start) * fps + 1\n"
         "frames. The BVH uses the character's skeleton and joint names and opens in Blender and other\n"
-        "tools. Progress is a bar on a terminal and plain lines otherwise; Ctrl-C stops the bake\n"
+        "tools. A .glb holds the character's glTF model (meshes, skin, materials) with the motion as its\n"
+        "animation, retargeted onto the model's rig as the studio shows it; face layers drive the morph\n"
+        "targets named after their FAPs (\"fap19\" ...). With --animation-only it holds the model's nodes\n"
+        "and the animation alone, which three.js or Blender play onto the model by node name.\n"
+        "Example: thespis-cli bake-motion demo.thespis --character Creon --out creon.glb\n"
+        "Progress is a bar on a terminal and plain lines otherwise; Ctrl-C stops the bake\n"
         "without writing anything.\n"
         "Exit status: 0 written, 2 bad command line, 3 invalid scenario or character,\n"
         "4 the file could not be written, 130 cancelled.";
@@ -80,9 +86,10 @@ int runBakeMotion(const CommandSpec& spec, const ParsedArguments& arguments)
         return exitCode;
     if (!(fps > 0))
         return usageError(spec, "--fps must be a positive number");
-    if (outPath.extension() != ".bvh")
-        return usageError(spec, "--out must name a .bvh file (only BVH output is supported), not '"
-                                    + outPath.string() + "'");
+    if (outPath.extension() != ".bvh" && outPath.extension() != ".glb")
+        return usageError(spec, "--out must name a .bvh or .glb file, not '" + outPath.string() + "'");
+    if (arguments.has("animation-only") && outPath.extension() != ".glb")
+        return usageError(spec, "--animation-only goes with a .glb output");
     if (startOption && *startOption < 0)
         return usageError(spec, "--start must not be negative");
     if (endOption && *endOption < startOption.value_or(0.0))
@@ -100,6 +107,7 @@ int runBakeMotion(const CommandSpec& spec, const ParsedArguments& arguments)
     job.fps = fps;
     job.start = startOption.value_or(0.0);
     job.end = endOption;
+    job.animationOnly = arguments.has("animation-only");
     job.frameDelay = debugFrameDelay();
 
     const auto began = std::chrono::steady_clock::now();
@@ -115,6 +123,8 @@ int runBakeMotion(const CommandSpec& spec, const ParsedArguments& arguments)
     if (!quiet)
         std::printf("Baked %ld frames (%.3f s to %.3f s at %g fps) of '%s' to %s in %.2f s.\n", job.frameCount,
                     job.start, job.lastTime, fps, characterName.c_str(), outPath.string().c_str(), seconds);
+    if (!quiet && !job.morphTargets.empty())
+        std::printf("Face layers drive the morph targets %s.\n", joinNames(job.morphTargets).c_str());
     return ExitOk;
 }
 

@@ -7,7 +7,6 @@
 #include "lighting/probe_projection_job.h"
 #include "render/shaders.h"
 #include "scenario/scenario_character.h"
-#include "scene/foot_soles.h"
 
 namespace thespis::core::render {
 
@@ -104,12 +103,7 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
         performer.runtime = characterRuntime;
         performer.skeletonLayout = characterRuntime->skeleton.frameLayout();
         performer.node = *node;
-        // The body's own soles (from its mesh) stay on the floor where the animation's feet are.
-        anim::RetargetOptions retarget;
-        retarget.targetSoles = scene::footSoles(*shared);
-        if (characterRuntime->skeleton.joints() == shared->skeleton.joints())
-            retarget.sourceSoles = retarget.targetSoles; // the body's own rig: the same feet
-        performer.retarget = anim::FrameRetarget(characterRuntime->skeleton, shared->skeleton, retarget);
+        performer.retarget = scenario::retargetOntoBody(characterRuntime->skeleton, *shared);
         if (performer.retarget.mappedJointCount() < std::min(characterRuntime->skeleton.jointCount(), 4))
             self->m_warnings.push_back(scenario.characters[i].name + ": its body shares only " +
                                        std::to_string(performer.retarget.mappedJointCount()) +

@@ -5,7 +5,9 @@
 
 #include "anim/bvh.h"
 #include "anim/keyframe_clip.h"
+#include "scenario/scenario_character.h"
 #include "scenario/scenario_runtime.h"
+#include "scene/gltf_motion_export.h"
 
 namespace thespis::core::scenario {
 
@@ -36,16 +38,20 @@ Result<void> MotionBakeJob::validate() const
     if (end && !(*end >= start))
         return makeError(ErrorCode::InvalidArgument, "end (" + std::to_string(*end) + " s) is before start ("
                                                          + std::to_string(start) + " s).");
-    if (output.extension() != ".bvh")
+    if (output.extension() != ".bvh" && output.extension() != ".glb")
         return makeError(ErrorCode::InvalidArgument,
-                         "The output must be a .bvh file (only BVH output is supported), not '" + output.string() + "'.");
+                         "The output must be a .bvh or .glb file, not '" + output.string() + "'.");
     const std::filesystem::path folder = output.parent_path().empty() ? "." : output.parent_path();
     if (std::error_code ec; !std::filesystem::is_directory(folder, ec))
         return makeError(ErrorCode::FileNotFound, "Cannot write " + output.string() + ": the folder " + folder.string()
                                                       + " does not exist.");
-    if (!scenario.findCharacter(character))
+    const Character* spec = scenario.findCharacter(character);
+    if (!spec)
         return makeError(ErrorCode::NotFound, "The scenario has no character named '" + character
                                                   + "' (its characters: " + joinNames(scenario) + ").");
+    if (output.extension() == ".glb" && spec->model.empty())
+        return makeError(ErrorCode::InvalidArgument, "Character '" + character + "' is the built-in humanoid, which has no glTF "
+                                                     "model to carry the motion; bake it to a .bvh file.");
     return {};
 }
 
@@ -90,6 +96,13 @@ Result<void> MotionBakeJob::run(JobContext& context)
             std::this_thread::sleep_for(frameDelay);
     }
 
+    if (output.extension() == ".glb") {
+        if (auto written = writeGltf(*body, frames, count); !written)
+            return written;
+        frameCount = count;
+        lastTime = start + double(count - 1) / fps;
+        return {};
+    }
     auto clip = anim::KeyframeClip::create(layout, fps, std::move(frames), character);
     if (!clip)
         return clip.error();
@@ -109,6 +122,40 @@ Result<void> MotionBakeJob::run(JobContext& context)
         return saved;
     frameCount = count;
     lastTime = start + double(count - 1) / fps;
+    return {};
+}
+
+// The frames onto the model's rig, as the renderer poses it, and the face at the same times.
+Result<void> MotionBakeJob::writeGltf(const CharacterRuntime& body, std::span<const float> frames, long count)
+{
+    const auto index = std::size_t(scenario.findCharacter(character) - scenario.characters.data());
+    auto model = loadCharacterBody(scenario, index, assets);
+    if (!model)
+        return model.error();
+    const anim::FrameRetarget retarget = retargetOntoBody(body.skeleton, *model);
+    const std::size_t from = body.skeleton.frameLayout()->floatCount();
+    const std::size_t to = model->skeleton.frameLayout()->floatCount();
+    std::vector<float> onModel(std::size_t(count) * to);
+    for (long i = 0; i < count; ++i)
+        retarget.apply(frames.subspan(std::size_t(i) * from, from), std::span<float>(onModel).subspan(std::size_t(i) * to, to));
+    scene::GltfMotion motion;
+    motion.name = character;
+    motion.fps = fps;
+    motion.bodyFrames = onModel;
+    std::vector<float> face;
+    if (body.face) {
+        motion.faceLayout = body.face->layout();
+        const std::size_t floats = motion.faceLayout->floatCount();
+        face.resize(std::size_t(count) * floats);
+        for (long i = 0; i < count; ++i)
+            body.face->evaluate(start + double(i) / fps, std::span<float>(face).subspan(std::size_t(i) * floats, floats));
+        motion.faceFrames = face;
+    }
+    auto written = scene::writeGltfMotion(output, assets.path(scenario.findCharacter(character)->model), model->skeleton,
+                                          motion, animationOnly);
+    if (!written)
+        return written.error();
+    morphTargets = written->morphTargets;
     return {};
 }
 

@@ -1,17 +1,22 @@
 #pragma once
-// Baking a character's body motion as a job (util/job.h): the body schedule evaluated at a fixed
+// Baking a character's motion as a job (util/job.h): the body schedule evaluated at a fixed
 // frame rate over the scenario (or part of it) and written as a BVH clip on the character's
-// skeleton. `thespis-cli bake-motion` and Python's thespis.scenario.bake_motion run it. Frames are
-// baked into memory first and written atomically at the end, so a stopped or failed bake leaves
-// no file.
+// skeleton, or as a glTF 2.0 animation (.glb, scene/gltf_motion_export.h) on the rig of its model —
+// the frames retargeted onto the body as the renderer poses it, the face layers as morph-target
+// weights where the model has targets named after them. `thespis-cli bake-motion` and Python's
+// thespis.scenario.bake_motion run it. Frames are baked into memory first and written atomically
+// at the end, so a stopped or failed bake leaves no file.
 
 #include <chrono>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "scenario/asset_resolver.h"
 #include "scenario/scenario.h"
+#include "scenario/scenario_runtime.h"
 #include "util/job.h"
 
 namespace thespis::core::scenario {
@@ -23,7 +28,9 @@ struct MotionBakeJob final : Job {
     Scenario scenario;
     Assets assets{"."}; ///< where the scenario's files are
     std::string character;
-    std::filesystem::path output; ///< a .bvh file
+    std::filesystem::path output; ///< a .bvh or .glb file
+    /// .glb: only the model's nodes and the animation, without its meshes and images.
+    bool animationOnly = false;
     double fps = 30;
     double start = 0;
     std::optional<double> end; ///< default: the scenario's duration
@@ -32,13 +39,18 @@ struct MotionBakeJob final : Job {
 
     long frameCount = 0;   ///< after run(): frames written
     double lastTime = 0;   ///< after run(): the last frame's time
+    /// After run() of a .glb: the morph targets that got face weights ("mesh Head: fap19").
+    std::vector<std::string> morphTargets;
 
     std::string title() const override;
-    /// fps > 0; start ≥ 0; end ≥ start; the output ends in .bvh and its folder exists; the
-    /// scenario has the character.
+    /// fps > 0; start ≥ 0; end ≥ start; the output ends in .bvh or .glb and its folder exists;
+    /// the scenario has the character, and a glTF model for a .glb.
     Result<void> validate() const override;
     Result<void> run(JobContext& context) override;
     void discardOutput() override;
+
+private:
+    Result<void> writeGltf(const CharacterRuntime& body, std::span<const float> frames, long count);
 };
 
 } // namespace thespis::core::scenario

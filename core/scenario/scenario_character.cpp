@@ -4,6 +4,7 @@
 #include <iterator>
 
 #include "scene/default_humanoid.h"
+#include "scene/foot_soles.h"
 #include "scene/gltf_character.h"
 
 namespace thespis::core::scenario {
@@ -46,6 +47,15 @@ Result<scene::Character> loadCharacterBody(const Scenario& scenario, std::size_t
     if (auto tagged = scene::applySegmentTags(body->mesh, spec.segmentTags); !tagged)
         return fail("segments", tagged.error());
     return body;
+}
+
+anim::FrameRetarget retargetOntoBody(const anim::Skeleton& animation, const scene::Character& body)
+{
+    anim::RetargetOptions retarget;
+    retarget.targetSoles = scene::footSoles(body);
+    if (animation.joints() == body.skeleton.joints())
+        retarget.sourceSoles = retarget.targetSoles; // the body's own rig: the same feet
+    return anim::FrameRetarget(animation, body.skeleton, retarget);
 }
 
 } // namespace thespis::core::scenario

@@ -508,7 +508,8 @@ void bindScenario(py::module_& m)
     m.def(
         "bake_motion",
         [](const Scenario& scenario, const std::string& character, const std::filesystem::path& out,
-           const py::object& baseDir, double fps, double start, std::optional<double> end, const py::object& progress) {
+           const py::object& baseDir, double fps, double start, std::optional<double> end, const py::object& progress,
+           bool animationOnly) {
             MotionBakeJob job;
             job.scenario = scenario;
             job.assets = assetsArgument(baseDir);
@@ -517,12 +518,14 @@ void bindScenario(py::module_& m)
             job.fps = fps;
             job.start = start;
             job.end = end;
+            job.animationOnly = animationOnly;
             runJob(job, progress);
             return job.frameCount;
         },
         "scenario"_a, "character"_a, "out"_a, py::kw_only(), "base_dir"_a = ".",
-        "fps"_a = 30.0, "start"_a = 0.0, "end"_a = py::none(), "progress"_a = py::none(),
-        "Bakes a character's body animation into a BVH file, as `thespis-cli bake-motion` does (the same job): "
+        "fps"_a = 30.0, "start"_a = 0.0, "end"_a = py::none(), "progress"_a = py::none(), "animation_only"_a = false,
+        "Bakes a character's animation into a BVH file or a glTF 2.0 .glb (its model with the motion; with "
+        "animation_only, its nodes and the motion alone), as `thespis-cli bake-motion` does (the same job): "
         "frames from start to end (default: the scenario's duration) at fps; returns the number of frames. "
         "Releases the GIL; progress(done, total); Ctrl-C stops it and nothing is written.");
     m.def(

@@ -23,6 +23,26 @@ def test_bake_motion_writes_the_frames_it_reports(tmp_path):
     assert clip.frame_count == 21
 
 
+def test_bake_motion_writes_a_gltf_animation(tmp_path):
+    # CesiumMan walking a CMU clip: the .glb read back gives its motion, the animation alone too.
+    scenario = thespis.Scenario()
+    character = thespis.Character("Cesium", "model")
+    character.model = str(SHARED_DATA / "characters" / "CesiumMan" / "CesiumMan.glb")
+    character.clips = [thespis.ClipAsset("walk", str(SHARED_DATA / "mocap" / "cmu" / "02_01.bvh"))]
+    layer = thespis.Layer("body")
+    layer.actions = [thespis.ActionSpec("walk", "walk")]
+    character.layers = [layer]
+    scenario.characters = [character]
+    frames = thespis.bake_motion(scenario, "Cesium", tmp_path / "walk.glb", base_dir=tmp_path, fps=10, end=1.0)
+    assert frames == 11
+    read = thespis.scene.load_gltf_character(tmp_path / "walk.glb")
+    walk = [clip for clip in read.clips if clip.name == "Cesium"][0]
+    assert walk.frame_count == 31  # 1 s, resampled at the import's 30 fps
+    assert not np.allclose(walk.frames[0], walk.frames[-1])
+    thespis.bake_motion(scenario, "Cesium", tmp_path / "only.glb", base_dir=tmp_path, fps=10, end=1.0, animation_only=True)
+    assert (tmp_path / "only.glb").stat().st_size < (tmp_path / "walk.glb").stat().st_size / 4
+
+
 def test_bake_motion_refuses_an_unknown_character(tmp_path):
     scenario = thespis.load_scenario(demo_scenario())
     with pytest.raises(KeyError, match="Nobody"):
