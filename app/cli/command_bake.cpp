@@ -1,8 +1,10 @@
 // thespis-cli bake: the PRT transfer bake of a glTF character or of a scenario's character (its
-// model or the built-in humanoid; paper §6), written as a bake file. Segment tags come from a
-// tags file or from a scenario's character. The bake runs on worker
-// threads while this thread draws the progress bar and watches for Ctrl-C, which cancels the
-// bake: nothing is written then (the bake file is written atomically at the very end).
+// model or the built-in humanoid; paper §6) from a .thespis file or a .thespkg package, written as
+// a bake file. Segment tags come from a tags file or from a scenario's character
+// (core/scenario/bake_character.h). The bake runs on worker threads — or, with --scheduler, on a
+// Dask cluster through thespis.farm in the embedded interpreter — while this thread draws the
+// progress bar and watches for Ctrl-C, which cancels the bake: nothing is written then (the bake
+// file is written atomically at the very end). Both give the same file, byte for byte.
 
 #include <algorithm>
 #include <chrono>
@@ -17,91 +19,16 @@
 #include "lighting/transfer_bake.h"
 #include "lighting/transfer_bake_job.h"
 #include "job_progress.h"
-#include "scenario/scenario_character.h"
-#include "scene/gltf_mesh.h"
+#include "scenario/bake_character.h"
+
+#ifdef THESPIS_WITH_PYTHON
+#include "farm_bake_job.h"
+#endif
 
 namespace thespis::cli {
 namespace {
 
 namespace lighting = core::lighting;
-namespace scene = core::scene;
-
-/// The scenario's character named by --character, or its only one; prints the problem and
-/// returns nothing when there is no such character.
-const core::scenario::Character* chooseCharacter(const CommandSpec& spec, const ParsedArguments& arguments,
-                                                 const core::scenario::Scenario& document)
-{
-    const auto characterName = arguments.value("character");
-    const core::scenario::Character* character = nullptr;
-    if (characterName) {
-        character = document.findCharacter(*characterName);
-    } else if (document.characters.size() == 1) {
-        character = &document.characters.front();
-    }
-    if (!character) {
-        std::vector<std::string> names;
-        for (const auto& c : document.characters)
-            names.push_back(c.name);
-        printError(spec.name, (characterName ? "the scenario has no character named '" + *characterName + "'"
-                                             : std::string("the scenario has several characters; name one with --character"))
-                                  + " (its characters: " + joinNames(names) + ").");
-    }
-    return character;
-}
-
-/// Tags from --tags FILE, or from the scenario character's segment tags.
-std::optional<std::vector<scene::SegmentTag>> loadTags(const CommandSpec& spec, const ParsedArguments& arguments,
-                                                       int& exitCode)
-{
-    if (const auto tagsFile = arguments.value("tags")) {
-        auto tags = scene::readSegmentTagsFile(*tagsFile);
-        if (!tags) {
-            printError(spec.name, tags.error());
-            exitCode = ExitInvalidInput;
-            return std::nullopt;
-        }
-        return std::move(tags).value();
-    }
-    const auto scenarioFile = arguments.value("scenario");
-    if (!scenarioFile)
-        return std::vector<scene::SegmentTag>{};
-    const auto document = loadScenarioReporting(spec.name, *scenarioFile);
-    const core::scenario::Character* character = document ? chooseCharacter(spec, arguments, *document) : nullptr;
-    if (!character) {
-        exitCode = ExitInvalidInput;
-        return std::nullopt;
-    }
-    return character->segmentTags;
-}
-
-/// The mesh to bake, or nothing (the problem printed): a glTF file's mesh, or the body of a
-/// scenario's character (its glTF model or the built-in humanoid, with the scenario's tags) —
-/// the very mesh `thespis-cli render` and the studio draw, so the bake fits them.
-std::optional<scene::CharacterMesh> loadCharacterMesh(const CommandSpec& spec, const ParsedArguments& arguments,
-                                                      const std::filesystem::path& path)
-{
-    if (path.extension() != ".thespis") {
-        scene::GltfMeshOptions meshOptions;
-        meshOptions.splitSkinnedByJoint = !arguments.has("no-split");
-        auto mesh = scene::loadGltfMesh(path, meshOptions);
-        if (!mesh) {
-            printError(spec.name, mesh.error());
-            return std::nullopt;
-        }
-        return std::move(mesh).value();
-    }
-    const auto document = loadScenarioReporting(spec.name, path);
-    const core::scenario::Character* character = document ? chooseCharacter(spec, arguments, *document) : nullptr;
-    if (!character)
-        return std::nullopt;
-    auto body = core::scenario::loadCharacterBody(*document, std::size_t(character - document->characters.data()),
-                                                  core::scenario::Assets::besideFile(path));
-    if (!body) {
-        printError(spec.name, body.error());
-        return std::nullopt;
-    }
-    return std::move(body->mesh);
-}
 
 } // namespace
 
@@ -126,14 +53,19 @@ CommandSpec bakeSpec()
         {"probe", "FILE", "also light the bake with this HDR probe (.exr or .hdr) and print the radiance range"},
         {"layout", "NAME", "the probe's layout: angular, latlong, mirrorball or cross (default latlong)"},
         {"no-split", "", "keep a skinned mesh as one segment instead of one per dominant joint"},
+        {"scheduler", "tcp://HOST:PORT", "bake on this running Dask cluster (thespis.farm); its workers load CHARACTER"},
         {"quiet", "", "no progress and no summary"},
     };
     spec.description =
-        "CHARACTER is a .gltf/.glb file or a .thespis scenario: then its character's body (its model, or the\n"
-        "built-in humanoid) is baked with the scenario's tags, ready for 'thespis-cli render --bake'.\n"
+        "CHARACTER is a .gltf/.glb file, a .thespis scenario or a .thespkg package: then its character's body\n"
+        "(its model, or the built-in humanoid) is baked with the scenario's tags, ready for 'thespis-cli render'.\n"
         "Segments are the glTF's mesh nodes, and a skinned mesh is split by dominant joint. With DSM a\n"
         "segment tagged receiver is transparent to rays and an occluder is not baked (paper §6.1.3).\n"
         "The summary gives vertices, rays, seconds and Mrays/s. Ctrl-C stops the bake without writing.\n"
+        "With --scheduler the bake is split into vertex ranges that the cluster's workers bake (each loads\n"
+        "CHARACTER, and the tags file, from the same path: use a shared folder; they need the thespis Python\n"
+        "package); a worker that dies has its ranges baked by another. The file is the local bake's, byte\n"
+        "for byte. --threads is then the bake threads of each task (default 1: Dask runs a task per thread).\n"
         "Exit status: 0 written, 2 bad command line, 3 unreadable character, tags or probe,\n"
         "4 the bake or the file failed, 130 cancelled.";
     return spec;
@@ -144,6 +76,11 @@ int runBake(const CommandSpec& spec, const ParsedArguments& arguments)
     const std::filesystem::path characterPath = arguments.positionals[0];
     const std::filesystem::path outPath = *arguments.value("out");
     const bool quiet = arguments.has("quiet");
+    const std::optional<std::string> scheduler = arguments.value("scheduler");
+#ifndef THESPIS_WITH_PYTHON
+    if (scheduler)
+        return usageError(spec, "--scheduler runs thespis.farm in Python, and this thespis-cli was built without it");
+#endif
 
     int exitCode = ExitOk;
     lighting::BakeSettings settings;
@@ -178,17 +115,15 @@ int runBake(const CommandSpec& spec, const ParsedArguments& arguments)
         return ExitInvalidInput;
     }
 
-    const bool fromScenario = characterPath.extension() == ".thespis";
+    const bool fromScenario = core::scenario::isScenarioFile(characterPath);
     if (fromScenario && (arguments.has("scenario") || arguments.has("no-split")))
         return usageError(spec, "a scenario CHARACTER brings its own tags and segments: leave out --scenario and --no-split");
-    auto mesh = loadCharacterMesh(spec, arguments, characterPath);
-    if (!mesh)
-        return ExitInvalidInput;
-    const auto tags = loadTags(spec, arguments, exitCode);
-    if (!tags)
-        return exitCode;
-    if (auto applied = scene::applySegmentTags(*mesh, *tags); !applied) {
-        printError(spec.name, applied.error());
+    const core::scenario::BakeCharacter source{characterPath, arguments.value("character").value_or(""),
+                                               arguments.value("tags").value_or(""),
+                                               arguments.value("scenario").value_or(""), !arguments.has("no-split")};
+    auto mesh = core::scenario::loadBakeCharacter(source);
+    if (!mesh) {
+        printError(spec.name, mesh.error());
         return ExitInvalidInput;
     }
     std::optional<lighting::ShRgb> light;
@@ -201,34 +136,50 @@ int runBake(const CommandSpec& spec, const ParsedArguments& arguments)
         light = *projected;
     }
 
-    lighting::TransferBakeJob job;
-    job.mesh = *mesh;
-    job.settings = settings;
-    job.output = outPath;
-    const auto baked = runJobWithProgress(spec.name, job, {"", "vertices", long(mesh->vertexCount())}, quiet,
+    // The local bake, or the same bake on a Dask cluster: one job or the other, the same file.
+    lighting::TransferBakeJob localJob;
+    localJob.mesh = *mesh;
+    localJob.settings = settings;
+    localJob.output = outPath;
+    core::Job* job = &localJob;
+    const std::optional<lighting::TransferBake>* bake = &localJob.bake;
+    const lighting::BakeStatistics* statistics = &localJob.statistics;
+#ifdef THESPIS_WITH_PYTHON
+    script::FarmBakeJob farmJob;
+    if (scheduler) {
+        farmJob.scheduler = *scheduler;
+        farmJob.character = source;
+        farmJob.settings = settings;
+        farmJob.output = outPath;
+        job = &farmJob;
+        bake = &farmJob.bake;
+        statistics = &farmJob.statistics;
+    }
+#endif
+    const auto baked = runJobWithProgress(spec.name, *job, {"", "vertices", long(mesh->vertexCount())}, quiet,
                                           outPath.string() + " was not written");
     if (!baked) {
         if (baked.error().code == core::ErrorCode::Cancelled)
             return ExitCancelled;
         printError(spec.name, baked.error());
-        return ExitFailure;
+        return baked.error().code == core::ErrorCode::FileNotFound ? ExitInvalidInput : ExitFailure;
     }
-    const lighting::TransferBake* bake = &*job.bake;
-    const lighting::BakeStatistics& statistics = job.statistics;
     if (quiet)
         return ExitOk;
 
     std::size_t segmentsBaked = 0;
-    for (const auto& segment : bake->segments)
+    for (const auto& segment : (*bake)->segments)
         segmentsBaked += segment.baked ? 1 : 0;
     std::printf("Baked %s transfer of %s: %zu vertices, %zu triangles, %zu of %zu segments, order %d (%d coefficients).\n",
                 lighting::transferKindName(settings.transfer), characterPath.filename().string().c_str(),
-                mesh->vertexCount(), mesh->triangleCount(), segmentsBaked, bake->segments.size(), settings.order,
+                mesh->vertexCount(), mesh->triangleCount(), segmentsBaked, (*bake)->segments.size(), settings.order,
                 settings.order * settings.order);
-    const double mrays = statistics.seconds > 0 ? double(statistics.rays) / statistics.seconds / 1e6 : 0.0;
-    std::printf("%llu rays (%d per vertex, %s) in %.2f s: %.1f Mrays/s. Written to %s.\n",
-                static_cast<unsigned long long>(statistics.rays), settings.raysPerVertex,
-                lighting::occlusionBackendName(settings.backend), statistics.seconds, mrays, outPath.string().c_str());
+    const double mrays = statistics->seconds > 0 ? double(statistics->rays) / statistics->seconds / 1e6 : 0.0;
+    std::printf("%llu rays (%d per vertex, %s%s) in %.2f s: %.1f Mrays/s. Written to %s.\n",
+                static_cast<unsigned long long>(statistics->rays), settings.raysPerVertex,
+                lighting::occlusionBackendName(settings.backend),
+                scheduler ? (", on the Dask cluster at " + *scheduler).c_str() : "", statistics->seconds, mrays,
+                outPath.string().c_str());
     if (light) {
         // The luminance of every baked vertex in the bind pose under the probe: a quick check
         // that the bake and the light fit (no negative or absurd values).
@@ -236,9 +187,9 @@ int runBake(const CommandSpec& spec, const ParsedArguments& arguments)
         std::size_t count = 0;
         for (const auto& segment : mesh->segments)
             for (std::uint32_t v = segment.firstVertex; v < segment.firstVertex + segment.vertexCount; ++v) {
-                if (bake->vertexTransfer(v).empty())
+                if ((*bake)->vertexTransfer(v).empty())
                     continue;
-                const auto rgb = lighting::shadeVertex(*bake, *mesh, v, *light, segment.bindRotation);
+                const auto rgb = lighting::shadeVertex(**bake, *mesh, v, *light, segment.bindRotation);
                 const double luminance = 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
                 least = std::min(least, luminance);
                 most = std::max(most, luminance);

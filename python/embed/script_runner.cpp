@@ -3,52 +3,13 @@
 
 #include "script_runner.h"
 
-#include <filesystem>
-
-#include "bind_common.h"
-
-PYBIND11_EMBEDDED_MODULE(_thespis, m)
-{
-    thespis::python::defineModule(m);
-}
+#include "interpreter.h"
 
 namespace thespis::script {
 
 namespace py = pybind11;
 
 namespace {
-
-/// Starts Python once for the whole process, then lets go of the GIL so that any thread can
-/// take it. Python's own signal handlers are not installed: the program keeps its Ctrl-C.
-void ensurePython()
-{
-    static std::once_flag started;
-    std::call_once(started, [] {
-        py::initialize_interpreter(false);
-        {
-            py::module_ sys = py::module_::import("sys");
-            const std::filesystem::path buildTree = THESPIS_PYTHON_BUILD_DIR;
-            if (std::filesystem::exists(buildTree / "thespis" / "__init__.py"))
-                sys.attr("path").attr("insert")(0, buildTree.string());
-            sys.attr("argv") = py::make_tuple("thespis");
-        }
-        py::detail::get_internals(); // made here, with the GIL, not first in a worker thread
-        PyEval_SaveThread(); // held by no one until a script runs; never taken back (Python lives on)
-    });
-}
-
-/// Holds the GIL in any thread, with Python's own per-thread state (threads the program made
-/// get one the first time).
-class GilHolder {
-public:
-    GilHolder() : m_state(PyGILState_Ensure()) {}
-    ~GilHolder() { PyGILState_Release(m_state); }
-    GilHolder(const GilHolder&) = delete;
-    GilHolder& operator=(const GilHolder&) = delete;
-
-private:
-    PyGILState_STATE m_state;
-};
 
 /// A file-like object whose write() hands text to the sink.
 py::object writer(const OutputSink& sink, Stream stream)
