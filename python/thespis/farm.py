@@ -40,7 +40,7 @@ __all__ = ["Character", "bake", "split_tasks"]
 TASKS_PER_THREAD = 4
 # Below this a task's fixed cost dominates its rays.
 MIN_TASK_VERTICES = 64
-# How often the merging loop wakes to look at stop() and the time limit (seconds).
+# How often the merging loop wakes, when no task ends, to look at stop() and the time limit (seconds).
 POLL_SECONDS = 0.1
 
 
@@ -152,21 +152,23 @@ def bake(character: Union[str, os.PathLike, Character], *, scheduler, out=None, 
             futures[future] = ranges
             return future
 
-        pending = distributed.as_completed([submit(task) for task in split_tasks(plan, threads, tasks_per_thread)],
-                                           loop=client.loop, raise_errors=False)
+        for task in split_tasks(plan, threads, tasks_per_thread):
+            submit(task)
         lost = {}  # first vertex of a task → times it came back KilledWorker
         done = 0
         if progress:
             progress(0, total)
-        while not pending.is_empty():
+        while futures:
             if stop is not None and stop():
                 raise Cancelled("The farm bake was cancelled.")
             if deadline is not None and time.monotonic() > deadline:
                 raise TimeoutError(f"the farm bake of {character.file} did not finish within {timeout} s "
                                    f"({done} of {total} vertices baked)")
-            finished = pending.next_batch(block=False)
-            if not finished:
-                time.sleep(POLL_SECONDS)
+            try:
+                # Wakes as soon as a task ends, else after POLL_SECONDS to look at stop().
+                with client.as_current():  # wait() asks for the default client; this one is not
+                    finished, _ = distributed.wait(list(futures), timeout=POLL_SECONDS, return_when="FIRST_COMPLETED")
+            except TimeoutError:
                 continue
             for future in finished:
                 ranges = futures.pop(future)
@@ -175,7 +177,7 @@ def bake(character: Union[str, os.PathLike, Character], *, scheduler, out=None, 
                     key = ranges[0][0]
                     if isinstance(error, distributed.KilledWorker) and lost.get(key, 0) < resubmits:
                         lost[key] = lost.get(key, 0) + 1
-                        pending.add(submit(ranges))
+                        submit(ranges)
                         continue
                     raise error
                 geometry, floats = future.result()
