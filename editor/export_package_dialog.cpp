@@ -3,6 +3,7 @@
 #include "editor/export_package_dialog.h"
 
 #include <QBoxLayout>
+#include <QCheckBox>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFileDialog>
@@ -81,6 +82,11 @@ ExportPackageDialog::ExportPackageDialog(const Document& document, QWidget* pare
     outputRow->addWidget(m_output, 1);
     outputRow->addWidget(choose);
     layout->addLayout(outputRow);
+    m_bake = new QCheckBox(tr("Bake the lighting first where a character has no bake or an out-of-date one "
+                              "(the new bakes go into the package only)"),
+                           this);
+    m_bake->setObjectName(QStringLiteral("packageBake"));
+    layout->addWidget(m_bake);
 
     m_progress = new QProgressBar(this);
     m_progress->setObjectName(QStringLiteral("packageProgress"));
@@ -180,6 +186,7 @@ bool ExportPackageDialog::exportPackage()
     job->assets = m_document.assets();
     job->scenarioEntry = m_plan->scenarioEntry;
     job->output = toFsPath(QDir::fromNativeSeparators(m_output->text().trimmed()));
+    job->bakeLighting = m_bake->isChecked();
     if (auto started = m_job->start(std::move(job)); !started) {
         m_message->setText(fromUtf8(started.error().message));
         m_message->setStyleSheet(kErrorStyle);
@@ -224,8 +231,11 @@ void ExportPackageDialog::onFinished(const core::Result<void>& result)
     m_progress->setValue(1);
     m_progress->setFormat(tr("Exported"));
     const QString path = fromFsPath(job->output);
-    m_message->setText(tr("Wrote %1: %2 (%3 before compression).")
-                           .arg(QDir::toNativeSeparators(path), sizeText(qint64(job->packageBytes)), sizeText(qint64(job->contentBytes))));
+    QString text = tr("Wrote %1: %2 (%3 before compression).")
+                       .arg(QDir::toNativeSeparators(path), sizeText(qint64(job->packageBytes)), sizeText(qint64(job->contentBytes)));
+    for (const std::string& baked : job->baked)
+        text += QLatin1Char('\n') + tr("Baked the lighting of %1.").arg(fromUtf8(baked));
+    m_message->setText(text);
     m_message->setStyleSheet(QString());
     emit exported(path);
 }
@@ -236,6 +246,7 @@ void ExportPackageDialog::updateEnabled()
     m_export->setEnabled(m_plan && !running && !m_output->text().trimmed().isEmpty());
     m_cancel->setEnabled(running);
     m_output->setEnabled(!running);
+    m_bake->setEnabled(!running);
 }
 
 } // namespace thespis::editor

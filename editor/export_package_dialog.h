@@ -1,7 +1,8 @@
 #pragma once
 // ExportPackageDialog: File ▸ Export Package… What goes into the package (every file the
 // scenario names, its size and the field that names it, and the total), where it is written,
-// then the export itself as a job off the GUI thread (ExportPackageJob in a JobRunner) with a
+// whether to bake the lighting of characters whose bake is missing or out of date first (into
+// the package only), then the export itself as a job off the GUI thread (ExportPackageJob in a JobRunner) with a
 // progress bar and Cancel. A file the scenario names that is missing is said before anything is
 // written, naming the field; Export waits until it is fixed. Closing the dialog cancels the job
 // and the old package, if any, stays as it was.
@@ -10,6 +11,7 @@
 
 #include "scenario/package_contents.h"
 
+class QCheckBox;
 class QDialogButtonBox;
 class QLabel;
 class QLineEdit;
@@ -41,6 +43,7 @@ public:
     QLineEdit* outputEdit() const { return m_output; }
     QProgressBar* progressBar() const { return m_progress; }
     QPushButton* exportButton() const { return m_export; }
+    QCheckBox* bakeCheck() const { return m_bake; }
 
 signals:
     /// The package was written (its path).
@@ -59,6 +62,7 @@ private:
     QTableWidget* m_contents = nullptr;
     QLabel* m_summary = nullptr;
     QLineEdit* m_output = nullptr;
+    QCheckBox* m_bake = nullptr;
     QProgressBar* m_progress = nullptr;
     QLabel* m_message = nullptr;
     QPushButton* m_export = nullptr;

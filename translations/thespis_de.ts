@@ -1384,6 +1384,14 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>Wrote %1: %2 (%3 before compression).</source>
         <translation>%1 geschrieben: %2 (%3 vor der Kompression).</translation>
     </message>
+    <message>
+        <source>Bake the lighting first where a character has no bake or an out-of-date one (the new bakes go into the package only)</source>
+        <translation>Zuerst die Beleuchtung backen, wo eine Figur keine oder eine veraltete Bake hat (die neuen Bakes kommen nur ins Paket)</translation>
+    </message>
+    <message>
+        <source>Baked the lighting of %1.</source>
+        <translation>Beleuchtung von %1 gebacken.</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::GesticonModel</name>

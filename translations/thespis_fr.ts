@@ -1384,6 +1384,14 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>Wrote %1: %2 (%3 before compression).</source>
         <translation>%1 écrit : %2 (%3 avant compression).</translation>
     </message>
+    <message>
+        <source>Bake the lighting first where a character has no bake or an out-of-date one (the new bakes go into the package only)</source>
+        <translation>Précalculer d’abord l’éclairage des personnages sans précalcul ou avec un précalcul périmé (les nouveaux précalculs ne vont que dans le paquet)</translation>
+    </message>
+    <message>
+        <source>Baked the lighting of %1.</source>
+        <translation>Éclairage de %1 précalculé.</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::GesticonModel</name>

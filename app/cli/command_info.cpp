@@ -78,8 +78,8 @@ CommandSpec infoSpec()
     CommandSpec spec;
     spec.name = "info";
     spec.summary = "List a scenario's characters, clips, layers, actions and masks.";
-    spec.positionals = {"SCENARIO"};
-    spec.description = "Reads only the scenario file (clips are not loaded).\n"
+    spec.positionals = {"SCENARIO|PACKAGE"};
+    spec.description = "Reads only the scenario (clips are not loaded); a package is checked first.\n"
                        "Exit status: 0 read, 3 unreadable or malformed, 2 bad command line.";
     return spec;
 }
@@ -87,9 +87,10 @@ CommandSpec infoSpec()
 int runInfo(const CommandSpec& spec, const ParsedArguments& arguments)
 {
     const std::filesystem::path path = arguments.positionals[0];
-    const auto document = loadScenarioReporting(spec.name, path);
-    if (!document)
+    const auto opened = openScenarioReporting(spec.name, path);
+    if (!opened)
         return ExitInvalidInput;
+    const scenario::Scenario* document = &opened->scenario;
 
     std::printf("Scenario '%s' (%s)\n", document->name.c_str(), path.string().c_str());
     if (document->duration > 0)
@@ -101,6 +102,8 @@ int runInfo(const CommandSpec& spec, const ParsedArguments& arguments)
                     character.model.empty() ? "built-in humanoid" : ("model " + character.model).c_str(),
                     character.skeleton.c_str(), double(character.position.x), double(character.position.y),
                     double(character.position.z), character.heading);
+        if (!character.bake.empty())
+            std::printf("  lighting bake: %s\n", character.bake.c_str());
         for (const scenario::ClipAsset& clip : character.clips)
             std::printf("  clip '%s': %s\n", clip.name.c_str(), clipSummary(clip).c_str());
         for (const scenario::Layer& layer : character.layers) {

@@ -32,13 +32,16 @@ CommandSpec exportSpec()
     spec.options = {
         {"out", "FILE.thespkg", "the package to write; replaced only when complete", true},
         {"list", "", "list what goes in, with sizes"},
+        {"bake", "", "first bake the lighting of every character whose bake is missing or no longer fits (into the package only)"},
+        {"rays", "N", "--bake: rays per vertex for a character that had no bake (default 1024; a stale bake keeps its own)"},
         {"quiet", "", "no progress and no summary"},
     };
     spec.description =
         "The package is a zip with manifest.json first (the writer, and the size and SHA-256 of every\n"
         "entry), the scenario, and its models, bakes, clips, idle motion databases, probe, posture\n"
         "bases and occluder models. Files inside the scenario's folder keep their names; others go\n"
-        "to assets/. Open it with `import`, check it with `validate`.\n"
+        "to assets/; so do the sounds and dialogue files a script names in quotes (its text then names\n"
+        "them as the package does). Open it with `import`, check it with `validate`.\n"
         "Example: thespis-cli export resources/demo.thespis --out demo.thespkg\n"
         "Exit status: 0 written, 2 bad command line, 3 a file the scenario names is missing or\n"
         "unreadable, 4 the package could not be written, 130 cancelled.";
@@ -57,15 +60,27 @@ int runExport(const CommandSpec& spec, const ParsedArguments& arguments)
     job.assets = core::scenario::Assets::besideFile(path);
     job.scenarioEntry = path.filename().string();
     job.output = *arguments.value("out");
+    job.bakeLighting = arguments.has("bake");
+    int exitCode = ExitOk;
+    if (const auto rays = integerOption(spec, arguments, "rays", 1, 1 << 20, exitCode))
+        job.bakeSettings.raysPerVertex = int(*rays);
+    if (exitCode != ExitOk)
+        return exitCode;
+    if (arguments.has("rays") && !job.bakeLighting)
+        return usageError(spec, "--rays goes with --bake");
     if (auto valid = job.validate(); !valid)
         return usageError(spec, valid.error().message);
-    const auto exported = runJobWithProgress(spec.name, job, {core::scenario::ExportPackageJob::WriteStage, "bytes"}, quiet,
-                                             job.output.string() + " was not written");
+    const JobBar bar = job.bakeLighting ? JobBar{core::scenario::ExportPackageJob::BakeStage, "vertices"}
+                                        : JobBar{core::scenario::ExportPackageJob::WriteStage, "bytes"};
+    const auto exported = runJobWithProgress(spec.name, job, bar, quiet, job.output.string() + " was not written");
     if (!exported)
         return reportJobFailure(spec.name, exported.error());
     if (arguments.has("list"))
         for (const core::scenario::PackageEntry& entry : job.manifest.entries)
             std::printf("  %10llu  %s\n", static_cast<unsigned long long>(entry.size), entry.name.c_str());
+    if (!quiet)
+        for (const std::string& baked : job.baked)
+            std::printf("Baked the lighting of %s.\n", baked.c_str());
     if (!quiet)
         std::printf("Wrote %s: the scenario and %zu files, %s (%s before compression).\n", job.output.string().c_str(),
                     job.plan.files.size(), megabytes(job.packageBytes).c_str(), megabytes(job.contentBytes).c_str());

@@ -150,7 +150,7 @@ Result<TransferBake> parseBakeBytes(std::string_view data, const std::filesystem
     return bake;
 }
 
-Result<void> writeBakeFile(const std::filesystem::path& path, const TransferBake& bake)
+Result<std::string> bakeFileBytes(const TransferBake& bake, const std::filesystem::path& path)
 {
     const std::uint64_t perVertex = std::uint64_t(bake.order) * bake.order;
     std::uint64_t expectedFloats = 0;
@@ -191,7 +191,15 @@ Result<void> writeBakeFile(const std::filesystem::path& path, const TransferBake
     for (float value : bake.transfer)
         out.f32(value);
     out.u32(crc32(out.data()));
-    return writeFileAtomically(path, out.data());
+    return std::move(out.data());
+}
+
+Result<void> writeBakeFile(const std::filesystem::path& path, const TransferBake& bake)
+{
+    auto bytes = bakeFileBytes(bake, path);
+    if (!bytes)
+        return bytes.error();
+    return writeFileAtomically(path, *bytes);
 }
 
 Result<TransferBake> readBakeFile(const std::filesystem::path& path)

@@ -146,6 +146,8 @@ Result<void> placeTransferRange(TransferBake& plan, const VertexRange& range, st
 /// file). Reading refuses wrong magic (NotOurFormat), newer versions (NewerVersion), truncation,
 /// inconsistent counts and checksum mismatch (CorruptData), naming the field.
 Result<void> writeBakeFile(const std::filesystem::path& path, const TransferBake& bake);
+/// The bake file's bytes, for a file written elsewhere (a package); `path` names it in messages.
+Result<std::string> bakeFileBytes(const TransferBake& bake, const std::filesystem::path& path);
 Result<TransferBake> readBakeFile(const std::filesystem::path& path);
 /// The same reader over bytes already in memory (Python, fuzzing); `source` names them in messages.
 Result<TransferBake> parseBakeBytes(std::string_view bytes, const std::filesystem::path& source);

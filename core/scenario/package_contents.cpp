@@ -2,6 +2,8 @@
 
 #include "scenario/package_contents.h"
 
+#include <algorithm>
+#include <cctype>
 #include <map>
 #include <set>
 
@@ -101,6 +103,33 @@ private:
         return {};
     }
 
+public:
+    /// Files a script's string literals name ('speech/hello.wav'), added and renamed in its text.
+    Result<void> addScriptFiles(ScriptSpec& script)
+    {
+        std::string& text = script.source;
+        for (std::size_t at = 0; at < text.size(); ++at) {
+            const char quote = text[at];
+            if (quote != '\'' && quote != '"')
+                continue;
+            const std::size_t end = text.find(quote, at + 1);
+            if (end == std::string::npos)
+                continue;
+            std::string literal = text.substr(at + 1, end - at - 1);
+            std::error_code error;
+            // Every quote is tried as an opening one, so an apostrophe in a comment cannot hide a name.
+            if (literal.empty() || literal.find('\n') != std::string::npos || !isScriptMediaFile(literal) ||
+                !fs::is_regular_file(m_assets.path(literal), error))
+                continue;
+            if (auto added = add(literal, "scripts[" + script.name + "]"); !added)
+                return added.error();
+            text.replace(at + 1, end - at - 1, literal);
+            at += literal.size() + 1;
+        }
+        return {};
+    }
+
+private:
     const Assets& m_assets;
     PackagePlan& m_plan;
     std::set<std::string> m_taken;
@@ -108,6 +137,30 @@ private:
 };
 
 } // namespace
+
+bool isScriptMediaFile(const std::filesystem::path& file)
+{
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    for (const char* known : {".wav", ".ogg", ".flac", ".aiml", ".jsgf", ".gram", ".csv"})
+        if (extension == known)
+            return true;
+    return false;
+}
+
+std::string addMadeFile(PackagePlan& plan, const std::string& preferred, const std::string& usedBy, std::string content)
+{
+    const auto taken = [&](const std::string& name) {
+        return name == plan.scenarioEntry || name == kManifestName ||
+               std::any_of(plan.files.begin(), plan.files.end(), [&](const PackageFile& f) { return f.name == name; });
+    };
+    const fs::path path(preferred);
+    std::string entry = preferred;
+    for (int n = 2; taken(entry); ++n)
+        entry = (path.parent_path() / (path.stem().string() + "-" + std::to_string(n) + path.extension().string())).generic_string();
+    plan.files.push_back({entry, {}, usedBy, std::move(content)});
+    return entry;
+}
 
 Result<PackagePlan> planPackage(const Scenario& scenario, const Assets& assets, const std::string& scenarioEntry)
 {
@@ -139,6 +192,9 @@ Result<PackagePlan> planPackage(const Scenario& scenario, const Assets& assets, 
         return added.error();
     for (PhantomOccluder& occluder : s.ar.occluders)
         if (auto added = add(occluder.model, "ar.occluders[" + occluder.name + "].model"); !added)
+            return added.error();
+    for (ScriptSpec& script : s.scripts)
+        if (auto added = planner.addScriptFiles(script); !added)
             return added.error();
     return plan;
 }

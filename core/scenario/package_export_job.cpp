@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "scenario/package_bakes.h"
 #include "scenario/package_zip.h"
 #include "scenario/scenario_io.h"
 #include "util/file_io.h"
@@ -38,10 +39,27 @@ Result<void> ExportPackageJob::validate() const
 
 Result<void> ExportPackageJob::run(JobContext& context)
 {
-    auto planned = planPackage(scenario, assets, scenarioEntry);
+    baked.clear();
+    std::vector<PackageBake> bakes;
+    if (bakeLighting) {
+        auto made = makePackageBakes(scenario, assets, bakeSettings, context, BakeStage);
+        if (!made)
+            return made.error().code == ErrorCode::Cancelled ? cancelledError(title()) : made.error();
+        bakes = std::move(made).value();
+    }
+    Scenario packed = scenario;
+    for (const PackageBake& bake : bakes)
+        packed.characters[bake.character].bake.clear(); // the old one stays out
+    auto planned = planPackage(packed, assets, scenarioEntry);
     if (!planned)
         return planned.error();
     plan = std::move(planned).value();
+    for (PackageBake& bake : bakes) {
+        Character& character = plan.scenario.characters[bake.character];
+        character.bake = addMadeFile(plan, "bakes/" + character.name + ".prt", "characters[" + character.name + "].bake",
+                                     std::move(bake.bytes));
+        baked.push_back(character.name + ": " + bake.reason);
+    }
 
     // Every entry's bytes are read once, hashed and handed to libzip as they are: what the
     // manifest says is what the package holds, even if a file changes meanwhile.
@@ -60,7 +78,7 @@ Result<void> ExportPackageJob::run(JobContext& context)
     for (const PackageFile& file : plan.files) {
         if (context.stopRequested())
             return cancelledError(title());
-        auto bytes = readTextFile(file.source);
+        auto bytes = file.source.empty() ? Result<std::string>(file.content) : readTextFile(file.source);
         if (!bytes)
             return makeError(bytes.error().code, file.usedBy + ": " + bytes.error().message, bytes.error().detail);
         manifest.entries.push_back({file.name, bytes->size(), sha256Hex(*bytes)});

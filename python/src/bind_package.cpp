@@ -20,6 +20,7 @@ struct ExportResult {
     std::vector<PackageEntry> entries;
     std::uint64_t packageBytes = 0;
     std::uint64_t contentBytes = 0;
+    std::vector<std::string> baked;
 };
 
 } // namespace
@@ -82,12 +83,15 @@ void bindPackages(py::module_& m)
     py::class_<ExportResult>(m, "PackageExport", "What export_package wrote.")
         .def_readonly("entries", &ExportResult::entries, "The manifest's entries.")
         .def_readonly("package_bytes", &ExportResult::packageBytes, "The package's size on disk.")
-        .def_readonly("content_bytes", &ExportResult::contentBytes, "The entries' sizes, uncompressed.");
+        .def_readonly("content_bytes", &ExportResult::contentBytes, "The entries' sizes, uncompressed.")
+        .def_readonly("baked", &ExportResult::baked, "The bakes made first (bake=True): \"Creon: it had none\" …");
     m.def(
         "export_package",
         [](const py::object& scenario, const std::filesystem::path& out, const py::object& baseDir,
-           const std::string& scenarioEntry, const py::object& progress) {
+           const std::string& scenarioEntry, const py::object& progress, bool bake, int rays) {
             ExportPackageJob job;
+            job.bakeLighting = bake;
+            job.bakeSettings.raysPerVertex = rays;
             if (py::isinstance<Scenario>(scenario)) {
                 job.scenario = scenario.cast<Scenario>();
                 job.assets = assetsArgument(baseDir.is_none() ? py::str(".") : baseDir);
@@ -100,13 +104,15 @@ void bindPackages(py::module_& m)
             }
             job.output = out;
             runJob(job, progress);
-            return ExportResult{job.manifest.entries, job.packageBytes, job.contentBytes};
+            return ExportResult{job.manifest.entries, job.packageBytes, job.contentBytes, job.baked};
         },
         "scenario"_a, "out"_a, py::kw_only(), "base_dir"_a = py::none(), "scenario_entry"_a = "scenario.thespis",
-        "progress"_a = py::none(),
+        "progress"_a = py::none(), "bake"_a = false, "rays"_a = 1024,
         "Writes a package of a scenario (a .thespis path, or a Scenario whose files base_dir finds) and every file "
         "it names, as `thespis-cli export` does (the same job). A missing file raises FileNotFoundError naming "
-        "the field; progress(done, total); Ctrl-C stops it and the old package stays.");
+        "the field; progress(done, total); Ctrl-C stops it and the old package stays. With bake, characters whose "
+        "lighting bake is missing or no longer fits are baked first (rays per vertex for those that had none), "
+        "into the package only.");
 }
 
 } // namespace thespis::python

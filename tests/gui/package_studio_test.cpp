@@ -5,6 +5,7 @@
 // a file that is missing says which field, and Export waits. Screenshots of each step.
 
 #include <QAction>
+#include <QCheckBox>
 #include <QApplication>
 #include <QDir>
 #include <QFile>
@@ -51,6 +52,7 @@ private slots:
     void cleanup();
     void exportOpenAndSaveAPackage();
     void aMissingFileIsSaidBeforeExporting();
+    void bakesTheLightingFirstWhenAsked();
 
 private:
     std::unique_ptr<studio::MainWindow> m_window;
@@ -156,6 +158,37 @@ void PackageStudioTest::aMissingFileIsSaidBeforeExporting()
     QVERIFY(!dialog.exportButton()->isEnabled());
     QVERIFY(!dialog.exportPackage());
     saveScreenshot(&dialog, QStringLiteral("package_missing_file.png"));
+}
+
+void PackageStudioTest::bakesTheLightingFirstWhenAsked()
+{
+    QVERIFY(m_window->openScenario(QStringLiteral(THESPIS_RESOURCES "/demo.thespis")));
+    const QString package = m_dir.filePath(QStringLiteral("baked.thespkg"));
+    bool exported = false;
+    whenModal<editor::ExportPackageDialog>([&](editor::ExportPackageDialog* dialog) {
+        QVERIFY(!dialog->bakeCheck()->isChecked());
+        dialog->bakeCheck()->setChecked(true);
+        dialog->setOutput(package);
+        QTest::mouseClick(dialog->exportButton(), Qt::LeftButton);
+        QVERIFY(!dialog->bakeCheck()->isEnabled());
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog->isExporting(), 300000);
+        const QString message = dialog->messageLabel()->text();
+        QVERIFY2(message.contains(QStringLiteral("Baked the lighting of Creon: it had none.")), qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("Baked the lighting of Antigone: it had none.")), qPrintable(message));
+        saveScreenshot(dialog, QStringLiteral("package_baked.png"));
+        exported = true;
+        dialog->reject();
+    });
+    m_window->findChild<QAction*>(QStringLiteral("exportPackage"))->trigger();
+    QVERIFY(exported);
+    auto opened = core::scenario::Package::open(package.toStdString());
+    QVERIFY2(opened, opened ? "" : opened.error().message.c_str());
+    QStringList names;
+    for (const core::scenario::PackageEntry& entry : (*opened)->manifest().entries)
+        names << QString::fromStdString(entry.name);
+    QVERIFY2(names.contains(QStringLiteral("bakes/Creon.prt")) && names.contains(QStringLiteral("bakes/Antigone.prt")),
+             qPrintable(names.join(QLatin1Char(' '))));
+    QVERIFY(!QFileInfo::exists(QStringLiteral(THESPIS_RESOURCES "/bakes")));
 }
 
 QTEST_MAIN(PackageStudioTest)
