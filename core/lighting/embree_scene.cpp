@@ -11,6 +11,8 @@
 #include <pmmintrin.h>
 #include <xmmintrin.h>
 
+#include "lighting/float4.h"
+
 namespace thespis::core::lighting {
 namespace {
 
@@ -112,6 +114,10 @@ public:
 private:
     /// Whether the origin-triangle filter can be skipped for this ray (see kUnfilteredMinCos).
     bool needsFilter(std::uint32_t vertex, const anim::Vec3& origin, float dx, float dy, float dz, float tnear) const;
+    /// needsFilter of rays [start, start + count) into needs[0 … count). A bake's batch starts
+    /// every ray at one vertex: then the ring is looked up once and four rays are tested at a
+    /// time, with the very arithmetic of needsFilter (the same decisions, so the same hits).
+    void classify(const RayBatch& rays, std::size_t start, std::size_t count, std::uint8_t* needs) const;
     void trace(std::span<RTCRay> rays, const std::uint32_t* originVertex, bool filtered) const;
 
     std::vector<std::uint32_t> m_indices; ///< global vertex indices, read by the filter
@@ -138,6 +144,39 @@ bool EmbreeScene::needsFilter(std::uint32_t vertex, const anim::Vec3& origin, fl
             return true;
     }
     return false;
+}
+
+void EmbreeScene::classify(const RayBatch& rays, std::size_t start, std::size_t count, std::uint8_t* needs) const
+{
+    const std::uint32_t vertex = rays.originVertex ? rays.originVertex[start] : kNoVertex;
+    const anim::Vec3 origin{rays.originX[start], rays.originY[start], rays.originZ[start]};
+    bool shared = rays.originVertex != nullptr;
+    for (std::size_t r = start; shared && r < start + count; ++r)
+        shared = rays.originVertex[r] == vertex && rays.originX[r] == origin.x && rays.originY[r] == origin.y
+                 && rays.originZ[r] == origin.z;
+    std::size_t i = 0;
+    if (shared && vertex != kNoVertex && vertex + 1 < m_ringStart.size() && m_ringStart[vertex] != m_ringStart[vertex + 1]
+        && rays.tnear >= kUnfilteredMinEpsilon && origin == m_positions[vertex]) {
+        const float* dx = rays.directionX + start;
+        const float* dy = rays.directionY + start;
+        const float* dz = rays.directionZ + start;
+        for (; i + 4 <= count; i += 4) {
+            const Float4 x = Float4::load(dx + i), y = Float4::load(dy + i), z = Float4::load(dz + i);
+            Float4::Bits grazing{0, 0, 0, 0};
+            for (std::uint32_t k = m_ringStart[vertex]; k < m_ringStart[vertex + 1]; ++k) {
+                const anim::Vec3& n = m_ringNormals[k];
+                grazing |= (Float4(kUnfilteredMinCos) > abs(Float4(n.x) * x + Float4(n.y) * y + Float4(n.z) * z)).bits;
+            }
+            for (int lane = 0; lane < 4; ++lane)
+                needs[i + std::size_t(lane)] = grazing[lane] != 0;
+        }
+    }
+    for (; i < count; ++i) {
+        const std::size_t r = start + i;
+        needs[i] = needsFilter(rays.originVertex ? rays.originVertex[r] : kNoVertex,
+                               {rays.originX[r], rays.originY[r], rays.originZ[r]}, rays.directionX[r],
+                               rays.directionY[r], rays.directionZ[r], rays.tnear);
+    }
 }
 
 void EmbreeScene::trace(std::span<RTCRay> rays, const std::uint32_t* originVertex, bool filtered) const
@@ -227,14 +266,17 @@ void EmbreeScene::occluded(const RayBatch& rays, std::span<std::uint8_t> occlude
     // back, and for each slot the batch index it answers (RTCRay is 16-byte aligned).
     thread_local std::vector<RTCRay> scratch;
     thread_local std::vector<std::uint32_t> slotOrigin, slotRay;
+    thread_local std::vector<std::uint8_t> needs;
     if (scratch.size() < kChunk) {
         scratch.resize(kChunk);
         slotOrigin.resize(kChunk);
         slotRay.resize(kChunk);
+        needs.resize(kChunk);
     }
 
     for (std::size_t start = 0; start < rays.count; start += kChunk) {
         const std::size_t count = std::min(kChunk, rays.count - start);
+        classify(rays, start, count, needs.data());
         std::size_t plain = 0, filtered = count;
         for (std::size_t i = 0; i < count; ++i) {
             const std::size_t r = start + i;
@@ -242,7 +284,7 @@ void EmbreeScene::occluded(const RayBatch& rays, std::span<std::uint8_t> occlude
             assert(std::isfinite(dx) && std::isfinite(dy) && std::isfinite(dz));
             const std::uint32_t vertex = rays.originVertex ? rays.originVertex[r] : kNoVertex;
             const anim::Vec3 origin{rays.originX[r], rays.originY[r], rays.originZ[r]};
-            const std::size_t slot = needsFilter(vertex, origin, dx, dy, dz, rays.tnear) ? --filtered : plain++;
+            const std::size_t slot = needs[i] ? --filtered : plain++;
             RTCRay& ray = scratch[slot];
             ray.org_x = origin.x;
             ray.org_y = origin.y;
