@@ -95,6 +95,7 @@ bool Autosaver::saveNow()
     QJsonObject info;
     info[QStringLiteral("original")] = m_document->filePath();
     info[QStringLiteral("baseDir")] = m_document->baseDir();
+    info[QStringLiteral("package")] = m_document->packagePath();
     info[QStringLiteral("pid")] = QCoreApplication::applicationPid();
     info[QStringLiteral("saved")] = QDateTime::currentDateTimeUtc().toString(Qt::ISODate);
     const QByteArray json = QJsonDocument(info).toJson();
@@ -133,6 +134,7 @@ QList<Autosaver::Recovery> Autosaver::pendingRecoveries()
         recovery.recoveryFile = scenario;
         recovery.originalPath = info.value(QStringLiteral("original")).toString();
         recovery.baseDir = info.value(QStringLiteral("baseDir")).toString();
+        recovery.packagePath = info.value(QStringLiteral("package")).toString();
         recovery.savedAt = QDateTime::fromString(info.value(QStringLiteral("saved")).toString(), Qt::ISODate);
         found.push_back(recovery);
     }

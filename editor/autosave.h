@@ -2,7 +2,7 @@
 // Autosaver: keeps a recovery copy of the open document so that a crash loses at most a minute
 // of work. While the document has unsaved changes, its scenario is written (atomically) every
 // interval to <app data>/recovery/<pid>-<n>.thespis, with a small .json beside it naming the
-// original file, its folder and the writing process. A save, a clean close or a new document
+// original file, its folder, the package it plays from and the writing process. A save, a clean close or a new document
 // removes the copy. At the next start, copies whose process is gone are offered for recovery.
 
 #include <QDateTime>
@@ -22,6 +22,7 @@ public:
         QString recoveryFile;  ///< the autosaved scenario
         QString originalPath;  ///< the file it was opened from; empty for an unsaved document
         QString baseDir;       ///< where its relative paths resolve
+        QString packagePath;   ///< the package it played from; empty: none
         QDateTime savedAt;
     };
 

@@ -30,24 +30,8 @@ core::Result<std::unique_ptr<Document>> Document::open(const QString& path)
 {
     const QFileInfo info(path);
     const std::filesystem::path file = toFsPath(info.absoluteFilePath());
-    if (file.extension() == core::scenario::kPackageExtension) {
-        // Names the package does not hold resolve beside it, as a scenario file's do.
-        auto opened = core::scenario::openPackage(file, {}, file.parent_path());
-        if (!opened)
-            return opened.error();
-        auto runtime = core::scenario::buildRuntime(opened->scenario, opened->assets);
-        if (!runtime) {
-            core::Error error = runtime.error();
-            error.detail = (error.detail.empty() ? std::string() : error.detail + "; ") + "in " + file.string();
-            return error;
-        }
-        std::unique_ptr<Document> document(new Document(std::move(opened->scenario), std::move(*runtime), QString(),
-                                                        info.absolutePath()));
-        document->m_assets = opened->assets;
-        document->m_package = opened->package;
-        document->m_packagePath = info.absoluteFilePath();
-        return document;
-    }
+    if (file.extension() == core::scenario::kPackageExtension)
+        return fromPackage(path, std::nullopt);
     core::Result<core::scenario::Scenario> scenario = core::scenario::loadScenario(file);
     if (!scenario)
         return scenario.error();
@@ -61,13 +45,37 @@ core::Result<std::unique_ptr<Document>> Document::open(const QString& path)
         new Document(std::move(*scenario), std::move(*runtime), info.absoluteFilePath(), info.absolutePath()));
 }
 
+core::Result<std::unique_ptr<Document>> Document::fromPackage(const QString& path,
+                                                              std::optional<core::scenario::Scenario> replacement)
+{
+    const QFileInfo info(path);
+    const std::filesystem::path file = toFsPath(info.absoluteFilePath());
+    // Names the package does not hold resolve beside it, as a scenario file's do.
+    auto opened = core::scenario::openPackage(file, {}, file.parent_path());
+    if (!opened)
+        return opened.error();
+    core::scenario::Scenario scenario = replacement ? std::move(*replacement) : std::move(opened->scenario);
+    auto runtime = core::scenario::buildRuntime(scenario, opened->assets);
+    if (!runtime) {
+        core::Error error = runtime.error();
+        error.detail = (error.detail.empty() ? std::string() : error.detail + "; ") + "in " + file.string();
+        return error;
+    }
+    std::unique_ptr<Document> document(new Document(std::move(scenario), std::move(*runtime), QString(), info.absolutePath()));
+    document->m_assets = opened->assets;
+    document->m_package = opened->package;
+    document->m_packagePath = info.absoluteFilePath();
+    return document;
+}
+
 core::Result<std::unique_ptr<Document>> Document::recover(const QString& recoveryFile, const QString& originalPath,
-                                                          const QString& baseDir)
+                                                          const QString& baseDir, const QString& packagePath)
 {
     core::Result<core::scenario::Scenario> scenario = core::scenario::loadScenario(toFsPath(recoveryFile));
     if (!scenario)
         return scenario.error();
-    auto document = fromScenario(std::move(scenario).value(), baseDir);
+    auto document = packagePath.isEmpty() ? fromScenario(std::move(scenario).value(), baseDir)
+                                          : fromPackage(packagePath, std::move(scenario).value());
     if (!document)
         return document.error();
     (*document)->m_filePath = originalPath.isEmpty() ? QString() : QFileInfo(originalPath).absoluteFilePath();

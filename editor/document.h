@@ -9,6 +9,7 @@
 #include <QStringList>
 
 #include <memory>
+#include <optional>
 
 #include "edit/scenario_edit.h"
 #include "scenario/package.h"
@@ -40,9 +41,9 @@ public:
     static core::Result<std::unique_ptr<Document>> open(const QString& path);
     /// Reads an autosaved copy (Autosaver) back: the document takes the original file's path
     /// (empty for a never-saved one) and folder, and starts modified, so that saving writes the
-    /// recovered work where it belongs.
+    /// recovered work where it belongs. A document that played from a package plays from it again.
     static core::Result<std::unique_ptr<Document>> recover(const QString& recoveryFile, const QString& originalPath,
-                                                           const QString& baseDir);
+                                                           const QString& baseDir, const QString& packagePath = {});
     /// A document over a scenario held in memory and never saved; clip files resolve in
     /// `baseDir`.
     static core::Result<std::unique_ptr<Document>> fromScenario(core::scenario::Scenario scenario,
@@ -109,6 +110,9 @@ signals:
 
 private:
     friend class EditCommand;
+    /// The package's scenario, or `replacement` (recovered work), playing from the package.
+    static core::Result<std::unique_ptr<Document>> fromPackage(const QString& path,
+                                                               std::optional<core::scenario::Scenario> replacement);
     Document(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime, QString filePath,
              QString baseDir);
     // Applies an edit that is known to fit and rebuilds the runtime (undo / redo).

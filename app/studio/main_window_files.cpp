@@ -213,7 +213,8 @@ bool MainWindow::offerRecovery()
     if (found.isEmpty())
         return false;
     const editor::Autosaver::Recovery& newest = found.front();
-    const QString name = newest.originalPath.isEmpty() ? tr("an unsaved scenario") : QFileInfo(newest.originalPath).fileName();
+    const QString source = newest.originalPath.isEmpty() ? newest.packagePath : newest.originalPath;
+    const QString name = source.isEmpty() ? tr("an unsaved scenario") : QFileInfo(source).fileName();
     const auto answer = QMessageBox::question(
         this, tr("Recover Unsaved Work"),
         tr("Thespis Studio did not close properly. Recover the changes to %1 autosaved at %2?")
@@ -221,7 +222,7 @@ bool MainWindow::offerRecovery()
         QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
     bool recovered = false;
     if (answer == QMessageBox::Yes) {
-        auto document = editor::Document::recover(newest.recoveryFile, newest.originalPath, newest.baseDir);
+        auto document = editor::Document::recover(newest.recoveryFile, newest.originalPath, newest.baseDir, newest.packagePath);
         if (document) {
             setDocument(std::move(*document));
             statusBar()->showMessage(tr("Recovered %1; save it to keep it.").arg(name));

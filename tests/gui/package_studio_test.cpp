@@ -8,6 +8,8 @@
 #include <QCheckBox>
 #include <QApplication>
 #include <QDir>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -22,12 +24,15 @@
 
 #include <functional>
 
+#include "edit/document_edits.h"
+#include "editor/autosave.h"
 #include "editor/document.h"
 #include "editor/export_package_dialog.h"
 #include "editor/translations.h"
 #include "gui_support.h"
 #include "main_window.h"
 #include "scenario/package.h"
+#include "scenario/package_export_job.h"
 #include "scenario/scenario_io.h"
 
 using namespace thespis;
@@ -53,6 +58,7 @@ private slots:
     void exportOpenAndSaveAPackage();
     void aMissingFileIsSaidBeforeExporting();
     void bakesTheLightingFirstWhenAsked();
+    void recoveredWorkPlaysFromItsPackageAgain();
 
 private:
     std::unique_ptr<studio::MainWindow> m_window;
@@ -189,6 +195,41 @@ void PackageStudioTest::bakesTheLightingFirstWhenAsked()
     QVERIFY2(names.contains(QStringLiteral("bakes/Creon.prt")) && names.contains(QStringLiteral("bakes/Antigone.prt")),
              qPrintable(names.join(QLatin1Char(' '))));
     QVERIFY(!QFileInfo::exists(QStringLiteral(THESPIS_RESOURCES "/bakes")));
+}
+
+void PackageStudioTest::recoveredWorkPlaysFromItsPackageAgain()
+{
+    const QString package = m_dir.filePath(QStringLiteral("recover.thespkg"));
+    core::scenario::ExportPackageJob job;
+    job.scenario = core::scenario::loadScenario(THESPIS_RESOURCES "/demo.thespis").value();
+    job.assets = core::scenario::Assets(THESPIS_RESOURCES);
+    job.scenarioEntry = "demo.thespis";
+    job.output = package.toStdString();
+    core::JobContext context;
+    QVERIFY(job.run(context));
+
+    QVERIFY(m_window->openScenario(package));
+    editor::Document* document = m_window->document();
+    editor::Autosaver saver;
+    saver.setDocument(document);
+    const std::vector<core::edit::ActionPath> first{{0, 0, 1}};
+    QVERIFY(document->edit(core::edit::moveActions(document->scenario(), first, core::TicksPerSecond), QStringLiteral("Move")));
+    QVERIFY(saver.saveNow());
+    QFile sidecar(QFileInfo(saver.recoveryFile()).absolutePath() + QLatin1Char('/') +
+                  QFileInfo(saver.recoveryFile()).completeBaseName() + QStringLiteral(".json"));
+    QVERIFY(sidecar.open(QIODevice::ReadOnly));
+    QCOMPARE(QJsonDocument::fromJson(sidecar.readAll()).object().value(QStringLiteral("package")).toString(), package);
+
+    // Recovered, the work plays from the package again (its idle database and posture bases are
+    // inside it), unsaved, named by the package.
+    auto recovered = editor::Document::recover(saver.recoveryFile(), QString(), document->baseDir(), package);
+    QVERIFY2(recovered, recovered ? "" : recovered.error().message.c_str());
+    QCOMPARE((*recovered)->packagePath(), package);
+    QVERIFY((*recovered)->isModified());
+    QCOMPARE((*recovered)->fileName(), QStringLiteral("recover.thespkg"));
+    QVERIFY((*recovered)->scenario() == document->scenario());
+    QVERIFY((*recovered)->warnings().isEmpty());
+    saver.discard();
 }
 
 QTEST_MAIN(PackageStudioTest)
