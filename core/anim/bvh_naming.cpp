@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <numbers>
 #include <set>
 
 #include "anim/bvh_text.h"
 #include "anim/hanim.h"
 #include "util/file_io.h"
+#include "util/text.h"
 
 // The H-Anim name of each joint is chosen by what the joint moves, not only by where it sits:
 // BVH joint J's rotation turns the bone from J to its children, which is what H-Anim joint J
@@ -294,14 +294,6 @@ const NameEntry* findEntry(const Convention& convention, std::string_view name)
 // the rounding noise of 6-decimal files (1e-6°), well below any deliberate motion.
 constexpr double kMovingAngle = 0.5 * std::numbers::pi / 180.0;
 
-std::string lower(std::string_view s)
-{
-    std::string out(s);
-    for (char& c : out)
-        c = char(std::tolower(static_cast<unsigned char>(c)));
-    return out;
-}
-
 bool reachesBody(const std::set<std::string, std::less<>>& mapped)
 {
     auto all = [&](std::initializer_list<std::string_view> names) {
@@ -376,7 +368,7 @@ bool isFacialName(std::string_view name)
     static constexpr std::string_view kStems[] = {"eye", "jaw", "tongue", "brow", "lip", "cheek", "mouth",
                                                   "teeth", "levator", "oris", "orbicularis", "oculi",
                                                   "risorius", "temporalis", "special0"};
-    const std::string s = lower(name);
+    const std::string s = lowercase(name);
     return std::any_of(std::begin(kStems), std::end(kStems),
                        [&](std::string_view stem) { return s.find(stem) != std::string::npos; });
 }

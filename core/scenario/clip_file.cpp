@@ -8,6 +8,7 @@
 #include "anim/hanim.h"
 #include "scene/foot_soles.h"
 #include "scene/gltf_character.h"
+#include "util/text.h"
 
 namespace thespis::core::scenario {
 
@@ -19,14 +20,6 @@ constexpr double kCmuUnit = 0.0254 / 0.45;
 std::string quote(const std::string& text)
 {
     return "\"" + text + "\"";
-}
-
-std::string extensionOf(const std::filesystem::path& path)
-{
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return extension;
 }
 
 // A BVH file's unit: CMU's by its conventions, else from the legs (a human's are 0.7 to 1 m).
@@ -127,7 +120,7 @@ Result<ClipFile> readGltf(const ClipAsset& asset, const std::filesystem::path& p
 
 bool isGltf(const std::filesystem::path& path)
 {
-    const std::string extension = extensionOf(path);
+    const std::string extension = lowercase(path.extension().string());
     return extension == ".gltf" || extension == ".glb";
 }
 

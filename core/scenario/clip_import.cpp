@@ -4,22 +4,13 @@
 
 #include "anim/retarget.h"
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace thespis::core::scenario {
 
-namespace {
-
-std::string lowered(std::string text)
-{
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return text;
-}
-
-} // namespace
-
 bool isMotionFile(const std::filesystem::path& path)
 {
-    const std::string extension = lowered(path.extension().string());
+    const std::string extension = lowercase(path.extension().string());
     return extension == ".bvh" || extension == ".gltf" || extension == ".glb";
 }
 

@@ -3,7 +3,6 @@
 #include "scenario/package_contents.h"
 
 #include <algorithm>
-#include <cctype>
 #include <map>
 #include <set>
 
@@ -11,6 +10,7 @@
 
 #include "scenario/package_manifest.h"
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace thespis::core::scenario {
 
@@ -140,8 +140,7 @@ private:
 
 bool isScriptMediaFile(const std::filesystem::path& file)
 {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string extension = lowercase(file.extension().string());
     for (const char* known : {".wav", ".ogg", ".flac", ".aiml", ".jsgf", ".gram", ".csv"})
         if (extension == known)
             return true;

@@ -1,7 +1,6 @@
 #include "scene/gltf_motion_export.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -10,6 +9,7 @@
 #include "anim/rig_orientation.h"
 #include "scene/gltf_reader.h"
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace thespis::core::scene {
 
@@ -21,13 +21,6 @@ using gltf::Mat4;
 Vec3d translationOf(const Mat4& m) { return {m[12], m[13], m[14]}; }
 double scaleOf(const Mat4& m) { return std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]); }
 double length(const Vec3d& v) { return std::sqrt(anim::dot(v, v)); }
-
-std::string lowercase(std::string text)
-{
-    for (char& c : text)
-        c = char(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-}
 
 /// The quarter turn import stood the rig up by: the one of the 24 that best takes the model's
 /// rest joint positions onto the skeleton's, with the largest miss.
@@ -266,12 +259,14 @@ Result<GltfMotionResult> writeGltfMotion(const std::filesystem::path& output, co
     std::vector<Vec3d> nodePosition(source.nodes.size());
     std::vector<std::vector<float>> rotations(joints), translations(joints);
     std::vector<bool> moves(joints, false);
+    std::vector<Quatd> restWorld(joints);
+    for (std::size_t j = 0; j < joints; ++j)
+        restWorld[j] = gltf::rotationOf(tree->world[std::size_t(nodeOfJoint[j])]);
     for (std::size_t f = 0; f < frameCount; ++f) {
         skeleton.worldTransforms(motion.bodyFrames.subspan(f * floats, floats), positions, orientations);
         for (int j = 0; j < jointCount; ++j) {
             const auto n = std::size_t(nodeOfJoint[std::size_t(j)]);
-            const Quatd restWorld = gltf::rotationOf(tree->world[n]);
-            nodeRotation[n] = anim::normalize(unturn * orientations[std::size_t(j)] * turn * restWorld);
+            nodeRotation[n] = anim::normalize(unturn * orientations[std::size_t(j)] * turn * restWorld[std::size_t(j)]);
             nodePosition[n] = anim::rotate(unturn, positions[std::size_t(j)]);
         }
         for (int j = 0; j < jointCount; ++j) {
