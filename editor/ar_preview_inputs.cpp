@@ -25,23 +25,17 @@
 #include <algorithm>
 
 #include "edit/ar_edits.h"
+#include "editor/ar_preview_settings.h"
 #include "editor/document.h"
 #include "editor/qt_conversions.h"
 
 namespace thespis::editor {
 
+using namespace ar_preview;
+
 namespace {
 
 namespace ar = core::ar;
-
-const QString kErrorStyle = QStringLiteral("color: #c0392b;");
-const QString kDefaultBoard = QStringLiteral("aruco-grid:DICT_4X4_50:4x3:0.04:0.01");
-const QString kSettingsGroup = QStringLiteral("arPreview/"); // as ar_preview_panel.cpp
-
-void storeSetting(const char* key, const QVariant& value)
-{
-    QSettings().setValue(kSettingsGroup + QLatin1String(key), value);
-}
 
 QDoubleSpinBox* spinBox(double min, double max, int decimals, const QString& suffix, const QString& name, QWidget* parent)
 {

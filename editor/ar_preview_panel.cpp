@@ -19,11 +19,14 @@
 
 #include "edit/ar_edits.h"
 #include "editor/ar_calibration_dialog.h"
+#include "editor/ar_preview_settings.h"
 #include "editor/document.h"
 #include "editor/qt_conversions.h"
 #include "widgets/video_view.h"
 
 namespace thespis::editor {
+
+using namespace ar_preview;
 
 namespace {
 
@@ -31,19 +34,6 @@ namespace ar = core::ar;
 using core::render::ArSessionState;
 
 constexpr int kPollIntervalMs = 16; // about 60 Hz: the newest composed frame, when there is one
-const QString kErrorStyle = QStringLiteral("color: #c0392b;");
-const QString kDefaultBoard = QStringLiteral("aruco-grid:DICT_4X4_50:4x3:0.04:0.01");
-const QString kSettingsGroup = QStringLiteral("arPreview/");
-
-QString setting(const char* key, const QString& fallback = {})
-{
-    return QSettings().value(kSettingsGroup + QLatin1String(key), fallback).toString();
-}
-
-void storeSetting(const char* key, const QVariant& value)
-{
-    QSettings().setValue(kSettingsGroup + QLatin1String(key), value);
-}
 
 } // namespace
 
