@@ -116,9 +116,11 @@ void addTail(const FrameLayout& layout, const BlendInput& input, std::span<const
     addLinear(input, reference, out, r + t, layout.scalarCount(), layout.scalarOffset(), 1);
 }
 
-// Function multiversioning: the blend's eight-joint loop gets an AVX2 + FMA build, chosen at load
-// time on CPUs that have them, and a baseline build for the others (the only one without
-// THESPIS_CPU_DISPATCH, which is how the sanitizer build tests it). GCC only: Clang 14 refuses
+// Function multiversioning: the blend's eight-joint loop gets an AVX2 build, chosen at load time
+// on CPUs that have it, and a baseline build for the others (the only one without
+// THESPIS_CPU_DISPATCH, which is how the sanitizer build tests it). Both round alike: this file
+// is built without contracting a·b + c into FMA, and uses no hardware estimates, so a pose is the
+// same bit for bit on every x86-64 CPU (tested against a scalar reference). GCC only: Clang 14 refuses
 // the AVX clone's calls to the inline simd helpers, which it compiles without AVX.
 #if defined(__x86_64__) && defined(THESPIS_CPU_DISPATCH) && !defined(__clang__)
 #define THESPIS_AVX2_CLONE [[gnu::target_clones("arch=x86-64-v3", "default")]]
@@ -168,7 +170,7 @@ template <bool First>
             totals[r] = weight;
         } else {
             const float d = (acc[k] * q[0] + acc[k + 1] * q[1]) + (acc[k + 2] * q[2] + acc[k + 3] * q[3]);
-            const float s = d < 0.0f ? -weight : weight;
+            const float s = std::signbit(d) ? -weight : weight; // as the lanes flip it
             for (int c = 0; c < 4; ++c)
                 acc[k + std::size_t(c)] += s * q[c];
             totals[r] += weight;
@@ -214,10 +216,12 @@ void blendRotations(std::span<const BlendInput> inputs, const float* __restrict 
             aw += restWeight * rw;
         }
         const F8 norm2 = (ax * ax + ay * ay) + (az * az + aw * aw);
-        const I8 degenerate = norm2 < splat<F8>(1e-24f); // opposite inputs of equal weight: keep rest
-        const F8 inv = reciprocalSqrt(select(degenerate, one, norm2));
-        storeQuats8(a, select(degenerate, rx, ax * inv), select(degenerate, ry, ay * inv), select(degenerate, rz, az * inv),
-                    select(degenerate, rw, aw * inv));
+        // The rest pose exactly where nothing drives the joint, and where opposite inputs of
+        // equal weight cancel.
+        const I8 keepRest = (norm2 < splat<F8>(1e-24f)) | (t == zero);
+        const F8 inv = reciprocalSqrt(select(keepRest, one, norm2));
+        storeQuats8(a, select(keepRest, rx, ax * inv), select(keepRest, ry, ay * inv), select(keepRest, rz, az * inv),
+                    select(keepRest, rw, aw * inv));
         store(totals + r, toJointOrder(t));
     }
     for (int r = blocked; r < rotations; ++r) {
@@ -230,9 +234,12 @@ void blendRotations(std::span<const BlendInput> inputs, const float* __restrict 
             for (int c = 0; c < 4; ++c)
                 q[c] += restWeight * base[c];
         }
-        const float norm = std::sqrt((q[0] * q[0] + q[1] * q[1]) + (q[2] * q[2] + q[3] * q[3]));
+        // The same operations as the eight-joint lanes, so that every joint rounds alike.
+        const float norm2 = (q[0] * q[0] + q[1] * q[1]) + (q[2] * q[2] + q[3] * q[3]);
+        const bool keepRest = norm2 < 1e-24f || t == 0.0f;
+        const float inv = keepRest ? 1.0f : 1.0f / std::sqrt(norm2);
         for (int c = 0; c < 4; ++c)
-            q[c] = norm > 1e-12f ? q[c] / norm : base[c];
+            q[c] = keepRest ? base[c] : q[c] * inv;
     }
 }
 

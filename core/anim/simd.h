@@ -93,23 +93,14 @@ inline bool any(I8 mask)
     const I4 half = __builtin_shufflevector(mask, mask, 0, 1, 2, 3) | __builtin_shufflevector(mask, mask, 4, 5, 6, 7);
     return any(half);
 }
-/// 1/√v to float rounding (a few ulps): the hardware's 12-bit estimate and two Newton steps,
-/// several times the throughput of a square root and a division.
+/// 1/√v as IEEE arithmetic gives it: a correctly rounded square root, then a correctly rounded
+/// division. Not the hardware's reciprocal-square-root estimate, whose bits differ between CPU
+/// models (and so would poses, bakes and golden files); 1/√1 is exactly 1.
 inline F8 reciprocalSqrt(F8 v)
 {
-#if defined(__SSE__)
-    const F4 low = F4(_mm_rsqrt_ps(__m128(F4(__builtin_shufflevector(v, v, 0, 1, 2, 3)))));
-    const F4 high = F4(_mm_rsqrt_ps(__m128(F4(__builtin_shufflevector(v, v, 4, 5, 6, 7)))));
-    F8 estimate = __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
-    const F8 halfV = splat<F8>(0.5f) * v;
-    estimate = estimate * (splat<F8>(1.5f) - halfV * estimate * estimate);
-    return estimate * (splat<F8>(1.5f) - halfV * estimate * estimate);
-#else
-    F8 out;
-    for (int i = 0; i < 8; ++i)
-        out[i] = 1.0f / std::sqrt(v[i]);
-    return out;
-#endif
+    const F4 low = sqrt(F4(__builtin_shufflevector(v, v, 0, 1, 2, 3)));
+    const F4 high = sqrt(F4(__builtin_shufflevector(v, v, 4, 5, 6, 7)));
+    return splat<F8>(1.0f) / __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
 }
 
 /// The 4×4 transpose within each 128-bit half (AVX shuffles do not cross halves).

@@ -320,3 +320,54 @@ TEST(MocapBlend, CutOffFadesOutOverExactlyTheGivenTime)
     EXPECT_EQ(schedule.removeFinishedActions(at + fade), 1);
     EXPECT_EQ(schedule.actionCount(), 1);
 }
+
+// The blend is the same bit for bit on every CPU and in both builds (AVX2 clone, baseline): it
+// rounds exactly as this plain scalar reference of its rules does, with IEEE square roots and
+// divisions and no hardware estimate. A walk frame and a wave frame, weights over every lane.
+TEST(MocapBlend, BlendRoundsAsTheScalarReferenceOnEveryJoint)
+{
+    const KeyframeClip& walk = *clips().walk.clip;
+    const KeyframeClip& wave = *clips().wave;
+    const FrameLayout& layout = *walk.layout();
+    const int rotations = layout.rotationCount();
+    ASSERT_GE(rotations, 17) << "the CMU skeleton fills two eight-joint blocks";
+    const std::span<const float> a = walk.frame(40), b = wave.frame(200);
+    const std::vector<float> rest = clips().walk.skeleton.restFrame();
+    std::vector<float> weightsA(layout.floatCount()), weightsB(layout.floatCount());
+    for (int j = 0; j < rotations; ++j) {
+        weightsA[j] = j % 7 == 3 ? 0.0f : 0.15f + 0.05f * float(j % 9); // some joints under 1, some undriven
+        weightsB[j] = j % 7 == 3 ? 0.0f : (j % 2 == 0 ? 0.3f + 0.1f * float(j % 5) : 0.0f);
+    }
+    const BlendInput inputs[] = {{a.data(), weightsA.data()}, {b.data(), weightsB.data()}};
+    std::vector<float> out(layout.floatCount()), totals(layout.floatCount());
+    QuaternionBlender().blend(layout, inputs, rest, out, totals);
+
+    int undriven = 0;
+    for (int j = 0; j < rotations; ++j) {
+        const float* qa = a.data() + 4 * j;
+        const float* qb = b.data() + 4 * j;
+        const float* r = rest.data() + 4 * j;
+        float q[4];
+        for (int c = 0; c < 4; ++c)
+            q[c] = weightsA[j] * qa[c];
+        const float d = (q[0] * qb[0] + q[1] * qb[1]) + (q[2] * qb[2] + q[3] * qb[3]);
+        const float s = std::signbit(d) ? -weightsB[j] : weightsB[j];
+        for (int c = 0; c < 4; ++c)
+            q[c] = q[c] + s * qb[c];
+        const float t = weightsA[j] + weightsB[j];
+        if (t < 1.0f) {
+            const float dr = (q[0] * r[0] + q[1] * r[1]) + (q[2] * r[2] + q[3] * r[3]);
+            const float restWeight = dr < 0.0f ? t - 1.0f : 1.0f - t;
+            for (int c = 0; c < 4; ++c)
+                q[c] = q[c] + restWeight * r[c];
+        }
+        const float norm2 = (q[0] * q[0] + q[1] * q[1]) + (q[2] * q[2] + q[3] * q[3]);
+        const float inv = 1.0f / std::sqrt(norm2);
+        for (int c = 0; c < 4; ++c) {
+            const float expected = t == 0.0f ? r[c] : q[c] * inv;
+            EXPECT_EQ(out[4 * j + c], expected) << "joint " << j << " component " << c;
+        }
+        undriven += t == 0.0f;
+    }
+    EXPECT_GT(undriven, 1) << "the rest pose comes back exactly where nothing drives a joint";
+}
