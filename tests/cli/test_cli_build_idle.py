@@ -20,7 +20,8 @@ CLI = os.environ.get("THESPIS_CLI")
 DATA = Path(os.environ.get("THESPIS_SHARED_DATA", Path(__file__).resolve().parents[3] / "shared" / "data"))
 CMU = DATA / "mocap" / "cmu"
 
-pytestmark = pytest.mark.skipif(not CLI, reason="THESPIS_CLI (the thespis-cli executable) is not set")
+if not CLI:
+    pytest.fail("THESPIS_CLI (the thespis-cli executable) is not set", pytrace=False)
 
 USAGE, INVALID = 2, 3
 
@@ -46,7 +47,7 @@ def scenario_with_idle(folder, database, seed=3):
 @pytest.fixture(scope="module")
 def database(tmp_path_factory):
     if not CMU.exists():
-        pytest.skip(f"{CMU} is missing (../shared/data)")
+        pytest.fail(f"{CMU} is missing (../shared/data)")
     out = tmp_path_factory.mktemp("idle") / "standing.idle"
     result = run("build-idle", f"{CMU / '77_02.bvh'}@60", f"{CMU / '111_28.bvh'}+6", "--skip", "2", "--out", out)
     assert result.returncode == 0, result.stderr
@@ -104,7 +105,7 @@ def test_a_missing_or_damaged_database_is_named(database, tmp_path):
 
 def test_too_little_standing_says_so(tmp_path):
     if not CMU.exists():
-        pytest.skip(f"{CMU} is missing (../shared/data)")
+        pytest.fail(f"{CMU} is missing (../shared/data)")
     result = run("build-idle", f"{CMU / '113_21.bvh'}+10.5", "--out", tmp_path / "short.idle")
     assert result.returncode == INVALID
     assert "Too few postures" in result.stderr

@@ -20,7 +20,8 @@ VIEWS = DATA / "vision" / "calibration"
 CHARUCO = DATA / "vision" / "aruco_real"
 CHARUCO_BOARD = "charuco:DICT_6X6_250:5x7:0.04:0.02"  # the tutorial's units
 
-pytestmark = pytest.mark.skipif(not CLI, reason="THESPIS_CLI (the thespis-cli executable) is not set")
+if not CLI:
+    pytest.fail("THESPIS_CLI (the thespis-cli executable) is not set", pytrace=False)
 
 USAGE, INVALID = 2, 3
 
@@ -32,7 +33,7 @@ def run(*args, timeout=300):
 @pytest.fixture(scope="module")
 def views():
     if not VIEWS.exists():
-        pytest.skip(f"{VIEWS} is missing (../shared/data)")
+        pytest.fail(f"{VIEWS} is missing (../shared/data)")
     return sorted(VIEWS.glob("left*.jpg"))
 
 
@@ -75,7 +76,7 @@ def test_a_wrong_board_or_too_few_views_say_what_to_do(views, tmp_path):
 @pytest.fixture(scope="module")
 def charuco_views():
     if not CHARUCO.exists():
-        pytest.skip(f"{CHARUCO} is missing (../shared/data)")
+        pytest.fail(f"{CHARUCO} is missing (../shared/data)")
     return sorted(CHARUCO.glob("charuco_img_0*.jpg"))
 
 

@@ -24,7 +24,8 @@ DATA = Path(os.environ.get("THESPIS_SHARED_DATA", ROOT.parent / "shared" / "data
 DEMO = ROOT / "resources" / "demo.thespis"
 SPEECH = DATA / "speech" / "pocketsphinx" / "cards" / "001.wav"
 
-pytestmark = pytest.mark.skipif(not CLI, reason="THESPIS_CLI (the thespis-cli executable) is not set")
+if not CLI:
+    pytest.fail("THESPIS_CLI (the thespis-cli executable) is not set", pytrace=False)
 
 SMALL = ["--size", "160x90", "--samples", "0"]
 

@@ -16,7 +16,8 @@ CLI = os.environ.get("THESPIS_CLI")
 DATA = Path(os.environ.get("THESPIS_SHARED_DATA", Path(__file__).resolve().parents[3] / "shared" / "data"))
 DEMO = Path(__file__).resolve().parents[2] / "resources" / "demo.thespis"
 
-pytestmark = pytest.mark.skipif(not CLI, reason="THESPIS_CLI (the thespis-cli executable) is not set")
+if not CLI:
+    pytest.fail("THESPIS_CLI (the thespis-cli executable) is not set", pytrace=False)
 
 USAGE, INVALID = 2, 3
 

@@ -22,7 +22,8 @@ DATA = Path(os.environ.get("THESPIS_SHARED_DATA", REPO.parent / "shared" / "data
 DEMO = REPO / "resources" / "demo.thespis"
 SPEECH = DATA / "speech" / "pocketsphinx" / "cards" / "001.wav"
 
-pytestmark = pytest.mark.skipif(not CLI, reason="THESPIS_CLI (the thespis-cli executable) is not set")
+if not CLI:
+    pytest.fail("THESPIS_CLI (the thespis-cli executable) is not set", pytrace=False)
 
 USAGE, INVALID, CANCELLED = 2, 3, 130
 SMALL = ["--size", "160x90", "--samples", "0"]

@@ -15,7 +15,8 @@ import pytest
 CLI = os.environ.get("THESPIS_CLI")
 DEMO = Path(__file__).resolve().parents[2] / "resources" / "demo.thespis"
 
-pytestmark = pytest.mark.skipif(not CLI, reason="THESPIS_CLI (the thespis-cli executable) is not set")
+if not CLI:
+    pytest.fail("THESPIS_CLI (the thespis-cli executable) is not set", pytrace=False)
 
 USAGE, INVALID, FAILURE = 2, 3, 4
 

@@ -19,7 +19,8 @@ REPO = Path(__file__).resolve().parents[2]
 DEMO = REPO / "resources" / "demo.thespis"
 PAPER_SCRIPT = REPO / "resources" / "scripts" / "antigone_creon.py"
 
-pytestmark = pytest.mark.skipif(not CLI, reason="THESPIS_CLI (the thespis-cli executable) is not set")
+if not CLI:
+    pytest.fail("THESPIS_CLI (the thespis-cli executable) is not set", pytrace=False)
 
 USAGE, INVALID, CANCELLED = 2, 3, 130
 SMALL = ["--size", "160x90", "--samples", "0"]

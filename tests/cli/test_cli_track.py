@@ -19,7 +19,8 @@ DATA = Path(os.environ.get("THESPIS_SHARED_DATA", Path(__file__).resolve().paren
 ARUCO = DATA / "vision" / "aruco_real"
 BOARD = "charuco:DICT_6X6_250:5x7:0.04:0.02"
 
-pytestmark = pytest.mark.skipif(not CLI, reason="THESPIS_CLI (the thespis-cli executable) is not set")
+if not CLI:
+    pytest.fail("THESPIS_CLI (the thespis-cli executable) is not set", pytrace=False)
 
 USAGE, INVALID = 2, 3
 
@@ -31,7 +32,7 @@ def run(*args, timeout=300):
 @pytest.fixture(scope="module")
 def views():
     if not ARUCO.exists():
-        pytest.skip(f"{ARUCO} is missing (../shared/data)")
+        pytest.fail(f"{ARUCO} is missing (../shared/data)")
     return sorted(ARUCO.glob("charuco_img_0*.jpg")) + [ARUCO / "chocclusion_original.jpg"]
 
 

@@ -15,7 +15,8 @@ CLI = os.environ.get("THESPIS_CLI")
 DATA = Path(os.environ.get("THESPIS_SHARED_DATA", Path(__file__).resolve().parents[3] / "shared" / "data"))
 CMU = DATA / "mocap" / "cmu"
 
-pytestmark = pytest.mark.skipif(not CLI, reason="THESPIS_CLI (the thespis-cli executable) is not set")
+if not CLI:
+    pytest.fail("THESPIS_CLI (the thespis-cli executable) is not set", pytrace=False)
 
 USAGE, INVALID = 2, 3
 
@@ -27,7 +28,7 @@ def run(*args, timeout=300):
 @pytest.fixture(scope="module")
 def clips():
     if not CMU.exists():
-        pytest.skip(f"{CMU} is missing (../shared/data)")
+        pytest.fail(f"{CMU} is missing (../shared/data)")
     return [CMU / "113_21.bvh", CMU / "141_16.bvh", CMU / "02_01.bvh", f"{CMU / '77_02.bvh'}@60"]
 
 

@@ -1364,8 +1364,7 @@ TEST(ScenarioRuntime, CatchesWhatTheParserCannotSee)
 TEST(ScenarioRuntime, ValidatesModelsSegmentTagsAndTheProbe)
 {
     const fs::path characters = thespis::test::sharedData("characters");
-    if (!fs::exists(characters / "RobotExpressive/RobotExpressive.glb"))
-        GTEST_SKIP() << "the real characters are not in " << characters;
+    ASSERT_TRUE(fs::exists(characters / "RobotExpressive/RobotExpressive.glb")) << "the real characters are not in " << characters;
     Scenario s = parseJson(minimalDocument()).value();
     s.characters[0].model = "RobotExpressive/RobotExpressive.glb";
     s.characters[0].segmentTags = {{"Head", scene::SegmentRole::Receiver, std::nullopt}};
