@@ -21,7 +21,9 @@
 #include "editor/ar_calibration_dialog.h"
 #include "editor/ar_preview_settings.h"
 #include "editor/document.h"
+#include "editor/playback_clock.h"
 #include "editor/qt_conversions.h"
+#include "editor/session.h"
 #include "widgets/video_view.h"
 
 namespace thespis::editor {
@@ -61,6 +63,13 @@ ArPreviewPanel::ArPreviewPanel(QWidget* parent) : QWidget(parent), m_timer(new Q
     m_smooth = new QCheckBox(tr("Smooth edges (slower)"), preview);
     m_smooth->setObjectName(QStringLiteral("arSmoothEdges"));
     m_smooth->setChecked(QSettings().value(kSettingsGroup + QStringLiteral("smooth"), true).toBool());
+    m_clock = new QComboBox(preview);
+    m_clock->setObjectName(QStringLiteral("arClock"));
+    m_clock->addItem(tr("Plays with the studio's transport"), int(Clock::Transport));
+    m_clock->addItem(tr("Plays on the video's time"), int(Clock::Video));
+    m_clock->setToolTip(tr("The transport: play, scrub and loop in the studio, and the video shows it. The video's "
+                           "time: the playhead follows the video frame by frame, as a recording would."));
+    m_clock->setCurrentIndex(setting("clock") == QStringLiteral("video") ? 1 : 0);
     m_start = new QPushButton(tr("Start"), preview);
     m_start->setObjectName(QStringLiteral("arStart"));
     m_stop = new QPushButton(tr("Stop"), preview);
@@ -77,6 +86,7 @@ ArPreviewPanel::ArPreviewPanel(QWidget* parent) : QWidget(parent), m_timer(new Q
     buttons->addWidget(m_stop, 1);
     buttons->addWidget(m_record, 1);
     auto* previewLayout = new QVBoxLayout(preview);
+    previewLayout->addWidget(m_clock);
     previewLayout->addWidget(m_mirrorBall);
     previewLayout->addWidget(m_smooth);
     previewLayout->addLayout(buttons);
@@ -108,6 +118,9 @@ ArPreviewPanel::ArPreviewPanel(QWidget* parent) : QWidget(parent), m_timer(new Q
             (void)startRecording(path);
     });
     connect(m_smooth, &QCheckBox::toggled, this, [](bool on) { storeSetting("smooth", on); });
+    connect(m_clock, &QComboBox::currentIndexChanged, this, [this] {
+        storeSetting("clock", clock() == Clock::Video ? QStringLiteral("video") : QStringLiteral("transport"));
+    });
     connect(m_timer, &QTimer::timeout, this, &ArPreviewPanel::poll);
     m_timer->setInterval(kPollIntervalMs);
 
@@ -154,19 +167,41 @@ void ArPreviewPanel::setDocument(Document* document)
         disconnect(m_document, nullptr, this, nullptr);
     m_document = document;
     if (m_document)
-        connect(m_document, &Document::edited, this, [this](const core::edit::Edit& edit) {
+        connect(m_document, &Document::edited, this, [this] {
             refreshPlacement();
-            if (!m_session)
-                return;
-            m_session->setPlacement(m_document->scenario().ar);
-            const bool placementOnly = std::all_of(edit.changes().begin(), edit.changes().end(), [](const auto& change) {
-                return std::holds_alternative<core::edit::ArChange>(change);
-            });
-            if (!placementOnly)
-                setStatus(tr("The scenario changed: Stop and Start again to see it over the video."), false);
+            if (m_session)
+                m_session->setPlacement(m_document->scenario().ar);
         });
     refreshPlacement();
     updateEnabled();
+}
+
+void ArPreviewPanel::setSession(Session* session)
+{
+    if (m_studio)
+        disconnect(m_studio, nullptr, this, nullptr);
+    m_studio = session;
+    if (m_studio)
+        // New schedules play on the same stage at once; a new cast needs a new scene.
+        connect(m_studio, &Session::edited, this, [this](bool stageReplaced) {
+            if (!stageReplaced || !m_session)
+                return;
+            stop();
+            m_endTitle = tr("Stopped");
+            m_endText = tr("The characters changed.\nPress Start to see them over the video.");
+            updateEnabled();
+        });
+    updateEnabled();
+}
+
+void ArPreviewPanel::setClock(Clock clock)
+{
+    m_clock->setCurrentIndex(m_clock->findData(int(clock)));
+}
+
+ArPreviewPanel::Clock ArPreviewPanel::clock() const
+{
+    return Clock(m_clock->currentData().toInt());
 }
 
 void ArPreviewPanel::refreshPlacement()
@@ -230,8 +265,13 @@ bool ArPreviewPanel::start()
     if (m_mirrorBall->isChecked())
         settings.probe = ar::LiveProbeSettings{};
     static const core::scenario::Scenario nothing; // without a document: the video and the tracking only
-    const core::scenario::Assets assets = m_document ? m_document->assets() : core::scenario::Assets();
-    auto session = core::render::ArSession::start(std::move(source).value(), m_document ? m_document->scenario() : nothing,
+    const bool playing = m_document && m_studio && m_studio->stage();
+    const core::scenario::Assets assets = playing ? m_document->assets() : core::scenario::Assets();
+    if (playing) {
+        settings.stage = m_studio->stage();
+        settings.poses = m_studio->mailbox();
+    }
+    auto session = core::render::ArSession::start(std::move(source).value(), playing ? m_document->scenario() : nothing,
                                                   assets, settings);
     if (!session)
         return fail(fromUtf8(session.error().message));
@@ -266,13 +306,26 @@ void ArPreviewPanel::poll()
 {
     if (!m_session)
         return;
-    if (m_session->takeSnapshot(m_snapshot))
+    if (m_session->takeSnapshot(m_snapshot)) {
         showSnapshot();
+        followVideo();
+    }
     if (m_session->state() == ArSessionState::Running)
         return;
     if (m_session->takeSnapshot(m_snapshot)) // the last frame, drawn as it stopped
         showSnapshot();
     onSessionEnded();
+}
+
+void ArPreviewPanel::followVideo()
+{
+    // On the video's time the playhead goes where the frame just shown is; the Session's tick
+    // then publishes the poses the next frame is drawn with.
+    if (clock() != Clock::Video || !m_studio || !m_studio->document())
+        return;
+    PlaybackClock* playhead = m_studio->clock();
+    playhead->pause();
+    playhead->seek(core::ticksToSeconds(m_snapshot.videoTime));
 }
 
 void ArPreviewPanel::showSnapshot()
@@ -418,6 +471,7 @@ void ArPreviewPanel::updateEnabled()
         m_groupBoxes[group]->setEnabled(!running);
     m_mirrorBall->setEnabled(!running);
     m_smooth->setEnabled(!running);
+    m_clock->setEnabled(m_document != nullptr);
     if (running)
         return;
     // What the view says while nothing plays: how the last run ended, and what to fix first.

@@ -9,6 +9,11 @@
 // 60 times a second and shows in a VideoView with the frame rate, latency and tracking state.
 // Record… writes what is shown to a video.
 //
+// What plays over the video is the Session's Stage, drawn with the poses the Session publishes
+// each tick: scripts, live actions, the playhead and edits show in AR at once. The clock is a
+// choice: the studio's transport (the default: play, scrub and loop there), or the video's
+// time, which then moves the studio's playhead frame by frame.
+//
 // Nothing that can go wrong leaves a dialog storm or a frozen window: what is missing or wrong
 // (no camera, a camera file that is corrupt or for another size, a board spec that does not
 // parse) is said beside the field and in the view, and Start stays disabled until it is fixed;
@@ -54,6 +59,7 @@ namespace thespis::editor {
 
 class ArCalibrationDialog;
 class Document;
+class Session;
 
 class ArPreviewPanel : public QWidget {
     Q_OBJECT
@@ -64,6 +70,12 @@ public:
     /// The scenario played and placed (null: none). A running preview stops first.
     void setDocument(Document* document);
     Document* document() const { return m_document; }
+    /// The session whose stage plays over the video, and whose clock a video clock moves.
+    void setSession(Session* session);
+    /// Which clock the scenario plays by over the video.
+    enum class Clock { Transport, Video };
+    void setClock(Clock clock);
+    Clock clock() const;
 
     // ---- What plays (each as choosing it in the panel does) --------------------------------
     void chooseTestPattern();
@@ -115,6 +127,7 @@ public:
     QCheckBox* shadowsCheck() const { return m_shadows; }
     QCheckBox* smoothCheck() const { return m_smooth; }
     QCheckBox* mirrorBallCheck() const { return m_mirrorBall; }
+    QComboBox* clockCombo() const { return m_clock; }
     QPushButton* startButton() const { return m_start; }
     QPushButton* stopButton() const { return m_stop; }
     QPushButton* recordButton() const { return m_record; }
@@ -143,6 +156,7 @@ private:
     void updateEnabled();
     void poll();
     void showSnapshot();
+    void followVideo();
     void onSessionEnded();
     void retire();
     void forgetFailedStart();
@@ -151,6 +165,7 @@ private:
     std::optional<core::ar::TrackingTarget> target() const;
 
     QPointer<Document> m_document;
+    QPointer<Session> m_studio; // the Session (m_session is the AR session)
     ArSource m_source;
     std::optional<ArSourceInfo> m_sourceInfoValue; // what the source gives, once probed
     QString m_sourceError;                        // why it cannot be read
@@ -201,6 +216,7 @@ private:
     QCheckBox* m_shadows = nullptr;
     QCheckBox* m_mirrorBall = nullptr;
     QCheckBox* m_smooth = nullptr;
+    QComboBox* m_clock = nullptr; ///< data: Clock
     QPushButton* m_start = nullptr;
     QPushButton* m_stop = nullptr;
     QPushButton* m_record = nullptr;

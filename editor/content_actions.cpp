@@ -1,9 +1,11 @@
-#include "content_actions.h"
+#include "editor/content_actions.h"
 
 #include <QAction>
+#include <QDir>
 #include <QFileDialog>
 #include <QInputDialog>
 #include <QMenu>
+#include <QSettings>
 
 #include "edit/content_edits.h"
 #include "edit/document_edits.h"
@@ -12,11 +14,12 @@
 #include "editor/import_motion_dialog.h"
 #include "editor/lighting_dialog.h"
 #include "editor/qt_conversions.h"
-#include "main_window.h"
+#include "editor/session.h"
 
-namespace thespis::studio {
+namespace thespis::editor {
 
-ContentActions::ContentActions(MainWindow& window) : QObject(&window), m_window(window)
+ContentActions::ContentActions(Session* session, QWidget* window, ContentSelection selection)
+    : QObject(window), m_session(session), m_window(window), m_selection(std::move(selection))
 {
     auto make = [this](const QString& text, const QString& name, const QString& tip) {
         auto* action = new QAction(text, this);
@@ -50,30 +53,30 @@ ContentActions::ContentActions(MainWindow& window) : QObject(&window), m_window(
     connect(m_renameLayer, &QAction::triggered, this, &ContentActions::onRenameLayer);
     connect(m_lighting, &QAction::triggered, this, &ContentActions::onLighting);
     connect(m_duplicateCharacter, &QAction::triggered, this, [this] {
-        if (auto* d = m_window.document())
-            push(core::edit::duplicateCharacter(d->scenario(), m_window.currentCharacter()), tr("Duplicate Character"));
+        if (auto* d = document())
+            push(core::edit::duplicateCharacter(d->scenario(), m_selection.character()), tr("Duplicate Character"));
     });
     connect(m_removeCharacter, &QAction::triggered, this, [this] {
-        if (auto* d = m_window.document())
-            push(core::edit::removeCharacter(d->scenario(), m_window.currentCharacter()), tr("Remove Character"));
+        if (auto* d = document())
+            push(core::edit::removeCharacter(d->scenario(), m_selection.character()), tr("Remove Character"));
     });
     const auto addLayer = [this](core::scenario::LayerKind kind, const QString& text) {
-        if (auto* d = m_window.document())
-            push(core::edit::addLayer(d->scenario(), m_window.currentCharacter(), {}, kind), text);
+        if (auto* d = document())
+            push(core::edit::addLayer(d->scenario(), m_selection.character(), {}, kind), text);
     };
     connect(m_addBodyLayer, &QAction::triggered, this, [=] { addLayer(core::scenario::LayerKind::Body, tr("Add Body Layer")); });
     connect(m_addFaceLayer, &QAction::triggered, this, [=] { addLayer(core::scenario::LayerKind::Face, tr("Add Face Layer")); });
     const auto moveLayer = [this](int delta) {
-        auto* d = m_window.document();
-        const auto layer = m_window.currentLayer();
+        auto* d = document();
+        const auto layer = m_selection.layer();
         if (d && layer)
             push(core::edit::moveLayer(d->scenario(), *layer, delta), delta < 0 ? tr("Move Layer Up") : tr("Move Layer Down"));
     };
     connect(m_moveLayerUp, &QAction::triggered, this, [=] { moveLayer(-1); });
     connect(m_moveLayerDown, &QAction::triggered, this, [=] { moveLayer(1); });
     connect(m_removeLayer, &QAction::triggered, this, [this] {
-        auto* d = m_window.document();
-        if (const auto layer = m_window.currentLayer(); d && layer)
+        auto* d = document();
+        if (const auto layer = m_selection.layer(); d && layer)
             push(core::edit::removeLayer(d->scenario(), *layer), tr("Remove Layer"));
     });
     updateEnabled();
@@ -96,10 +99,10 @@ void ContentActions::fillCharacterMenu(QMenu* menu) const
 
 void ContentActions::updateEnabled()
 {
-    const editor::Document* d = m_window.document();
+    const Document* d = document();
     const bool open = d != nullptr;
     const bool anyCharacter = open && !d->scenario().characters.empty();
-    const bool anyLayer = anyCharacter && m_window.currentLayer().has_value();
+    const bool anyLayer = anyCharacter && m_selection.layer().has_value();
     m_importMotion->setEnabled(anyCharacter);
     m_addCharacter->setEnabled(open);
     m_lighting->setEnabled(open);
@@ -111,11 +114,11 @@ void ContentActions::updateEnabled()
 
 bool ContentActions::push(core::Result<core::edit::Edit> edit, const QString& text)
 {
-    editor::Document* d = m_window.document();
+    Document* d = document();
     if (!d)
         return false;
     if (auto done = d->edit(std::move(edit), text); !done) {
-        emit message(tr("%1: %2").arg(text, editor::fromUtf8(done.error().message)));
+        emit message(tr("%1: %2").arg(text, fromUtf8(done.error().message)));
         return false;
     }
     return true;
@@ -123,28 +126,28 @@ bool ContentActions::push(core::Result<core::edit::Edit> edit, const QString& te
 
 void ContentActions::onImportMotion()
 {
-    editor::Document* d = m_window.document();
+    Document* d = document();
     if (!d)
         return;
     // A dialog object rather than the static helper, so that tests can drive it.
-    QFileDialog dialog(&m_window, tr("Import Motion"), m_window.importFolder(),
+    QFileDialog dialog(m_window, tr("Import Motion"), importFolder(),
                        tr("Motion (*.bvh *.gltf *.glb);;BVH motion capture (*.bvh);;glTF (*.gltf *.glb);;All files (*)"));
     dialog.setObjectName(QStringLiteral("importFileDialog"));
     dialog.setFileMode(QFileDialog::ExistingFiles);
     dialog.setOption(QFileDialog::DontUseNativeDialog);
     if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
         return;
-    m_window.setImportFolder(dialog.directory().absolutePath());
-    importFiles(dialog.selectedFiles(), m_window.currentCharacter());
+    QSettings().setValue(QStringLiteral("import/lastFolder"), dialog.directory().absolutePath());
+    importFiles(dialog.selectedFiles(), m_selection.character());
 }
 
 bool ContentActions::importFiles(const QStringList& files, int character, std::optional<core::edit::LayerPath> track,
                                  core::Tick time)
 {
-    editor::Document* d = m_window.document();
+    Document* d = document();
     if (!d || files.isEmpty())
         return false;
-    editor::ImportMotionDialog dialog(*d, files, character, &m_window);
+    ImportMotionDialog dialog(*d, files, character, m_window);
     if (dialog.exec() != QDialog::Accepted)
         return false;
     auto edit = dialog.edit();
@@ -163,16 +166,16 @@ bool ContentActions::importFiles(const QStringList& files, int character, std::o
         return false;
     emit message(tr("Imported %1 into %2.")
                      .arg(names.join(QStringLiteral(", ")),
-                          editor::fromUtf8(d->scenario().characters[std::size_t(dialog.character())].name)));
+                          fromUtf8(d->scenario().characters[std::size_t(dialog.character())].name)));
     return true;
 }
 
 void ContentActions::onAddCharacter()
 {
-    editor::Document* d = m_window.document();
+    Document* d = document();
     if (!d)
         return;
-    editor::CharacterDialog dialog(d->baseDir(), tr("Actor"), &m_window);
+    CharacterDialog dialog(d->baseDir(), tr("Actor"), m_window);
     if (dialog.exec() != QDialog::Accepted)
         return;
     auto edit = core::edit::addCharacter(d->scenario(), dialog.character());
@@ -184,44 +187,57 @@ void ContentActions::onAddCharacter()
                 edit->append(std::move(added).value());
     }
     if (push(std::move(edit), tr("Add Character")))
-        m_window.selectCharacter(int(d->scenario().characters.size()) - 1);
+        m_selection.selectCharacter(int(d->scenario().characters.size()) - 1);
 }
 
 void ContentActions::onRenameCharacter()
 {
-    editor::Document* d = m_window.document();
-    const int c = m_window.currentCharacter();
+    Document* d = document();
+    const int c = m_selection.character();
     if (!d || c < 0 || std::size_t(c) >= d->scenario().characters.size())
         return;
     bool ok = false;
-    const QString name = QInputDialog::getText(&m_window, tr("Rename Character"), tr("New name:"), QLineEdit::Normal,
-                                               editor::fromUtf8(d->scenario().characters[std::size_t(c)].name), &ok);
+    const QString name = QInputDialog::getText(m_window, tr("Rename Character"), tr("New name:"), QLineEdit::Normal,
+                                               fromUtf8(d->scenario().characters[std::size_t(c)].name), &ok);
     if (ok)
         push(core::edit::renameCharacter(d->scenario(), c, name.trimmed().toStdString()), tr("Rename Character"));
 }
 
 void ContentActions::onRenameLayer()
 {
-    editor::Document* d = m_window.document();
-    const auto layer = m_window.currentLayer();
+    Document* d = document();
+    const auto layer = m_selection.layer();
     if (!d || !layer)
         return;
     bool ok = false;
     const auto& current = d->scenario().characters[std::size_t(layer->character)].layers[std::size_t(layer->layer)];
-    const QString name = QInputDialog::getText(&m_window, tr("Rename Layer"), tr("New name:"), QLineEdit::Normal,
-                                               editor::fromUtf8(current.name), &ok);
+    const QString name = QInputDialog::getText(m_window, tr("Rename Layer"), tr("New name:"), QLineEdit::Normal,
+                                               fromUtf8(current.name), &ok);
     if (ok)
         push(core::edit::renameLayer(d->scenario(), *layer, name.trimmed().toStdString()), tr("Rename Layer"));
 }
 
 void ContentActions::onLighting()
 {
-    editor::Document* d = m_window.document();
+    Document* d = document();
     if (!d)
         return;
-    editor::LightingDialog dialog(d->baseDir(), d->scenario().lighting, &m_window);
+    LightingDialog dialog(d->baseDir(), d->scenario().lighting, m_window);
     if (dialog.exec() == QDialog::Accepted)
         push(core::edit::setLighting(d->scenario(), dialog.lighting()), tr("Change Lighting"));
 }
 
-} // namespace thespis::studio
+Document* ContentActions::document() const
+{
+    return m_session->document();
+}
+
+QString ContentActions::importFolder() const
+{
+    const QString stored = QSettings().value(QStringLiteral("import/lastFolder")).toString();
+    if (!stored.isEmpty())
+        return stored;
+    return document() ? document()->baseDir() : QDir::homePath();
+}
+
+} // namespace thespis::editor

@@ -3,12 +3,14 @@
 // File ▸ Import Motion… (also files dropped from the file manager on the clip library or a
 // track), the Character menu (add on the built-in humanoid or a glTF model, duplicate, rename,
 // remove; add, rename, move and remove layers) and Scene ▸ Lighting…. Each opens its dialog
-// over the window and pushes one undoable edit (core/edit/content_edits.h). The window tells it
-// which character and layer are current (the outline's selection, else the timeline's).
+// over the window and pushes one undoable edit (core/edit/content_edits.h) on the Session's
+// document. The window tells it which character and layer are current (the outline's selection,
+// else the timeline's) through a ContentSelection.
 
 #include <QObject>
 #include <QStringList>
 
+#include <functional>
 #include <optional>
 
 #include "edit/scenario_edit.h"
@@ -16,15 +18,25 @@
 
 class QAction;
 class QMenu;
+class QWidget;
 
-namespace thespis::studio {
+namespace thespis::editor {
 
-class MainWindow;
+class Document;
+class Session;
+
+/// What the window knows of the user's selection.
+struct ContentSelection {
+    std::function<int()> character;                              ///< -1 without characters
+    std::function<std::optional<core::edit::LayerPath>()> layer;
+    std::function<void(int)> selectCharacter;                    ///< shows a character just added
+};
 
 class ContentActions : public QObject {
     Q_OBJECT
 public:
-    explicit ContentActions(MainWindow& window);
+    /// Dialogs open over `window`, which also owns the actions.
+    ContentActions(Session* session, QWidget* window, ContentSelection selection);
 
     QAction* importMotionAction() const { return m_importMotion; }
     QAction* addCharacterAction() const { return m_addCharacter; }
@@ -33,6 +45,8 @@ public:
     void fillCharacterMenu(QMenu* menu) const;
     /// Enables what the open document allows.
     void updateEnabled();
+    /// Where the import file dialog opens (the last folder imported from, else the scenario's).
+    QString importFolder() const;
 
     /// Opens the import dialog for `files` into `character`; with `track`, the first clip
     /// imported also plays there from `time`, in the same undo step. False when nothing was
@@ -53,7 +67,11 @@ private:
     // Pushes `edit` as one command named `text`; a refusal is told in the status bar.
     bool push(core::Result<core::edit::Edit> edit, const QString& text);
 
-    MainWindow& m_window;
+    Document* document() const;
+
+    Session* m_session;
+    QWidget* m_window;
+    ContentSelection m_selection;
     QAction* m_importMotion = nullptr;
     QAction* m_addCharacter = nullptr;
     QAction* m_duplicateCharacter = nullptr;
@@ -68,4 +86,4 @@ private:
     QAction* m_lighting = nullptr;
 };
 
-} // namespace thespis::studio
+} // namespace thespis::editor

@@ -6,7 +6,7 @@
 
 #include "editor/commands/edit_command.h"
 #include "editor/qt_conversions.h"
-#include "scenario/package_resolver.h"
+#include "scenario/open_scenario.h"
 #include "scenario/scenario_io.h"
 
 namespace thespis::editor {
@@ -28,30 +28,15 @@ Document::~Document() = default;
 
 core::Result<std::unique_ptr<Document>> Document::open(const QString& path)
 {
-    const QFileInfo info(path);
-    const std::filesystem::path file = toFsPath(info.absoluteFilePath());
-    if (file.extension() == core::scenario::kPackageExtension)
-        return fromPackage(path, std::nullopt);
-    core::Result<core::scenario::Scenario> scenario = core::scenario::loadScenario(file);
-    if (!scenario)
-        return scenario.error();
-    core::Result<core::scenario::ScenarioRuntime> runtime = core::scenario::buildRuntime(*scenario, file.parent_path());
-    if (!runtime) {
-        core::Error error = runtime.error();
-        error.detail = (error.detail.empty() ? std::string() : error.detail + "; ") + "in " + file.string();
-        return error;
-    }
-    return std::unique_ptr<Document>(
-        new Document(std::move(*scenario), std::move(*runtime), info.absoluteFilePath(), info.absolutePath()));
+    return openReplacing(path, std::nullopt);
 }
 
-core::Result<std::unique_ptr<Document>> Document::fromPackage(const QString& path,
-                                                              std::optional<core::scenario::Scenario> replacement)
+core::Result<std::unique_ptr<Document>> Document::openReplacing(const QString& path,
+                                                                std::optional<core::scenario::Scenario> replacement)
 {
     const QFileInfo info(path);
     const std::filesystem::path file = toFsPath(info.absoluteFilePath());
-    // Names the package does not hold resolve beside it, as a scenario file's do.
-    auto opened = core::scenario::openPackage(file, {}, file.parent_path());
+    auto opened = core::scenario::openScenario(file);
     if (!opened)
         return opened.error();
     core::scenario::Scenario scenario = replacement ? std::move(*replacement) : std::move(opened->scenario);
@@ -61,10 +46,14 @@ core::Result<std::unique_ptr<Document>> Document::fromPackage(const QString& pat
         error.detail = (error.detail.empty() ? std::string() : error.detail + "; ") + "in " + file.string();
         return error;
     }
-    std::unique_ptr<Document> document(new Document(std::move(scenario), std::move(*runtime), QString(), info.absolutePath()));
-    document->m_assets = opened->assets;
-    document->m_package = opened->package;
-    document->m_packagePath = info.absoluteFilePath();
+    // A package's document has no file of its own until saved.
+    const QString own = opened->package ? QString() : info.absoluteFilePath();
+    std::unique_ptr<Document> document(new Document(std::move(scenario), std::move(*runtime), own, info.absolutePath()));
+    if (opened->package) {
+        document->m_assets = opened->assets;
+        document->m_package = opened->package;
+        document->m_packagePath = info.absoluteFilePath();
+    }
     return document;
 }
 
@@ -75,7 +64,7 @@ core::Result<std::unique_ptr<Document>> Document::recover(const QString& recover
     if (!scenario)
         return scenario.error();
     auto document = packagePath.isEmpty() ? fromScenario(std::move(scenario).value(), baseDir)
-                                          : fromPackage(packagePath, std::move(scenario).value());
+                                          : openReplacing(packagePath, std::move(scenario).value());
     if (!document)
         return document.error();
     (*document)->m_filePath = originalPath.isEmpty() ? QString() : QFileInfo(originalPath).absoluteFilePath();

@@ -110,9 +110,10 @@ signals:
 
 private:
     friend class EditCommand;
-    /// The package's scenario, or `replacement` (recovered work), playing from the package.
-    static core::Result<std::unique_ptr<Document>> fromPackage(const QString& path,
-                                                               std::optional<core::scenario::Scenario> replacement);
+    /// The scenario of the file or package at `path` (core::scenario::openScenario), or
+    /// `replacement` (recovered work) with the file's or package's assets.
+    static core::Result<std::unique_ptr<Document>> openReplacing(const QString& path,
+                                                                 std::optional<core::scenario::Scenario> replacement);
     Document(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime, QString filePath,
              QString baseDir);
     // Applies an edit that is known to fit and rebuilds the runtime (undo / redo).

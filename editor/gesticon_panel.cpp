@@ -16,6 +16,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
 
 #include "edit/document_edits.h"
 #include "editor/character_choice.h"
@@ -23,8 +24,7 @@
 #include "editor/gesticon_model.h"
 #include "editor/playback_clock.h"
 #include "editor/qt_conversions.h"
-#include "editor/scene_preview.h"
-#include "scenario/gesture_action.h"
+#include "editor/session.h"
 #include "util/tick.h"
 
 namespace thespis::editor {
@@ -303,7 +303,6 @@ void GesticonPanel::setDocument(Document* document)
     if (m_document)
         disconnect(m_document, nullptr, this, nullptr);
     m_document = document;
-    m_assets.clear();
     m_model->setDocument(document);
     if (m_document)
         // Any edit ends a preview: what it shows is no longer the document plus the gesture. Queued,
@@ -315,22 +314,16 @@ void GesticonPanel::setDocument(Document* document)
     refreshCharacters();
 }
 
-void GesticonPanel::setScenePreview(ScenePreview* preview)
+void GesticonPanel::setSession(Session* session)
 {
     stopPreview();
-    m_scenePreview = preview;
-    updateActions();
-}
-
-void GesticonPanel::setClock(PlaybackClock* clock)
-{
-    stopPreview();
-    if (m_clock)
-        disconnect(m_clock, nullptr, this, nullptr);
-    m_clock = clock;
-    if (m_clock) {
-        connect(m_clock, &PlaybackClock::timeChanged, this, &GesticonPanel::onClockTime);
-        connect(m_clock, &PlaybackClock::playingChanged, this, [this](bool playing) {
+    if (m_session)
+        disconnect(m_session->clock(), nullptr, this, nullptr);
+    m_session = session;
+    if (m_session) {
+        PlaybackClock* clock = m_session->clock();
+        connect(clock, &PlaybackClock::timeChanged, this, &GesticonPanel::onClockTime);
+        connect(clock, &PlaybackClock::playingChanged, this, [this](bool playing) {
             // Pausing the clock (the transport, the space bar) stops the preview. Queued: the
             // clock is still inside its own signal, and the stop moves the playhead back.
             if (!playing)
@@ -398,17 +391,17 @@ void GesticonPanel::updateActions()
     m_remove->setEnabled(!rows.isEmpty());
     m_rename->setEnabled(hasCurrent);
 
-    const bool canPreview = m_scenePreview && m_clock;
+    const bool canPreview = m_session && m_session->stage();
     m_preview->setText(m_previewing ? tr("Stop") : tr("Preview"));
     m_preview->setIcon(style()->standardIcon(m_previewing ? QStyle::SP_MediaStop : QStyle::SP_MediaPlay));
     m_preview->setEnabled(m_previewing || (canPreview && hasCurrent));
     if (!canPreview)
-        m_preview->setToolTip(tr("Preview needs the 3D view, which is not available here (no OpenGL)"));
+        m_preview->setToolTip(tr("Open a scenario to preview its gestures"));
     else if (m_previewing)
         m_preview->setToolTip(tr("Stop the preview and show the document again"));
     else
-        m_preview->setToolTip(tr("Play the selected gesture on the character from the playhead, over its other "
-                                 "layers (the document does not change)"));
+        m_preview->setToolTip(tr("Play the selected gesture on the character from the playhead, over what it "
+                                 "plays, as a script would (the document does not change)"));
     m_compare->setEnabled(!m_previewing && canPreview && hasCurrent);
     m_compare->setToolTip(tr("Play the selected gesture twice from the playhead: without the dependent-joint filter, "
                              "then with it (spine and neck follow the gesture)"));
@@ -499,6 +492,14 @@ void GesticonPanel::compareFilter()
     startPreview(false);
 }
 
+namespace {
+// The live action a preview plays: not the gesture's own name, which a script may be playing.
+std::string previewActionName(const std::string& gesture)
+{
+    return gesture + " (gesture preview)";
+}
+} // namespace
+
 void GesticonPanel::startPreview(std::optional<bool> filter)
 {
     const int pass = m_comparePass;
@@ -507,60 +508,55 @@ void GesticonPanel::startPreview(std::optional<bool> filter)
     m_comparePass = pass;
     const int c = currentCharacter();
     const Gesture* current = m_model->gesture(m_table->currentIndex().row());
-    if (!m_document || !m_scenePreview || !m_clock || c < 0 || !current)
+    if (!m_document || !m_session || !m_session->stage() || c < 0 || !current)
         return;
-    Gesture played = *current;
-    if (filter)
-        played.dependentJointFilter = *filter;
-    const Gesture* gesture = &played;
-
-    // The document plus the gesture as an action on a layer of its own, from the playhead. The
-    // layer overrides the layers below it where the gesture's mask reaches, as a triggered
-    // gesture does; when some layer of the character is solo, it must be solo to be heard.
-    const double start = m_clock->time();
-    core::scenario::Scenario scenario = m_document->scenario();
-    core::scenario::Character& character = scenario.characters[std::size_t(c)];
-    std::vector<std::string> layerNames;
-    bool anySolo = false;
-    for (const core::scenario::Layer& layer : character.layers) {
-        layerNames.push_back(layer.name);
-        anySolo = anySolo || layer.solo;
-    }
-    core::scenario::Layer layer;
-    layer.name = core::edit::uniqueName(tr("Gesture preview").toStdString(), layerNames);
-    layer.kind = core::scenario::LayerKind::Body;
-    layer.mode = core::anim::BlendMode::Override;
-    layer.solo = anySolo;
-    layer.actions.push_back(core::scenario::gestureAction(scenario, *gesture, core::secondsToTicks(start)));
-    character.layers.push_back(std::move(layer));
-    const core::edit::ActionPath path{c, int(character.layers.size()) - 1, 0};
-    const QString name = fromUtf8(gesture->name);
-
-    auto runtime = core::scenario::buildRuntime(scenario, m_document->assets(), &m_assets);
-    if (!runtime) {
-        showMessage(tr("Cannot preview gesture \"%1\": %2").arg(name, fromUtf8(runtime.error().message)));
+    core::runtime::Stage& stage = *m_session->stage();
+    PlaybackClock& clock = *m_session->clock();
+    const std::string& characterName = m_document->scenario().characters[std::size_t(c)].name;
+    const QString name = fromUtf8(current->name);
+    const core::scenario::GestureActions* gesture = nullptr;
+    if (const auto* runtime = stage.runtime().findCharacter(characterName))
+        if (const auto found = runtime->gestures.find(current->name); found != runtime->gestures.end())
+            gesture = &found->second;
+    if (!gesture) {
+        showMessage(tr("Cannot preview gesture \"%1\": it cannot be played (Messages says why).").arg(name));
         return;
     }
-    const auto span = core::edit::actionSpan(scenario, *runtime, path);
-    if (!span || span->openEnded || span->end <= span->start) {
+    const core::anim::BlendingAction& action = !filter ? gesture->played() : *filter ? gesture->withFilter : gesture->withoutFilter;
+    if (!action.source) {
+        showMessage(tr("Cannot preview gesture \"%1\" with the dependent-joint filter: the scenario names no posture "
+                       "bases (a .pca file made by thespis-cli train-pca).")
+                        .arg(name));
+        return;
+    }
+    const double start = clock.time();
+    const std::string live = previewActionName(current->name);
+    if (auto played = stage.playAction(characterName, core::runtime::Track::Body, live,
+                                       {action.source, action.params, action.renderOutsideDomain},
+                                       core::secondsToTicks(start), {.fadeIn = 0});
+        !played) {
+        showMessage(tr("Cannot preview gesture \"%1\": %2").arg(name, fromUtf8(played.error().message)));
+        return;
+    }
+    const auto end = stage.actionEnd(characterName, core::runtime::Track::Body, live);
+    if (!end || !std::isfinite(*end) || *end <= start) {
+        (void)stage.removeAction(characterName, core::runtime::Track::Body, live);
         showMessage(tr("Cannot preview gesture \"%1\": its clip has no finite length.").arg(name));
-        return;
-    }
-    if (auto shown = m_scenePreview->previewRuntime(std::move(runtime).value()); !shown) {
-        showMessage(tr("Cannot preview gesture \"%1\": %2").arg(name, fromUtf8(shown.error().message)));
         return;
     }
 
     m_previewing = true;
     ++m_previewSerial;
+    m_previewCharacter = characterName;
+    m_previewAction = live;
     m_previewStart = start;
-    m_previewEnd = core::ticksToSeconds(span->end);
-    m_savedLooping = m_clock->isLooping();
-    m_savedClockDuration = m_clock->duration();
+    m_previewEnd = *end;
+    m_savedLooping = clock.isLooping();
+    m_savedClockDuration = clock.duration();
     // The gesture may reach past the end of the timeline: the clock must get there.
-    m_clock->setLooping(false);
-    m_clock->setDuration(std::max(m_savedClockDuration, m_previewEnd));
-    m_previewClockDuration = m_clock->duration();
+    clock.setLooping(false);
+    clock.setDuration(std::max(m_savedClockDuration, m_previewEnd));
+    m_previewClockDuration = clock.duration();
     showMessage({});
     m_playing->setText(m_comparePass == 1 ? tr("Before: \"%1\" without the dependent-joint filter").arg(name)
                        : m_comparePass == 2
@@ -569,7 +565,7 @@ void GesticonPanel::startPreview(std::optional<bool> filter)
     m_playing->setVisible(m_comparePass != 0);
     updateActions();
     emit previewingChanged(true);
-    m_clock->play();
+    clock.play();
 }
 
 void GesticonPanel::stopPreview()
@@ -579,16 +575,19 @@ void GesticonPanel::stopPreview()
     m_previewing = false;
     m_comparePass = 0;
     m_playing->hide();
-    if (m_scenePreview && m_document)
-        if (auto restored = m_scenePreview->updateDocument(m_document); !restored)
-            showMessage(tr("The 3D view could not show the document again: %1").arg(fromUtf8(restored.error().message)));
-    if (m_clock) {
-        m_clock->pause();
+    if (m_session && m_session->stage())
+        (void)m_session->stage()->removeAction(m_previewCharacter, core::runtime::Track::Body, m_previewAction);
+    if (m_session) {
+        PlaybackClock* clock = m_session->clock();
+        clock->pause();
         // Put back what the preview changed, unless someone (an edit) set the duration since.
-        if (m_clock->duration() == m_previewClockDuration)
-            m_clock->setDuration(m_savedClockDuration);
-        m_clock->seek(std::min(m_previewStart, m_clock->duration()));
-        m_clock->setLooping(m_savedLooping);
+        if (clock->duration() == m_previewClockDuration)
+            clock->setDuration(m_savedClockDuration);
+        const double before = clock->time();
+        clock->seek(std::min(m_previewStart, clock->duration()));
+        clock->setLooping(m_savedLooping);
+        if (clock->time() == before)
+            m_session->tick(); // the views show the stage without the gesture
     }
     updateActions();
     emit previewingChanged(false);

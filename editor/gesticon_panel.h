@@ -3,15 +3,14 @@
 // document — name, clip, body part (mask), default fades, dependent-joint filter — as an
 // editable table (GesticonModel) with combo boxes for the clip and the body part and spin boxes
 // for the fades; Add / Remove / Rename, each one undoable edit; and Preview, which plays the
-// selected gesture on the character in the 3D view.
+// selected gesture on the character in every view (3D, Skeletons, posture chart, AR).
 //
-// A preview does not change the document: the panel builds a copy of the scenario with the
-// gesture as an action on a layer of its own ("Gesture preview", blending over the character's
-// other layers the way a triggered gesture does: its mask, its fades, override mode), shows that
-// copy's runtime through ScenePreview::previewRuntime, and plays the clock from its current time
-// to the end of the gesture. The document's runtime comes back, and the playhead returns to
-// where the preview began, when the gesture ends, when the user stops (the Stop button, or
-// pausing the clock), on any edit and when the document or character changes.
+// A preview does not change the document: the gesture plays as a live action on the Session's
+// Stage — the action the runtime built for it (its mask, its fades, its filter), as a script's
+// activateAction_body would play it — from the playhead, and the clock plays to the end of the
+// gesture. The live action is removed, and the playhead returns to where the preview began, when
+// the gesture ends, when the user stops (the Stop button, or pausing the clock), on any edit and
+// when the document or character changes.
 //
 // Before / After plays the gesture twice from the same time: without the dependent-joint filter
 // (paper §4.4), then with it, a line above the buttons saying which one plays.
@@ -22,6 +21,7 @@
 #include <optional>
 
 #include "scenario/scenario_runtime.h"
+#include "util/error.h"
 
 class QComboBox;
 class QLabel;
@@ -32,8 +32,7 @@ namespace thespis::editor {
 
 class Document;
 class GesticonModel;
-class PlaybackClock;
-class ScenePreview;
+class Session;
 
 class GesticonPanel : public QWidget {
     Q_OBJECT
@@ -43,10 +42,8 @@ public:
 
     /// The document edited (null: none). Shows its first character.
     void setDocument(Document* document);
-    /// The 3D view previews play in; without one (no OpenGL) Preview is disabled.
-    void setScenePreview(ScenePreview* preview);
-    /// The clock previews play on (the one the 3D view follows); without one Preview is disabled.
-    void setClock(PlaybackClock* clock);
+    /// The session whose stage and clock previews play on; without one Preview is disabled.
+    void setSession(Session* session);
 
     QTableView* table() const { return m_table; }
     GesticonModel* model() const { return m_model; }
@@ -78,7 +75,7 @@ public:
     void preview();
     /// Plays the selected gesture without the dependent-joint filter, then with it.
     void compareFilter();
-    /// Ends a preview and restores the document's runtime; nothing when none plays.
+    /// Ends a preview (its live action goes); nothing when none plays.
     void stopPreview();
     bool isPreviewing() const { return m_previewing; }
 
@@ -97,8 +94,7 @@ private:
     void stopPreviewLater();
 
     QPointer<Document> m_document;
-    QPointer<ScenePreview> m_scenePreview;
-    QPointer<PlaybackClock> m_clock;
+    QPointer<Session> m_session;
     GesticonModel* m_model = nullptr;
     QComboBox* m_characters = nullptr;
     QTableView* m_table = nullptr;
@@ -120,7 +116,7 @@ private:
     double m_previewClockDuration = 0; // what the preview set the clock's duration to
     double m_savedClockDuration = 0;
     bool m_savedLooping = false;
-    core::scenario::AssetCache m_assets; // files read by previews
+    std::string m_previewCharacter, m_previewAction; // the live action the preview plays, and whose
 };
 
 } // namespace thespis::editor

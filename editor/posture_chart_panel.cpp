@@ -8,7 +8,7 @@
 
 #include "editor/character_choice.h"
 #include "editor/document.h"
-#include "editor/playback_clock.h"
+#include "editor/session.h"
 #include "editor/qt_conversions.h"
 #include "motion/dependent_joint_filter.h"
 #include "widgets/component_chart.h"
@@ -41,27 +41,27 @@ PostureChartPanel::PostureChartPanel(QWidget* parent) : QWidget(parent)
 
 void PostureChartPanel::setDocument(Document* document)
 {
-    if (m_document)
-        disconnect(m_document, nullptr, this, nullptr);
     m_document = document;
     m_assets.clear();
-    if (m_document)
-        connect(m_document, &Document::edited, this, [this] {
-            fillCharacterChoice(m_characters, m_document);
-            rebuild();
-        });
     QSignalBlocker quiet(m_characters);
     fillCharacterChoice(m_characters, m_document);
     rebuild();
 }
 
-void PostureChartPanel::setClock(PlaybackClock* clock)
+void PostureChartPanel::setSession(Session* session)
 {
-    if (m_clock)
-        disconnect(m_clock, nullptr, this, nullptr);
-    m_clock = clock;
-    if (m_clock)
-        connect(m_clock, &PlaybackClock::timeChanged, this, &PostureChartPanel::plot);
+    if (m_session)
+        disconnect(m_session, nullptr, this, nullptr);
+    m_session = session;
+    if (m_session) {
+        connect(m_session, &Session::posesChanged, this, &PostureChartPanel::plot);
+        // After the session gave its stage the edited runtime (which the chart reads).
+        connect(m_session, &Session::edited, this, [this] {
+            const QSignalBlocker quiet(m_characters);
+            fillCharacterChoice(m_characters, m_document);
+            rebuild();
+        });
+    }
     rebuild();
 }
 
@@ -91,7 +91,10 @@ void PostureChartPanel::rebuild()
     auto bases = m_assets.postureBases(basesName, m_document->assets());
     if (!bases)
         return fail(tr("The posture bases could not be read: %1").arg(fromUtf8(bases.error().message)));
-    const auto* runtime = m_document->runtime().findCharacter(m_document->scenario().characters[std::size_t(c)].name);
+    if (!m_session || !m_session->stage())
+        return fail(tr("Nothing plays."));
+    const auto& played = m_session->stage()->runtime();
+    const auto* runtime = played.findCharacter(m_document->scenario().characters[std::size_t(c)].name);
     if (!runtime || !runtime->body)
         return fail(tr("The character has no body motion to chart."));
     auto map = core::motion::PostureMap::create(runtime->skeleton, core::motion::PostureSet::UpperBody);
@@ -100,21 +103,25 @@ void PostureChartPanel::rebuild()
     m_bases = std::move(*bases);
     m_map = std::move(*map);
     m_character = c;
+    m_pose = std::size_t(runtime - played.characters.data());
+    m_layout = runtime->skeleton.frameLayout();
     m_frame = runtime->skeleton.restFrame();
     m_posture.assign(std::size_t(m_map->layout().size()), 0.0f);
     m_pcs.assign(m_posture.size(), 0.0f);
     m_magnitudes.assign(m_posture.size(), 0.0f);
-    plot(m_clock ? m_clock->time() : 0.0);
+    plot(m_session->poses());
 }
 
-void PostureChartPanel::plot(double seconds)
+void PostureChartPanel::plot(const core::runtime::PoseSet& poses)
 {
-    if (!m_map || !m_bases || !m_document || std::size_t(m_character) >= m_document->scenario().characters.size())
+    if (!m_map || !m_bases || m_pose >= poses.characters.size())
         return;
-    const auto* runtime = m_document->runtime().findCharacter(m_document->scenario().characters[std::size_t(m_character)].name);
-    if (!runtime || !runtime->body)
+    const core::runtime::CharacterPose& shown = poses.characters[m_pose];
+    if (shown.body.size() != m_frame.size())
         return;
-    runtime->evaluateBody(seconds, m_frame);
+    // The pose on screen: the body placed where the character stands.
+    std::copy(shown.body.begin(), shown.body.end(), m_frame.begin());
+    shown.placement.apply(*m_layout, m_frame);
     m_map->toPosture(m_frame, m_posture);
     const core::motion::PostureBasis& basis = m_bases->upper;
     basis.project(m_posture, m_pcs);
@@ -141,7 +148,7 @@ void PostureChartPanel::plot(double seconds)
                        {band.muteAbove + 1, int(m_pcs.size()), tr("filter mutes")}});
     m_chart->setCaption(tr("%1 at %2 s — energy above PC %3: this pose %4 %, captured motion %5 %")
                             .arg(m_characters->currentText())
-                            .arg(seconds, 0, 'f', 2)
+                            .arg(core::ticksToSeconds(poses.time), 0, 'f', 2)
                             .arg(band.fadeFrom)
                             .arg(poseAll > 0 ? 100 * poseAbove / poseAll : 0.0, 0, 'f', 1)
                             .arg(capturedAll > 0 ? 100 * capturedAbove / capturedAll : 0.0, 0, 'f', 1));

@@ -7,8 +7,9 @@
 // energy in the high components, which the filter (paper §4.4) removes.
 //
 // The basis is the scenario's (Scenario::postureBases), else the one shipped with the studio.
-// Follows the playback clock; characters whose skeleton lacks H-Anim's upper-body joints, or a
-// basis that cannot be read, are said so on the chart.
+// Charts the poses the Session publishes each tick, so what a script or a live action does
+// shows; characters whose skeleton lacks H-Anim's upper-body joints, or a basis that cannot be
+// read, are said so on the chart.
 
 #include <QPointer>
 #include <QWidget>
@@ -19,6 +20,7 @@
 
 #include "motion/posture.h"
 #include "motion/posture_bases.h"
+#include "runtime/pose_set.h"
 #include "scenario/clip_file.h"
 
 class QComboBox;
@@ -30,7 +32,7 @@ class ComponentChart;
 namespace thespis::editor {
 
 class Document;
-class PlaybackClock;
+class Session;
 
 class PostureChartPanel : public QWidget {
     Q_OBJECT
@@ -38,8 +40,8 @@ public:
     explicit PostureChartPanel(QWidget* parent = nullptr);
 
     void setDocument(Document* document);
-    /// The clock whose time is charted (null: time 0).
-    void setClock(PlaybackClock* clock);
+    /// The session whose poses are charted (null: none).
+    void setSession(Session* session);
     /// The posture bases (.pca, absolute path) used when the scenario names none.
     void setDefaultBases(const QString& path);
 
@@ -51,17 +53,19 @@ public:
 private:
     // Reads the basis and maps the chosen character's skeleton; then plots.
     void rebuild();
-    void plot(double seconds);
+    void plot(const core::runtime::PoseSet& poses);
 
     QPointer<Document> m_document;
-    QPointer<PlaybackClock> m_clock;
+    QPointer<Session> m_session;
     QString m_defaultBases;
     QComboBox* m_characters = nullptr;
     widgets::ComponentChart* m_chart = nullptr;
     core::scenario::AssetCache m_assets;
     std::shared_ptr<const core::motion::PostureBases> m_bases;
     std::optional<core::motion::PostureMap> m_map;
-    int m_character = -1;
+    int m_character = -1;     // in the document's characters
+    std::size_t m_pose = 0;   // the character's index in the stage's pose sets
+    core::anim::FrameLayoutPtr m_layout; // its skeleton's
     std::vector<float> m_frame, m_posture, m_pcs, m_magnitudes;
 };
 

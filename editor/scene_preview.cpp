@@ -8,6 +8,7 @@
 #include "editor/document.h"
 #include "editor/job_runner.h"
 #include "editor/qt_conversions.h"
+#include "editor/session.h"
 #include "render/gl_context.h"
 #include "render/picking.h"
 #include "widgets/osg_viewport.h"
@@ -40,26 +41,33 @@ ScenePreview::~ScenePreview()
         m_viewport->setSceneData(nullptr);
 }
 
-core::Result<void> ScenePreview::setDocument(const Document* document, std::shared_ptr<core::runtime::Stage> stage)
+void ScenePreview::setSession(Session* session)
 {
-    return build(document, true, std::move(stage));
+    m_session = session;
+    session->addView([this](Document*) { build(true); }, this);
+    connect(session, &Session::edited, this, &ScenePreview::onEdited);
+    connect(session, &Session::posesChanged, this, &ScenePreview::setPoses);
 }
 
-core::Result<void> ScenePreview::build(const Document* document, bool frameCamera,
-                                       std::shared_ptr<core::runtime::Stage> stage)
+void ScenePreview::build(bool frameCamera)
 {
     m_viewport->setSceneData(nullptr);
     m_lightJob.reset();
     m_lightProblem.clear();
+    m_problem.clear();
     m_scene.reset();
+    const Document* document = m_session ? m_session->document() : nullptr;
     if (!document)
-        return {};
+        return;
     core::render::ScenarioSceneOptions options;
-    options.stage = std::move(stage);
+    options.stage = m_session->stage();
     options.projectProbe = false; // projectLight() does it off the GUI thread
     auto scene = core::render::ScenarioScene::create(document->scenario(), document->assets(), options);
-    if (!scene)
-        return scene.error();
+    if (!scene) {
+        m_problem = fromUtf8(scene.error().message);
+        emit sceneFailed(m_problem);
+        return;
+    }
     m_scene = std::move(scene).value();
     m_bodySources = bodySources(document->scenario());
     m_lighting = document->scenario().lighting;
@@ -70,16 +78,18 @@ core::Result<void> ScenePreview::build(const Document* document, bool frameCamer
     m_viewport->setClearColor(QColor::fromRgbF(background[0], background[1], background[2]));
     applyHighlights();
     m_viewport->setSceneData(m_scene->scene().root());
+    if (m_session->poses().characters.size() == m_scene->poses().characters.size())
+        m_scene->setPoses(m_session->poses()); // what plays now, until the next tick
+    emit sceneBuilt();
     if (!frameCamera)
-        return {};
+        return;
     const double aspect = m_viewport->height() > 0 ? double(m_viewport->width()) / m_viewport->height() : 16.0 / 9.0;
-    const core::render::Bounds bounds = m_scene->boundsOverTimeline();
+    const core::render::Bounds bounds = m_scene->boundsOver(m_session->timelineSamples());
     if (!bounds.empty()) {
         const core::render::CameraView view = core::render::frameBounds(
             bounds, kHomeAzimuthDegrees, kHomeElevationDegrees, aspect, m_viewport->fieldOfView());
         m_viewport->setHomeView(toQt(view.eye), toQt(view.centre), toQt(view.up));
     }
-    return {};
 }
 
 std::vector<ScenePreview::BodySource> ScenePreview::bodySources(const core::scenario::Scenario& scenario)
@@ -90,38 +100,31 @@ std::vector<ScenePreview::BodySource> ScenePreview::bodySources(const core::scen
     return sources;
 }
 
-core::Result<void> ScenePreview::updateDocument(const Document* document, std::shared_ptr<core::runtime::Stage> stage)
+void ScenePreview::onEdited(bool stageReplaced)
 {
-    // Same bodies and stage: only the schedules changed, so the new runtime plays on the scene
-    // as it is (it also ends a gesture preview).
-    const bool sameStage = !stage || (m_scene && m_scene->sharedStage() == stage);
-    if (m_scene && document && sameStage && bodySources(document->scenario()) == m_bodySources
-        && document->scenario().lighting == m_lighting
-        && m_scene->setRuntime(document->runtime())) {
-        m_viewport->update();
-        return {};
-    }
-    // Other bodies (a bake, tags, a model): rebuilt where the user is looking, at the same time;
-    // characters come or go: framed anew, so that every one is in view.
-    const double time = m_scene ? m_scene->time() : 0.0;
-    bool sameCast = m_scene != nullptr && document;
+    // Same bodies and stage: only the schedules changed, and the scene draws the stage as it is
+    // (the session's next tick shows the edit).
+    const Document* document = m_session->document();
+    if (m_scene && !stageReplaced && bodySources(document->scenario()) == m_bodySources
+        && document->scenario().lighting == m_lighting && m_scene->followStage())
+        return;
+    // Other bodies (a bake, tags, a model): rebuilt where the user is looking; characters come
+    // or go: framed anew, so that every one is in view.
+    bool sameCast = m_scene != nullptr;
     if (sameCast) {
         const std::vector<BodySource> next = bodySources(document->scenario());
         sameCast = next.size() == m_bodySources.size()
                    && std::equal(next.begin(), next.end(), m_bodySources.begin(),
                                  [](const BodySource& a, const BodySource& b) { return a.name == b.name; });
     }
-    auto rebuilt = build(document, !sameCast, std::move(stage));
-    if (rebuilt)
-        setTime(time);
-    return rebuilt;
+    build(!sameCast);
 }
 
-void ScenePreview::setTime(double seconds)
+void ScenePreview::setPoses(const core::runtime::PoseSet& poses)
 {
     if (!m_scene)
         return;
-    m_scene->setTime(seconds);
+    m_scene->setPoses(poses);
     m_viewport->update();
 }
 
@@ -191,19 +194,6 @@ void ScenePreview::onLightProjected(const core::Result<void>& result)
             m_viewport->update();
     }
     emit lightLoaded(true);
-}
-
-// ---- Gesture preview (GesticonPanel) ----
-
-core::Result<void> ScenePreview::previewRuntime(core::scenario::ScenarioRuntime runtime)
-{
-    if (!m_scene)
-        return core::makeError(core::ErrorCode::InvalidArgument, "There is no scene to preview in: open a scenario first.");
-    if (auto played = m_scene->setRuntime(std::move(runtime)); !played)
-        return played.error();
-    if (m_viewport)
-        m_viewport->update();
-    return {};
 }
 
 // ---- Segment selection ----------------------------------------------------------------------

@@ -1,9 +1,11 @@
 #pragma once
-// ScenePreview: the 3D view of the open document. Builds the scenario's render scene (bodies,
-// light, ground — core::render::ScenarioScene) for a Document, hands its root node to an
-// OsgViewport, frames the camera on the characters over the whole timeline, and poses every
-// character whenever the playback time changes. It also answers which segment a click in the
-// viewport hits, tints selected segments, and plays a preview runtime (a gesture) for a while.
+// ScenePreview: the 3D view of the Session's document, one of its views. Builds the scenario's
+// render scene (bodies, light, ground — core::render::ScenarioScene) drawing the Session's
+// Stage, hands its root node to an OsgViewport, frames the camera on the characters over the
+// whole timeline (the Session's timeline samples), and poses every character from the poses the
+// Session publishes each tick; it never evaluates anything. After an edit it follows the stage,
+// rebuilding only when bodies, tags, bakes, the light or the cast changed. It also answers which
+// segment a click in the viewport hits and tints selected segments.
 
 #include <QObject>
 #include <QPointer>
@@ -28,6 +30,7 @@ namespace thespis::editor {
 class JobRunner;
 
 class Document;
+class Session;
 
 class ScenePreview : public QObject {
     Q_OBJECT
@@ -43,22 +46,12 @@ public:
     explicit ScenePreview(widgets::OsgViewport* viewport, QObject* parent = nullptr);
     ~ScenePreview() override;
 
-    /// Builds the scene of `document` (null clears the view) and frames the camera on it. It
-    /// plays `stage` (the session's, of the document's runtime), or one of its own when null. On
-    /// failure the view is left empty and the error says which character or file could not be
+    /// Shows `session`'s documents from now on (registers as its view). When a scene cannot be
+    /// built the view is left empty and problem() says which character or file could not be
     /// loaded.
-    core::Result<void> setDocument(const Document* document, std::shared_ptr<core::runtime::Stage> stage = {});
-    /// After an edit of `document`: plays its new schedules (rebuilding the scene, at the same
-    /// time and camera, only when the characters themselves, their bodies, segment tags or bakes
-    /// changed, or the session made a new stage) and redraws at the current time.
-    core::Result<void> updateDocument(const Document* document, std::shared_ptr<core::runtime::Stage> stage = {});
-    /// Plays `runtime` — schedules of this scene's characters with something added, such as a
-    /// gesture on a layer of its own — instead of the document's, and redraws at the current
-    /// time, until the next setDocument() or updateDocument() puts the document's own back.
-    /// Fails when no scene is shown or the runtime's characters or skeletons differ from it.
-    core::Result<void> previewRuntime(core::scenario::ScenarioRuntime runtime);
-    /// Poses every character at `seconds` and redraws.
-    void setTime(double seconds);
+    void setSession(Session* session);
+    /// Why the view is empty although a document is open; empty when the scene is shown.
+    QString problem() const { return m_problem; }
     void setShading(core::render::Shading shading);
     core::render::Shading shading() const { return m_shading; }
     void setGroundVisible(bool visible);
@@ -90,11 +83,15 @@ signals:
     void emptySpaceClicked(Qt::KeyboardModifiers modifiers);
     /// The probe's light reached the scene, or could not (see warnings()).
     void lightLoaded(bool ok);
+    /// A scene could not be built (problem()), after opening or editing a document.
+    void sceneFailed(const QString& problem);
+    /// A scene was built (a document opened, or an edit of bodies, tags, bakes, light or cast).
+    void sceneBuilt();
 
 private:
     // What each character's body was built from (ScenarioScene::create): an edit that changes
     // any of it (its bake, its segment tags, its model) needs the scene rebuilt, not only new
-    // schedules. Recorded by build(), compared by updateDocument().
+    // schedules. Recorded by build(), compared by onEdited().
     struct BodySource {
         std::string name, skeleton, model, bake;
         std::vector<core::scene::SegmentTag> segmentTags;
@@ -102,8 +99,10 @@ private:
     };
     static std::vector<BodySource> bodySources(const core::scenario::Scenario& scenario);
 
-    // Builds the scene of `document`; frameCamera: also aim the home view (and go there).
-    core::Result<void> build(const Document* document, bool frameCamera, std::shared_ptr<core::runtime::Stage> stage);
+    // Builds the scene of the session's document; frameCamera: also aim the home view.
+    void build(bool frameCamera);
+    void onEdited(bool stageReplaced);
+    void setPoses(const core::runtime::PoseSet& poses);
     void onViewportClicked(const QVector3D& origin, const QVector3D& direction, Qt::KeyboardModifiers modifiers);
     // Starts projecting the document's probe for the scene just built (a job off the GUI thread).
     void projectLight(const Document& document);
@@ -111,6 +110,8 @@ private:
     void applyHighlights();
 
     QPointer<widgets::OsgViewport> m_viewport; // may go first when a window closes
+    Session* m_session = nullptr;
+    QString m_problem;
     std::unique_ptr<core::render::ScenarioScene> m_scene;
     std::vector<BodySource> m_bodySources;
     core::scenario::LightingSpec m_lighting; // the scene's; another one rebuilds it

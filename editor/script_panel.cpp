@@ -230,6 +230,12 @@ void ScriptPanel::run()
     // A script starts over: what an earlier one left playing goes.
     m_stage->resetLive();
     auto service = std::make_shared<core::runtime::AnimationService>(m_stage, m_clock);
+    // The paper's start_player / stop_player play and pause the studio's transport (asked from
+    // the script's thread, done on the GUI's).
+    service->setPlayerControl([this](bool play) {
+        QMetaObject::invokeMethod(this, [this, play] { play ? emit playRequested() : emit pauseRequested(); },
+                                  Qt::QueuedConnection);
+    });
     for (const auto& player : m_players)
         player.first->deleteLater();
     m_players.clear();

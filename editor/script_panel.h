@@ -2,8 +2,9 @@
 // ScriptPanel: the studio's Script dock (paper §4.5: scripts control the animation service while
 // the simulation runs). An editor with Python colouring, Run and Stop, and a console with the
 // script's output, its errors and tracebacks. The script runs in a worker thread against the
-// Stage the 3D view plays, on a clock that follows the playhead: a wait lasts until the
-// playing view gets there, and Run starts playback. Stop ends a script at once, even one stuck in
+// Session's Stage, on a clock that follows the playhead: a wait lasts until the playing view
+// gets there, and Run starts playback (as the script's start_player() does; stop_player()
+// pauses). Stop ends a script at once, even one stuck in
 // a wait or in an endless loop; the GUI never waits for a script. Scripts kept in the scenario
 // are picked from a list and saved back to it; one read from the file (and not edited since) runs
 // only once the trust check (the window's: does the user trust that file?) says yes.
@@ -68,8 +69,10 @@ public slots:
     void stop();
 
 signals:
-    /// A script started and needs time to pass: the view should play.
+    /// A script started and needs time to pass, or called start_player(): the view should play.
     void playRequested();
+    /// The script called stop_player(): the view should pause.
+    void pauseRequested();
     /// Save Script: keep `source` in the scenario as `name` (one undo step).
     void saveRequested(const QString& name, const QString& source);
     void runningChanged(bool running);

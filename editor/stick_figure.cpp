@@ -1,9 +1,8 @@
-#include "editor/pose_sampler.h"
+#include "editor/stick_figure.h"
 
 #include <QString>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 #include "editor/qt_conversions.h"
@@ -39,48 +38,38 @@ int findHeadJoint(const core::anim::Skeleton& skeleton)
 
 } // namespace
 
-PoseSampler::PoseSampler(const core::scenario::CharacterRuntime& character)
-    : m_character(&character)
+StickFigure::StickFigure(std::string name, const core::anim::Skeleton& skeleton)
+    : m_name(std::move(name)), m_skeleton(skeleton)
 {
-    const core::anim::Skeleton& skeleton = character.skeleton;
-    const std::size_t joints = std::size_t(skeleton.jointCount());
-    m_frame = skeleton.restFrame();
-    // The body schedule is built on the skeleton's layout; evaluate() writes exactly that many.
-    assert(!character.body || character.body->layout()->floatCount() == m_frame.size());
+    const std::size_t joints = std::size_t(m_skeleton.jointCount());
+    m_frame = m_skeleton.restFrame();
     m_world.resize(joints);
     m_orientation.resize(joints);
     m_positions.resize(joints);
     computeWorldPositions();
 }
 
-void PoseSampler::sample(double seconds)
+void StickFigure::setPose(const core::runtime::CharacterPose& pose)
 {
-    if (m_character->body && m_character->body->layout()->floatCount() == m_frame.size())
-        m_character->evaluateBody(seconds, m_frame);
-    computeWorldPositions();
-}
-
-void PoseSampler::setFrame(std::span<const float> frame)
-{
-    if (frame.size() != m_frame.size())
+    if (pose.body.size() != m_frame.size())
         return;
-    std::copy(frame.begin(), frame.end(), m_frame.begin());
-    m_character->place(*m_character->skeleton.frameLayout(), m_frame);
+    std::copy(pose.body.begin(), pose.body.end(), m_frame.begin());
+    pose.placement.apply(*m_skeleton.frameLayout(), m_frame);
     computeWorldPositions();
 }
 
-void PoseSampler::computeWorldPositions()
+void StickFigure::computeWorldPositions()
 {
-    m_character->skeleton.worldTransforms(m_frame, m_world, m_orientation);
+    m_skeleton.worldTransforms(m_frame, m_world, m_orientation);
     for (std::size_t i = 0; i < m_world.size(); ++i)
         m_positions[i] = QVector3D(float(m_world[i].x), float(m_world[i].y), float(m_world[i].z));
 }
 
-widgets::PoseFigure PoseSampler::figure(const QColor& color) const
+widgets::PoseFigure StickFigure::figure(const QColor& color) const
 {
-    const core::anim::Skeleton& skeleton = m_character->skeleton;
+    const core::anim::Skeleton& skeleton = m_skeleton;
     widgets::PoseFigure figure;
-    figure.name = fromUtf8(m_character->name);
+    figure.name = fromUtf8(m_name);
     figure.color = color;
     figure.parents = skeleton.parents();
     figure.sides.reserve(figure.parents.size());
@@ -101,27 +90,6 @@ widgets::PoseFigure PoseSampler::figure(const QColor& color) const
     }
     figure.headRadius = high > low ? float((high - low) / 16.0) : 0.1f;
     return figure;
-}
-
-std::pair<QVector3D, QVector3D> PoseSampler::sweepBounds(double duration, double step)
-{
-    sample(0.0);
-    QVector3D low = m_positions.empty() ? QVector3D() : m_positions.front();
-    QVector3D high = low;
-    const auto grow = [&] {
-        for (const QVector3D& p : m_positions) {
-            low = QVector3D(std::min(low.x(), p.x()), std::min(low.y(), p.y()), std::min(low.z(), p.z()));
-            high = QVector3D(std::max(high.x(), p.x()), std::max(high.y(), p.y()), std::max(high.z(), p.z()));
-        }
-    };
-    grow();
-    const int samples = step > 0 && duration > 0 ? int(std::ceil(duration / step)) : 0;
-    for (int i = 1; i <= samples; ++i) {
-        sample(std::min(duration, i * step));
-        grow();
-    }
-    sample(0.0);
-    return {low, high};
 }
 
 } // namespace thespis::editor

@@ -511,10 +511,6 @@ fx %6 ± %7, fy %8 ± %9, Mitte (%10, %11) px.</translation>
         <translation>Videos (*.mp4 *.avi)</translation>
     </message>
     <message>
-        <source>The scenario changed: Stop and Start again to see it over the video.</source>
-        <translation>Das Szenario hat sich geändert: Anhalten und erneut starten, um es über dem Video zu sehen.</translation>
-    </message>
-    <message>
         <source>Place the World on the Target</source>
         <translation>Welt auf dem Ziel platzieren</translation>
     </message>
@@ -656,6 +652,24 @@ Beheben, dann „Starten“ drücken.</translation>
     <message>
         <source>The camera file&apos;s size is asked for, at %1 fps.</source>
         <translation>Die Größe der Kameradatei wird angefordert, mit %1 fps.</translation>
+    </message>
+    <message>
+        <source>Plays with the studio&apos;s transport</source>
+        <translation>Spielt mit der Transportleiste des Studios</translation>
+    </message>
+    <message>
+        <source>Plays on the video&apos;s time</source>
+        <translation>Spielt in der Zeit des Videos</translation>
+    </message>
+    <message>
+        <source>The transport: play, scrub and loop in the studio, and the video shows it. The video&apos;s time: the playhead follows the video frame by frame, as a recording would.</source>
+        <translation>Die Transportleiste: Abspielen, Scrubben und Schleifen im Studio, und das Video zeigt es. Die Zeit des Videos: Der Abspielkopf folgt dem Video Bild für Bild, wie eine Aufnahme.</translation>
+    </message>
+    <message>
+        <source>The characters changed.
+Press Start to see them over the video.</source>
+        <translation>Die Figuren haben sich geändert.
+Drücken Sie Start, um sie über dem Video zu sehen.</translation>
     </message>
 </context>
 <context>
@@ -1128,6 +1142,156 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     </message>
 </context>
 <context>
+    <name>thespis::editor::ContentActions</name>
+    <message>
+        <source>&amp;Import Motion…</source>
+        <translation>Bewegung &amp;importieren…</translation>
+    </message>
+    <message>
+        <source>Add BVH motion capture or glTF animations as clips of a character</source>
+        <translation>BVH-Motion-Capture oder glTF-Animationen als Clips einer Figur hinzufügen</translation>
+    </message>
+    <message>
+        <source>&amp;Add Character…</source>
+        <translation>Figur &amp;hinzufügen…</translation>
+    </message>
+    <message>
+        <source>Add a character on the built-in humanoid or a glTF model</source>
+        <translation>Eine Figur auf dem eingebauten Humanoiden oder einem glTF-Modell hinzufügen</translation>
+    </message>
+    <message>
+        <source>&amp;Duplicate Character</source>
+        <translation>Figur &amp;duplizieren</translation>
+    </message>
+    <message>
+        <source>A copy of the current character, a metre to its right</source>
+        <translation>Eine Kopie der aktuellen Figur, einen Meter rechts von ihr</translation>
+    </message>
+    <message>
+        <source>Re&amp;name Character…</source>
+        <translation>Figur &amp;umbenennen…</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Character</source>
+        <translation>Figur &amp;entfernen</translation>
+    </message>
+    <message>
+        <source>Add &amp;Body Layer</source>
+        <translation>&amp;Körperebene hinzufügen</translation>
+    </message>
+    <message>
+        <source>A layer of body actions on top of the current character&apos;s</source>
+        <translation>Eine Ebene mit Körperaktionen über denen der aktuellen Figur</translation>
+    </message>
+    <message>
+        <source>Add &amp;Face Layer</source>
+        <translation>&amp;Gesichtsebene hinzufügen</translation>
+    </message>
+    <message>
+        <source>A layer of facial animation (MPEG-4 FAPs)</source>
+        <translation>Eine Ebene mit Gesichtsanimation (MPEG-4-FAPs)</translation>
+    </message>
+    <message>
+        <source>Rena&amp;me Layer…</source>
+        <translation>Ebene u&amp;mbenennen…</translation>
+    </message>
+    <message>
+        <source>Move Layer &amp;Up</source>
+        <translation>Ebene nach &amp;oben verschieben</translation>
+    </message>
+    <message>
+        <source>Move Layer Do&amp;wn</source>
+        <translation>Ebene nach u&amp;nten verschieben</translation>
+    </message>
+    <message>
+        <source>Remove &amp;Layer</source>
+        <translation>Ebene ent&amp;fernen</translation>
+    </message>
+    <message>
+        <source>&amp;Lighting…</source>
+        <translation>Be&amp;leuchtung…</translation>
+    </message>
+    <message>
+        <source>Choose the light probe, turn it and set its intensity</source>
+        <translation>Die Lichtsonde auswählen, drehen und ihre Intensität festlegen</translation>
+    </message>
+    <message>
+        <source>Duplicate Character</source>
+        <translation>Figur duplizieren</translation>
+    </message>
+    <message>
+        <source>Remove Character</source>
+        <translation>Figur entfernen</translation>
+    </message>
+    <message>
+        <source>Add Body Layer</source>
+        <translation>Körperebene hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add Face Layer</source>
+        <translation>Gesichtsebene hinzufügen</translation>
+    </message>
+    <message>
+        <source>Move Layer Up</source>
+        <translation>Ebene nach oben verschieben</translation>
+    </message>
+    <message>
+        <source>Move Layer Down</source>
+        <translation>Ebene nach unten verschieben</translation>
+    </message>
+    <message>
+        <source>Remove Layer</source>
+        <translation>Ebene entfernen</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Import Motion</source>
+        <translation>Bewegung importieren</translation>
+    </message>
+    <message>
+        <source>Motion (*.bvh *.gltf *.glb);;BVH motion capture (*.bvh);;glTF (*.gltf *.glb);;All files (*)</source>
+        <translation>Bewegung (*.bvh *.gltf *.glb);;BVH-Motion-Capture (*.bvh);;glTF (*.gltf *.glb);;Alle Dateien (*)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Import %n Clip(s)</source>
+        <translation>
+            <numerusform>%n Clip importieren</numerusform>
+            <numerusform>%n Clips importieren</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Imported %1 into %2.</source>
+        <translation>%1 in %2 importiert.</translation>
+    </message>
+    <message>
+        <source>Actor</source>
+        <translation>Darsteller</translation>
+    </message>
+    <message>
+        <source>Add Character</source>
+        <translation>Figur hinzufügen</translation>
+    </message>
+    <message>
+        <source>Rename Character</source>
+        <translation>Figur umbenennen</translation>
+    </message>
+    <message>
+        <source>New name:</source>
+        <translation>Neuer Name:</translation>
+    </message>
+    <message>
+        <source>Rename Layer</source>
+        <translation>Ebene umbenennen</translation>
+    </message>
+    <message>
+        <source>Change Lighting</source>
+        <translation>Beleuchtung ändern</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::CurvePanel</name>
     <message>
         <source>Weight</source>
@@ -1559,16 +1723,8 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <translation>Stopp</translation>
     </message>
     <message>
-        <source>Preview needs the 3D view, which is not available here (no OpenGL)</source>
-        <translation>Die Vorschau braucht die 3D-Ansicht, die hier nicht verfügbar ist (kein OpenGL)</translation>
-    </message>
-    <message>
         <source>Stop the preview and show the document again</source>
         <translation>Die Vorschau beenden und wieder das Dokument anzeigen</translation>
-    </message>
-    <message>
-        <source>Play the selected gesture on the character from the playhead, over its other layers (the document does not change)</source>
-        <translation>Die ausgewählte Geste ab dem Abspielkopf auf der Figur abspielen, über ihren anderen Ebenen (das Dokument ändert sich nicht)</translation>
     </message>
     <message>
         <source>Character &quot;%1&quot; has no clips to make a gesture from.</source>
@@ -1590,20 +1746,12 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         </translation>
     </message>
     <message>
-        <source>Gesture preview</source>
-        <translation>Gestenvorschau</translation>
-    </message>
-    <message>
         <source>Cannot preview gesture &quot;%1&quot;: %2</source>
         <translation>Vorschau der Geste „%1“ nicht möglich: %2</translation>
     </message>
     <message>
         <source>Cannot preview gesture &quot;%1&quot;: its clip has no finite length.</source>
         <translation>Vorschau der Geste „%1“ nicht möglich: Ihr Clip hat keine endliche Länge.</translation>
-    </message>
-    <message>
-        <source>The 3D view could not show the document again: %1</source>
-        <translation>Die 3D-Ansicht konnte das Dokument nicht wieder anzeigen: %1</translation>
     </message>
     <message>
         <source>Before / After</source>
@@ -1620,6 +1768,22 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source>After: &quot;%1&quot; with the dependent-joint filter (spine and neck follow)</source>
         <translation>Nachher: &quot;%1&quot; mit dem Filter für abhängige Gelenke (Wirbelsäule und Hals folgen)</translation>
+    </message>
+    <message>
+        <source>Open a scenario to preview its gestures</source>
+        <translation>Öffnen Sie ein Szenario, um seine Gesten vorzuschauen</translation>
+    </message>
+    <message>
+        <source>Play the selected gesture on the character from the playhead, over what it plays, as a script would (the document does not change)</source>
+        <translation>Spielt die gewählte Geste ab dem Abspielkopf auf der Figur, über dem, was sie spielt, wie ein Skript es täte (das Dokument ändert sich nicht)</translation>
+    </message>
+    <message>
+        <source>Cannot preview gesture &quot;%1&quot;: it cannot be played (Messages says why).</source>
+        <translation>Geste „%1“ kann nicht vorgeschaut werden: Sie kann nicht gespielt werden (Meldungen sagt, warum).</translation>
+    </message>
+    <message>
+        <source>Cannot preview gesture &quot;%1&quot; with the dependent-joint filter: the scenario names no posture bases (a .pca file made by thespis-cli train-pca).</source>
+        <translation>Geste „%1“ kann nicht mit dem Filter für abhängige Gelenke vorgeschaut werden: Das Szenario nennt keine Haltungsbasen (eine .pca-Datei von thespis-cli train-pca).</translation>
     </message>
 </context>
 <context>
@@ -2154,6 +2318,10 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source>%1 at %2 s — energy above PC %3: this pose %4 %, captured motion %5 %</source>
         <translation>%1 bei %2 s — Energie über HK %3: diese Pose %4 %, aufgenommene Bewegung %5 %</translation>
+    </message>
+    <message>
+        <source>Nothing plays.</source>
+        <translation>Nichts spielt.</translation>
     </message>
 </context>
 <context>
@@ -2884,6 +3052,29 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
     </message>
 </context>
 <context>
+    <name>thespis::editor::SkeletonView</name>
+    <message>
+        <source>m</source>
+        <comment>metres</comment>
+        <translation>m</translation>
+    </message>
+    <message>
+        <source>units</source>
+        <comment>length unit of a BVH file</comment>
+        <translation>Einheiten</translation>
+    </message>
+    <message>
+        <source>This scenario has no characters yet.</source>
+        <translation>Dieses Szenario hat noch keine Figuren.</translation>
+    </message>
+    <message>
+        <source>No scenario is open.
+Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
+        <translation>Kein Szenario geöffnet.
+Öffnen Sie mit Datei ▸ Öffnen… (Strg+O) eine .thespis-Datei.</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::TimelinePanel</name>
     <message>
         <source>&amp;Delete</source>
@@ -3022,163 +3213,18 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
     </message>
 </context>
 <context>
-    <name>thespis::studio::ContentActions</name>
+    <name>thespis::editor::newDocument</name>
     <message>
-        <source>&amp;Import Motion…</source>
-        <translation>Bewegung &amp;importieren…</translation>
-    </message>
-    <message>
-        <source>Add BVH motion capture or glTF animations as clips of a character</source>
-        <translation>BVH-Motion-Capture oder glTF-Animationen als Clips einer Figur hinzufügen</translation>
-    </message>
-    <message>
-        <source>&amp;Add Character…</source>
-        <translation>Figur &amp;hinzufügen…</translation>
-    </message>
-    <message>
-        <source>Add a character on the built-in humanoid or a glTF model</source>
-        <translation>Eine Figur auf dem eingebauten Humanoiden oder einem glTF-Modell hinzufügen</translation>
-    </message>
-    <message>
-        <source>&amp;Duplicate Character</source>
-        <translation>Figur &amp;duplizieren</translation>
-    </message>
-    <message>
-        <source>A copy of the current character, a metre to its right</source>
-        <translation>Eine Kopie der aktuellen Figur, einen Meter rechts von ihr</translation>
-    </message>
-    <message>
-        <source>Re&amp;name Character…</source>
-        <translation>Figur &amp;umbenennen…</translation>
-    </message>
-    <message>
-        <source>&amp;Remove Character</source>
-        <translation>Figur &amp;entfernen</translation>
-    </message>
-    <message>
-        <source>Add &amp;Body Layer</source>
-        <translation>&amp;Körperebene hinzufügen</translation>
-    </message>
-    <message>
-        <source>A layer of body actions on top of the current character&apos;s</source>
-        <translation>Eine Ebene mit Körperaktionen über denen der aktuellen Figur</translation>
-    </message>
-    <message>
-        <source>Add &amp;Face Layer</source>
-        <translation>&amp;Gesichtsebene hinzufügen</translation>
-    </message>
-    <message>
-        <source>A layer of facial animation (MPEG-4 FAPs)</source>
-        <translation>Eine Ebene mit Gesichtsanimation (MPEG-4-FAPs)</translation>
-    </message>
-    <message>
-        <source>Rena&amp;me Layer…</source>
-        <translation>Ebene u&amp;mbenennen…</translation>
-    </message>
-    <message>
-        <source>Move Layer &amp;Up</source>
-        <translation>Ebene nach &amp;oben verschieben</translation>
-    </message>
-    <message>
-        <source>Move Layer Do&amp;wn</source>
-        <translation>Ebene nach u&amp;nten verschieben</translation>
-    </message>
-    <message>
-        <source>Remove &amp;Layer</source>
-        <translation>Ebene ent&amp;fernen</translation>
-    </message>
-    <message>
-        <source>&amp;Lighting…</source>
-        <translation>Be&amp;leuchtung…</translation>
-    </message>
-    <message>
-        <source>Choose the light probe, turn it and set its intensity</source>
-        <translation>Die Lichtsonde auswählen, drehen und ihre Intensität festlegen</translation>
-    </message>
-    <message>
-        <source>Duplicate Character</source>
-        <translation>Figur duplizieren</translation>
-    </message>
-    <message>
-        <source>Remove Character</source>
-        <translation>Figur entfernen</translation>
-    </message>
-    <message>
-        <source>Add Body Layer</source>
-        <translation>Körperebene hinzufügen</translation>
-    </message>
-    <message>
-        <source>Add Face Layer</source>
-        <translation>Gesichtsebene hinzufügen</translation>
-    </message>
-    <message>
-        <source>Move Layer Up</source>
-        <translation>Ebene nach oben verschieben</translation>
-    </message>
-    <message>
-        <source>Move Layer Down</source>
-        <translation>Ebene nach unten verschieben</translation>
-    </message>
-    <message>
-        <source>Remove Layer</source>
-        <translation>Ebene entfernen</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>Import Motion</source>
-        <translation>Bewegung importieren</translation>
-    </message>
-    <message>
-        <source>Motion (*.bvh *.gltf *.glb);;BVH motion capture (*.bvh);;glTF (*.gltf *.glb);;All files (*)</source>
-        <translation>Bewegung (*.bvh *.gltf *.glb);;BVH-Motion-Capture (*.bvh);;glTF (*.gltf *.glb);;Alle Dateien (*)</translation>
-    </message>
-    <message numerus="yes">
-        <source>Import %n Clip(s)</source>
-        <translation>
-            <numerusform>%n Clip importieren</numerusform>
-            <numerusform>%n Clips importieren</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Imported %1 into %2.</source>
-        <translation>%1 in %2 importiert.</translation>
+        <source>New scenario</source>
+        <translation>Neues Szenario</translation>
     </message>
     <message>
         <source>Actor</source>
         <translation>Darsteller</translation>
     </message>
-    <message>
-        <source>Add Character</source>
-        <translation>Figur hinzufügen</translation>
-    </message>
-    <message>
-        <source>Rename Character</source>
-        <translation>Figur umbenennen</translation>
-    </message>
-    <message>
-        <source>New name:</source>
-        <translation>Neuer Name:</translation>
-    </message>
-    <message>
-        <source>Rename Layer</source>
-        <translation>Ebene umbenennen</translation>
-    </message>
-    <message>
-        <source>Change Lighting</source>
-        <translation>Beleuchtung ändern</translation>
-    </message>
 </context>
 <context>
     <name>thespis::studio::MainWindow</name>
-    <message>
-        <source>No scenario is open.
-Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
-        <translation>Kein Szenario geöffnet.
-Öffnen Sie mit Datei ▸ Öffnen… (Strg+O) eine .thespis-Datei.</translation>
-    </message>
     <message>
         <source>&amp;Open…</source>
         <translation>&amp;Öffnen…</translation>
@@ -3271,10 +3317,6 @@ Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
-    <message>
-        <source>This scenario has no characters yet.</source>
-        <translation>Dieses Szenario hat noch keine Figuren.</translation>
-    </message>
     <message numerus="yes">
         <source>Opened %1: %n character(s)</source>
         <translation>
@@ -3328,16 +3370,6 @@ Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
     <message>
         <source>Thespis Studio</source>
         <translation>Thespis Studio</translation>
-    </message>
-    <message>
-        <source>m</source>
-        <comment>metres</comment>
-        <translation>m</translation>
-    </message>
-    <message>
-        <source>units</source>
-        <comment>length unit of a BVH file</comment>
-        <translation>Einheiten</translation>
     </message>
     <message>
         <source>Drag to orbit, right-drag or wheel to zoom, middle-drag to pan, double-click for the home view</source>
@@ -3468,14 +3500,6 @@ Der Reiter Skelette zeigt die Animation; thespis-cli render zeichnet die Szene o
     <message>
         <source>%1[*] — Thespis Studio</source>
         <translation>%1[*] — Thespis Studio</translation>
-    </message>
-    <message>
-        <source>New scenario</source>
-        <translation>Neues Szenario</translation>
-    </message>
-    <message>
-        <source>Actor</source>
-        <translation>Darsteller</translation>
     </message>
     <message>
         <source>Could not start a new scenario.</source>

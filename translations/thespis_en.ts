@@ -63,6 +63,16 @@
     </message>
 </context>
 <context>
+    <name>thespis::editor::ContentActions</name>
+    <message numerus="yes">
+        <source>Import %n Clip(s)</source>
+        <translation>
+            <numerusform>Import %n Clip</numerusform>
+            <numerusform>Import %n Clips</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::CurvePanel</name>
     <message numerus="yes">
         <source>Move %n Curve Key(s)</source>
@@ -244,16 +254,6 @@
         <translation>
             <numerusform>Duplicate %n Action</numerusform>
             <numerusform>Duplicate %n Actions</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>thespis::studio::ContentActions</name>
-    <message numerus="yes">
-        <source>Import %n Clip(s)</source>
-        <translation>
-            <numerusform>Import %n Clip</numerusform>
-            <numerusform>Import %n Clips</numerusform>
         </translation>
     </message>
 </context>

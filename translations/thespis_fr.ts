@@ -511,10 +511,6 @@ fx %6 ± %7, fy %8 ± %9, centre (%10, %11) px.</translation>
         <translation>Vidéos (*.mp4 *.avi)</translation>
     </message>
     <message>
-        <source>The scenario changed: Stop and Start again to see it over the video.</source>
-        <translation>Le scénario a changé : arrêtez puis redémarrez pour le voir sur la vidéo.</translation>
-    </message>
-    <message>
         <source>Place the World on the Target</source>
         <translation>Placer le monde sur la cible</translation>
     </message>
@@ -656,6 +652,24 @@ Corrigez-le, puis cliquez sur « Démarrer ».</translation>
     <message>
         <source>The camera file&apos;s size is asked for, at %1 fps.</source>
         <translation>La taille du fichier de caméra est demandée, à %1 i/s.</translation>
+    </message>
+    <message>
+        <source>Plays with the studio&apos;s transport</source>
+        <translation>Joue avec la barre de transport du studio</translation>
+    </message>
+    <message>
+        <source>Plays on the video&apos;s time</source>
+        <translation>Joue au temps de la vidéo</translation>
+    </message>
+    <message>
+        <source>The transport: play, scrub and loop in the studio, and the video shows it. The video&apos;s time: the playhead follows the video frame by frame, as a recording would.</source>
+        <translation>La barre de transport : lecture, défilement et boucle dans le studio, et la vidéo le montre. Le temps de la vidéo : la tête de lecture suit la vidéo image par image, comme un enregistrement.</translation>
+    </message>
+    <message>
+        <source>The characters changed.
+Press Start to see them over the video.</source>
+        <translation>Les personnages ont changé.
+Appuyez sur Démarrer pour les voir sur la vidéo.</translation>
     </message>
 </context>
 <context>
@@ -1128,6 +1142,156 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     </message>
 </context>
 <context>
+    <name>thespis::editor::ContentActions</name>
+    <message>
+        <source>&amp;Import Motion…</source>
+        <translation>&amp;Importer un mouvement…</translation>
+    </message>
+    <message>
+        <source>Add BVH motion capture or glTF animations as clips of a character</source>
+        <translation>Ajouter de la capture de mouvement BVH ou des animations glTF comme clips d’un personnage</translation>
+    </message>
+    <message>
+        <source>&amp;Add Character…</source>
+        <translation>&amp;Ajouter un personnage…</translation>
+    </message>
+    <message>
+        <source>Add a character on the built-in humanoid or a glTF model</source>
+        <translation>Ajouter un personnage sur l’humanoïde intégré ou sur un modèle glTF</translation>
+    </message>
+    <message>
+        <source>&amp;Duplicate Character</source>
+        <translation>&amp;Dupliquer le personnage</translation>
+    </message>
+    <message>
+        <source>A copy of the current character, a metre to its right</source>
+        <translation>Une copie du personnage courant, un mètre à sa droite</translation>
+    </message>
+    <message>
+        <source>Re&amp;name Character…</source>
+        <translation>Re&amp;nommer le personnage…</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Character</source>
+        <translation>&amp;Supprimer le personnage</translation>
+    </message>
+    <message>
+        <source>Add &amp;Body Layer</source>
+        <translation>Ajouter une couche de &amp;corps</translation>
+    </message>
+    <message>
+        <source>A layer of body actions on top of the current character&apos;s</source>
+        <translation>Une couche d’actions du corps par-dessus celles du personnage courant</translation>
+    </message>
+    <message>
+        <source>Add &amp;Face Layer</source>
+        <translation>Ajouter une couche de &amp;visage</translation>
+    </message>
+    <message>
+        <source>A layer of facial animation (MPEG-4 FAPs)</source>
+        <translation>Une couche d’animation faciale (FAP MPEG-4)</translation>
+    </message>
+    <message>
+        <source>Rena&amp;me Layer…</source>
+        <translation>Renommer &amp;la couche…</translation>
+    </message>
+    <message>
+        <source>Move Layer &amp;Up</source>
+        <translation>&amp;Monter la couche</translation>
+    </message>
+    <message>
+        <source>Move Layer Do&amp;wn</source>
+        <translation>Desc&amp;endre la couche</translation>
+    </message>
+    <message>
+        <source>Remove &amp;Layer</source>
+        <translation>Supprimer la c&amp;ouche</translation>
+    </message>
+    <message>
+        <source>&amp;Lighting…</source>
+        <translation>É&amp;clairage…</translation>
+    </message>
+    <message>
+        <source>Choose the light probe, turn it and set its intensity</source>
+        <translation>Choisir la sonde de lumière, la faire pivoter et régler son intensité</translation>
+    </message>
+    <message>
+        <source>Duplicate Character</source>
+        <translation>Dupliquer le personnage</translation>
+    </message>
+    <message>
+        <source>Remove Character</source>
+        <translation>Supprimer le personnage</translation>
+    </message>
+    <message>
+        <source>Add Body Layer</source>
+        <translation>Ajouter une couche de corps</translation>
+    </message>
+    <message>
+        <source>Add Face Layer</source>
+        <translation>Ajouter une couche de visage</translation>
+    </message>
+    <message>
+        <source>Move Layer Up</source>
+        <translation>Monter la couche</translation>
+    </message>
+    <message>
+        <source>Move Layer Down</source>
+        <translation>Descendre la couche</translation>
+    </message>
+    <message>
+        <source>Remove Layer</source>
+        <translation>Supprimer la couche</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>Import Motion</source>
+        <translation>Importer un mouvement</translation>
+    </message>
+    <message>
+        <source>Motion (*.bvh *.gltf *.glb);;BVH motion capture (*.bvh);;glTF (*.gltf *.glb);;All files (*)</source>
+        <translation>Mouvement (*.bvh *.gltf *.glb);;Capture de mouvement BVH (*.bvh);;glTF (*.gltf *.glb);;Tous les fichiers (*)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Import %n Clip(s)</source>
+        <translation>
+            <numerusform>Importer %n clip</numerusform>
+            <numerusform>Importer %n clips</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Imported %1 into %2.</source>
+        <translation>Importé dans %2 : %1.</translation>
+    </message>
+    <message>
+        <source>Actor</source>
+        <translation>Acteur</translation>
+    </message>
+    <message>
+        <source>Add Character</source>
+        <translation>Ajouter un personnage</translation>
+    </message>
+    <message>
+        <source>Rename Character</source>
+        <translation>Renommer le personnage</translation>
+    </message>
+    <message>
+        <source>New name:</source>
+        <translation>Nouveau nom :</translation>
+    </message>
+    <message>
+        <source>Rename Layer</source>
+        <translation>Renommer la couche</translation>
+    </message>
+    <message>
+        <source>Change Lighting</source>
+        <translation>Modifier l’éclairage</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::CurvePanel</name>
     <message>
         <source>Weight</source>
@@ -1559,16 +1723,8 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <translation>Arrêter</translation>
     </message>
     <message>
-        <source>Preview needs the 3D view, which is not available here (no OpenGL)</source>
-        <translation>L’aperçu nécessite la vue 3D, indisponible ici (pas d’OpenGL)</translation>
-    </message>
-    <message>
         <source>Stop the preview and show the document again</source>
         <translation>Arrêter l’aperçu et réafficher le document</translation>
-    </message>
-    <message>
-        <source>Play the selected gesture on the character from the playhead, over its other layers (the document does not change)</source>
-        <translation>Jouer le geste sélectionné sur le personnage à partir de la tête de lecture, par-dessus ses autres couches (le document n’est pas modifié)</translation>
     </message>
     <message>
         <source>Character &quot;%1&quot; has no clips to make a gesture from.</source>
@@ -1590,20 +1746,12 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         </translation>
     </message>
     <message>
-        <source>Gesture preview</source>
-        <translation>Aperçu du geste</translation>
-    </message>
-    <message>
         <source>Cannot preview gesture &quot;%1&quot;: %2</source>
         <translation>Impossible de prévisualiser le geste « %1 » : %2</translation>
     </message>
     <message>
         <source>Cannot preview gesture &quot;%1&quot;: its clip has no finite length.</source>
         <translation>Impossible de prévisualiser le geste « %1 » : son clip n’a pas de durée finie.</translation>
-    </message>
-    <message>
-        <source>The 3D view could not show the document again: %1</source>
-        <translation>La vue 3D n’a pas pu réafficher le document : %1</translation>
     </message>
     <message>
         <source>Before / After</source>
@@ -1620,6 +1768,22 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source>After: &quot;%1&quot; with the dependent-joint filter (spine and neck follow)</source>
         <translation>Après : « %1 » avec le filtre des articulations dépendantes (le dos et le cou suivent)</translation>
+    </message>
+    <message>
+        <source>Open a scenario to preview its gestures</source>
+        <translation>Ouvrez un scénario pour prévisualiser ses gestes</translation>
+    </message>
+    <message>
+        <source>Play the selected gesture on the character from the playhead, over what it plays, as a script would (the document does not change)</source>
+        <translation>Joue le geste choisi sur le personnage depuis la tête de lecture, par-dessus ce qu’il joue, comme le ferait un script (le document ne change pas)</translation>
+    </message>
+    <message>
+        <source>Cannot preview gesture &quot;%1&quot;: it cannot be played (Messages says why).</source>
+        <translation>Impossible de prévisualiser le geste « %1 » : il ne peut pas être joué (Messages dit pourquoi).</translation>
+    </message>
+    <message>
+        <source>Cannot preview gesture &quot;%1&quot; with the dependent-joint filter: the scenario names no posture bases (a .pca file made by thespis-cli train-pca).</source>
+        <translation>Impossible de prévisualiser le geste « %1 » avec le filtre des articulations dépendantes : le scénario ne nomme aucune base de postures (un fichier .pca fait par thespis-cli train-pca).</translation>
     </message>
 </context>
 <context>
@@ -2154,6 +2318,10 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source>%1 at %2 s — energy above PC %3: this pose %4 %, captured motion %5 %</source>
         <translation>%1 à %2 s — énergie au-delà de la CP %3 : cette pose %4 %, mouvement capturé %5 %</translation>
+    </message>
+    <message>
+        <source>Nothing plays.</source>
+        <translation>Rien ne joue.</translation>
     </message>
 </context>
 <context>
@@ -2884,6 +3052,29 @@ Un point vert signale une action jouée à l’instant courant.</translation>
     </message>
 </context>
 <context>
+    <name>thespis::editor::SkeletonView</name>
+    <message>
+        <source>m</source>
+        <comment>metres</comment>
+        <translation>m</translation>
+    </message>
+    <message>
+        <source>units</source>
+        <comment>length unit of a BVH file</comment>
+        <translation>unités</translation>
+    </message>
+    <message>
+        <source>This scenario has no characters yet.</source>
+        <translation>Ce scénario n’a pas encore de personnages.</translation>
+    </message>
+    <message>
+        <source>No scenario is open.
+Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
+        <translation>Aucun scénario ouvert.
+Utilisez Fichier ▸ Ouvrir… (Ctrl+O) pour ouvrir un fichier .thespis.</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::TimelinePanel</name>
     <message>
         <source>&amp;Delete</source>
@@ -3022,163 +3213,18 @@ Un point vert signale une action jouée à l’instant courant.</translation>
     </message>
 </context>
 <context>
-    <name>thespis::studio::ContentActions</name>
+    <name>thespis::editor::newDocument</name>
     <message>
-        <source>&amp;Import Motion…</source>
-        <translation>&amp;Importer un mouvement…</translation>
-    </message>
-    <message>
-        <source>Add BVH motion capture or glTF animations as clips of a character</source>
-        <translation>Ajouter de la capture de mouvement BVH ou des animations glTF comme clips d’un personnage</translation>
-    </message>
-    <message>
-        <source>&amp;Add Character…</source>
-        <translation>&amp;Ajouter un personnage…</translation>
-    </message>
-    <message>
-        <source>Add a character on the built-in humanoid or a glTF model</source>
-        <translation>Ajouter un personnage sur l’humanoïde intégré ou sur un modèle glTF</translation>
-    </message>
-    <message>
-        <source>&amp;Duplicate Character</source>
-        <translation>&amp;Dupliquer le personnage</translation>
-    </message>
-    <message>
-        <source>A copy of the current character, a metre to its right</source>
-        <translation>Une copie du personnage courant, un mètre à sa droite</translation>
-    </message>
-    <message>
-        <source>Re&amp;name Character…</source>
-        <translation>Re&amp;nommer le personnage…</translation>
-    </message>
-    <message>
-        <source>&amp;Remove Character</source>
-        <translation>&amp;Supprimer le personnage</translation>
-    </message>
-    <message>
-        <source>Add &amp;Body Layer</source>
-        <translation>Ajouter une couche de &amp;corps</translation>
-    </message>
-    <message>
-        <source>A layer of body actions on top of the current character&apos;s</source>
-        <translation>Une couche d’actions du corps par-dessus celles du personnage courant</translation>
-    </message>
-    <message>
-        <source>Add &amp;Face Layer</source>
-        <translation>Ajouter une couche de &amp;visage</translation>
-    </message>
-    <message>
-        <source>A layer of facial animation (MPEG-4 FAPs)</source>
-        <translation>Une couche d’animation faciale (FAP MPEG-4)</translation>
-    </message>
-    <message>
-        <source>Rena&amp;me Layer…</source>
-        <translation>Renommer &amp;la couche…</translation>
-    </message>
-    <message>
-        <source>Move Layer &amp;Up</source>
-        <translation>&amp;Monter la couche</translation>
-    </message>
-    <message>
-        <source>Move Layer Do&amp;wn</source>
-        <translation>Desc&amp;endre la couche</translation>
-    </message>
-    <message>
-        <source>Remove &amp;Layer</source>
-        <translation>Supprimer la c&amp;ouche</translation>
-    </message>
-    <message>
-        <source>&amp;Lighting…</source>
-        <translation>É&amp;clairage…</translation>
-    </message>
-    <message>
-        <source>Choose the light probe, turn it and set its intensity</source>
-        <translation>Choisir la sonde de lumière, la faire pivoter et régler son intensité</translation>
-    </message>
-    <message>
-        <source>Duplicate Character</source>
-        <translation>Dupliquer le personnage</translation>
-    </message>
-    <message>
-        <source>Remove Character</source>
-        <translation>Supprimer le personnage</translation>
-    </message>
-    <message>
-        <source>Add Body Layer</source>
-        <translation>Ajouter une couche de corps</translation>
-    </message>
-    <message>
-        <source>Add Face Layer</source>
-        <translation>Ajouter une couche de visage</translation>
-    </message>
-    <message>
-        <source>Move Layer Up</source>
-        <translation>Monter la couche</translation>
-    </message>
-    <message>
-        <source>Move Layer Down</source>
-        <translation>Descendre la couche</translation>
-    </message>
-    <message>
-        <source>Remove Layer</source>
-        <translation>Supprimer la couche</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1 : %2</translation>
-    </message>
-    <message>
-        <source>Import Motion</source>
-        <translation>Importer un mouvement</translation>
-    </message>
-    <message>
-        <source>Motion (*.bvh *.gltf *.glb);;BVH motion capture (*.bvh);;glTF (*.gltf *.glb);;All files (*)</source>
-        <translation>Mouvement (*.bvh *.gltf *.glb);;Capture de mouvement BVH (*.bvh);;glTF (*.gltf *.glb);;Tous les fichiers (*)</translation>
-    </message>
-    <message numerus="yes">
-        <source>Import %n Clip(s)</source>
-        <translation>
-            <numerusform>Importer %n clip</numerusform>
-            <numerusform>Importer %n clips</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Imported %1 into %2.</source>
-        <translation>Importé dans %2 : %1.</translation>
+        <source>New scenario</source>
+        <translation>Nouveau scénario</translation>
     </message>
     <message>
         <source>Actor</source>
         <translation>Acteur</translation>
     </message>
-    <message>
-        <source>Add Character</source>
-        <translation>Ajouter un personnage</translation>
-    </message>
-    <message>
-        <source>Rename Character</source>
-        <translation>Renommer le personnage</translation>
-    </message>
-    <message>
-        <source>New name:</source>
-        <translation>Nouveau nom :</translation>
-    </message>
-    <message>
-        <source>Rename Layer</source>
-        <translation>Renommer la couche</translation>
-    </message>
-    <message>
-        <source>Change Lighting</source>
-        <translation>Modifier l’éclairage</translation>
-    </message>
 </context>
 <context>
     <name>thespis::studio::MainWindow</name>
-    <message>
-        <source>No scenario is open.
-Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
-        <translation>Aucun scénario ouvert.
-Utilisez Fichier ▸ Ouvrir… (Ctrl+O) pour ouvrir un fichier .thespis.</translation>
-    </message>
     <message>
         <source>&amp;Open…</source>
         <translation>&amp;Ouvrir…</translation>
@@ -3271,10 +3317,6 @@ Utilisez Fichier ▸ Ouvrir… (Ctrl+O) pour ouvrir un fichier .thespis.</transl
         <source>Could not open %1</source>
         <translation>Impossible d’ouvrir %1</translation>
     </message>
-    <message>
-        <source>This scenario has no characters yet.</source>
-        <translation>Ce scénario n’a pas encore de personnages.</translation>
-    </message>
     <message numerus="yes">
         <source>Opened %1: %n character(s)</source>
         <translation>
@@ -3328,16 +3370,6 @@ Utilisez Fichier ▸ Ouvrir… (Ctrl+O) pour ouvrir un fichier .thespis.</transl
     <message>
         <source>Thespis Studio</source>
         <translation>Thespis Studio</translation>
-    </message>
-    <message>
-        <source>m</source>
-        <comment>metres</comment>
-        <translation>m</translation>
-    </message>
-    <message>
-        <source>units</source>
-        <comment>length unit of a BVH file</comment>
-        <translation>unités</translation>
     </message>
     <message>
         <source>Drag to orbit, right-drag or wheel to zoom, middle-drag to pan, double-click for the home view</source>
@@ -3468,14 +3500,6 @@ L’onglet Squelettes montre l’animation ; thespis-cli render dessine la scèn
     <message>
         <source>%1[*] — Thespis Studio</source>
         <translation>%1[*] — Thespis Studio</translation>
-    </message>
-    <message>
-        <source>New scenario</source>
-        <translation>Nouveau scénario</translation>
-    </message>
-    <message>
-        <source>Actor</source>
-        <translation>Acteur</translation>
     </message>
     <message>
         <source>Could not start a new scenario.</source>

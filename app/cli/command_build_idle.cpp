@@ -6,7 +6,7 @@
 #include "commands.h"
 #include "exit_codes.h"
 #include "job_progress.h"
-#include "motion/build_idle_job.h"
+#include "scenario/build_idle_job.h"
 
 namespace thespis::cli {
 
@@ -39,7 +39,7 @@ CommandSpec buildIdleSpec()
 
 int runBuildIdle(const CommandSpec& spec, const ParsedArguments& arguments)
 {
-    core::motion::BuildIdleJob job;
+    core::scenario::BuildIdleJob job;
     int exitCode = ExitOk;
     double skip = 0;
     if (const auto text = arguments.value("skip")) {
@@ -68,7 +68,7 @@ int runBuildIdle(const CommandSpec& spec, const ParsedArguments& arguments)
     if (auto valid = job.validate(); !valid)
         return usageError(spec, valid.error().message);
 
-    const auto built = runJobWithProgress(spec.name, job, {core::motion::BuildIdleJob::ReadingStage, "recordings"}, quiet,
+    const auto built = runJobWithProgress(spec.name, job, {core::scenario::BuildIdleJob::ReadingStage, "recordings"}, quiet,
                                           job.output.string() + " was not written");
     if (!built)
         return reportJobFailure(spec.name, built.error());

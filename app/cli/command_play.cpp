@@ -12,7 +12,7 @@
 #include "target_options.h"
 
 #ifdef THESPIS_WITH_PYTHON
-#include "script_runner.h"
+#include "script_play.h"
 #endif
 
 namespace thespis::cli {
@@ -89,18 +89,7 @@ int runPlay(const CommandSpec& spec, const ParsedArguments& arguments)
         source = readScriptReporting(spec.name, *scriptName, document->scenario);
         if (!source)
             return ExitInvalidInput;
-        job.script = core::render::PlayScript{
-            [&](const core::render::PlayScriptStage& stage) {
-                auto service = std::make_shared<core::runtime::AnimationService>(stage.stage, stage.clock);
-                // Unbuffered, so that the script's prints show between the progress lines.
-                const auto sink = [](script::Stream stream, std::string_view text) {
-                    std::FILE* out = stream == script::Stream::Out ? stdout : stderr;
-                    std::fwrite(text.data(), 1, text.size(), out);
-                    std::fflush(out);
-                };
-                return runner.run(source->text, source->fileName, service, sink, stage.sound);
-            },
-            [&] { runner.stop(); }};
+        job.script = playAlong(runner, *source);
     }
 #else
     if (arguments.has("script"))

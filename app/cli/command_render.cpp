@@ -63,6 +63,9 @@ int runRender(const CommandSpec& spec, const ParsedArguments& arguments)
     if (exitCode != ExitOk)
         return exitCode;
 
+    auto document = openScenarioReporting(spec.name, scenarioPath);
+    if (!document)
+        return ExitInvalidInput;
     if (!frames) {
         const std::filesystem::path outDir = outPath.parent_path().empty() ? "." : outPath.parent_path();
         if (std::error_code ec; !std::filesystem::is_directory(outDir, ec)) {
@@ -70,9 +73,9 @@ int runRender(const CommandSpec& spec, const ParsedArguments& arguments)
             return ExitInvalidInput;
         }
         std::unique_ptr<core::render::ScenarioPicture> picture;
-        if (const int status = makePicture(spec, arguments, scenarioPath, quiet, picture); status != ExitOk)
+        if (const int status = makePicture(spec, arguments, scenarioPath, *document, quiet, picture); status != ExitOk)
             return status;
-        picture->scene().setTime(time);
+        picture->scene().playAt(core::secondsToTicks(time));
         if (const int status = writePicture(spec.name, *picture, outPath); status != ExitOk)
             return status;
         if (!quiet)
@@ -83,9 +86,6 @@ int runRender(const CommandSpec& spec, const ParsedArguments& arguments)
         return ExitOk;
     }
 
-    auto document = openScenarioReporting(spec.name, scenarioPath);
-    if (!document)
-        return ExitInvalidInput;
     core::render::FrameSequenceJob job;
     if (const int status = readPictureSettings(spec, arguments, document->scenario, job.picture); status != ExitOk)
         return status;

@@ -1,7 +1,8 @@
 // thespis-cli run: plays a scenario with a Python script (the paper's §4.5 scripts) headless.
-// The script runs on a manual clock: each of its waits jumps the clock forward, and every frame
-// of --frames that falls in the jump is rendered first, so the pictures show the scenario and
-// the script's live actions exactly as a player at those times would.
+// The script runs on a manual clock (core::runtime::playScript, as `play`'s does): each of its
+// waits jumps the clock forward, and every frame of --frames that falls in the jump is rendered
+// first, so the pictures show the scenario and the script's live actions exactly as a player at
+// those times would.
 
 #include <chrono>
 #include <cstdio>
@@ -11,12 +12,10 @@
 #include "commands.h"
 #include "exit_codes.h"
 #include "progress.h"
-#include "runtime/animation_service.h"
-#include "runtime/sound.h"
+#include "runtime/scripted_play.h"
 #include "scenario/scenario_runtime.h"
 #include "scene_render.h"
-#include "script_runner.h"
-#include "script_source.h"
+#include "script_play.h"
 
 namespace thespis::cli {
 
@@ -77,7 +76,7 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
         outDir = *arguments.value("out");
         if (const int status = makeFrameFolder(spec.name, outDir); status != ExitOk)
             return status;
-        if (const int status = makePicture(spec, arguments, scenarioPath, quiet, picture); status != ExitOk)
+        if (const int status = makePicture(spec, arguments, scenarioPath, *document, quiet, picture); status != ExitOk)
             return status;
         stage = picture->scene().sharedStage();
     } else {
@@ -91,65 +90,57 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
 
     installInterruptHandlers();
     script::ScriptRunner runner;
-    auto clock = std::make_shared<core::runtime::ManualClock>();
-    auto service = std::make_shared<core::runtime::AnimationService>(stage, clock);
-    auto sound = std::make_shared<core::runtime::SoundService>(document->assets, clock);
     const long count = frames ? frames->last - frames->first + 1 : 0;
     ProgressReporter progress(stderr, "run", "frames", count, quiet || !frames);
     long next = frames ? frames->first : 0;
     int renderStatus = ExitOk;
     // Renders every frame before `until` (all that are left when until is max).
-    const auto renderUntil = [&](core::Tick until) {
+    const auto renderUntil = [&](core::Tick until) -> core::Result<void> {
         for (; frames && next <= frames->last; ++next) {
             const double seconds = double(next) / *fps;
-            if (core::secondsToTicks(seconds) >= until || interrupted())
+            if (core::secondsToTicks(seconds) >= until)
                 break;
-            picture->scene().setTime(seconds);
+            if (interrupted())
+                return core::makeError(core::ErrorCode::Cancelled, "stopped");
+            picture->scene().playAt(core::secondsToTicks(seconds));
             renderStatus = writePicture(spec.name, *picture, outDir / core::render::frameFileName(next));
             if (renderStatus != ExitOk)
-                return false;
+                return core::makeError(core::ErrorCode::IoError, "a frame could not be written");
             progress.update(next - frames->first + 1);
         }
-        return !interrupted();
+        return {};
     };
-    clock->setJumpHook([&](core::Tick, core::Tick to) {
-        if (renderUntil(to))
-            return true;
-        runner.stop();
-        return false;
-    });
-    // Ctrl-C also ends a script that computes without waiting.
-    std::jthread watcher([&](std::stop_token stop) {
-        while (!stop.stop_requested() && !interrupted())
+    // Ctrl-C stops the script, also one that computes without waiting.
+    std::stop_source stop;
+    std::jthread watcher([&](std::stop_token done) {
+        while (!done.stop_requested() && !interrupted())
             std::this_thread::sleep_for(std::chrono::milliseconds(50));
         if (interrupted())
-            runner.stop();
+            stop.request_stop();
     });
-    // Unbuffered, so that a script's prints show as they happen, also through a pipe.
-    const auto sink = [](script::Stream stream, std::string_view text) {
-        std::FILE* out = stream == script::Stream::Out ? stdout : stderr;
-        std::fwrite(text.data(), 1, text.size(), out);
-        std::fflush(out);
-    };
-    auto ran = runner.run(script->text, script->fileName, service, sink, sound);
+    auto played = core::runtime::playScript(playAlong(runner, *script), stage, document->assets, renderUntil,
+                                            stop.get_token());
     watcher.request_stop();
-    if (ran && renderStatus == ExitOk)
-        renderUntil(std::numeric_limits<core::Tick>::max());
+    watcher.join();
+    if (played && !interrupted())
+        (void)renderUntil(std::numeric_limits<core::Tick>::max());
     if (renderStatus != ExitOk) {
         progress.abandon();
         return renderStatus;
     }
-    if (interrupted() || (!ran && ran.error().code == core::ErrorCode::Cancelled)) {
+    if (interrupted() || (!played && played.error().code == core::ErrorCode::Cancelled)) {
         progress.abandon();
         std::fprintf(stderr, "thespis-cli run: cancelled%s.\n",
                      frames ? (" after " + std::to_string(next - frames->first) + " of " + std::to_string(count) + " frames").c_str() : "");
         return ExitCancelled;
     }
-    if (!ran) {
+    if (!played) {
         progress.abandon();
-        printError(spec.name, ran.error().message);
+        printError(spec.name, played.error().message);
         return ExitInvalidInput;
     }
+    const std::shared_ptr<core::runtime::SoundService>& sound = played->sound;
+    const std::shared_ptr<core::runtime::ManualClock>& clock = played->clock;
     progress.finish();
     if (const auto audio = arguments.value("audio")) {
         const core::Tick from = frames ? core::secondsToTicks(double(frames->first) / *fps) : 0;

@@ -6,7 +6,7 @@
 #include "commands.h"
 #include "exit_codes.h"
 #include "job_progress.h"
-#include "motion/train_pca_job.h"
+#include "scenario/train_pca_job.h"
 
 namespace thespis::cli {
 
@@ -37,7 +37,7 @@ CommandSpec trainPcaSpec()
 
 int runTrainPca(const CommandSpec& spec, const ParsedArguments& arguments)
 {
-    core::motion::TrainPcaJob job;
+    core::scenario::TrainPcaJob job;
     double skip = 0;
     for (auto [name, target] : {std::pair{"rate", &job.sampleRate}, std::pair{"skip", &skip}})
         if (const auto text = arguments.value(name)) {
@@ -56,7 +56,7 @@ int runTrainPca(const CommandSpec& spec, const ParsedArguments& arguments)
     if (auto valid = job.validate(); !valid)
         return usageError(spec, valid.error().message);
 
-    const auto trained = runJobWithProgress(spec.name, job, {core::motion::TrainPcaJob::ReadingStage, "clips"}, quiet,
+    const auto trained = runJobWithProgress(spec.name, job, {core::scenario::TrainPcaJob::ReadingStage, "clips"}, quiet,
                                             job.output.string() + " was not written");
     if (!trained)
         return reportJobFailure(spec.name, trained.error());

@@ -8,7 +8,8 @@
 #include "cancel.h"
 #include "commands.h"
 #include "exit_codes.h"
-#include "scenario/package_resolver.h"
+#include "scenario/open_scenario.h"
+#include "scenario/package_manifest.h"
 #include "scenario/scenario_runtime.h"
 
 namespace thespis::cli {
@@ -55,21 +56,6 @@ int validateScenario(const CommandSpec& spec, const core::scenario::Scenario& sc
     return ExitOk;
 }
 
-int validatePackage(const CommandSpec& spec, const std::filesystem::path& path, bool quiet)
-{
-    auto opened = core::scenario::openPackage(path);
-    if (!opened) {
-        std::printf("%s: 1 problem\n  - %s\n", path.string().c_str(), core::describe(opened.error()).c_str());
-        printError(spec.name, path.string() + " is not a valid package.");
-        return ExitInvalidInput;
-    }
-    const core::scenario::PackageManifest& manifest = opened->package->manifest();
-    if (!quiet)
-        std::printf("%s: a package by %s; %zu entries, each as its manifest says.\n", path.string().c_str(),
-                    manifest.writer.c_str(), manifest.entries.size() + 1);
-    return validateScenario(spec, opened->scenario, opened->assets, path / manifest.scenario, quiet);
-}
-
 } // namespace
 
 CommandSpec validateSpec()
@@ -89,12 +75,25 @@ int runValidate(const CommandSpec& spec, const ParsedArguments& arguments)
 {
     const std::filesystem::path path = arguments.positionals[0];
     const bool quiet = arguments.has("quiet");
-    if (path.extension() == core::scenario::kPackageExtension)
-        return validatePackage(spec, path, quiet);
-    const auto scenario = loadScenarioReporting(spec.name, path);
-    if (!scenario)
+    auto opened = core::scenario::openScenario(path);
+    if (!opened) {
+        if (!core::scenario::isPackagePath(path)) {
+            printError(spec.name, opened.error());
+            return ExitInvalidInput;
+        }
+        std::printf("%s: 1 problem\n  - %s\n", path.string().c_str(), core::describe(opened.error()).c_str());
+        printError(spec.name, path.string() + " is not a valid package.");
         return ExitInvalidInput;
-    return validateScenario(spec, *scenario, core::scenario::Assets::besideFile(path), path, quiet);
+    }
+    std::filesystem::path shown = path;
+    if (opened->package) {
+        const core::scenario::PackageManifest& manifest = opened->package->manifest();
+        if (!quiet)
+            std::printf("%s: a package by %s; %zu entries, each as its manifest says.\n", path.string().c_str(),
+                        manifest.writer.c_str(), manifest.entries.size() + 1);
+        shown = path / manifest.scenario;
+    }
+    return validateScenario(spec, opened->scenario, opened->assets, shown, quiet);
 }
 
 } // namespace thespis::cli

@@ -4,7 +4,6 @@
 #include <cstdio>
 
 #include "exit_codes.h"
-#include "scenario/package_resolver.h"
 #include "scenario/scenario_io.h"
 
 namespace thespis::cli {
@@ -59,20 +58,15 @@ std::optional<core::scenario::Scenario> loadScenarioReporting(const std::string&
     return std::move(scenario).value();
 }
 
-std::optional<OpenedScenario> openScenarioReporting(const std::string& command, const std::filesystem::path& path)
+std::optional<core::scenario::OpenedScenario> openScenarioReporting(const std::string& command,
+                                                                    const std::filesystem::path& path)
 {
-    if (path.extension() == core::scenario::kPackageExtension) {
-        auto opened = core::scenario::openPackage(path);
-        if (!opened) {
-            printError(command, opened.error());
-            return std::nullopt;
-        }
-        return OpenedScenario{std::move(opened->scenario), std::move(opened->assets)};
-    }
-    auto scenario = loadScenarioReporting(command, path);
-    if (!scenario)
+    auto opened = core::scenario::openScenario(path);
+    if (!opened) {
+        printError(command, opened.error());
         return std::nullopt;
-    return OpenedScenario{std::move(*scenario), core::scenario::Assets::besideFile(path)};
+    }
+    return std::move(opened).value();
 }
 
 std::optional<long> integerOption(const CommandSpec& spec, const ParsedArguments& arguments, const std::string& name,
@@ -100,18 +94,18 @@ std::string joinNames(const std::vector<std::string>& names)
     return text;
 }
 
-std::optional<std::vector<core::motion::PostureSource>> postureSources(const CommandSpec& spec,
+std::optional<std::vector<core::scenario::PostureSource>> postureSources(const CommandSpec& spec,
                                                                        const std::vector<std::string>& arguments,
                                                                        double defaultSkip, int& exitCode)
 {
-    std::vector<core::motion::PostureSource> sources;
+    std::vector<core::scenario::PostureSource> sources;
     for (const std::string& text : arguments) {
         const auto clip = parseClipArgument(text);
         if (!clip) {
             exitCode = usageError(spec, "'" + text + "': after '@' a frame rate (> 0) and after '+' seconds to skip (>= 0)");
             return std::nullopt;
         }
-        core::motion::PostureSource source;
+        core::scenario::PostureSource source;
         source.clip.file = clip->file;
         source.clip.name = std::filesystem::path(clip->file).stem().string();
         source.clip.frameRateOverride = clip->frameRate;

@@ -9,7 +9,8 @@
 #include <vector>
 
 #include "arguments.h"
-#include "motion/posture_clip.h"
+#include "scenario/posture_clip.h"
+#include "scenario/open_scenario.h"
 #include "scenario/scenario.h"
 #include "util/error.h"
 
@@ -62,13 +63,10 @@ int usageError(const CommandSpec& spec, const std::string& problem);
 /// Loads a scenario file, printing the error when it cannot be read.
 std::optional<core::scenario::Scenario> loadScenarioReporting(const std::string& command,
                                                               const std::filesystem::path& path);
-/// A scenario and where its files are: a .thespis file and its folder, or a package (.thespkg,
-/// checked, playing from the zip). Prints the error and returns nothing on failure.
-struct OpenedScenario {
-    core::scenario::Scenario scenario;
-    core::scenario::Assets assets;
-};
-std::optional<OpenedScenario> openScenarioReporting(const std::string& command, const std::filesystem::path& path);
+/// A scenario file or a package, opened as everything opens them (core::scenario::openScenario).
+/// Prints the error and returns nothing on failure.
+std::optional<core::scenario::OpenedScenario> openScenarioReporting(const std::string& command,
+                                                                    const std::filesystem::path& path);
 /// Reads an integer option within [min, max]; on a bad value prints the usage error and sets
 /// exitCode (to ExitUsage).
 std::optional<long> integerOption(const CommandSpec& spec, const ParsedArguments& arguments, const std::string& name,
@@ -91,7 +89,7 @@ std::optional<T> choiceOption(const CommandSpec& spec, const ParsedArguments& ar
 /// The motion files of a command line ("FILE[@FPS][+SKIP]", arguments.h), each skipping
 /// `defaultSkip` seconds unless it says otherwise. On a malformed one prints the usage error,
 /// sets exitCode and returns nothing.
-std::optional<std::vector<core::motion::PostureSource>> postureSources(const CommandSpec& spec,
+std::optional<std::vector<core::scenario::PostureSource>> postureSources(const CommandSpec& spec,
                                                                        const std::vector<std::string>& arguments,
                                                                        double defaultSkip, int& exitCode);
 /// "a, b, c", or "none".

@@ -169,15 +169,12 @@ void printSceneError(const CommandSpec& spec, const ParsedArguments& arguments, 
 }
 
 int makePicture(const CommandSpec& spec, const ParsedArguments& arguments, const std::filesystem::path& scenarioPath,
-                bool quiet, std::unique_ptr<render::ScenarioPicture>& out)
+                const core::scenario::OpenedScenario& document, bool quiet, std::unique_ptr<render::ScenarioPicture>& out)
 {
-    const auto document = openScenarioReporting(spec.name, scenarioPath);
-    if (!document)
-        return ExitInvalidInput;
     render::PictureSettings settings;
-    if (const int status = readPictureSettings(spec, arguments, document->scenario, settings); status != ExitOk)
+    if (const int status = readPictureSettings(spec, arguments, document.scenario, settings); status != ExitOk)
         return status;
-    auto picture = render::ScenarioPicture::create(document->scenario, document->assets, settings);
+    auto picture = render::ScenarioPicture::create(document.scenario, document.assets, settings);
     if (!picture) {
         printSceneError(spec, arguments, scenarioPath, picture.error());
         return picture.error().code == core::ErrorCode::IoError || picture.error().code == core::ErrorCode::Internal

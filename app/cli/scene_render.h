@@ -10,6 +10,7 @@
 
 #include "arguments.h"
 #include "render/scenario_picture.h"
+#include "scenario/open_scenario.h"
 
 namespace thespis::cli {
 
@@ -34,11 +35,12 @@ void addPictureOptions(CommandSpec& spec);
 int readPictureSettings(const CommandSpec& spec, const ParsedArguments& arguments,
                         const core::scenario::Scenario& document, core::render::PictureSettings& out);
 
-/// Loads the scenario, reads the picture options and makes the picture (scene, renderer, framed
-/// camera) on this thread; prints what is wrong (and the scene's warnings unless quiet) and
-/// returns the exit code (ExitOk when `out` is ready).
+/// Reads the picture options and makes the picture of the opened scenario (scene, renderer,
+/// framed camera) on this thread; prints what is wrong (and the scene's warnings unless quiet)
+/// and returns the exit code (ExitOk when `out` is ready).
 int makePicture(const CommandSpec& spec, const ParsedArguments& arguments, const std::filesystem::path& scenarioPath,
-                bool quiet, std::unique_ptr<core::render::ScenarioPicture>& out);
+                const core::scenario::OpenedScenario& document, bool quiet,
+                std::unique_ptr<core::render::ScenarioPicture>& out);
 
 /// Draws the picture as it is posed now into `file`; prints what failed and returns the exit code.
 int writePicture(const std::string& command, core::render::ScenarioPicture& picture, const std::filesystem::path& file);

@@ -38,7 +38,7 @@
 #endif
 #include "editor/posture_chart_panel.h"
 #include "editor/properties_panel.h"
-#include "content_actions.h"
+#include "editor/content_actions.h"
 #include "preferences_dialog.h"
 #include "editor/scenario_tree_model.h"
 #include "editor/segment_panel.h"
@@ -50,9 +50,6 @@
 namespace thespis::studio {
 
 namespace {
-// Framing samples the whole timeline this often (seconds); 10 Hz catches every pose extreme
-// a person could see without costing noticeable time at load.
-constexpr double kBoundsSampleStep = 0.1;
 const QString kWindowStateKey = QStringLiteral("mainWindow/state");
 const QString kWindowGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kFrameRateKey = QStringLiteral("playback/frameRate");
@@ -63,7 +60,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     setObjectName(QStringLiteral("mainWindow"));
     m_clock = new editor::PlaybackClock(this);
     m_session = new editor::Session(m_clock, this);
-    connect(m_session, &editor::Session::edited, this, &MainWindow::onDocumentEdited);
     m_model = new editor::ScenarioTreeModel(this);
 
     auto* central = new QWidget(this);
@@ -79,6 +75,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
         m_viewport->setObjectName(QStringLiteral("viewport"));
         m_viewport->setToolTip(tr("Drag to orbit, right-drag or wheel to zoom, middle-drag to pan, double-click for the home view"));
         m_preview = new editor::ScenePreview(m_viewport, this);
+        m_preview->setSession(m_session);
+        connect(m_preview, &editor::ScenePreview::sceneFailed, this, [this](const QString& problem) {
+            statusBar()->showMessage(tr("The 3D view is empty: %1").arg(problem));
+        });
         connect(m_viewport, &widgets::OsgViewport::glError, this,
                 [this](const QString& message) { statusBar()->showMessage(message); });
         scene = m_viewport;
@@ -99,7 +99,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     m_poseView->setFocusPolicy(Qt::StrongFocus);
     m_views->addTab(scene, tr("Scene"));
     m_views->addTab(m_poseView, tr("Skeletons"));
-    m_poseView->setPlaceholderText(tr("No scenario is open.\nUse File ▸ Open… (Ctrl+O) to open a .thespis file."));
+    m_skeletons = new editor::SkeletonView(m_poseView, m_session, this);
     auto* line = new QFrame(central);
     line->setFrameShape(QFrame::HLine);
     line->setFrameShadow(QFrame::Sunken);
@@ -131,8 +131,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 
     createActions();
     createShadingActions();
-    m_content = new ContentActions(*this);
-    connect(m_content, &ContentActions::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    m_content = new editor::ContentActions(m_session, this,
+                                           {[this] { return currentCharacter(); }, [this] { return currentLayer(); },
+                                            [this](int character) { selectCharacter(character); }});
+    connect(m_content, &editor::ContentActions::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     createOutlineDock();
     createEditorDocks();
     createMessagesDock();
@@ -153,6 +155,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     m_session->addPanel(m_postureChart);
     m_session->addPanel(m_arPreview);
     m_session->addPanel(m_autosaver);
+    // After the views: when the window refreshes its lists, the views have followed the edit.
+    connect(m_session, &editor::Session::edited, this, &MainWindow::onDocumentEdited);
 
     m_fpsTimer = new QTimer(this);
     m_fpsTimer->setInterval(500);
@@ -172,11 +176,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 
 MainWindow::~MainWindow()
 {
-    // The model, panels and samplers read the document: detach them before it goes.
-    m_samplers.clear();
+    // The model and the panels read the document: detach them before it goes.
     m_session->setDocument(nullptr);
-    if (m_preview)
-        (void)m_preview->setDocument(nullptr);
 }
 
 void MainWindow::createActions()
@@ -358,7 +359,7 @@ void MainWindow::createMenus()
     QMenu* character = menuBar()->addMenu(tr("&Character"));
     character->setObjectName(QStringLiteral("characterMenu"));
     m_content->fillCharacterMenu(character);
-    connect(character, &QMenu::aboutToShow, m_content, &ContentActions::updateEnabled);
+    connect(character, &QMenu::aboutToShow, m_content, &editor::ContentActions::updateEnabled);
 
     QMenu* playback = menuBar()->addMenu(tr("&Playback"));
     playback->addAction(m_playPauseAction);
@@ -438,7 +439,6 @@ void MainWindow::createStatusBar()
 
 void MainWindow::setDocument(std::unique_ptr<editor::Document> next)
 {
-    m_samplers.clear();
     if (m_session->document())
         m_undoGroup->removeStack(m_session->document()->undoStack());
     // Every panel registered with the session follows (registerViews).
@@ -450,13 +450,9 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> next)
         connect(opened, &editor::Document::filePathChanged, this, &MainWindow::updateTitle);
     }
 
-    refreshFigures(true);
-
     m_outline->expandAll();
-    QString sceneProblem;
-    if (m_preview)
-        if (auto built = m_preview->setDocument(document(), m_session->stage()); !built)
-            sceneProblem = tr("The 3D view is empty: %1").arg(QString::fromStdString(built.error().message));
+    const QString sceneProblem =
+        m_preview && !m_preview->problem().isEmpty() ? tr("The 3D view is empty: %1").arg(m_preview->problem()) : QString();
     updateScriptStage();
     refreshScripts();
 
@@ -472,10 +468,8 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> next)
     m_stepBackAction->setEnabled(open);
     m_stepForwardAction->setEnabled(open);
     m_loopAction->setEnabled(open);
-    m_clock->setDuration(open ? document()->previewDuration() : 0.0);
     m_transport->setDuration(m_clock->duration());
-    m_clock->seek(0.0);
-    onTimeChanged(m_clock->time()); // pose everything even when the time did not change
+    onTimeChanged(m_clock->time()); // the time shown everywhere, even when it did not change
 
     if (open) {
         m_fileLabel->setText(document()->fileName());
@@ -516,31 +510,7 @@ void MainWindow::onAbout()
 
 void MainWindow::onTimeChanged(double seconds)
 {
-#ifdef THESPIS_WITH_PYTHON
-    m_script->setTime(seconds); // before the stage is evaluated, so a waiting script acts on time
-#endif
-    // The session's stage is evaluated once per tick — by the 3D view when there is one, else
-    // here — and the skeleton view shows the same poses (live actions included).
-    const core::runtime::PoseSet* poses = nullptr;
-    if (m_preview && m_preview->scene()) {
-        m_preview->setTime(seconds);
-        poses = &m_preview->scene()->poses();
-    } else if (const auto& stage = m_session->stage()) {
-        if (m_poses.characters.size() != stage->runtime().characters.size())
-            m_poses = stage->makePoseSet(); // only when the cast changed
-        stage->evaluate(core::secondsToTicks(seconds), m_poses);
-        poses = &m_poses;
-    }
-    const core::runtime::Stage* stage = m_session->stage().get();
-    for (std::size_t i = 0; i < m_samplers.size(); ++i) {
-        const bool fromStage = poses && stage && i < poses->characters.size() &&
-                               stage->runtime().characters[i].name == m_samplers[i].name();
-        if (fromStage)
-            m_samplers[i].setFrame(poses->characters[i].body);
-        else
-            m_samplers[i].sample(seconds);
-        m_poseView->setFigurePositions(int(i), m_samplers[i].positions());
-    }
+    // The time shown; what plays then is drawn by the Session's views at its tick.
     m_transport->setTime(seconds);
     m_model->setTime(seconds);
     m_timeline->setTime(seconds);
@@ -614,70 +584,8 @@ void MainWindow::updateTitle()
     m_fileLabel->setToolTip(QDir::toNativeSeparators(document()->sourceFile()));
 }
 
-void MainWindow::refreshFigures(bool frame)
-{
-    rebuildSamplers();
-    m_figureKeys.clear();
-    if (document())
-        for (const core::scenario::Character& character : document()->scenario().characters)
-            m_figureKeys.emplace_back(character.name, character.skeleton);
-    std::vector<widgets::PoseFigure> figures;
-    bool haveBounds = false;
-    QVector3D low, high;
-    if (document()) {
-        const double duration = document()->previewDuration();
-        for (editor::PoseSampler& sampler : m_samplers) {
-            figures.push_back(sampler.figure(widgets::figureColor(int(figures.size()))));
-            const auto [characterLow, characterHigh] = sampler.sweepBounds(duration, kBoundsSampleStep);
-            low = haveBounds ? QVector3D(std::min(low.x(), characterLow.x()), std::min(low.y(), characterLow.y()),
-                                         std::min(low.z(), characterLow.z()))
-                             : characterLow;
-            high = haveBounds ? QVector3D(std::max(high.x(), characterHigh.x()), std::max(high.y(), characterHigh.y()),
-                                          std::max(high.z(), characterHigh.z()))
-                              : characterHigh;
-            haveBounds = true;
-        }
-    }
-    m_poseView->setFigures(std::move(figures));
-    // H-Anim skeletons are in metres; a skeleton taken from a BVH file keeps the file's unit,
-    // which BVH does not name.
-    bool metres = true;
-    if (document())
-        for (const core::scenario::Character& character : document()->scenario().characters)
-            metres = metres && !character.skeleton.starts_with("clip:");
-    m_poseView->setLengthUnit(metres ? tr("m", "metres") : tr("units", "length unit of a BVH file"));
-    if (haveBounds && frame)
-        m_poseView->setSceneBounds(low, high);
-    else if (!haveBounds)
-        m_poseView->clearSceneBounds();
-    if (document() && document()->runtime().characters.empty())
-        m_poseView->setPlaceholderText(tr("This scenario has no characters yet."));
-    else
-        m_poseView->setPlaceholderText(tr("No scenario is open.\nUse File ▸ Open… (Ctrl+O) to open a .thespis file."));
-
-}
-
-void MainWindow::rebuildSamplers()
-{
-    // The samplers point into the runtime, which an edit replaces.
-    m_samplers.clear();
-    if (!document())
-        return;
-    m_samplers.reserve(document()->runtime().characters.size());
-    for (const core::scenario::CharacterRuntime& character : document()->runtime().characters)
-        m_samplers.emplace_back(character);
-}
-
 void MainWindow::onDocumentEdited()
 {
-    // Characters added, removed or given another skeleton: new stick figures, framed anew.
-    std::vector<std::pair<std::string, std::string>> figures;
-    for (const core::scenario::Character& character : document()->scenario().characters)
-        figures.emplace_back(character.name, character.skeleton);
-    if (figures != m_figureKeys)
-        refreshFigures(true);
-    else
-        rebuildSamplers();
     // The outline is rebuilt: the same character or layer stays selected.
     const auto location = m_model->locationOf(m_outline->currentIndex());
     m_model->setDocument(document());
@@ -687,14 +595,8 @@ void MainWindow::onDocumentEdited()
             m_outline->setCurrentIndex(index);
     refreshMessages();
     m_content->updateEnabled();
-    if (m_preview)
-        if (auto updated = m_preview->updateDocument(document(), m_session->stage()); !updated)
-            statusBar()->showMessage(tr("The 3D view is empty: %1").arg(QString::fromStdString(updated.error().message)));
     updateScriptStage();
     refreshScripts();
-    m_clock->setDuration(document()->previewDuration());
-    m_transport->setDuration(m_clock->duration());
-    onTimeChanged(m_clock->time());
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -1,11 +1,10 @@
 #pragma once
-// MainWindow: the studio's window. Shows one scenario posed at the playback clock's time: the
-// characters' bodies lit with PRT in a 3D viewport (first tab) and their skeletons as stick
-// figures (second tab), the transport bar, and docks for the timeline, the curve editor, the
-// joint-mask editor, the clip library, the scenario outline and the messages. Bringing content
-// in (import, characters, layers, light) is ContentActions'; file handling is in
-// main_window_files.cpp. Owns the open Document, the
-// clock, the 3D preview, one PoseSampler per character and the autosaver; File and Edit menus
+// MainWindow: the studio's window. Shows one scenario as the Session plays it: the characters'
+// bodies lit with PRT in a 3D viewport (first tab) and their skeletons as stick figures (second
+// tab), the transport bar, and docks for the timeline, the curve editor, the joint-mask editor,
+// the clip library, the scenario outline and the messages. Every view of what plays is a
+// Session view; the window assembles them. Bringing content in (import, characters, layers,
+// light) is ContentActions'; file handling is in main_window_files.cpp. File and Edit menus
 // (new / open / save / recent, undo / redo); the dock layout is kept in QSettings.
 
 #include <QElapsedTimer>
@@ -17,9 +16,9 @@
 
 #include "editor/document.h"
 #include "editor/playback_clock.h"
-#include "editor/pose_sampler.h"
 #include "editor/scene_preview.h"
 #include "editor/session.h"
+#include "editor/skeleton_view.h"
 
 class QAction;
 class QActionGroup;
@@ -53,9 +52,11 @@ class PoseView;
 class TransportBar;
 }
 
-namespace thespis::studio {
-
+namespace thespis::editor {
 class ContentActions;
+}
+
+namespace thespis::studio {
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -73,6 +74,7 @@ public:
     editor::Session* session() const { return m_session; }
     editor::PlaybackClock* clock() const { return m_clock; }
     widgets::PoseView* poseView() const { return m_poseView; }
+    editor::SkeletonView* skeletonView() const { return m_skeletons; }
     widgets::OsgViewport* viewport() const { return m_viewport; }
     editor::ScenePreview* scenePreview() const { return m_preview; }
     QTabWidget* views() const { return m_views; }
@@ -92,7 +94,7 @@ public:
     editor::Autosaver* autosaver() const { return m_autosaver; }
     QAction* undoAction() const { return m_undoAction; }
     QAction* redoAction() const { return m_redoAction; }
-    ContentActions* contentActions() const { return m_content; }
+    editor::ContentActions* contentActions() const { return m_content; }
     editor::MessagesPanel* messagesPanel() const { return m_messages; }
 
     /// The character the Character menu and imports act on: the one selected in the outline
@@ -103,9 +105,6 @@ public:
     std::optional<core::edit::LayerPath> currentLayer() const;
     /// Selects a character in the outline (and shows its properties).
     void selectCharacter(int character);
-    /// Where the import file dialog opens (the last folder imported from).
-    QString importFolder() const;
-    void setImportFolder(const QString& folder);
 
     /// Saves to the document's file, asking for one when it has none; false when not saved.
     bool save();
@@ -134,13 +133,10 @@ private:
     void updateRecentMenu();
     bool maybeSave();
     void onDocumentEdited();
-    void rebuildSamplers();
-    // The stick figures of the Skeletons view, one per character; `frame` also frames the view.
-    void refreshFigures(bool frame);
     void refreshMessages();
     void createMessagesDock();
     void createScriptDock();
-    /// Hands the Script dock the stage the 3D view plays (none without a scene).
+    /// Hands the Script dock the Session's stage (none without a document).
     void updateScriptStage();
     /// Hands the Script dock the scenario's scripts.
     void refreshScripts();
@@ -158,11 +154,8 @@ private:
     void setFrameRate(double framesPerSecond);
     void setShading(core::render::Shading shading);
 
-    // The samplers point into the document's runtime: declared after it, destroyed before it.
     editor::Session* m_session = nullptr; // child: the document, its stage and the views that show it
-    std::vector<editor::PoseSampler> m_samplers;
-    core::runtime::PoseSet m_poses; // the stage's poses when no 3D view evaluates them
-    std::vector<std::pair<std::string, std::string>> m_figureKeys; // name and skeleton of each figure shown
+    editor::SkeletonView* m_skeletons = nullptr;
 
     editor::PlaybackClock* m_clock = nullptr;
     editor::ScenarioTreeModel* m_model = nullptr;
@@ -188,7 +181,7 @@ private:
     QDockWidget* m_messagesDock = nullptr;
     editor::ScriptPanel* m_script = nullptr; // null when built without Python
     QDockWidget* m_scriptDock = nullptr;
-    ContentActions* m_content = nullptr;
+    editor::ContentActions* m_content = nullptr;
     QList<QDockWidget*> m_editorDocks;
     QMenu* m_recentMenu = nullptr;
     QUndoGroup* m_undoGroup = nullptr; // the open document's undo stack, behind Edit ▸ Undo / Redo

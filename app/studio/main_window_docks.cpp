@@ -16,7 +16,7 @@
 #include <QTreeView>
 #include <QTreeWidget>
 
-#include "content_actions.h"
+#include "editor/content_actions.h"
 #include "startup.h"
 #include "edit/content_edits.h"
 #include "editor/ar_preview_panel.h"
@@ -113,6 +113,10 @@ void MainWindow::createScriptDock()
         if (!m_clock->isPlaying())
             m_clock->play();
     });
+    connect(m_script, &editor::ScriptPanel::pauseRequested, m_clock, &editor::PlaybackClock::pause);
+    // A waiting script sees each new time before the stage is evaluated at it.
+    connect(m_session, &editor::Session::aboutToTick, m_script,
+            [this](core::Tick time) { m_script->setTime(core::ticksToSeconds(time)); });
     connect(m_script, &editor::ScriptPanel::saveRequested, this, [this](const QString& name, const QString& source) {
         if (document())
             (void)document()->edit(core::edit::setScript(document()->scenario(), name.toStdString(), source.toStdString()),
@@ -222,19 +226,6 @@ void MainWindow::selectCharacter(int character)
     m_outline->scrollTo(index);
 }
 
-QString MainWindow::importFolder() const
-{
-    const QString stored = QSettings().value(QStringLiteral("import/lastFolder")).toString();
-    if (!stored.isEmpty())
-        return stored;
-    return document() ? document()->baseDir() : QDir::homePath();
-}
-
-void MainWindow::setImportFolder(const QString& folder)
-{
-    QSettings().setValue(QStringLiteral("import/lastFolder"), folder);
-}
-
 void MainWindow::createEditorDocks()
 {
     auto dock = [this](const QString& title, const QString& name, QWidget* content, Qt::DockWidgetArea area) {
@@ -254,19 +245,17 @@ void MainWindow::createEditorDocks()
     m_timeline->setIdleDatabase(idleDatabase);
     m_properties = new editor::PropertiesPanel(this);
     m_gesticon = new editor::GesticonPanel(this);
-    m_gesticon->setClock(m_clock);
+    m_gesticon->setSession(m_session);
     m_segments = new editor::SegmentPanel(this);
     m_bake = new editor::BakePanel(this);
     m_postureChart = new editor::PostureChartPanel(this);
-    m_postureChart->setClock(m_clock);
+    m_postureChart->setSession(m_session);
     m_postureChart->setDefaultBases(shippedResource(QCoreApplication::applicationDirPath(), QStringLiteral("motion/cmu_postures.pca")));
     m_bake->prtPreviewCheck()->setEnabled(m_preview != nullptr);
     connect(m_bake, &editor::BakePanel::prtPreviewToggled, this,
             [this](bool prt) { setShading(prt ? core::render::Shading::Prt : core::render::Shading::Phong); });
-    if (m_preview) {
-        m_gesticon->setScenePreview(m_preview);
+    if (m_preview)
         m_segments->setScenePreview(m_preview);
-    }
     m_timeline->addAction(m_stepBackAction);
     m_timeline->addAction(m_stepForwardAction);
     QDockWidget* timelineDock = dock(tr("Timeline"), QStringLiteral("timelineDock"), m_timeline, Qt::BottomDockWidgetArea);
@@ -276,6 +265,7 @@ void MainWindow::createEditorDocks()
     tabifyDockWidget(curveDock, postureDock);
     // The AR preview: wide at the bottom (video beside its controls), or floated as a window.
     m_arPreview = new editor::ArPreviewPanel(this);
+    m_arPreview->setSession(m_session);
     QDockWidget* arDock = dock(tr("AR Preview"), QStringLiteral("arPreviewDock"), m_arPreview, Qt::BottomDockWidgetArea);
     tabifyDockWidget(postureDock, arDock);
     timelineDock->raise();

@@ -14,13 +14,12 @@
 #include <QSettings>
 #include <QStatusBar>
 
-#include "edit/content_edits.h"
 #include "editor/script_trust.h"
 #include "editor/autosave.h"
 #include "editor/error_dialog.h"
 #include "editor/export_package_dialog.h"
 #include "editor/qt_conversions.h"
-#include "scenario/scenario_io.h"
+#include "editor/new_document.h"
 #include "startup.h"
 
 namespace thespis::studio {
@@ -88,30 +87,8 @@ void MainWindow::onNew()
 
 void MainWindow::newScenario(bool withCharacter)
 {
-    core::scenario::Scenario scenario;
-    scenario.name = tr("New scenario").toStdString();
-    scenario.duration = 10 * core::TicksPerSecond;
-    if (withCharacter) {
-        core::scenario::Character actor = core::edit::newCharacter(tr("Actor").toStdString(), "", "hanim-25");
-        // Standing, shifting its weight now and then: the built-in demo's idle motion, its
-        // database named where the demo keeps it (the new scenario has no folder yet).
-        const std::filesystem::path demoPath = editor::toFsPath(defaultScenarioPath(QCoreApplication::applicationDirPath()));
-        const auto demo = core::scenario::loadScenario(demoPath);
-        const core::scenario::ClipAsset* idle = demo && !demo->characters.empty() ? demo->characters[0].findClip("creon_idle")
-                                                                                 : nullptr;
-        if (idle && idle->idle) {
-            core::scenario::ClipAsset clip = *idle;
-            clip.name = "idle";
-            clip.idle->database = (demoPath.parent_path() / clip.idle->database).lexically_normal().string();
-            actor.clips.push_back(std::move(clip));
-            core::scenario::ActionSpec stand;
-            stand.name = "idle";
-            stand.clip = "idle";
-            actor.layers[0].actions.push_back(stand);
-        }
-        scenario.characters.push_back(actor);
-    }
-    auto document = editor::Document::fromScenario(std::move(scenario), QDir::homePath());
+    auto document = editor::newDocument(withCharacter, defaultScenarioPath(QCoreApplication::applicationDirPath()),
+                                        QDir::homePath());
     if (!document) {
         editor::showError(this, document.error(), tr("Could not start a new scenario."));
         return;

@@ -69,6 +69,22 @@ Vec3 FloorMove::apply(const Vec3& point) const
     return {float(moved.imag()), point.y, float(moved.real())};
 }
 
+void Placement::apply(const FrameLayout& layout, std::span<float> frame) const
+{
+    const RootElements root = rootElements(layout);
+    if (!root.valid)
+        return;
+    if (root.rotation >= 0) {
+        Quat& q = rotationAt(frame, root.rotation);
+        q = normalize(rotation * q);
+    }
+    float* p = &frame[root.translation];
+    const Vec3 placed = anim::rotate(rotation, Vec3{p[0], p[1], p[2]}) + translation;
+    p[0] = placed.x;
+    p[1] = placed.y;
+    p[2] = placed.z;
+}
+
 void FloorMove::apply(const RootElements& root, std::span<float> frame) const
 {
     if (!root.valid)

@@ -41,4 +41,13 @@ struct FloorMove {
     void apply(const RootElements& root, std::span<float> frame) const;
 };
 
+/// Where a character stands and faces: a body frame's root is turned, then shifted.
+struct Placement {
+    Quat rotation;
+    Vec3 translation;
+    /// Moves the root of a frame of `layout` (the skeleton's, or a rig it is retargeted onto).
+    void apply(const FrameLayout& layout, std::span<float> frame) const;
+    bool operator==(const Placement&) const = default;
+};
+
 } // namespace thespis::core::anim

@@ -6,6 +6,7 @@
 
 #include "edit/document_edits.h"
 #include "lighting/probe.h"
+#include "util/text.h"
 
 namespace thespis::core::edit {
 
@@ -16,11 +17,6 @@ using namespace scenario;
 Error invalid(std::string message)
 {
     return makeError(ErrorCode::InvalidArgument, std::move(message));
-}
-
-std::string quote(const std::string& text)
-{
-    return "\"" + text + "\"";
 }
 
 Result<const Character*> characterAt(const Scenario& s, int index)
@@ -37,7 +33,7 @@ Result<const Layer*> layerAt(const Scenario& s, const LayerPath& p)
     if (!character)
         return character.error();
     if (p.layer < 0 || std::size_t(p.layer) >= (*character)->layers.size())
-        return invalid("Character " + quote((*character)->name) + " has no layer " + std::to_string(p.layer + 1) + ".");
+        return invalid("Character " + inQuotes((*character)->name) + " has no layer " + std::to_string(p.layer + 1) + ".");
     return &(*character)->layers[std::size_t(p.layer)];
 }
 
@@ -91,7 +87,7 @@ Character newCharacter(const std::string& name, const std::string& model, const 
 Result<Edit> addCharacter(const Scenario& scenario, Character character)
 {
     if (!isSkeleton(character.skeleton))
-        return invalid("Unknown skeleton " + quote(character.skeleton) + ".");
+        return invalid("Unknown skeleton " + inQuotes(character.skeleton) + ".");
     if (character.skeleton == "model" && character.model.empty())
         return invalid("A character playing on its model's rig needs a model.");
     const std::vector<std::string> taken = characterNames(scenario);
@@ -116,7 +112,7 @@ Result<Edit> renameCharacter(const Scenario& scenario, int index, const std::str
         return invalid("A character needs a name.");
     for (std::size_t i = 0; i < scenario.characters.size(); ++i)
         if (int(i) != index && scenario.characters[i].name == name)
-            return invalid("Another character is already named " + quote(name) + ".");
+            return invalid("Another character is already named " + inQuotes(name) + ".");
     Character renamed = **character;
     renamed.name = name;
     return replaceCharacter(index, **character, std::move(renamed));
@@ -142,7 +138,7 @@ Result<Edit> setCharacterBody(const Scenario& scenario, int index, const std::st
     if (!character)
         return character.error();
     if (!isSkeleton(skeleton))
-        return invalid("Unknown skeleton " + quote(skeleton) + ".");
+        return invalid("Unknown skeleton " + inQuotes(skeleton) + ".");
     if (skeleton == "model" && model.empty())
         return invalid("The built-in humanoid has no rig of its own: choose an H-Anim skeleton for it.");
     Character changed = **character;
@@ -187,7 +183,7 @@ Result<Edit> removeLayer(const Scenario& scenario, const LayerPath& path)
     if (!layer)
         return layer.error();
     if ((*layer)->lock)
-        return invalid("Layer " + quote((*layer)->name) + " is locked: unlock it to remove it.");
+        return invalid("Layer " + inQuotes((*layer)->name) + " is locked: unlock it to remove it.");
     return Edit(LayerChange{path, **layer, std::nullopt});
 }
 
@@ -201,7 +197,7 @@ Result<Edit> renameLayer(const Scenario& scenario, const LayerPath& path, const 
     const Character& character = scenario.characters[std::size_t(path.character)];
     for (std::size_t l = 0; l < character.layers.size(); ++l)
         if (int(l) != path.layer && character.layers[l].name == name)
-            return invalid(quote(character.name) + " already has a layer named " + quote(name) + ".");
+            return invalid(inQuotes(character.name) + " already has a layer named " + inQuotes(name) + ".");
     Layer renamed = **layer;
     renamed.name = name;
     return Edit(LayerChange{path, **layer, std::move(renamed)});
@@ -215,7 +211,7 @@ Result<Edit> moveLayer(const Scenario& scenario, const LayerPath& path, int delt
     const int count = int(scenario.characters[std::size_t(path.character)].layers.size());
     const int to = path.layer + delta;
     if (to < 0 || to >= count)
-        return invalid("Layer " + quote((*layer)->name) + " cannot move further " + (delta < 0 ? "up." : "down."));
+        return invalid("Layer " + inQuotes((*layer)->name) + " cannot move further " + (delta < 0 ? "up." : "down."));
     Edit edit(LayerChange{path, **layer, std::nullopt});
     edit.add(LayerChange{{path.character, to}, std::nullopt, **layer});
     return edit;
@@ -249,7 +245,7 @@ Result<Edit> addIdleAction(const Scenario& scenario, const LayerPath& layerPath,
     if (!layer)
         return layer.error();
     if ((*layer)->kind != LayerKind::Body)
-        return invalid("Idle motion moves the body: put it on a body layer, not on " + quote((*layer)->name) + ".");
+        return invalid("Idle motion moves the body: put it on a body layer, not on " + inQuotes((*layer)->name) + ".");
     if (database.empty())
         return invalid("The idle motion needs a database (.idle) to play.");
     const Character& character = scenario.characters[std::size_t(layerPath.character)];
@@ -292,13 +288,13 @@ Result<Edit> replaceClip(const Scenario& scenario, const CharacterItemPath& path
         return character.error();
     const Character& c = **character;
     if (path.index < 0 || std::size_t(path.index) >= c.clips.size())
-        return invalid(quote(c.name) + " has no clip " + std::to_string(path.index + 1) + ".");
+        return invalid(inQuotes(c.name) + " has no clip " + std::to_string(path.index + 1) + ".");
     const ClipAsset& before = c.clips[std::size_t(path.index)];
     if (value.name.empty())
         return invalid("A clip needs a name.");
     for (std::size_t i = 0; i < c.clips.size(); ++i)
         if (int(i) != path.index && c.clips[i].name == value.name)
-            return invalid(quote(c.name) + " already has a clip named " + quote(value.name) + ".");
+            return invalid(inQuotes(c.name) + " already has a clip named " + inQuotes(value.name) + ".");
     if (value.name == before.name)
         return Edit(ClipChange{path, before, std::move(value)});
     // A new name: everything that plays the clip follows it, in one edit.
@@ -324,16 +320,16 @@ Result<Edit> removeClip(const Scenario& scenario, const CharacterItemPath& path)
         return character.error();
     const Character& c = **character;
     if (path.index < 0 || std::size_t(path.index) >= c.clips.size())
-        return invalid(quote(c.name) + " has no clip " + std::to_string(path.index + 1) + ".");
+        return invalid(inQuotes(c.name) + " has no clip " + std::to_string(path.index + 1) + ".");
     const ClipAsset& clip = c.clips[std::size_t(path.index)];
     std::vector<std::string> users;
     for (const Layer& layer : c.layers)
         for (const ActionSpec& action : layer.actions)
             if (action.clip == clip.name)
-                users.push_back("action " + quote(action.name));
+                users.push_back("action " + inQuotes(action.name));
     for (const Gesture& gesture : c.gestures)
         if (gesture.clip == clip.name)
-            users.push_back("gesture " + quote(gesture.name));
+            users.push_back("gesture " + inQuotes(gesture.name));
     if (c.skeleton == "clip:" + clip.name)
         users.push_back("the character's skeleton");
     if (!users.empty()) {
@@ -342,7 +338,7 @@ Result<Edit> removeClip(const Scenario& scenario, const CharacterItemPath& path)
             list += (i ? ", " : "") + users[i];
         if (users.size() > 5)
             list += " and " + std::to_string(users.size() - 5) + " more";
-        return invalid("Clip " + quote(clip.name) + " is still used by " + list + ".");
+        return invalid("Clip " + inQuotes(clip.name) + " is still used by " + list + ".");
     }
     return Edit(ClipChange{path, clip, std::nullopt});
 }

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "anim/modifiers.h"
+#include "util/text.h"
 
 namespace thespis::core::edit {
 
@@ -20,7 +21,6 @@ Error invalid(std::string message)
     return makeError(ErrorCode::InvalidArgument, std::move(message));
 }
 
-std::string quote(const std::string& text) { return "\"" + text + "\""; }
 
 const Layer* layerAt(const Scenario& s, const LayerPath& p)
 {
@@ -149,7 +149,7 @@ Result<ActionSpec> actionFromClip(const Scenario& scenario, const LayerPath& lay
         return invalid("There is no such layer to put the action on.");
     const Character& character = scenario.characters[std::size_t(layerPath.character)];
     if (!character.findClip(clip))
-        return invalid("Character " + quote(character.name) + " has no clip named " + quote(clip) + ".");
+        return invalid("Character " + inQuotes(character.name) + " has no clip named " + inQuotes(clip) + ".");
     ActionSpec action;
     action.clip = clip;
     action.name = clip;
@@ -168,7 +168,7 @@ Result<Edit> insertActions(const Scenario& scenario, const LayerPath& layerPath,
     if (!layer)
         return invalid("There is no such layer to put the actions on.");
     if (layer->lock)
-        return invalid("Layer " + quote(layer->name) + " is locked.");
+        return invalid("Layer " + inQuotes(layer->name) + " is locked.");
     std::vector<std::string> names = actionNames(*layer);
     Edit edit;
     int index = int(layer->actions.size());
@@ -200,23 +200,23 @@ Result<PlannedMove> planMove(const Scenario& scenario, std::span<const ActionPat
             return action.error();
         const std::string& name = (*action)->name;
         if (!moving.insert(p).second)
-            return invalid("Action " + quote(name) + " is listed twice in the move.");
+            return invalid("Action " + inQuotes(name) + " is listed twice in the move.");
         const Layer& from = *layerAt(scenario, p.layerPath());
         if (from.lock)
-            return invalid("Layer " + quote(from.name) + " is locked.");
+            return invalid("Layer " + inQuotes(from.name) + " is locked.");
         if (layerDelta != 0) {
             const Layer* to = layerAt(scenario, {p.character, p.layer + layerDelta});
             if (!to) {
                 const Character& character = scenario.characters[std::size_t(p.character)];
-                return invalid("Action " + quote(name) + " cannot move " + std::to_string(std::abs(layerDelta))
+                return invalid("Action " + inQuotes(name) + " cannot move " + std::to_string(std::abs(layerDelta))
                                + (std::abs(layerDelta) == 1 ? " layer " : " layers ") + (layerDelta > 0 ? "down" : "up")
-                               + ": character " + quote(character.name) + " has no layer there.");
+                               + ": character " + inQuotes(character.name) + " has no layer there.");
             }
             if (to->lock)
-                return invalid("Layer " + quote(to->name) + " is locked.");
+                return invalid("Layer " + inQuotes(to->name) + " is locked.");
             if (to->kind != from.kind)
-                return invalid("Action " + quote(name) + " is a " + kindName(from.kind) + " action: it cannot go to "
-                               + kindName(to->kind) + " layer " + quote(to->name) + ".");
+                return invalid("Action " + inQuotes(name) + " is a " + kindName(from.kind) + " action: it cannot go to "
+                               + kindName(to->kind) + " layer " + inQuotes(to->name) + ".");
         }
         earliest = std::min(earliest, (*action)->start);
     }
@@ -286,7 +286,7 @@ Result<Edit> trimAction(const Scenario& scenario, const ActionPath& path, const 
     if (!found)
         return found.error();
     if (layerAt(scenario, path.layerPath())->lock)
-        return invalid("Layer " + quote(layerAt(scenario, path.layerPath())->name) + " is locked.");
+        return invalid("Layer " + inQuotes(layerAt(scenario, path.layerPath())->name) + " is locked.");
     const ActionSpec& before = **found;
     ActionSpec after = before;
     ModifierSpec& trim = outerTrim(after, span.source);
@@ -333,7 +333,7 @@ Result<Edit> setActionCurves(const Scenario& scenario, const ActionPath& path, s
     if (!found)
         return found.error();
     if (layerAt(scenario, path.layerPath())->lock)
-        return invalid("Layer " + quote(layerAt(scenario, path.layerPath())->name) + " is locked.");
+        return invalid("Layer " + inQuotes(layerAt(scenario, path.layerPath())->name) + " is locked.");
     ActionSpec after = **found;
     if (weight) {
         if (auto ok = weight->validate(); !ok)
@@ -355,13 +355,13 @@ Result<Edit> replaceAction(const Scenario& scenario, const ActionPath& path, Act
         return found.error();
     const Layer& layer = *layerAt(scenario, path.layerPath());
     if (layer.lock)
-        return invalid("Layer " + quote(layer.name) + " is locked.");
+        return invalid("Layer " + inQuotes(layer.name) + " is locked.");
     if (spec.name.empty())
         return invalid("An action needs a name.");
     if (!scenario.characters[std::size_t(path.character)].findClip(spec.clip))
-        return invalid("The character has no clip named " + quote(spec.clip) + ".");
+        return invalid("The character has no clip named " + inQuotes(spec.clip) + ".");
     if (!spec.mask.empty() && !scenario.findMask(spec.mask))
-        return invalid("The scenario has no mask named " + quote(spec.mask) + ".");
+        return invalid("The scenario has no mask named " + inQuotes(spec.mask) + ".");
     return replaceActionEdit(path, **found, std::move(spec));
 }
 
@@ -373,7 +373,7 @@ Result<Edit> splitAction(const Scenario& scenario, const ActionPath& path, const
     const ActionSpec& original = **found;
     const Layer& layer = *layerAt(scenario, path.layerPath());
     if (layer.lock)
-        return invalid("Layer " + quote(layer.name) + " is locked.");
+        return invalid("Layer " + inQuotes(layer.name) + " is locked.");
     if (time <= span.start || (!span.openEnded && time >= span.end))
         return invalid("The split point must lie inside the action.");
     const double cut = ticksToSeconds(time - span.start);
@@ -407,7 +407,7 @@ Result<Edit> removeActions(const Scenario& scenario, std::span<const ActionPath>
         if (auto found = requireAction(scenario, p); !found)
             return found.error();
         if (layerAt(scenario, p.layerPath())->lock)
-            return invalid("Layer " + quote(layerAt(scenario, p.layerPath())->name) + " is locked.");
+            return invalid("Layer " + inQuotes(layerAt(scenario, p.layerPath())->name) + " is locked.");
         removed.insert(p);
     }
     Edit edit;
@@ -510,7 +510,7 @@ Result<Edit> addMask(const Scenario& scenario, std::string name, anim::JointMask
     if (name.empty())
         return invalid("A mask needs a name.");
     if (scenario.findMask(name))
-        return invalid("There is already a mask named " + quote(name) + ".");
+        return invalid("There is already a mask named " + inQuotes(name) + ".");
     if (auto ok = mask.validate(); !ok)
         return ok.error();
     NamedMask named;
@@ -529,7 +529,7 @@ Result<Edit> renameMask(const Scenario& scenario, int index, const std::string& 
     if (name == before.name)
         return Edit{};
     if (scenario.findMask(name))
-        return invalid("There is already a mask named " + quote(name) + ".");
+        return invalid("There is already a mask named " + inQuotes(name) + ".");
     NamedMask renamed = before;
     renamed.name = name;
     Edit edit(MaskChange{index, before, std::move(renamed)});
@@ -564,10 +564,10 @@ Result<Edit> removeMask(const Scenario& scenario, int index)
         for (const Layer& layer : character.layers)
             for (const ActionSpec& action : layer.actions)
                 if (action.mask == name)
-                    users.push_back("action " + quote(action.name));
+                    users.push_back("action " + inQuotes(action.name));
         for (const Gesture& gesture : character.gestures)
             if (gesture.mask == name)
-                users.push_back("gesture " + quote(gesture.name));
+                users.push_back("gesture " + inQuotes(gesture.name));
     }
     if (!users.empty()) {
         std::string list;
@@ -575,7 +575,7 @@ Result<Edit> removeMask(const Scenario& scenario, int index)
             list += (i ? ", " : "") + users[i];
         if (users.size() > 5)
             list += " and " + std::to_string(users.size() - 5) + " more";
-        return invalid("Mask " + quote(name) + " is still used by " + list + ".");
+        return invalid("Mask " + inQuotes(name) + " is still used by " + list + ".");
     }
     return Edit(MaskChange{index, scenario.masks[std::size_t(index)], std::nullopt});
 }
@@ -589,11 +589,11 @@ Result<void> checkGesture(const Scenario& scenario, int characterIndex, const Ge
         return invalid("A gesture needs a name.");
     for (int g = 0; g < int(character.gestures.size()); ++g)
         if (g != replacing && character.gestures[std::size_t(g)].name == gesture.name)
-            return invalid("Character " + quote(character.name) + " already has a gesture named " + quote(gesture.name) + ".");
+            return invalid("Character " + inQuotes(character.name) + " already has a gesture named " + inQuotes(gesture.name) + ".");
     if (!character.findClip(gesture.clip))
-        return invalid("Character " + quote(character.name) + " has no clip named " + quote(gesture.clip) + ".");
+        return invalid("Character " + inQuotes(character.name) + " has no clip named " + inQuotes(gesture.clip) + ".");
     if (!gesture.mask.empty() && !scenario.findMask(gesture.mask))
-        return invalid("The scenario has no mask named " + quote(gesture.mask) + ".");
+        return invalid("The scenario has no mask named " + inQuotes(gesture.mask) + ".");
     if (gesture.fadeIn < 0 || gesture.fadeOut < 0)
         return invalid("Fade times must not be negative.");
     if (gesture.filterFadeFrom < 1 || gesture.filterMuteAbove > 78 || gesture.filterMuteAbove < gesture.filterFadeFrom)
@@ -647,7 +647,7 @@ Result<Edit> setSegmentTags(const Scenario& scenario, int character, std::vector
     std::set<std::string> names;
     for (const scene::SegmentTag& tag : tags)
         if (tag.segment.empty() || !names.insert(tag.segment).second)
-            return invalid("Segment tags need distinct, non-empty segment names (" + quote(tag.segment) + ").");
+            return invalid("Segment tags need distinct, non-empty segment names (" + inQuotes(tag.segment) + ").");
     return Edit(SegmentTagsChange{character, scenario.characters[std::size_t(character)].segmentTags, std::move(tags)});
 }
 

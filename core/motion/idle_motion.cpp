@@ -9,7 +9,7 @@
 #include "anim/hanim.h"
 #include "anim/simd.h"
 #include "motion/gradient_noise.h"
-#include "motion/posture_clip.h"
+#include "motion/posture.h"
 
 namespace thespis::core::motion {
 

@@ -32,6 +32,11 @@ PostureLayout makeLayout(PostureSet set)
 
 } // namespace
 
+const anim::Skeleton& postureSkeleton()
+{
+    return anim::hanim::skeleton(anim::hanim::Level::Subset25);
+}
+
 const PostureLayout& PostureLayout::of(PostureSet set)
 {
     static const PostureLayout whole = makeLayout(PostureSet::WholeBody);

@@ -63,4 +63,7 @@ private:
     int m_leftAnkle = -1, m_rightAnkle = -1;    ///< skeleton joints for the stance frame
 };
 
+/// The skeleton postures are measured on: H-Anim's 25 joints (hanim::Level::Subset25).
+const anim::Skeleton& postureSkeleton();
+
 } // namespace thespis::core::motion

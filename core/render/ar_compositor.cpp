@@ -94,6 +94,7 @@ Result<std::unique_ptr<ArCompositor>> ArCompositor::create(const scenario::Scena
         return makeError(ErrorCode::InvalidArgument, "The camera needs a picture size and focal lengths");
     ScenarioSceneOptions options;
     options.skinning = settings.skinning;
+    options.stage = settings.stage;
     auto scene = ScenarioScene::create(scenario, assets, options);
     if (!scene)
         return scene.error();

@@ -31,6 +31,9 @@ struct ArCompositorSettings {
     Shading shading = Shading::Prt;
     scene::SkinningMethod skinning = scene::SkinningMethod::Linear;
     float shadowStrength = 0.6f; ///< how dark a fully covered patch of ground gets
+    /// Draw this stage (the studio's, posed through scene().setPoses()) instead of playing one
+    /// of the compositor's own (posed through scene().playAt()).
+    std::shared_ptr<runtime::Stage> stage;
 };
 
 class ArCompositor {

@@ -1,6 +1,5 @@
 #include "render/ar_session.h"
 
-#include <cmath>
 #include <condition_variable>
 #include <deque>
 
@@ -57,11 +56,19 @@ Result<std::unique_ptr<ArSession>> ArSession::start(std::unique_ptr<ar::FrameSou
     const ar::CameraIntrinsics& camera = settings.camera;
     if (auto fits = ar::checkCameraFits(camera, "The camera file", *source); !fits)
         return fits.error();
+    if (!scenario.characters.empty()) {
+        if (!settings.stage || !settings.poses)
+            return makeError(ErrorCode::InvalidArgument,
+                             "The AR session draws a stage as its owner plays it: give it the stage and its poses.");
+        if (settings.stage->characterCount() != int(scenario.characters.size()))
+            return makeError(ErrorCode::InvalidArgument, "The stage does not play this scenario's characters.");
+    }
     auto tracker = ar::makeTracker(settings.target, camera);
     if (!tracker)
         return tracker.error();
     auto shared = std::make_unique<Shared>();
     shared->settings = settings;
+    shared->settings.compositor.stage = settings.stage;
     shared->scenario = scenario;
     shared->assets = assets;
     shared->geometry = (*tracker)->geometry();
@@ -117,7 +124,8 @@ void ArSession::draw(std::stop_token stop)
         }
         probe.emplace(std::move(made).value());
     }
-    const double duration = ar.scene().duration();
+    runtime::PoseSet poses = ar.scene().poses();
+    std::uint64_t posesSeen = 0;
     ar::VideoFrame frame;
     ar::TrackedFrame tracking;
     std::deque<std::chrono::steady_clock::time_point> composed; // the last second's, for the fps
@@ -149,7 +157,11 @@ void ArSession::draw(std::stop_token stop)
                 lit = true;
             }
         }
-        ar.scene().setTime(duration > 0 ? std::fmod(frame.time, duration) : frame.time);
+        if (s.settings.poses)
+            if (const std::uint64_t newest = s.settings.poses->takeNewer(poses, posesSeen)) {
+                posesSeen = newest;
+                ar.scene().setPoses(poses);
+            }
         if (tracking.hasPose)
             if (auto drawn = ar.compose(frame, tracking.pose); !drawn) {
                 s.finish(ArSessionState::Failed, describe(drawn.error()));
@@ -164,6 +176,8 @@ void ArSession::draw(std::stop_token stop)
             if (auto written = s.writer->write(frame); !written)
                 s.writer.reset(); // a frame of another size: the recording stops, the preview goes on
         s.snapshot.tracking = tracking;
+        s.snapshot.videoTime = secondsToTicks(frame.time);
+        runtime::copyPoses(ar.scene().poses(), s.snapshot.poses);
         s.snapshot.fps = double(composed.size());
         s.snapshot.latency = std::chrono::duration<double>(now - frame.captured).count();
         s.snapshot.dropped = s.capture->dropped();
@@ -198,6 +212,8 @@ bool ArSession::takeSnapshot(ArSnapshot& snapshot)
         return false;
     std::swap(snapshot.frame, m_shared->snapshot.frame);
     snapshot.tracking = m_shared->snapshot.tracking;
+    snapshot.videoTime = m_shared->snapshot.videoTime;
+    runtime::copyPoses(m_shared->snapshot.poses, snapshot.poses);
     snapshot.fps = m_shared->snapshot.fps;
     snapshot.latency = m_shared->snapshot.latency;
     snapshot.dropped = m_shared->snapshot.dropped;

@@ -4,7 +4,10 @@
 // scenario drawn over them on a third (ArCompositor, which owns its GL context there), lit by a
 // mirror ball in view when asked (ar::LiveProbe). Each stage takes the newest result of the one
 // before and drops what it could not take in time, so a slow stage never makes a queue. The
-// scenario plays on the video's clock (frame timestamps), looping.
+// scenario is the studio's Stage as its Session plays it: each frame is drawn with the newest
+// poses the Session published (PoseMailbox), so scripts, live actions, the playhead and edits
+// show over the video at once. Which clock the Session follows — its transport, or the video's
+// time, which the snapshots carry — is the preview's choice; the session never evaluates.
 //
 // Consumers (the studio's preview, tests) take the newest composed frame with its overlay facts
 // (fps, latency, tracking state, why it stopped). A source that ends or fails, a scenario that
@@ -25,6 +28,7 @@
 #include "ar/tracking_target.h"
 #include "lighting/probe_preview.h"
 #include "render/ar_compositor.h"
+#include "runtime/pose_mailbox.h"
 
 namespace thespis::core::render {
 
@@ -35,12 +39,18 @@ struct ArSessionSettings {
     ArCompositorSettings compositor;
     std::optional<ar::LiveProbeSettings> probe;   ///< a mirror ball in view lights the characters
     bool realTime = true;                         ///< files paced at their frame rate (cameras always are)
+    /// The stage drawn (of the scenario's runtime) and the mailbox its poses come through; both
+    /// are needed to draw characters (without them only the video and the tracking run).
+    std::shared_ptr<runtime::Stage> stage;
+    std::shared_ptr<const runtime::PoseMailbox> poses;
 };
 
 /// What the preview shows: the newest composed frame and the facts of the overlay.
 struct ArSnapshot {
     ar::VideoFrame frame;          ///< the video with the scenario drawn over it (as it is when not tracked)
     ar::TrackedFrame tracking;     ///< the frame's tracking: state, poses, event
+    Tick videoTime = 0;            ///< the frame's time in its video (what a video clock follows)
+    runtime::PoseSet poses;        ///< the characters' poses drawn over it (time: the stage's tick)
     double fps = 0;                ///< frames composed per second, over the last second
     double latency = 0;            ///< seconds from the frame's capture to its composition
     std::int64_t dropped = 0;      ///< frames the capture dropped because tracking was busy
@@ -57,7 +67,8 @@ enum class ArSessionState { Running, Ended, Failed, Stopped };
 class ArSession {
 public:
     /// Starts the three threads. Errors before anything runs: a tracker that cannot be made
-    /// (the target), a camera calibrated for another size than the source's frames.
+    /// (the target), a camera calibrated for another size than the source's frames, a stage that
+    /// does not play the scenario's characters.
     static Result<std::unique_ptr<ArSession>> start(std::unique_ptr<ar::FrameSource> source,
                                                     const scenario::Scenario& scenario,
                                                     const scenario::Assets& assets, const ArSessionSettings& settings);

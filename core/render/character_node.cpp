@@ -247,6 +247,7 @@ void CharacterNode::setPose(std::span<const float> frame)
     scene::computeSkinningTransforms(c.skeleton, frame, m_restJointPositions, m_jointPositions, m_jointOrientations,
                                      m_jointTransforms);
     m_workers->skin(c, m_jointTransforms, m_skinning, m_positions, m_normals);
+    ++m_poseCount;
 
     std::memcpy(static_cast<void*>(&m_vertexArray->front()), m_positions.data(), m_positions.size() * sizeof(anim::Vec3));
     std::memcpy(static_cast<void*>(&m_normalArray->front()), m_normals.data(), m_normals.size() * sizeof(anim::Vec3));

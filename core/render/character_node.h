@@ -16,6 +16,7 @@
 // between frames of a single-threaded viewer.
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
@@ -70,6 +71,8 @@ public:
     /// Poses the character: skins the mesh for `frame` (the skeleton's frame layout), uploads
     /// positions and normals, and rotates the light into every segment's new frame.
     void setPose(std::span<const float> frame);
+    /// How many times setPose skinned the mesh.
+    std::uint64_t poseCount() const { return m_poseCount; }
 
     /// The posed mesh, as uploaded (world space, indexed like the character's mesh).
     std::span<const anim::Vec3> posedPositions() const { return m_positions; }
@@ -116,6 +119,7 @@ private:
     std::vector<osg::ref_ptr<osg::Uniform>> m_highlightUniforms; // selectionHighlight of each segment
     std::vector<char> m_highlighted;
     osg::ref_ptr<osg::Uniform> m_lightDirection, m_lightColor, m_ambientIrradiance;
+    std::uint64_t m_poseCount = 0;
 };
 
 } // namespace thespis::core::render

@@ -60,7 +60,7 @@ private:
     {
         if (m_context.stopRequested())
             return makeError(ErrorCode::Cancelled, "stopped");
-        m_shot.scene().setTime(time);
+        m_shot.scene().playAt(secondsToTicks(time));
         auto drawn = m_shot.draw();
         if (!drawn)
             return drawn.error();
@@ -136,7 +136,7 @@ private:
         const ar::TrackedFrame seen = m_tracking.process(m_frame);
         m_tracked += seen.tracked ? 1 : 0;
         const double duration = m_ar.scene().duration();
-        m_ar.scene().setTime(m_loop && duration > 0 ? std::fmod(m_frame.time, duration) : m_frame.time);
+        m_ar.scene().playAt(secondsToTicks(m_loop && duration > 0 ? std::fmod(m_frame.time, duration) : m_frame.time));
         if (seen.hasPose)
             if (auto drawn = m_ar.compose(m_frame, seen.pose); !drawn)
                 return drawn;
@@ -258,44 +258,31 @@ Result<void> PlayJob::onItsOwn(JobContext& context)
 // The frames, with the script (if any) driving the clock, then the sound.
 Result<void> PlayJob::play(JobContext& context, PlayFrameWriter& frameWriter, const std::shared_ptr<runtime::Stage>& stage)
 {
-    auto clock = std::make_shared<runtime::ManualClock>();
-    auto sound = std::make_shared<runtime::SoundService>(assets, clock);
+    Tick scriptEnd = 0;
+    std::shared_ptr<runtime::SoundService> sound;
     if (script) {
-        Result<void> frameFailed;
-        clock->setJumpHook([&](Tick, Tick to) {
-            if (context.stopRequested())
-                return false;
-            frameFailed = frameWriter.writeUntil(ticksToSeconds(to));
-            if (frameFailed)
-                return true;
-            script->stop();
-            return false;
-        });
-        Result<void> ran;
-        {
-            // A script that computes without waiting is ended too.
-            std::stop_callback onStop(context.stopToken(), [&] { script->stop(); });
-            ran = script->run({stage, clock, sound});
-        }
-        clock->setJumpHook({});
-        if (context.stopRequested())
-            return makeError(ErrorCode::Cancelled, "stopped");
-        if (!frameFailed)
-            return frameFailed;
-        if (!ran)
-            return ran;
+        auto played = runtime::playScript(
+            *script, stage, assets, [&](Tick until) { return frameWriter.writeUntil(ticksToSeconds(until)); },
+            context.stopToken());
+        if (!played)
+            return played.error();
+        scriptEnd = played->clock->now();
+        sound = played->sound;
         sounds = sound->activationCount();
     }
-    if (auto rest = frameWriter.writeRest(ticksToSeconds(clock->now())); !rest)
+    if (auto rest = frameWriter.writeRest(ticksToSeconds(scriptEnd)); !rest)
         return rest;
     if (auto finished = frameWriter.finish(); !finished)
         return finished;
     seconds = frameWriter.seconds();
-    if (!audio.empty())
+    if (!audio.empty()) {
+        if (!sound) // nothing played: a silent track as long as the video
+            sound = std::make_shared<runtime::SoundService>(assets, std::make_shared<runtime::ManualClock>());
         if (auto written = sound->writeWav(audio, 0, secondsToTicks(seconds)); !written) {
             discardOutput();
             return written;
         }
+    }
     return {};
 }
 

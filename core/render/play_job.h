@@ -18,29 +18,12 @@
 #include "ar/tracking_target.h"
 #include "render/ar_compositor.h"
 #include "render/scenario_picture.h"
-#include "runtime/clock.h"
-#include "runtime/sound.h"
-#include "runtime/stage.h"
+#include "runtime/scripted_play.h"
 #include "util/job.h"
 
 namespace thespis::core::render {
 
 class PlayFrameWriter; // play_job.cpp's own
-
-/// What a script playing along is given: the scene's stage, the manual clock it plays on, and
-/// the sound service on that clock (voiceService).
-struct PlayScriptStage {
-    std::shared_ptr<runtime::Stage> stage;
-    std::shared_ptr<runtime::ManualClock> clock;
-    std::shared_ptr<runtime::SoundService> sound;
-};
-
-/// A script run along the play. Core knows no Python: the front end says how to run one to its
-/// end (in the calling thread) and how to end it from elsewhere (the job stopped or a frame failed).
-struct PlayScript {
-    std::function<Result<void>(const PlayScriptStage&)> run;
-    std::function<void()> stop;
-};
 
 struct PlayJob final : Job {
     static constexpr const char* PreparingStage = "Preparing the scene";
@@ -62,7 +45,7 @@ struct PlayJob final : Job {
 
     /// Plays along when set. On its own the video lasts until the scenario's end or the script's,
     /// whichever is later; over a video, the scenario is no longer looped but follows the script.
-    std::optional<PlayScript> script;
+    std::optional<runtime::PlayScript> script;
     /// A 16-bit mono WAV of what played (the script's sounds) over the video's length; empty: none.
     std::filesystem::path audio;
 

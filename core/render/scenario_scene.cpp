@@ -6,6 +6,7 @@
 #include "lighting/probe_preview.h"
 #include "lighting/probe_projection_job.h"
 #include "render/shaders.h"
+#include "runtime/timeline_samples.h"
 #include "scenario/scenario_character.h"
 
 namespace thespis::core::render {
@@ -44,18 +45,19 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
                                                              const ScenarioSceneOptions& options)
 {
     std::unique_ptr<ScenarioScene> self(new ScenarioScene);
-    if (options.stage) {
-        if (options.stage->runtime().characters.size() != scenario.characters.size())
-            return makeError(ErrorCode::InvalidArgument, "The stage does not play this scenario's characters.");
-        self->m_stage = options.stage;
-    } else {
+    if (!options.stage) {
         auto runtime = scenario::buildRuntime(scenario, assets);
         if (!runtime)
             return runtime.error();
         self->m_stage = std::make_shared<runtime::Stage>(std::move(runtime).value());
+    } else {
+        self->m_stage = options.stage;
     }
+    // A copy: the owner of a shared stage may give it a new runtime meanwhile, on its thread.
+    const scenario::ScenarioRuntime played = self->m_stage->runtimeCopy();
+    if (played.characters.size() != scenario.characters.size())
+        return makeError(ErrorCode::InvalidArgument, "The stage does not play this scenario's characters.");
     self->m_scene = std::make_unique<RenderScene>(options.skinningThreads);
-
     self->m_lighting = scenario.lighting;
     self->m_probeBackground = options.probeBackground;
     auto projection = probeProjectionFor(scenario, assets, options.lightOrder);
@@ -73,7 +75,7 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
         auto body = scenario::loadCharacterBody(scenario, i, assets);
         if (!body)
             return body.error();
-        const scenario::CharacterRuntime* characterRuntime = self->runtime().findCharacter(scenario.characters[i].name);
+        const scenario::CharacterRuntime* characterRuntime = played.findCharacter(scenario.characters[i].name);
         if (!characterRuntime)
             return makeError(ErrorCode::Internal, "The runtime lost character \"" + scenario.characters[i].name + "\".");
         for (const std::string& warning : body->warnings)
@@ -100,7 +102,7 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
                              node.error().detail);
         Performer performer;
         performer.name = scenario.characters[i].name;
-        performer.runtime = characterRuntime;
+        performer.pose = std::size_t(characterRuntime - played.characters.data());
         performer.skeletonLayout = characterRuntime->skeleton.frameLayout();
         performer.node = *node;
         performer.retarget = scenario::retargetOntoBody(characterRuntime->skeleton, *shared);
@@ -112,43 +114,26 @@ Result<std::unique_ptr<ScenarioScene>> ScenarioScene::create(const scenario::Sce
         performer.bodyLayout = shared->skeleton.frameLayout();
         self->m_performers.push_back(std::move(performer));
     }
-    self->attachPerformers();
-    self->setTime(0.0);
+    self->m_poses = self->m_stage->makePoseSet();
+    if (options.stage)
+        self->setPoses(self->m_poses); // at rest where each stands, until the owner's poses come
+    else
+        self->playAt(0);
     return self;
 }
 
-void ScenarioScene::attachPerformers()
+Result<void> ScenarioScene::followStage()
 {
-    m_poses = m_stage->makePoseSet();
-    m_performerPose.clear();
-    for (Performer& performer : m_performers) {
-        performer.runtime = runtime().findCharacter(performer.name);
-        m_performerPose.push_back(int(performer.runtime - runtime().characters.data()));
-    }
-}
-
-Result<void> ScenarioScene::setRuntime(scenario::ScenarioRuntime runtime)
-{
-    if (auto fits = fitsPerformers(runtime); !fits)
-        return fits;
-    if (auto played = m_stage->setRuntime(std::move(runtime)); !played)
-        return played.error();
-    attachPerformers();
-    setTime(m_time);
-    return {};
-}
-
-// The performers may point into a runtime the stage no longer has: they are compared by the
-// names and skeleton layouts they recorded.
-Result<void> ScenarioScene::fitsPerformers(const scenario::ScenarioRuntime& next) const
-{
+    const scenario::ScenarioRuntime& next = m_stage->runtime();
     if (next.characters.size() != m_performers.size())
         return makeError(ErrorCode::InvalidArgument, "The scenario's characters changed: the scene must be rebuilt.");
-    for (std::size_t i = 0; i < m_performers.size(); ++i)
-        if (next.characters[i].name != m_performers[i].name
-            || !(*next.characters[i].skeleton.frameLayout() == *m_performers[i].skeletonLayout))
-            return makeError(ErrorCode::InvalidArgument,
-                             "Character \"" + next.characters[i].name + "\" changed its skeleton: the scene must be rebuilt.");
+    for (Performer& performer : m_performers) {
+        const scenario::CharacterRuntime* character = next.findCharacter(performer.name);
+        if (!character || !(*character->skeleton.frameLayout() == *performer.skeletonLayout))
+            return makeError(ErrorCode::InvalidArgument, "Character \"" + performer.name +
+                                                             "\" changed its skeleton: the scene must be rebuilt.");
+        performer.pose = std::size_t(character - next.characters.data());
+    }
     return {};
 }
 
@@ -176,37 +161,46 @@ void ScenarioScene::setProbeLight(const lighting::LightProbe& probe, const light
         m_scene->setBackgroundProbe(probe, 512, spec.rotation, spec.intensity);
 }
 
-void ScenarioScene::setTime(double seconds)
+void ScenarioScene::playAt(Tick t)
 {
-    m_stage->evaluate(secondsToTicks(seconds), m_poses);
+    m_stage->evaluate(t, m_poses);
     setPoses(m_poses);
-    m_time = seconds;
 }
 
 void ScenarioScene::setPoses(const runtime::PoseSet& poses)
 {
-    m_time = ticksToSeconds(poses.time);
-    for (std::size_t i = 0; i < m_performers.size(); ++i) {
-        Performer& performer = m_performers[i];
-        const std::vector<float>& frame = poses.characters[std::size_t(m_performerPose[i])].body;
-        // Placed after retargeting: a body of another size must not scale where it stands.
-        performer.retarget.apply(frame, performer.bodyFrame);
-        performer.runtime->place(*performer.bodyLayout, performer.bodyFrame);
-        performer.node->setPose(performer.bodyFrame);
+    if (&poses != &m_poses)
+        runtime::copyPoses(poses, m_poses);
+    for (Performer& performer : m_performers)
+        if (performer.pose < poses.characters.size())
+            pose(performer, poses.characters[performer.pose]);
+}
+
+void ScenarioScene::pose(Performer& performer, const runtime::CharacterPose& pose)
+{
+    // Placed after retargeting: a body of another size must not scale where it stands.
+    performer.retarget.apply(pose.body, performer.bodyFrame);
+    pose.placement.apply(*performer.bodyLayout, performer.bodyFrame);
+    performer.node->setPose(performer.bodyFrame);
+}
+
+Bounds ScenarioScene::boundsOver(std::span<const runtime::PoseSet> samples)
+{
+    Bounds bounds;
+    for (const runtime::PoseSet& sample : samples) {
+        for (Performer& performer : m_performers)
+            if (performer.pose < sample.characters.size())
+                pose(performer, sample.characters[performer.pose]);
+        bounds.add(m_scene->characterBounds());
     }
+    setPoses(m_poses);
+    return bounds;
 }
 
 Bounds ScenarioScene::boundsOverTimeline()
 {
-    const double now = m_time;
-    Bounds bounds;
-    const int samples = std::max(1, int(std::ceil(duration() * 10.0)));
-    for (int i = 0; i <= samples; ++i) {
-        setTime(duration() * i / samples);
-        bounds.add(m_scene->characterBounds());
-    }
-    setTime(now);
-    return bounds;
+    const std::vector<runtime::PoseSet> samples = runtime::sampleTimeline(runtime());
+    return boundsOver(samples);
 }
 
 } // namespace thespis::core::render

@@ -1,16 +1,22 @@
 #pragma once
-// A scenario made drawable: its runtime (schedules), each character's body (scenario_character.h)
-// in a RenderScene, the schedule's frames retargeted onto each body's skeleton, and the light
-// from the scenario's probe (or the scene's default light). It plays through a runtime::Stage,
-// so live actions and scripts show: setTime evaluates the stage and poses every character, or
-// setPoses poses them from a PoseSet evaluated elsewhere (a Player). The CLI's `render` and
-// `run`, the studio's viewport and the picture tests all draw through it, so they show the same
-// thing.
+// A scenario made drawable: each character's body (scenario_character.h) in a RenderScene, the
+// stage's frames retargeted onto each body's skeleton and placed where the character stands, and
+// the light from the scenario's probe (or the scene's default light). It draws a runtime::Stage,
+// so live actions and scripts show. Two ways to use it:
+//   - it plays a stage of its own (the CLI's `render` and `run`, pictures): playAt(t) evaluates
+//     the stage and poses every character;
+//   - it draws a stage someone else plays (ScenarioSceneOptions::stage: the studio's Session,
+//     which evaluates once per tick for every view): setPoses() poses it from the PoseSet the
+//     owner published, which holds everything needed, so this may run on another thread (the AR
+//     preview's renderer). It never evaluates that stage itself.
+// The CLI, the studio's viewport, the AR preview and the picture tests all draw through it, so
+// they show the same thing.
 
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -38,8 +44,8 @@ struct ScenarioSceneOptions {
     int lightOrder = 6;
     /// Draw the probe behind the characters (when the scenario has one).
     bool probeBackground = false;
-    /// Play this stage (of the scenario's runtime: the studio's session stage) instead of one
-    /// built for the scene.
+    /// Draw this stage (of the scenario's runtime: the studio's session stage), posed by
+    /// setPoses(), instead of playing one built for the scene.
     std::shared_ptr<runtime::Stage> stage;
     /// Project the scenario's probe while making the scene. When false the scene starts with
     /// the default light and the caller projects the probe (probeProjectionFor, e.g. off the
@@ -63,8 +69,9 @@ public:
 
     RenderScene& scene() { return *m_scene; }
     const RenderScene& scene() const { return *m_scene; }
+    /// The stage's runtime (on the thread that changes it: its owner's).
     const scenario::ScenarioRuntime& runtime() const { return m_stage->runtime(); }
-    /// The stage the scene plays: scripts and the live runtime activate actions on it.
+    /// The stage the scene draws: scripts and the live runtime activate actions on it.
     runtime::Stage& stage() { return *m_stage; }
     const std::shared_ptr<runtime::Stage>& sharedStage() const { return m_stage; }
     double duration() const { return runtime().duration; }
@@ -72,51 +79,52 @@ public:
     /// joints with their body, bake files left out); one sentence each.
     const std::vector<std::string>& warnings() const { return m_warnings; }
 
-    /// Plays a new runtime of the same scenario (after an edit) on the same stage, so live
-    /// actions play on: the characters and their skeletons must be the same; otherwise an
-    /// error says so and the scene must be rebuilt.
-    Result<void> setRuntime(scenario::ScenarioRuntime runtime);
-
+    /// After the stage's owner gave it a new runtime (an edit): the scene follows it, drawing
+    /// the same bodies (nothing is evaluated; the next poses show the edit). Errors when the
+    /// characters or their skeletons changed: the scene must be rebuilt.
+    Result<void> followStage();
 
     /// Lights the scene with the scenario's probe as projected (turned and scaled as the
     /// scenario's lighting says; drawn behind the characters with probeBackground).
     void setProbeLight(const lighting::LightProbe& probe, const lighting::ShRgb& light);
 
-    /// Evaluates the stage at `seconds` and poses every character (no allocation).
-    void setTime(double seconds);
-    /// Poses every character from poses the stage gave (its character order).
+    /// Evaluates the stage at `t` and poses every character (no allocation). For a scene that
+    /// plays its own stage.
+    void playAt(Tick t);
+    /// Poses every character from poses the stage gave (its character order; no allocation).
     void setPoses(const runtime::PoseSet& poses);
-    /// The poses setTime() evaluated last (the stage's character order).
+    /// The poses shown (the stage's character order).
     const runtime::PoseSet& poses() const { return m_poses; }
-    double time() const { return m_time; }
-    /// The bounds of every character over the whole timeline (sampled at 10 Hz), for a camera
-    /// that keeps everyone in view while the scenario plays. Leaves the scene at time().
+    Tick time() const { return m_poses.time; }
+    /// The bounds of every character over `samples` (runtime::sampleTimeline), for a camera that
+    /// keeps everyone in view while the scenario plays. Leaves the scene posed as it was.
+    Bounds boundsOver(std::span<const runtime::PoseSet> samples);
+    /// boundsOver the stage's authored timeline sampled at 10 Hz.
     Bounds boundsOverTimeline();
 
 private:
     ScenarioScene() = default;
 
+    // Holds nothing of the stage's runtime (which its owner replaces at an edit, maybe while
+    // this scene draws on another thread): names, layouts and retargets are its own.
     struct Performer {
         std::string name;
-        const scenario::CharacterRuntime* runtime = nullptr;
         CharacterNode* node = nullptr;
         anim::FrameRetarget retarget;
         anim::FrameLayoutPtr bodyLayout;
         anim::FrameLayoutPtr skeletonLayout; ///< of the character's skeleton when the scene was made
         std::vector<float> bodyFrame;
+        std::size_t pose = 0; ///< its character's index in the stage's pose sets
     };
-    void attachPerformers();
-    Result<void> fitsPerformers(const scenario::ScenarioRuntime& next) const;
+    void pose(Performer& performer, const runtime::CharacterPose& pose);
 
     std::shared_ptr<runtime::Stage> m_stage;
     runtime::PoseSet m_poses;
-    std::vector<int> m_performerPose; // per performer, its character's index in the stage
     std::unique_ptr<RenderScene> m_scene;
     std::vector<Performer> m_performers;
     std::vector<std::string> m_warnings;
     scenario::LightingSpec m_lighting;
     bool m_probeBackground = false;
-    double m_time = 0;
 };
 
 } // namespace thespis::core::render

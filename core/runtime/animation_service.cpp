@@ -83,17 +83,16 @@ Result<bool> AnimationService::waitUntil(Tick t, Clock::Patience patience)
     return m_clock->now() >= t;
 }
 
-void AnimationService::startPlayer(PlayerOptions options)
+void AnimationService::startPlayer()
 {
-    if (!m_player)
-        m_player = std::make_unique<Player>(m_stage, m_clock, options);
-    m_player->start();
+    if (m_playerControl)
+        m_playerControl(true);
 }
 
 void AnimationService::stopPlayer()
 {
-    if (m_player)
-        m_player->stop();
+    if (m_playerControl)
+        m_playerControl(false);
 }
 
 } // namespace thespis::core::runtime

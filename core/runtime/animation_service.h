@@ -1,16 +1,18 @@
 #pragma once
 // AnimationService (paper §4.5): the scripting face of the runtime. It plays a Stage at its
 // Clock's time: actions activated now, cut off now, and waits until an action has finished (or
-// a number of seconds before that, as the paper's scripts do with a negative offset). Its
-// Player, once started, evaluates the stage in a thread of its own. A script is stopped
-// through requestStop(): every wait in progress or to come returns Cancelled.
+// a number of seconds before that, as the paper's scripts do with a negative offset). The stage
+// is played by its host, once per tick: the studio's Session, the CLI's render loop, or a
+// Python caller's evaluate; the paper's start_player / stop_player ask that host to play or to
+// pause (the studio's transport). A script is stopped through requestStop(): every wait in
+// progress or to come returns Cancelled.
 
+#include <functional>
 #include <memory>
 #include <stop_token>
 #include <string>
 
 #include "runtime/clock.h"
-#include "runtime/player.h"
 #include "runtime/stage.h"
 
 namespace thespis::core::runtime {
@@ -49,9 +51,12 @@ public:
 
     /// initPlayerScope_face(False): the face track is not played.
     void initPlayerScope(Track track, bool enabled) { m_stage->setTrackEnabled(track, enabled); }
-    void startPlayer(PlayerOptions options = {});
+    /// What start_player / stop_player do: `control(true)` asks the host to play, false to
+    /// pause. Hosts that always play (batch runs on a manual clock) set none, and then the two
+    /// calls change nothing.
+    void setPlayerControl(std::function<void(bool play)> control) { m_playerControl = std::move(control); }
+    void startPlayer();
     void stopPlayer();
-    Player* player() { return m_player.get(); }
 
     /// Stops every wait, now and later (a script is being stopped).
     void requestStop() { m_stop.request_stop(); }
@@ -60,7 +65,7 @@ public:
 private:
     std::shared_ptr<Stage> m_stage;
     std::shared_ptr<Clock> m_clock;
-    std::unique_ptr<Player> m_player;
+    std::function<void(bool)> m_playerControl;
     std::stop_source m_stop;
 };
 

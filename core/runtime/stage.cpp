@@ -101,6 +101,8 @@ void Stage::fillLibrary(Performer& performer, scenario::CharacterRuntime& charac
     performer.face.authored = character.face;
     for (const auto& [name, clip] : character.clips)
         performer.body.library[name] = ActionTemplate{clip, {}, false};
+    for (const auto& [name, clip] : character.faceClips)
+        performer.face.library[name] = ActionTemplate{clip, {}, false};
     for (std::size_t l = 0; l < character.layers.size(); ++l) {
         BlendingSchedule& layer = *character.layers[l];
         TrackState& track = *layer.layout() == *character.skeleton.frameLayout() ? performer.body : performer.face;
@@ -109,6 +111,16 @@ void Stage::fillLibrary(Performer& performer, scenario::CharacterRuntime& charac
             if (const BlendingAction* action = layer.action(id); action && !action->name.empty())
                 track.library[action->name] = ActionTemplate{action->source, action->params, action->renderOutsideDomain};
     }
+    for (const auto& [name, gesture] : character.gestures) {
+        const BlendingAction& played = gesture.played();
+        performer.body.library[name] = ActionTemplate{played.source, played.params, played.renderOutsideDomain};
+    }
+}
+
+scenario::ScenarioRuntime Stage::runtimeCopy() const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_runtime;
 }
 
 Result<void> Stage::setRuntime(scenario::ScenarioRuntime runtime)
@@ -234,11 +246,19 @@ Result<void> Stage::defineAction(const std::string& character, Track track, cons
     if (!performer)
         return performer.error();
     TrackState& s = state(**performer, track);
+    if (auto fits = fitsTrack(s, character, track, action, source); !fits)
+        return fits;
+    s.library[action] = std::move(source);
+    return {};
+}
+
+Result<void> Stage::fitsTrack(const TrackState& s, const std::string& character, Track track, const std::string& action,
+                              const ActionTemplate& source)
+{
     if (!source.source || !(*source.source->layout() == *s.live->layout()))
         return makeError(ErrorCode::InvalidArgument, "Action \"" + action + "\" of " + character + " needs a " +
                                                          trackName(track) + " source on the " + trackName(track) +
                                                          "'s layout.");
-    s.library[action] = std::move(source);
     return {};
 }
 
@@ -297,14 +317,33 @@ Result<ActionId> Stage::activateAction(const std::string& character, Track track
         return makeError(ErrorCode::NotFound, "Character \"" + character + "\" has no " + trackName(track) +
                                                   " action \"" + action + "\" (it has: " + joinNames(names) + ").");
     }
+    return activate(s, action, source->second, at, options);
+}
+
+Result<ActionId> Stage::playAction(const std::string& character, Track track, const std::string& action,
+                                   const ActionTemplate& source, Tick at, const ActivateOptions& options)
+{
+    const std::lock_guard lock(m_mutex);
+    auto performer = find(character);
+    if (!performer)
+        return performer.error();
+    TrackState& s = state(**performer, track);
+    if (auto fits = fitsTrack(s, character, track, action, source); !fits)
+        return fits.error();
+    return activate(s, action, source, at, options);
+}
+
+Result<ActionId> Stage::activate(TrackState& s, const std::string& action, const ActionTemplate& source, Tick at,
+                                 const ActivateOptions& options)
+{
     const double start = ticksToSeconds(at);
     dropFinished(s, start);
 
     BlendingAction live;
     live.name = action;
-    live.source = source->second.source;
-    live.params = source->second.params;
-    live.renderOutsideDomain = source->second.renderOutsideDomain;
+    live.source = source.source;
+    live.params = source.params;
+    live.renderOutsideDomain = source.renderOutsideDomain;
     live.start = start;
     if (options.weight)
         live.params.weight = *options.weight;
@@ -459,8 +498,9 @@ PoseSet Stage::makePoseSet() const
 {
     const std::lock_guard lock(m_mutex);
     PoseSet poses;
-    for (const Performer& p : m_performers)
-        poses.characters.push_back(CharacterPose{p.body.live->restPose(), p.face.live->restPose()});
+    for (std::size_t i = 0; i < m_performers.size(); ++i)
+        poses.characters.push_back(
+            CharacterPose{m_performers[i].body.live->restPose(), placement(i), m_performers[i].face.live->restPose()});
     return poses;
 }
 
@@ -499,15 +539,24 @@ void Stage::evaluate(Tick t, PoseSet& out)
     ++m_ticks;
     for (std::size_t i = 0; i < m_performers.size() && i < out.characters.size(); ++i) {
         Performer& performer = m_performers[i];
-        if (m_bodyEnabled) {
-            dropFinished(performer.body, seconds);
-            evaluateTrack(performer.body, seconds, out.characters[i].body);
-        }
-        if (m_faceEnabled) {
-            dropFinished(performer.face, seconds);
-            evaluateTrack(performer.face, seconds, out.characters[i].face);
-        }
+        out.characters[i].placement = placement(i);
+        // A track turned off shows its rest pose, whatever the pose set held before.
+        const auto play = [&](bool enabled, TrackState& track, std::vector<float>& frame) {
+            if (!enabled) {
+                std::copy(track.live->restPose().begin(), track.live->restPose().end(), frame.begin());
+                return;
+            }
+            dropFinished(track, seconds);
+            evaluateTrack(track, seconds, frame);
+        };
+        play(m_bodyEnabled, performer.body, out.characters[i].body);
+        play(m_faceEnabled, performer.face, out.characters[i].face);
     }
+}
+
+anim::Placement Stage::placement(std::size_t performer) const
+{
+    return performer < m_runtime.characters.size() ? m_runtime.characters[performer].placement : anim::Placement{};
 }
 
 std::uint64_t Stage::ticks() const

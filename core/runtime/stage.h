@@ -9,8 +9,9 @@
 //      motion never jumps;
 //   4. the live Override and Additive actions, on top, like gestures.
 // With nothing live and no synthesizer, a track is exactly its authored schedule. An action is
-// named: a clip of the character, an action of its scenario (source and blending parameters),
-// or one defined with defineAction().
+// named: a body or face clip of the character, an action of its scenario (source and blending
+// parameters), a gesture of its gesticon, or one defined with defineAction(); a gesture wins
+// over an action of the same name, which wins over a clip.
 //
 // Every method locks the stage, so a script thread may activate actions while a player thread
 // evaluates. evaluate() is the one place schedules are evaluated: once per tick for everyone.
@@ -54,14 +55,17 @@ public:
     /// An empty stage (characters come from addCharacter()).
     Stage() = default;
     /// Every character of a built scenario with its authored schedules; its clips (constant
-    /// weight) and its named scenario actions (with their parameters, which win over a clip of
-    /// the same name) are the actions it can play live.
+    /// weight: body clips on the body track, clips with FAP values on the face track), its named
+    /// scenario actions (with their parameters) and its gesticon's gestures (with their fades,
+    /// body part and dependent-joint filter) are the actions it can play live.
     explicit Stage(scenario::ScenarioRuntime runtime);
     Stage(const Stage&) = delete;
     Stage& operator=(const Stage&) = delete;
 
-    /// The scenario the stage was made from (empty for a stage built by hand).
+    /// The scenario the stage was made from (empty for a stage built by hand). A reference for
+    /// the thread that gives the stage new runtimes (its owner); other threads take a copy.
     const scenario::ScenarioRuntime& runtime() const { return m_runtime; }
+    scenario::ScenarioRuntime runtimeCopy() const;
     /// Plays new authored schedules of the same characters (after an edit of the scenario),
     /// keeping what plays live. Errors when the characters or their skeletons differ.
     Result<void> setRuntime(scenario::ScenarioRuntime runtime);
@@ -89,6 +93,11 @@ public:
     /// Starts the named action at `at`; returns its id in the live schedule.
     Result<anim::ActionId> activateAction(const std::string& character, Track track, const std::string& action,
                                           Tick at, const ActivateOptions& options = {});
+    /// Plays `source` as a live action named `action` from `at`, without adding it to what the
+    /// character can play (the studio's gesture preview plays a variant this way); cut off and
+    /// removed by that name like any other.
+    Result<anim::ActionId> playAction(const std::string& character, Track track, const std::string& action,
+                                      const ActionTemplate& source, Tick at, const ActivateOptions& options = {});
     /// Fades the latest live activation of the action out over `fadeSeconds` from `at`, or,
     /// when it was not activated live, the authored action of that name playing at `at`.
     /// False when neither plays then.
@@ -154,6 +163,11 @@ private:
     };
 
     static void fillLibrary(Performer& performer, scenario::CharacterRuntime& character);
+    Result<anim::ActionId> activate(TrackState& track, const std::string& action, const ActionTemplate& source, Tick at,
+                                    const ActivateOptions& options);
+    /// An error naming the action when `source` is not on the track's layout.
+    static Result<void> fitsTrack(const TrackState& track, const std::string& character, Track kind,
+                                  const std::string& action, const ActionTemplate& source);
     void cacheAuthored(TrackState& track) const; // sets `cache` and `played` for m_cacheFrames
     Result<void> initPerformer(Performer& performer, const anim::Skeleton& skeleton,
                                std::shared_ptr<const anim::BlendingSchedule> body,
@@ -167,6 +181,8 @@ private:
     static void drop(TrackState& track, Activation& activation);
     static void dropFinished(TrackState& track, double seconds);
     void evaluateTrack(TrackState& track, double seconds, std::vector<float>& out) const;
+    /// Where the performer stands: its runtime character's placement (none for one added by hand).
+    anim::Placement placement(std::size_t performer) const;
 
     mutable std::mutex m_mutex;
     std::shared_ptr<const anim::FrameBlender> m_blender = anim::defaultBlender();

@@ -1,10 +1,10 @@
-#include "motion/build_idle_job.h"
+#include "scenario/build_idle_job.h"
 
 #include <cmath>
 
-#include "motion/posture_clip.h"
+#include "scenario/posture_clip.h"
 
-namespace thespis::core::motion {
+namespace thespis::core::scenario {
 
 std::string BuildIdleJob::title() const
 {
@@ -27,7 +27,7 @@ Result<void> BuildIdleJob::validate() const
 Result<void> BuildIdleJob::run(JobContext& context)
 {
     if (!basesFile.empty()) {
-        auto bases = readPostureBasesFile(basesFile);
+        auto bases = motion::readPostureBasesFile(basesFile);
         if (!bases)
             return bases.error();
         options.bases = std::move(bases).value();
@@ -35,17 +35,17 @@ Result<void> BuildIdleJob::run(JobContext& context)
     auto postures = readPostureSources(sources, assets, options.frameRate, context, ReadingStage, title());
     if (!postures)
         return postures.error();
-    std::vector<IdleRecording> recordings;
+    std::vector<motion::IdleRecording> recordings;
     for (std::size_t i = 0; i < sources.size(); ++i)
         recordings.push_back({std::filesystem::path(sources[i].clip.file).filename().string(), std::move((*postures)[i]), {}});
     context.beginStage(BuildingStage);
-    auto built = buildIdleDatabase(recordings, options, &report);
+    auto built = motion::buildIdleDatabase(recordings, options, &report);
     if (!built)
         return built.error();
     database = std::move(built).value();
     if (context.stopRequested())
         return cancelledError(title());
-    return writeIdleDatabaseFile(output, database);
+    return motion::writeIdleDatabaseFile(output, database);
 }
 
 void BuildIdleJob::discardOutput()
@@ -54,4 +54,4 @@ void BuildIdleJob::discardOutput()
     std::filesystem::remove(output, ignored);
 }
 
-} // namespace thespis::core::motion
+} // namespace thespis::core::scenario

@@ -9,25 +9,25 @@
 #include <vector>
 
 #include "motion/idle_builder.h"
-#include "motion/posture_clip.h"
+#include "scenario/posture_clip.h"
 #include "scenario/asset_resolver.h"
 #include "scenario/scenario.h"
 #include "util/job.h"
 
-namespace thespis::core::motion {
+namespace thespis::core::scenario {
 
 struct BuildIdleJob final : Job {
     static constexpr const char* ReadingStage = "Reading recordings";
     static constexpr const char* BuildingStage = "Finding rests and transitions";
 
     std::vector<PostureSource> sources;
-    scenario::Assets assets{"."};
+    Assets assets{"."};
     std::filesystem::path output;      ///< a .idle file
     std::filesystem::path basesFile;   ///< a .pca file to measure in; empty: trained on the recordings
-    IdleBuildOptions options;
+    motion::IdleBuildOptions options;
 
-    IdleDatabase database;  ///< after run()
-    IdleBuildReport report; ///< after run()
+    motion::IdleDatabase database;  ///< after run()
+    motion::IdleBuildReport report; ///< after run()
 
     std::string title() const override;
     /// At least one recording; skips ≥ 0; the output ends in .idle.
@@ -36,4 +36,4 @@ struct BuildIdleJob final : Job {
     void discardOutput() override;
 };
 
-} // namespace thespis::core::motion
+} // namespace thespis::core::scenario

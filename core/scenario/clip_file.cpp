@@ -17,11 +17,6 @@ namespace {
 // CMU's unit: (1/0.45)·2.54 cm (mocap.cs.cmu.edu's FAQ).
 constexpr double kCmuUnit = 0.0254 / 0.45;
 
-std::string quote(const std::string& text)
-{
-    return "\"" + text + "\"";
-}
-
 // A BVH file's unit: CMU's by its conventions, else from the legs (a human's are 0.7 to 1 m).
 void guessUnit(const std::string& convention, const anim::Skeleton& skeleton, ClipFileReport& report)
 {
@@ -108,7 +103,7 @@ Result<ClipFile> readGltf(const ClipAsset& asset, const std::filesystem::path& p
             for (const std::string& animation : file.report.animations)
                 names += (names.empty() ? "" : ", ") + animation;
             return makeError(ErrorCode::InvalidArgument,
-                             name + " has no animation named " + quote(asset.animation) + " (it has " + names + ").");
+                             name + " has no animation named " + inQuotes(asset.animation) + " (it has " + names + ").");
         }
     }
     file.clip = *chosen;

@@ -1,4 +1,4 @@
-#include "motion/posture_clip.h"
+#include "scenario/posture_clip.h"
 
 #include <cmath>
 
@@ -7,16 +7,11 @@
 #include "scenario/clip_file.h"
 #include "scene/foot_soles.h"
 
-namespace thespis::core::motion {
+namespace thespis::core::scenario {
 
-const anim::Skeleton& postureSkeleton()
+std::vector<float> PostureClip::postures(motion::PostureSet set, double rate, double skip) const
 {
-    return anim::hanim::skeleton(anim::hanim::Level::Subset25);
-}
-
-std::vector<float> PostureClip::postures(PostureSet set, double rate, double skip) const
-{
-    const PostureMap map = *PostureMap::create(postureSkeleton(), set); // every set is on it
+    const motion::PostureMap map = *motion::PostureMap::create(motion::postureSkeleton(), set); // every set is on it
     const std::size_t d = std::size_t(map.layout().size());
     const anim::TimeDomain domain = frames->domain();
     const double step = rate > 0 ? 1.0 / rate : 1.0 / frameRate();
@@ -32,7 +27,7 @@ std::vector<float> PostureClip::postures(PostureSet set, double rate, double ski
 }
 
 Result<std::vector<std::vector<float>>> readPostureSources(const std::vector<PostureSource>& sources,
-                                                           const scenario::Assets& assets, double rate,
+                                                           const Assets& assets, double rate,
                                                            JobContext& context, const std::string& stage,
                                                            const std::string& job)
 {
@@ -44,33 +39,33 @@ Result<std::vector<std::vector<float>>> readPostureSources(const std::vector<Pos
         auto clip = readPostureClip(sources[i].clip, assets);
         if (!clip)
             return clip.error();
-        postures.push_back(clip->postures(PostureSet::WholeBody, rate, sources[i].skip));
+        postures.push_back(clip->postures(motion::PostureSet::WholeBody, rate, sources[i].skip));
         context.setDone(i + 1);
     }
     return postures;
 }
 
-Result<PostureClip> readPostureClip(const scenario::ClipAsset& asset, const scenario::Assets& assets)
+Result<PostureClip> readPostureClip(const ClipAsset& asset, const Assets& assets)
 {
-    auto file = scenario::readClipFile(asset, assets);
+    auto file = readClipFile(asset, assets);
     if (!file)
         return file.error();
     anim::ClipRetargetOptions options;
     options.retarget.sourceUnit = asset.unit > 0 ? asset.unit : file->report.unit;
     options.fitGround = asset.fitGround;
     options.retarget.targetSoles = scene::defaultHumanoidSoles(anim::hanim::Level::Subset25);
-    auto retargeted = anim::retargetClip(*file->clip, file->skeleton, postureSkeleton(), options);
+    auto retargeted = anim::retargetClip(*file->clip, file->skeleton, motion::postureSkeleton(), options);
     if (!retargeted)
         return makeError(retargeted.error().code, asset.file + ": " + retargeted.error().message, retargeted.error().detail);
 
     PostureClip clip;
     clip.name = asset.file;
     clip.frames = retargeted->clip;
-    for (const std::string& joint : PostureLayout::of(PostureSet::WholeBody).joints)
+    for (const std::string& joint : motion::PostureLayout::of(motion::PostureSet::WholeBody).joints)
         if (std::find(retargeted->report.unmatched.begin(), retargeted->report.unmatched.end(), joint) !=
             retargeted->report.unmatched.end())
             clip.unmatched.push_back(joint);
-    const std::size_t total = PostureLayout::of(PostureSet::WholeBody).joints.size();
+    const std::size_t total = motion::PostureLayout::of(motion::PostureSet::WholeBody).joints.size();
     if (2 * clip.unmatched.size() > total) {
         std::string names;
         for (const std::string& joint : clip.unmatched)
@@ -83,4 +78,4 @@ Result<PostureClip> readPostureClip(const scenario::ClipAsset& asset, const scen
     return clip;
 }
 
-} // namespace thespis::core::motion
+} // namespace thespis::core::scenario

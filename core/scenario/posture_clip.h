@@ -15,7 +15,7 @@
 #include "util/error.h"
 #include "util/job.h"
 
-namespace thespis::core::motion {
+namespace thespis::core::scenario {
 
 struct PostureClip {
     std::string name;                                 ///< the file's name
@@ -26,28 +26,25 @@ struct PostureClip {
     int frameCount() const { return frames->frameCount(); }
     /// Every frame as a posture of `set` (frameCount × size floats), or resampled at `rate` frames
     /// per second when given, from `skip` seconds on.
-    std::vector<float> postures(PostureSet set, double rate = 0, double skip = 0) const;
+    std::vector<float> postures(motion::PostureSet set, double rate = 0, double skip = 0) const;
 };
 
 /// A recording to learn from: a clip file with its options, and the seconds left out at its start
 /// (a capture's T-pose and the settling after it).
 struct PostureSource {
-    scenario::ClipAsset clip;
+    ClipAsset clip;
     double skip = 0;
 };
 
 /// Every source's whole-body postures at `rate` frames per second, read as a job's stage
 /// `stage` (util/job.h: one unit per source); ErrorCode::Cancelled (naming `job`) when stopped.
 Result<std::vector<std::vector<float>>> readPostureSources(const std::vector<PostureSource>& sources,
-                                                           const scenario::Assets& assets, double rate,
+                                                           const Assets& assets, double rate,
                                                            JobContext& context, const std::string& stage,
                                                            const std::string& job);
 
-/// The skeleton postures are measured on: H-Anim's 25 joints (hanim::Level::Subset25).
-const anim::Skeleton& postureSkeleton();
-
 /// Reads `asset.file` from `assets` onto the posture skeleton. Errors name the file: it cannot be
 /// read, or it moves fewer than half of the 25 posture joints (they are listed).
-Result<PostureClip> readPostureClip(const scenario::ClipAsset& asset, const scenario::Assets& assets);
+Result<PostureClip> readPostureClip(const ClipAsset& asset, const Assets& assets);
 
-} // namespace thespis::core::motion
+} // namespace thespis::core::scenario

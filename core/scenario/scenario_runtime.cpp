@@ -17,8 +17,11 @@
 #include "anim/modifiers.h"
 #include "motion/idle_motion.h"
 #include "scenario/action_modifier.h"
+#include "scenario/runtime_gestures.h"
+#include "scenario/source_clip.h"
 #include "lighting/probe.h"
 #include "scene/gltf_mesh.h"
+#include "util/text.h"
 
 namespace thespis::core::scenario {
 
@@ -31,18 +34,7 @@ void CharacterRuntime::evaluateBody(double seconds, std::span<float> frame) cons
 
 void CharacterRuntime::place(const anim::FrameLayout& layout, std::span<float> frame) const
 {
-    const anim::RootElements root = anim::rootElements(layout);
-    if (!root.valid)
-        return;
-    if (root.rotation >= 0) {
-        anim::Quat& q = anim::rotationAt(frame, root.rotation);
-        q = anim::normalize(placementRotation * q);
-    }
-    float* p = &frame[root.translation];
-    const anim::Vec3 placed = anim::rotate(placementRotation, anim::Vec3{p[0], p[1], p[2]}) + placementTranslation;
-    p[0] = placed.x;
-    p[1] = placed.y;
-    p[2] = placed.z;
+    placement.apply(layout, frame);
 }
 
 const CharacterRuntime* ScenarioRuntime::findCharacter(const std::string& characterName) const
@@ -58,11 +50,6 @@ namespace {
 using anim::BlendingSchedule;
 using anim::KeyframeClip;
 
-std::string quote(const std::string& text)
-{
-    return "\"" + text + "\"";
-}
-
 std::string joinNames(const std::vector<std::string>& names, std::size_t limit = 12)
 {
     std::string text;
@@ -72,14 +59,6 @@ std::string joinNames(const std::vector<std::string>& names, std::size_t limit =
         text += " and " + std::to_string(names.size() - limit) + " more";
     return text;
 }
-
-// A clip as read from its source, before it is put on a character's layout.
-struct SourceClip {
-    std::shared_ptr<const KeyframeClip> clip;
-    std::shared_ptr<const ClipFile> file; // clips read from a file bring their rig
-    std::shared_ptr<const motion::IdleDatabase> idle; // idle motion clips: what they play from
-    const ClipAsset* asset = nullptr;
-};
 
 } // namespace
 
@@ -108,7 +87,7 @@ public:
             if (character.name.empty())
                 problem(ErrorCode::InvalidSchedule, "Character " + std::to_string(i + 1) + " has no name.");
             else if (!names.insert(character.name).second)
-                problem(ErrorCode::InvalidSchedule, "Two characters are named " + quote(character.name) + ".");
+                problem(ErrorCode::InvalidSchedule, "Two characters are named " + inQuotes(character.name) + ".");
             if (auto built = buildCharacter(character))
                 runtime.characters.push_back(std::move(*built));
         }
@@ -159,91 +138,15 @@ private:
                 continue;
             }
             if (!names.insert(mask.name).second) {
-                problem(ErrorCode::InvalidSchedule, "Two masks are named " + quote(mask.name) + ".");
+                problem(ErrorCode::InvalidSchedule, "Two masks are named " + inQuotes(mask.name) + ".");
                 continue;
             }
             if (auto ok = mask.mask.validate(); !ok) {
-                problem(ErrorCode::InvalidSchedule, "Mask " + quote(mask.name) + ": " + ok.error().message);
+                problem(ErrorCode::InvalidSchedule, "Mask " + inQuotes(mask.name) + ": " + ok.error().message);
                 continue;
             }
             m_masks[mask.name] = std::make_shared<const anim::JointMask>(mask.mask);
         }
-    }
-
-    // Reads a clip from its BVH file or its inline keyframes (not yet on the character's layout).
-    std::optional<SourceClip> loadClip(const ClipAsset& asset, const std::string& where)
-    {
-        SourceClip source;
-        source.asset = &asset;
-        if (asset.idle) {
-            if (!asset.file.empty() || !asset.frames.empty() || !asset.joints.empty() || !asset.scalars.empty()) {
-                problem(ErrorCode::InvalidSchedule, where + ": an idle motion clip has no file and no keyframes.");
-                return std::nullopt;
-            }
-            auto database = m_cache->idleDatabase(asset.idle->database, m_assets);
-            if (!database) {
-                const Error& e = database.error();
-                problem(e.code, where + ", idle database " + quote(asset.idle->database) + ": " + e.message,
-                        "looked for " + m_assets.where(asset.idle->database) + (e.detail.empty() ? "" : "; " + e.detail));
-                return std::nullopt;
-            }
-            source.idle = *database;
-            return source;
-        }
-        if (!asset.file.empty()) {
-            if (!asset.frames.empty() || !asset.joints.empty() || !asset.scalars.empty()) {
-                problem(ErrorCode::InvalidSchedule, where + ": a clip read from a file cannot also hold inline keyframes.");
-                return std::nullopt;
-            }
-            if (asset.frameRateOverride < 0 || !std::isfinite(asset.frameRateOverride)) {
-                problem(ErrorCode::InvalidSchedule, where + ": the frame rate override must be a positive number.");
-                return std::nullopt;
-            }
-            auto read = m_cache->clipFile(asset, m_assets);
-            if (!read) {
-                const Error& e = read.error();
-                problem(e.code, where + ", file " + quote(asset.file) + ": " + e.message,
-                        "looked for " + m_assets.where(asset.file) + (e.detail.empty() ? "" : "; " + e.detail));
-                return std::nullopt;
-            }
-            const ClipFile& file = **read;
-            source.clip = file.clip;
-            source.file = *read;
-            return source;
-        }
-        if (asset.joints.empty() && asset.scalars.empty()) {
-            problem(ErrorCode::InvalidSchedule, where + ": the clip has neither a file nor inline keyframes.");
-            return std::nullopt;
-        }
-        std::set<std::string> seen;
-        for (const std::string& name : asset.joints)
-            if (name.empty() || !seen.insert(name).second) {
-                problem(ErrorCode::InvalidSchedule, where + ": joint names must be non-empty and unique ("
-                                                        + quote(name) + ").");
-                return std::nullopt;
-            }
-        seen.clear();
-        for (const std::string& name : asset.scalars)
-            if (name.empty() || !seen.insert(name).second) {
-                problem(ErrorCode::InvalidSchedule, where + ": scalar names must be non-empty and unique ("
-                                                        + quote(name) + ").");
-                return std::nullopt;
-            }
-        if (asset.rootTranslation && asset.joints.empty()) {
-            problem(ErrorCode::InvalidSchedule, where + ": a root translation needs a root joint.");
-            return std::nullopt;
-        }
-        std::vector<std::string> translations;
-        if (asset.rootTranslation)
-            translations.push_back(asset.joints.front());
-        auto layout = anim::FrameLayout::create(asset.joints, std::move(translations), asset.scalars);
-        auto clip = KeyframeClip::create(std::move(layout), asset.frameRate, asset.frames, asset.name);
-        if (!clip) {
-            problem(ErrorCode::InvalidSchedule, where + ": " + clip.error().message, clip.error().detail);
-            return std::nullopt;
-        }
-        source.clip = std::move(clip).value();
-        return source;
     }
 
     std::optional<anim::Skeleton> resolveSkeleton(const Character& character, const std::string& who,
@@ -265,7 +168,7 @@ private:
             }
             auto rig = m_cache->modelRig(m_assets.path(character.model));
             if (!rig) {
-                problem(rig.error().code, who + ", model " + quote(character.model) + ": " + rig.error().message,
+                problem(rig.error().code, who + ", model " + inQuotes(character.model) + ": " + rig.error().message,
                         rig.error().detail);
                 return std::nullopt;
             }
@@ -280,18 +183,18 @@ private:
                                                 [&](const ClipAsset& c) { return c.name == clipName; });
                 if (!exists)
                     problem(ErrorCode::InvalidSchedule,
-                            who + ", skeleton " + quote(spec) + ": the character has no clip named " + quote(clipName) + ".");
+                            who + ", skeleton " + inQuotes(spec) + ": the character has no clip named " + inQuotes(clipName) + ".");
                 return std::nullopt; // a clip that failed to load was reported already
             }
             if (!it->second.file) {
-                problem(ErrorCode::InvalidSchedule, who + ", skeleton " + quote(spec)
+                problem(ErrorCode::InvalidSchedule, who + ", skeleton " + inQuotes(spec)
                                                         + (it->second.idle ? ": the clip is synthesized" : ": the clip is stored inline")
                                                         + std::string("; only a clip read from a file carries a skeleton."));
                 return std::nullopt;
             }
             return it->second.file->skeleton;
         }
-        problem(ErrorCode::InvalidSchedule, who + ": unknown skeleton " + quote(spec)
+        problem(ErrorCode::InvalidSchedule, who + ": unknown skeleton " + inQuotes(spec)
                                                 + " (expected hanim-loa1, hanim-loa2, hanim-25, model or clip:NAME).");
         return std::nullopt;
     }
@@ -354,6 +257,17 @@ private:
         return std::move(remapped).value();
     }
 
+    // Whether the scenario names posture bases that can be read; says nothing when they cannot
+    // (an action with the filter does, through postureBases()).
+    bool postureBasesReadable()
+    {
+        if (m_bases)
+            return true;
+        if (m_scenario.postureBases.empty())
+            return false;
+        return m_cache->postureBases(m_scenario.postureBases, m_assets).ok();
+    }
+
     // The scenario's posture bases, read once per build (a problem, once, when they cannot be).
     Result<std::shared_ptr<const motion::PostureBases>> postureBases()
     {
@@ -369,7 +283,7 @@ private:
         }
         auto read = m_cache->postureBases(m_scenario.postureBases, m_assets);
         if (!read) {
-            problem(read.error().code, "Posture bases " + quote(m_scenario.postureBases) + ": " + read.error().message,
+            problem(read.error().code, "Posture bases " + inQuotes(m_scenario.postureBases) + ": " + read.error().message,
                     "looked for " + m_assets.where(m_scenario.postureBases));
             m_basesError = makeError(read.error().code, "the posture bases cannot be read (reported above).");
             return *m_basesError;
@@ -412,7 +326,7 @@ private:
             std::vector<std::string> names;
             for (const ClipAsset& c : ctx.character.clips)
                 names.push_back(c.name);
-            problem(ErrorCode::InvalidSchedule, where + ", clip: the character has no clip named " + quote(spec.clip)
+            problem(ErrorCode::InvalidSchedule, where + ", clip: the character has no clip named " + inQuotes(spec.clip)
                                                     + (names.empty() ? "." : " (its clips: " + joinNames(names) + ")."));
         } else if (clip != ctx.sources.end()) { // else it failed to load, reported already
             if (layer.kind == LayerKind::Body) {
@@ -420,10 +334,10 @@ private:
                 if (it != runtime.clips.end())
                     source = it->second;
                 else
-                    problem(ErrorCode::InvalidSchedule, where + ", clip " + quote(spec.clip)
+                    problem(ErrorCode::InvalidSchedule, where + ", clip " + inQuotes(spec.clip)
                                                             + ": it moves no joint of the character's skeleton.");
             } else if (clip->second.idle) {
-                problem(ErrorCode::InvalidSchedule, where + ", clip " + quote(spec.clip)
+                problem(ErrorCode::InvalidSchedule, where + ", clip " + inQuotes(spec.clip)
                                                         + ": idle motion moves a body; it cannot play on a face layer.");
             } else {
                 auto& face = ctx.faceClips[spec.clip];
@@ -434,7 +348,7 @@ private:
                 if (face)
                     source = face;
                 else
-                    problem(ErrorCode::InvalidSchedule, where + ", clip " + quote(spec.clip)
+                    problem(ErrorCode::InvalidSchedule, where + ", clip " + inQuotes(spec.clip)
                                                             + ": a face layer needs MPEG-4 FAP values (fap1 … fap68), and the clip has none.");
             }
         }
@@ -468,7 +382,7 @@ private:
             if (mask != m_masks.end())
                 action.params.mask = mask->second;
             else if (!m_scenario.findMask(spec.mask))
-                problem(ErrorCode::InvalidSchedule, where + ", mask: the scenario has no mask named " + quote(spec.mask) + ".");
+                problem(ErrorCode::InvalidSchedule, where + ", mask: the scenario has no mask named " + inQuotes(spec.mask) + ".");
         }
         if (errors.size() != before || !source)
             return std::nullopt;
@@ -520,9 +434,56 @@ private:
         }
     }
 
+    // Every clip with face values on the face layout (the Stage's face actions), shared with the
+    // face layers that play them.
+    void buildFaceClips(Context& ctx, CharacterRuntime& runtime, const std::string& who)
+    {
+        const auto layout = anim::FrameLayout::mpeg4Face();
+        for (const auto& [name, source] : ctx.sources) {
+            if (source.idle || !hasFaceValues(*source.clip->layout()))
+                continue;
+            if (auto face = onLayout(source, layout, anim::neutralFrame(*layout), who + ", clip " + inQuotes(name), nullptr)) {
+                ctx.faceClips[name] = face;
+                runtime.faceClips.emplace(name, std::move(face));
+            }
+        }
+    }
+
+    static bool hasFaceValues(const anim::FrameLayout& layout)
+    {
+        for (int e = layout.rotationCount() + layout.translationCount(); e < layout.elementCount(); ++e)
+            if (layout.name(e).starts_with("fap"))
+                return true;
+        return false;
+    }
+
+    // A gesture's action as a body action of the character. What keeps it from being built is a
+    // warning, not an error: the gesture is left out of what scripts can play, the rest plays.
+    std::optional<anim::BlendingAction> buildGestureAction(const ActionSpec& spec, const NamedMask* widened,
+                                                           const std::string& where, Context& ctx,
+                                                           CharacterRuntime& runtime)
+    {
+        if (widened && !m_masks.contains(widened->name))
+            m_masks[widened->name] = std::make_shared<const anim::JointMask>(widened->mask);
+        Layer body;
+        body.kind = LayerKind::Body;
+        const std::size_t before = errors.size();
+        auto built = buildAction(spec, body, ctx, where, runtime);
+        // The gesture's own problems become warnings; the scenario's (its posture bases cannot be
+        // read) stay errors, as for any action.
+        const auto own = std::stable_partition(errors.begin() + std::ptrdiff_t(before), errors.end(),
+                                               [&](const Error& e) { return !e.message.starts_with(where); });
+        for (auto e = own; e != errors.end(); ++e) {
+            runtime.warnings.push_back(e->message + " Scripts cannot play this gesture.");
+            runtime.warningClips.resize(runtime.warnings.size(), spec.clip);
+        }
+        errors.erase(own, errors.end());
+        return built;
+    }
+
     std::optional<CharacterRuntime> buildCharacter(const Character& character)
     {
-        const std::string who = "Character " + quote(character.name);
+        const std::string who = "Character " + inQuotes(character.name);
         const std::size_t before = errors.size();
         CharacterRuntime runtime;
         runtime.name = character.name;
@@ -531,7 +492,7 @@ private:
         std::map<std::string, SourceClip> sources;
         for (std::size_t i = 0; i < character.clips.size(); ++i) {
             const ClipAsset& asset = character.clips[i];
-            const std::string where = who + ", clip " + (asset.name.empty() ? std::to_string(i + 1) : quote(asset.name));
+            const std::string where = who + ", clip " + (asset.name.empty() ? std::to_string(i + 1) : inQuotes(asset.name));
             if (asset.name.empty()) {
                 problem(ErrorCode::InvalidSchedule, where + ": a clip needs a name.");
                 continue;
@@ -540,8 +501,10 @@ private:
                 problem(ErrorCode::InvalidSchedule, where + ": two clips have this name.");
                 continue;
             }
-            if (auto loaded = loadClip(asset, where))
+            if (auto loaded = readSourceClip(asset, where, *m_cache, m_assets))
                 sources.emplace(asset.name, std::move(*loaded));
+            else
+                errors.push_back(std::move(loaded).error());
         }
 
         m_soles.clear();
@@ -554,9 +517,9 @@ private:
         if (!std::isfinite(character.heading) || !std::isfinite(character.position.x)
             || !std::isfinite(character.position.y) || !std::isfinite(character.position.z))
             problem(ErrorCode::InvalidSchedule, who + ": its position and heading must be finite numbers.");
-        runtime.placementRotation =
+        runtime.placement.rotation =
             anim::Quat::fromAxisAngle(anim::Vec3{0, 1, 0}, float(character.heading * std::numbers::pi / 180.0));
-        runtime.placementTranslation = character.position;
+        runtime.placement.translation = character.position;
         const std::vector<float> rest = runtime.skeleton.restFrame();
         for (const auto& [name, source] : sources) {
             if (source.idle) {
@@ -565,7 +528,7 @@ private:
                 options.amplitude = float(source.asset->idle->amplitude);
                 auto idle = motion::IdleMotion::create(source.idle, runtime.skeleton, options);
                 if (!idle)
-                    problem(ErrorCode::InvalidSchedule, who + ", clip " + quote(name) + ": " + idle.error().message);
+                    problem(ErrorCode::InvalidSchedule, who + ", clip " + inQuotes(name) + ": " + idle.error().message);
                 else
                     runtime.clips.emplace(name, std::move(idle).value());
                 continue;
@@ -573,7 +536,7 @@ private:
             if (source.file) {
                 runtime.clipReports[name] = source.file->report;
                 if (const auto lost = unmappedJointsMovingNothing(*source.file, runtime.skeleton); !lost.empty()) {
-                    runtime.warnings.push_back(who + ", clip " + quote(name) + ": " + std::to_string(lost.size())
+                    runtime.warnings.push_back(who + ", clip " + inQuotes(name) + ": " + std::to_string(lost.size())
                                                + " joints of the file have no H-Anim name and move nothing of the character: "
                                                + joinNames(lost) + ".");
                     runtime.warningClips.resize(runtime.warnings.size(), name);
@@ -582,16 +545,16 @@ private:
                 if (std::none_of(joints.begin(), joints.end(),
                                  [&](const anim::Joint& j) { return runtime.skeleton.find(j.name) >= 0; }))
                     continue; // no body joint: fine for a face clip, an error if a body layer plays it
-                if (auto onSkeleton = retargeted(source, runtime.skeleton, who + ", clip " + quote(name)))
+                if (auto onSkeleton = retargeted(source, runtime.skeleton, who + ", clip " + inQuotes(name)))
                     runtime.clips.emplace(name, std::move(onSkeleton));
                 continue;
             }
             std::vector<std::string> dropped;
-            auto onSkeleton = onLayout(source, runtime.skeleton.frameLayout(), rest, who + ", clip " + quote(name), &dropped);
+            auto onSkeleton = onLayout(source, runtime.skeleton.frameLayout(), rest, who + ", clip " + inQuotes(name), &dropped);
             if (!onSkeleton)
                 continue; // no body joint: fine for a face clip, an error if a body layer plays it
             if (!dropped.empty()) {
-                runtime.warnings.push_back(who + ", clip " + quote(name) + ": " + std::to_string(dropped.size())
+                runtime.warnings.push_back(who + ", clip " + inQuotes(name) + ": " + std::to_string(dropped.size())
                                            + " of its joints are not in the skeleton and are left out: "
                                            + joinNames(dropped) + ".");
                 runtime.warningClips.resize(runtime.warnings.size(), name);
@@ -601,27 +564,33 @@ private:
 
         for (std::size_t g = 0; g < character.gestures.size(); ++g) {
             const Gesture& gesture = character.gestures[g];
-            const std::string where = who + ", gesture " + (gesture.name.empty() ? std::to_string(g + 1) : quote(gesture.name));
+            const std::string where = who + ", gesture " + (gesture.name.empty() ? std::to_string(g + 1) : inQuotes(gesture.name));
             if (gesture.name.empty())
                 problem(ErrorCode::InvalidSchedule, where + ": a gesture needs a name.");
             if (!character.findClip(gesture.clip))
-                problem(ErrorCode::InvalidSchedule, where + ", clip: the character has no clip named " + quote(gesture.clip) + ".");
+                problem(ErrorCode::InvalidSchedule, where + ", clip: the character has no clip named " + inQuotes(gesture.clip) + ".");
             if (!gesture.mask.empty() && !m_scenario.findMask(gesture.mask))
-                problem(ErrorCode::InvalidSchedule, where + ", mask: the scenario has no mask named " + quote(gesture.mask) + ".");
+                problem(ErrorCode::InvalidSchedule, where + ", mask: the scenario has no mask named " + inQuotes(gesture.mask) + ".");
             if (gesture.fadeIn < 0 || gesture.fadeOut < 0)
                 problem(ErrorCode::InvalidSchedule, where + ": fade times must not be negative.");
         }
 
+        Context ctx{character, sources, {}};
+        buildFaceClips(ctx, runtime, who);
+        if (errors.size() == before)
+            buildGestures(m_scenario, character, [&](const ActionSpec& spec, const NamedMask* widened, const std::string& where) {
+                return buildGestureAction(spec, widened, where, ctx, runtime);
+            }, postureBasesReadable(), runtime);
+
         const bool anySolo = std::any_of(character.layers.begin(), character.layers.end(),
                                          [](const Layer& layer) { return layer.solo; });
-        Context ctx{character, sources, {}};
         runtime.body = std::make_shared<BlendingSchedule>(runtime.skeleton);
         runtime.face = std::make_shared<BlendingSchedule>(anim::FrameLayout::mpeg4Face());
         bool firstBody = true, firstFace = true;
         std::set<std::string> layerNames;
         for (std::size_t l = 0; l < character.layers.size(); ++l) {
             const Layer& layer = character.layers[l];
-            const std::string where = who + ", layer " + (layer.name.empty() ? std::to_string(l + 1) : quote(layer.name));
+            const std::string where = who + ", layer " + (layer.name.empty() ? std::to_string(l + 1) : inQuotes(layer.name));
             if (layer.name.empty())
                 problem(ErrorCode::InvalidSchedule, where + ": a layer needs a name.");
             else if (!layerNames.insert(layer.name).second)
@@ -632,7 +601,7 @@ private:
             std::vector<std::optional<anim::BlendingAction>> actions;
             for (std::size_t a = 0; a < layer.actions.size(); ++a) {
                 const ActionSpec& spec = layer.actions[a];
-                const std::string at = where + ", action " + (spec.name.empty() ? std::to_string(a + 1) : quote(spec.name));
+                const std::string at = where + ", action " + (spec.name.empty() ? std::to_string(a + 1) : inQuotes(spec.name));
                 actions.push_back(buildAction(spec, layer, ctx, at, runtime));
             }
             if (body)
@@ -640,7 +609,7 @@ private:
             std::vector<anim::ActionId> ids;
             for (std::size_t a = 0; a < layer.actions.size(); ++a) {
                 const ActionSpec& spec = layer.actions[a];
-                const std::string at = where + ", action " + (spec.name.empty() ? std::to_string(a + 1) : quote(spec.name));
+                const std::string at = where + ", action " + (spec.name.empty() ? std::to_string(a + 1) : inQuotes(spec.name));
                 if (!actions[a]) {
                     ids.push_back(0);
                     continue;

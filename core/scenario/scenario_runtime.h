@@ -22,6 +22,15 @@
 
 namespace thespis::core::scenario {
 
+/// A gesture of the character's gesticon as the actions that play it live (gesture_action.h),
+/// with and without the dependent-joint filter, so that the studio can compare the two. The
+/// filtered one is missing (null source) when the scenario names no posture bases.
+struct GestureActions {
+    anim::BlendingAction withFilter, withoutFilter;
+    bool filter = false; ///< the gesture's own choice
+    const anim::BlendingAction& played() const { return filter ? withFilter : withoutFilter; }
+};
+
 /// A character's schedules. Every layer is built (so that its actions are checked and can be
 /// found by id), but only the layers that play — not muted, and solo when any layer of the
 /// character is solo — are nested in `body` / `face`.
@@ -29,10 +38,13 @@ struct CharacterRuntime {
     std::string name;
     anim::Skeleton skeleton;
     /// Where the character stands and faces (Character::position, heading).
-    anim::Quat placementRotation;
-    anim::Vec3 placementTranslation;
+    anim::Placement placement;
     /// On the skeleton's layout: recorded clips (keyframes) and synthesized ones (idle motion).
     std::map<std::string, anim::BlendablePtr> clips;
+    /// The clips with MPEG-4 FAP values, on the face layout.
+    std::map<std::string, anim::BlendablePtr> faceClips;
+    /// The gesticon, by gesture name (gestures that cannot be built are left out, with a warning).
+    std::map<std::string, GestureActions> gestures;
     std::shared_ptr<anim::BlendingSchedule> body;       ///< every body layer, nested
     std::shared_ptr<anim::BlendingSchedule> face;       ///< every face layer (MPEG-4 FAPs), nested
     std::vector<std::shared_ptr<anim::BlendingSchedule>> layers; ///< per Layer, same order

@@ -1,11 +1,11 @@
-#include "motion/train_pca_job.h"
+#include "scenario/train_pca_job.h"
 
 #include <cmath>
 
 #include "motion/idle_builder.h"
-#include "motion/posture_clip.h"
+#include "scenario/posture_clip.h"
 
-namespace thespis::core::motion {
+namespace thespis::core::scenario {
 
 std::string TrainPcaJob::title() const
 {
@@ -38,17 +38,17 @@ Result<void> TrainPcaJob::run(JobContext& context)
     context.beginStage(AnalysingStage);
     if (context.stopRequested())
         return cancelledError(title());
-    frameCount = long(postures.size() / std::size_t(PostureLayout::of(PostureSet::WholeBody).size()));
-    auto whole = PostureBasis::train(PostureSet::WholeBody, postures);
+    frameCount = long(postures.size() / std::size_t(motion::PostureLayout::of(motion::PostureSet::WholeBody).size()));
+    auto whole = motion::PostureBasis::train(motion::PostureSet::WholeBody, postures);
     if (!whole)
         return whole.error();
-    auto upper = PostureBasis::train(PostureSet::UpperBody, upperBodyOf(postures));
+    auto upper = motion::PostureBasis::train(motion::PostureSet::UpperBody, motion::upperBodyOf(postures));
     if (!upper)
         return upper.error();
     bases = {std::move(whole).value(), std::move(upper).value()};
     if (context.stopRequested())
         return cancelledError(title());
-    return writePostureBasesFile(output, bases);
+    return motion::writePostureBasesFile(output, bases);
 }
 
 void TrainPcaJob::discardOutput()
@@ -57,4 +57,4 @@ void TrainPcaJob::discardOutput()
     std::filesystem::remove(output, ignored);
 }
 
-} // namespace thespis::core::motion
+} // namespace thespis::core::scenario

@@ -8,23 +8,23 @@
 #include <vector>
 
 #include "motion/posture_bases.h"
-#include "motion/posture_clip.h"
+#include "scenario/posture_clip.h"
 #include "scenario/asset_resolver.h"
 #include "scenario/scenario.h"
 #include "util/job.h"
 
-namespace thespis::core::motion {
+namespace thespis::core::scenario {
 
 struct TrainPcaJob final : Job {
     static constexpr const char* ReadingStage = "Reading clips";
     static constexpr const char* AnalysingStage = "Analysing postures";
 
     std::vector<PostureSource> sources;
-    scenario::Assets assets{"."};
+    Assets assets{"."};
     std::filesystem::path output; ///< a .pca file
     double sampleRate = 30;       ///< postures per second of each clip
 
-    PostureBases bases; ///< after run()
+    motion::PostureBases bases; ///< after run()
     long frameCount = 0;
 
     std::string title() const override;
@@ -34,4 +34,4 @@ struct TrainPcaJob final : Job {
     void discardOutput() override;
 };
 
-} // namespace thespis::core::motion
+} // namespace thespis::core::scenario

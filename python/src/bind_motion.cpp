@@ -4,18 +4,22 @@
 
 #include "bind_common.h"
 #include "errors.h"
-#include "motion/build_idle_job.h"
+#include "scenario/build_idle_job.h"
 #include "motion/dependent_joint_filter.h"
 #include "motion/idle_motion.h"
 #include "motion/posture_bases.h"
-#include "motion/posture_clip.h"
-#include "motion/train_pca_job.h"
+#include "scenario/posture_clip.h"
+#include "scenario/train_pca_job.h"
 #include "run_job.h"
 
 namespace thespis::python {
 
 using namespace pybind11::literals;
 using namespace core::motion;
+using core::scenario::PostureSource;
+using core::scenario::TrainPcaJob;
+using core::scenario::PostureClip;
+using core::scenario::readPostureClip;
 namespace anim = core::anim;
 
 namespace {

@@ -12,6 +12,7 @@
 #include "render/scenario_picture.h"
 #include "render/shading.h"
 #include "run_job.h"
+#include "scenario/open_scenario.h"
 #include "scenario/scenario_io.h"
 
 namespace thespis::python {
@@ -58,21 +59,21 @@ void bindRender(py::module_& m)
         [](const std::filesystem::path& path, double time, int width, int height, const std::string& shading,
            const std::optional<core::lighting::TransferBake>& bake, const std::optional<std::string>& character,
            int samples, bool ground, double azimuth, double elevation) {
-            auto document = unwrap(core::scenario::loadScenario(path));
-            const render::PictureSettings settings =
-                pictureSettings(document, width, height, shading, bake, character, samples, ground, azimuth, elevation);
+            auto opened = unwrap(core::scenario::openScenario(path));
+            const render::PictureSettings settings = pictureSettings(opened.scenario, width, height, shading, bake, character,
+                                                                     samples, ground, azimuth, elevation);
             render::RgbaImage image;
             {
                 py::gil_scoped_release unlocked;
-                auto picture = unwrap(render::ScenarioPicture::create(document, core::scenario::Assets::besideFile(path), settings));
-                picture->scene().setTime(time);
+                auto picture = unwrap(render::ScenarioPicture::create(opened.scenario, opened.assets, settings));
+                picture->scene().playAt(core::secondsToTicks(time));
                 image = *unwrap(picture->draw());
             }
             return toArray<std::uint8_t>(image.rgba, {image.height, image.width, 4});
         },
         "path"_a, "time"_a = 0.0, "width"_a = 1280, "height"_a = 720, "shading"_a = "prt", "bake"_a = py::none(),
         "character"_a = py::none(), "samples"_a = 4, "ground"_a = true, "azimuth"_a = 20.0, "elevation"_a = 8.0,
-        "Renders a .thespis scenario at `time` seconds into a height × width × 4 uint8 array (rows from the top). "
+        "Renders a scenario (.thespis) or a package (.thespkg) at `time` seconds into a height × width × 4 uint8 array (rows from the top). "
         "shading: 'prt', 'phong' or 'unlit'; bake: a thespis.lighting.TransferBake of `character`'s body "
         "(thespis-cli bake SCENARIO --character NAME). Raises OSError when no OpenGL context can be made.");
     r.def(
@@ -82,10 +83,11 @@ void bindRender(py::module_& m)
            const std::optional<std::string>& character, int samples, bool ground, double azimuth, double elevation,
            const py::object& progress) {
             render::FrameSequenceJob job;
-            job.scenario = unwrap(core::scenario::loadScenario(path));
+            auto opened = unwrap(core::scenario::openScenario(path));
+            job.scenario = std::move(opened.scenario);
             job.picture = pictureSettings(job.scenario, width, height, shading, bake, character, samples, ground,
                                           azimuth, elevation);
-            job.assets = core::scenario::Assets::besideFile(path);
+            job.assets = std::move(opened.assets);
             job.first = first;
             job.last = last;
             job.fps = fps;
@@ -96,7 +98,7 @@ void bindRender(py::module_& m)
         "path"_a, "folder"_a, "first"_a, "last"_a, py::kw_only(), "fps"_a = 30.0, "width"_a = 1280, "height"_a = 720,
         "shading"_a = "prt", "bake"_a = py::none(), "character"_a = py::none(), "samples"_a = 4, "ground"_a = true,
         "azimuth"_a = 20.0, "elevation"_a = 8.0, "progress"_a = py::none(),
-        "Renders frames first … last of a .thespis scenario at `fps` into folder/frame_NNNNN.png, as "
+        "Renders frames first … last of a scenario (.thespis) or a package (.thespkg) at `fps` into folder/frame_NNNNN.png, as "
         "`thespis-cli render --frames` does (the same job); returns the scene's warnings. Releases the GIL; "
         "progress(done, total) is called on this thread; Ctrl-C (or an exception in progress) stops it and the "
         "frames written are taken back.");

@@ -277,9 +277,11 @@ void bindRuntime(py::module_& m)
                 return ticksToSeconds(t);
             },
             "seconds"_a, "Waits a number of seconds; returns the time reached.")
-        .def("start_player", [](AnimationService& s, double rate) { s.startPlayer({.rate = rate}); }, "rate"_a = 60.0,
-             "Plays the stage in a thread of its own, `rate` times a second.")
-        .def("stop_player", &AnimationService::stopPlayer)
+        .def("start_player", &AnimationService::startPlayer,
+             "Asks the host to play the stage: the studio's transport starts. A batch run (thespis-cli run, a plain "
+             "python3 script) plays at every frame it evaluates, so there it changes nothing.")
+        .def("stop_player", &AnimationService::stopPlayer,
+             "Asks the host to pause: the studio's transport stops. Changes nothing in a batch run.")
         .def("request_stop", &AnimationService::requestStop,
              "Stops every wait of this service, now and later (raises thespis.Cancelled in them).");
     bindTrack(service, Track::Body, "body");

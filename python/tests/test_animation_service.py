@@ -134,8 +134,12 @@ def test_the_papers_script_runs_as_written():
     animService.stop_player()
     assert end > reached
     assert animService.is_playing_body(Antigone, "antigone_idle")
-    # The face track is off: Creon's face stays neutral although his blinks are authored.
+    # The face track is off: Creon's face stays neutral although he blinks at 0.5 s (his lids
+    # half shut then), which a second service with the face track on shows.
+    assert not np.any(animService.evaluate_face(Creon, 0.5))
     assert not np.any(animService.evaluate_face(Creon))
+    blinking, _ = demo_service()
+    assert np.any(blinking.evaluate_face(Creon, 0.5))
 
 
 def test_unknown_characters_are_named_with_the_known_ones():

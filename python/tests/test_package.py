@@ -83,3 +83,16 @@ def test_damage_and_missing_files_are_named(tmp_path):
     with pytest.raises(Exception, match=r"characters\[Creon\]\.clips\[wave\]\.file names nowhere.bvh"):
         thespis.export_package(document, tmp_path / "broken.thespkg", base_dir=tmp_path)
     assert not (tmp_path / "broken.thespkg").exists()
+
+
+def test_render_calls_take_a_package(tmp_path):
+    """thespis.render's calls open a package wherever they open a scenario file: the same picture."""
+    package = tmp_path / "demo.thespkg"
+    thespis.export_package(DEMO, package)
+    from_package = thespis.render.render_scenario(package, 1.5, width=96, height=72, samples=0)
+    from_folder = thespis.render.render_scenario(DEMO, 1.5, width=96, height=72, samples=0)
+    np.testing.assert_array_equal(from_package, from_folder)
+    assert from_package[..., 3].any()
+    written = thespis.render.render_frames(package, tmp_path / "frames", 3, 4, width=96, height=72, samples=0)
+    assert isinstance(written, list)
+    assert sorted(p.name for p in (tmp_path / "frames").iterdir()) == ["frame_00003.png", "frame_00004.png"]

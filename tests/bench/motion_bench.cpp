@@ -19,7 +19,7 @@
 #include "anim/hanim.h"
 #include "motion/idle_builder.h"
 #include "motion/idle_motion.h"
-#include "motion/posture_clip.h"
+#include "scenario/posture_clip.h"
 
 using namespace thespis::core;
 using namespace thespis::core::motion;
@@ -34,7 +34,7 @@ std::vector<float> posturesOf(const std::string& file, double rate, double skip)
     asset.name = file;
     asset.file = file;
     asset.frameRateOverride = rate;
-    auto clip = readPostureClip(asset, kCmu);
+    auto clip = scenario::readPostureClip(asset, kCmu);
     return clip ? clip->postures(PostureSet::WholeBody, 30, skip) : std::vector<float>{};
 }
 

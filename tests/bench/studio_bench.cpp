@@ -13,9 +13,11 @@
 //   rotated), and the 1280 × 720 frame is drawn offscreen through EGL and read back, as the
 //   studio's viewport draws it (Mesa llvmpipe here). Goal < 33 ms.
 // DragStep/1000: one step of a timeline drag on the 1000-action scenario — an action moved by a
-//   frame, merged into the drag's undo command — from the edit to the stage playing the new
-//   schedules: Document::edit (apply, rebuild what the edit touched, undo stack) and the scene's
-//   stage updated and posed at the playhead, as the studio's preview does. Goal < 5 ms.
+//   frame, merged into the drag's undo command — from the edit to the views showing it:
+//   Document::edit (apply, rebuild what the edit touched, undo stack), the Session giving its
+//   stage the new runtime and ticking, the scene posed from the published poses. Goal < 5 ms.
+// StudioTick: one tick of playback on the demo with the 3D view's scene, the stick figures, the
+//   posture chart and the AR mailbox following the Session.
 #include <benchmark/benchmark.h>
 
 #include <QApplication>
@@ -25,16 +27,21 @@
 #include <QUndoStack>
 
 #include <algorithm>
+#include <filesystem>
 #include <memory>
 
 #include "edit/document_edits.h"
 #include "editor/document.h"
 #include "editor/playback_clock.h"
+#include "editor/posture_chart_panel.h"
 #include "editor/scenario_tree_model.h"
+#include "editor/session.h"
+#include "editor/skeleton_view.h"
 #include "editor/timeline_panel.h"
 #include "render/offscreen_renderer.h"
 #include "render/scenario_scene.h"
 #include "scenario/scenario_io.h"
+#include "widgets/pose_view.h"
 #include "widgets/timeline_view.h"
 
 using namespace thespis;
@@ -158,7 +165,15 @@ void OpenScenario(benchmark::State& state)
         state.SkipWithError(scenario.error().message.c_str());
         return;
     }
+    // The scenario's folder holds what the demo refers to (its idle database and posture bases).
     QTemporaryDir dir;
+    std::error_code copied;
+    std::filesystem::copy(THESPIS_RESOURCES "/motion", dir.filePath(QStringLiteral("motion")).toStdString(),
+                          std::filesystem::copy_options::recursive, copied);
+    if (copied) {
+        state.SkipWithError(("cannot copy the demo's motion folder: " + copied.message()).c_str());
+        return;
+    }
     const QString path = dir.filePath(QStringLiteral("bench.thespis"));
     if (auto written = core::scenario::saveScenario(path.toStdString(), *scenario); !written) {
         state.SkipWithError(written.error().message.c_str());
@@ -203,42 +218,110 @@ void OpenScenario(benchmark::State& state)
 }
 BENCHMARK(OpenScenario)->Arg(1000)->Unit(benchmark::kMillisecond);
 
+// The studio's views of one Session, without the window: the 3D view's scene (drawing the
+// session's stage), the stick figures, the posture chart and the AR preview's mailbox (which
+// the session fills at every tick).
+struct StudioViews {
+    editor::PlaybackClock clock;
+    editor::Session session{&clock};
+    std::unique_ptr<core::render::ScenarioScene> scene;
+    widgets::PoseView poseView;
+    std::unique_ptr<editor::SkeletonView> skeletons;
+    editor::PostureChartPanel chart;
+
+    // Opens `document` (the demo when null); false with the benchmark skipped when it or its
+    // scene cannot be made.
+    bool open(benchmark::State& state, std::unique_ptr<editor::Document> document, bool withFigures)
+    {
+        if (!document) {
+            auto demo = editor::Document::open(QStringLiteral(THESPIS_RESOURCES "/demo.thespis"));
+            if (!demo) {
+                state.SkipWithError(demo.error().message.c_str());
+                return false;
+            }
+            document = std::move(demo).value();
+        }
+        session.setDocument(std::move(document));
+        core::render::ScenarioSceneOptions options;
+        options.stage = session.stage();
+        auto made = core::render::ScenarioScene::create(session.document()->scenario(), session.document()->assets(), options);
+        if (!made) {
+            state.SkipWithError(made.error().message.c_str());
+            return false;
+        }
+        scene = std::move(made).value();
+        QObject::connect(&session, &editor::Session::posesChanged, &session,
+                         [this](const core::runtime::PoseSet& poses) { scene->setPoses(poses); });
+        QObject::connect(&session, &editor::Session::edited, &session, [this] { (void)scene->followStage(); });
+        if (withFigures) {
+            skeletons = std::make_unique<editor::SkeletonView>(&poseView, &session);
+            chart.setDefaultBases(QStringLiteral(THESPIS_RESOURCES "/motion/cmu_postures.pca"));
+            chart.setSession(&session);
+            session.addPanel(&chart);
+        }
+        return true;
+    }
+    std::uint64_t skinnings() const
+    {
+        std::uint64_t total = 0;
+        for (std::size_t c = 0; c < scene->scene().characterCount(); ++c)
+            total += scene->scene().character(c).poseCount();
+        return total;
+    }
+};
+
+// StudioTick: one tick of the studio's playback on the demo — the clock moves a frame, the
+// Session evaluates its stage once and publishes the poses, and every view follows: the 3D
+// view's bodies skinned, the stick figures, the posture chart, the AR mailbox. Counters: stage
+// evaluations and skinnings per character per tick (goal: 1 and 1).
+void StudioTick(benchmark::State& state)
+{
+    application();
+    StudioViews views;
+    if (!views.open(state, nullptr, true))
+        return;
+    const double step = 1.0 / 60, duration = views.clock.duration();
+    const std::uint64_t evaluations = views.session.stage()->ticks(), skinnings = views.skinnings();
+    double t = 0;
+    for (auto _ : state) {
+        t += step;
+        if (t > duration)
+            t -= duration;
+        views.clock.seek(t);
+        benchmark::DoNotOptimize(views.chart.components().data());
+    }
+    const double ticks = double(state.iterations()), characters = double(views.scene->scene().characterCount());
+    state.counters["evaluations_per_tick"] = double(views.session.stage()->ticks() - evaluations) / ticks;
+    state.counters["skinnings_per_character_tick"] = double(views.skinnings() - skinnings) / ticks / characters;
+}
+BENCHMARK(StudioTick)->Unit(benchmark::kMicrosecond);
+
 void ScrubToFrame(benchmark::State& state)
 {
     application();
-    auto document = editor::Document::open(QStringLiteral(THESPIS_RESOURCES "/demo.thespis"));
-    if (!document) {
-        state.SkipWithError(document.error().message.c_str());
+    StudioViews views;
+    if (!views.open(state, nullptr, false))
         return;
-    }
-    auto scene = core::render::ScenarioScene::create((*document)->scenario(), THESPIS_RESOURCES);
-    if (!scene) {
-        state.SkipWithError(scene.error().message.c_str());
-        return;
-    }
     auto renderer = core::render::OffscreenRenderer::create(1280, 720);
     if (!renderer) {
         state.SkipWithError(renderer.error().message.c_str());
         return;
     }
-    (*scene)->scene().setGroundVisible(true);
+    core::render::ScenarioScene& shown = *views.scene;
+    shown.scene().setGroundVisible(true);
     const core::render::CameraView view =
-        core::render::frameBounds((*scene)->boundsOverTimeline(), 20.0, 10.0, 1280.0 / 720.0, 30.0);
-    editor::PlaybackClock clock;
-    clock.setDuration((*document)->previewDuration());
+        core::render::frameBounds(shown.boundsOver(views.session.timelineSamples()), 20.0, 10.0, 1280.0 / 720.0, 30.0);
     editor::TimelinePanel timeline;
     timeline.resize(1200, 400);
-    timeline.setDocument(document->get());
-    core::render::ScenarioScene& shown = **scene;
-    QObject::connect(&clock, &editor::PlaybackClock::timeChanged, &timeline, &editor::TimelinePanel::setTime);
-    QObject::connect(&clock, &editor::PlaybackClock::timeChanged, [&shown](double t) { shown.setTime(t); });
+    timeline.setDocument(views.session.document());
+    QObject::connect(&views.clock, &editor::PlaybackClock::timeChanged, &timeline, &editor::TimelinePanel::setTime);
     core::render::RgbaImage frame;
     double t = 0;
     for (auto _ : state) {
         t += 0.37; // a scrub jumps: no two frames alike
-        if (t > clock.duration())
-            t -= clock.duration();
-        clock.seek(t);
+        if (t > views.clock.duration())
+            t -= views.clock.duration();
+        views.clock.seek(t);
         if (auto drawn = (*renderer)->render(shown.scene(), view, frame); !drawn) {
             state.SkipWithError(drawn.error().message.c_str());
             return;
@@ -253,14 +336,11 @@ void DragStep(benchmark::State& state)
     auto document = documentWithActions(state);
     if (!document)
         return;
-    editor::Document& edited = *document;
-    auto scene = core::render::ScenarioScene::create(edited.scenario(), edited.assets());
-    if (!scene) {
-        state.SkipWithError(scene.error().message.c_str());
+    StudioViews views;
+    if (!views.open(state, std::move(document), false))
         return;
-    }
-    const double playhead = 3.0;
-    (*scene)->setTime(playhead);
+    editor::Document& edited = *views.session.document();
+    views.clock.seek(3.0);
     // An action in the middle of the first character's first track, dragged back and forth.
     const int middle = int(edited.scenario().characters[0].layers[0].actions.size()) / 2;
     const core::edit::ActionPath dragged{0, 0, middle};
@@ -273,11 +353,7 @@ void DragStep(benchmark::State& state)
             state.SkipWithError(done.error().message.c_str());
             return;
         }
-        if (auto played = (*scene)->setRuntime(edited.runtime()); !played) {
-            state.SkipWithError(played.error().message.c_str());
-            return;
-        }
-        benchmark::DoNotOptimize((*scene)->poses());
+        benchmark::DoNotOptimize(views.scene->poses());
     }
     state.counters["actions"] = double(state.range(0));
     state.counters["undo_steps"] = edited.undoStack()->count();

@@ -26,7 +26,8 @@ ROOT = Path(__file__).resolve().parents[2]
 DATA = Path(os.environ.get("THESPIS_SHARED_DATA", ROOT.parent / "shared" / "data"))
 DEMO = ROOT / "resources" / "demo.thespis"
 
-pytestmark = pytest.mark.skipif(not CLI, reason="THESPIS_CLI (the thespis-cli executable) is not set")
+if not CLI:
+    pytest.fail("THESPIS_CLI (the thespis-cli executable) is not set", pytrace=False)
 
 USAGE, INVALID, FAILURE = 2, 3, 4
 
@@ -217,3 +218,24 @@ def test_a_package_plays_renders_and_bakes_without_import(tmp_path):
     result = run("play", package, "--size", "160x120", "--out", video)
     assert result.returncode == 0, result.stderr
     assert video.stat().st_size > 0
+
+
+def test_run_and_validate_take_a_package_too(tmp_path):
+    """Wherever a scenario file is taken, its package is: a script run over the package's frames
+    gives the very pictures the folder gives, and validate checks the package's scenario."""
+    package = tmp_path / "demo.thespkg"
+    assert run("export", DEMO, "--out", package, "--quiet").returncode == 0
+    result = run("validate", package)
+    assert result.returncode == 0, result.stderr
+    assert "valid" in result.stdout and "a package by" in result.stdout
+    script = ROOT / "resources" / "scripts" / "antigone_creon.py"
+    frames = {}
+    for name, scenario in (("package", package), ("folder", DEMO)):
+        out = tmp_path / name
+        result = run("run", scenario, "--script", script, "--frames", "40:44", "--fps", "30", "--out", f"{out}/",
+                     "--size", "96x72", "--samples", "1", "--quiet", timeout=300)
+        assert result.returncode == 0, result.stderr
+        frames[name] = sorted(out.iterdir())
+        assert [p.name for p in frames[name]] == [f"frame_{i:05d}.png" for i in range(40, 45)]
+    for a, b in zip(frames["package"], frames["folder"], strict=True):
+        assert a.read_bytes() == b.read_bytes(), a.name

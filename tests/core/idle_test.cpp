@@ -11,12 +11,13 @@
 #include "anim/hanim.h"
 #include "motion/idle_builder.h"
 #include "motion/idle_motion.h"
-#include "motion/posture_clip.h"
+#include "scenario/posture_clip.h"
 #include "scene/foot_soles.h"
 #include "motion_test_support.h"
 
 using namespace thespis::core;
 using namespace thespis::core::motion;
+using thespis::core::scenario::PostureClip;
 
 namespace {
 

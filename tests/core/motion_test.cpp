@@ -11,11 +11,12 @@
 #include "motion/exp_map.h"
 #include "motion/idle_builder.h"
 #include "motion/posture_bases.h"
-#include "motion/posture_clip.h"
+#include "scenario/posture_clip.h"
 #include "motion_test_support.h"
 
 using namespace thespis::core;
 using namespace thespis::core::motion;
+using thespis::core::scenario::PostureClip;
 using thespis::core::anim::Quatd;
 using thespis::core::anim::Vec3d;
 

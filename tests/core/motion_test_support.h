@@ -5,21 +5,21 @@
 
 #include <string>
 
-#include "motion/posture_clip.h"
+#include "scenario/posture_clip.h"
 #include "test_support.h"
 
 namespace thespis::test {
 
 /// mocap/cmu/NAME.bvh on the posture skeleton; `rate` replaces the header's frame rate when > 0.
-inline core::motion::PostureClip cmuPostureClip(const std::string& name, double rate = 0)
+inline core::scenario::PostureClip cmuPostureClip(const std::string& name, double rate = 0)
 {
     core::scenario::ClipAsset asset;
     asset.name = name;
     asset.file = name + ".bvh";
     asset.frameRateOverride = rate;
-    auto clip = core::motion::readPostureClip(asset, sharedData("mocap/cmu"));
+    auto clip = core::scenario::readPostureClip(asset, sharedData("mocap/cmu"));
     EXPECT_TRUE(clip) << (clip ? "" : clip.error().message);
-    return clip ? *clip : core::motion::PostureClip{};
+    return clip ? *clip : core::scenario::PostureClip{};
 }
 
 } // namespace thespis::test

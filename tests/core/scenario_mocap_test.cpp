@@ -120,7 +120,7 @@ Seen watch(render::ScenarioScene& scene)
         }
         return lowest;
     };
-    scene.setTime(-1.0); // before the action: the rest pose where the character stands
+    scene.playAt(core::secondsToTicks(-1.0)); // before the action: the rest pose where the character stands
     seen.restHeight = height();
     const double floor = lowestFoot(); // a model's soles may rest a little below y = 0
 #ifdef THESPIS_SANITIZED
@@ -130,7 +130,7 @@ Seen watch(render::ScenarioScene& scene)
 #endif
     int frames = 0, grounded = 0;
     for (double t = 0; t <= scene.duration(); t += step) {
-        scene.setTime(t);
+        scene.playAt(core::secondsToTicks(t));
         const double lowest = lowestFoot() - floor;
         if (t == 0) {
             seen.firstHeight = height();

@@ -1,5 +1,6 @@
 // The live runtime (core/runtime): Stage semantics, the animation service's waits, the clocks
-// and the threaded Player, on the demo scenario and on real CMU captures.
+// and the pose mailbox that hands a tick's poses to another thread, on the demo scenario and on
+// real CMU captures.
 
 #include <gtest/gtest.h>
 
@@ -10,7 +11,7 @@
 
 #include "anim/bvh.h"
 #include "runtime/animation_service.h"
-#include "runtime/player.h"
+#include "runtime/pose_mailbox.h"
 #include "runtime/stage.h"
 #include "scenario/scenario_io.h"
 #include "anim_test_support.h"
@@ -22,6 +23,9 @@ namespace {
 using core::Tick;
 using core::secondsToTicks;
 using namespace core::runtime;
+
+/// The middle of Creon's first blink in the demo (frame 15 of his looping blink clip).
+constexpr double kMidBlink = 0.5;
 
 std::shared_ptr<Stage> demoStage()
 {
@@ -61,12 +65,13 @@ TEST(Stage, WithNothingLiveItPlaysTheAuthoredSchedulesExactly)
         for (int c = 0; c < 2; ++c)
             EXPECT_EQ(poses.characters[std::size_t(c)].body, authoredBody(*stage, c, t)) << "t = " << t;
     }
-    // The face track is played too (Creon blinks).
+    // The face track is played too: Creon's lids are half shut at 0.5 s, in his first blink.
     const auto& face = stage->runtime().characters[0].face;
     std::vector<float> expected = neutralFrame(*FrameLayout::mpeg4Face());
-    face->evaluate(2.0, expected);
-    stage->evaluate(secondsToTicks(2.0), poses);
+    face->evaluate(kMidBlink, expected);
+    stage->evaluate(secondsToTicks(kMidBlink), poses);
     EXPECT_EQ(poses.characters[0].face, expected);
+    EXPECT_NE(poses.characters[0].face, neutralFrame(*FrameLayout::mpeg4Face())) << "Creon blinks at 0.5 s";
 }
 
 TEST(Stage, ALiveActionFadesInOverWhatPlaysWithoutAJump)
@@ -242,9 +247,11 @@ TEST(Stage, UnknownNamesAreNamedWithTheKnownOnes)
 TEST(Stage, AFaceTrackTurnedOffStaysNeutral)
 {
     auto stage = demoStage();
-    stage->setTrackEnabled(Track::Face, false);
     PoseSet poses = stage->makePoseSet();
-    stage->evaluate(secondsToTicks(2.0), poses);
+    stage->evaluate(secondsToTicks(kMidBlink), poses);
+    ASSERT_NE(poses.characters[0].face, neutralFrame(*FrameLayout::mpeg4Face())) << "Creon blinks at 0.5 s";
+    stage->setTrackEnabled(Track::Face, false);
+    stage->evaluate(secondsToTicks(kMidBlink), poses);
     EXPECT_EQ(poses.characters[0].face, neutralFrame(*FrameLayout::mpeg4Face()));
 }
 
@@ -360,35 +367,52 @@ TEST(Clock, RealTimeClockMovesOnAndWaits)
     EXPECT_FALSE(clock.waitUntil(start + secondsToTicks(100.0), stop.get_token()));
 }
 
-TEST(Player, ThreadedPosesEqualManualOnesAtTheSameTicks)
+// The studio's Session evaluates on the GUI thread and the AR preview draws on its own: what
+// the drawing thread takes from the mailbox is exactly the tick's poses, placement included.
+TEST(PoseMailbox, ADrawingThreadGetsExactlyThePosesOfEachTick)
 {
-    auto threaded = demoStage();
-    auto manual = demoStage();
-    auto clock = std::make_shared<ExternalClock>();
-    Player player(threaded, clock, {.rate = 500});
-    player.start();
-    PoseSet expected = manual->makePoseSet(), published = threaded->makePoseSet();
-    std::uint64_t seen = 0;
-    for (int step = 0; step <= 40; ++step) {
-        const Tick t = secondsToTicks(0.15 * step);
-        if (step == 10) { // a live action, activated on both at the same tick
-            ASSERT_TRUE(threaded->activateAction("Antigone", Track::Body, "nod", t));
-            ASSERT_TRUE(manual->activateAction("Antigone", Track::Body, "nod", t));
+    auto stage = demoStage();
+    PoseMailbox mailbox;
+    std::atomic<std::uint64_t> acknowledged = 0;
+    std::vector<PoseSet> received;
+    std::jthread reader([&](std::stop_token stop) {
+        PoseSet poses;
+        std::uint64_t seen = 0;
+        while (!stop.stop_requested()) {
+            seen = mailbox.waitNewer(seen, std::chrono::milliseconds(20));
+            if (mailbox.takeNewer(poses, acknowledged) == 0)
+                continue;
+            received.push_back(poses);
+            acknowledged = seen;
         }
-        clock->setTime(t);
-        // Wait for a pose set of this tick (the player may publish the previous one first).
-        do {
-            seen = player.mailbox().waitNewer(seen, std::chrono::seconds(5));
-            ASSERT_GT(player.mailbox().takeNewer(published, 0), 0u);
-        } while (published.time != t);
-        manual->evaluate(t, expected);
-        for (std::size_t c = 0; c < expected.characters.size(); ++c) {
-            EXPECT_EQ(published.characters[c].body, expected.characters[c].body) << "t = " << t;
-            EXPECT_EQ(published.characters[c].face, expected.characters[c].face) << "t = " << t;
+    });
+    PoseSet poses = stage->makePoseSet();
+    std::vector<PoseSet> sent;
+    for (int step = 0; step <= 20; ++step) {
+        const Tick t = secondsToTicks(0.3 * step);
+        if (step == 5)
+            ASSERT_TRUE(stage->activateAction("Antigone", Track::Body, "nod", t));
+        stage->evaluate(t, poses);
+        mailbox.publish(poses);
+        sent.push_back(poses);
+        while (acknowledged < std::uint64_t(step + 1)) // one at a time, so that every tick is seen
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    reader.request_stop();
+    reader.join();
+    ASSERT_EQ(received.size(), sent.size());
+    for (std::size_t i = 0; i < sent.size(); ++i) {
+        EXPECT_EQ(received[i].time, sent[i].time);
+        for (std::size_t c = 0; c < sent[i].characters.size(); ++c) {
+            EXPECT_EQ(received[i].characters[c].body, sent[i].characters[c].body) << "tick " << i;
+            EXPECT_EQ(received[i].characters[c].face, sent[i].characters[c].face) << "tick " << i;
+            EXPECT_EQ(received[i].characters[c].placement, sent[i].characters[c].placement) << "tick " << i;
         }
     }
-    player.stop();
-    EXPECT_FALSE(player.isRunning());
+    // Where each character stands travels with its pose (Antigone stands away from the origin).
+    const auto& antigone = stage->runtime().characters[1];
+    EXPECT_EQ(received.back().characters[1].placement, antigone.placement);
+    EXPECT_NE(antigone.placement.translation, (core::anim::Vec3{}));
 }
 
 } // namespace

@@ -5,8 +5,10 @@
 // the view; the test pattern started and stopped (a mirror ball asked for, the overlay says
 // whether one lights the characters), the world's placement edited, one undo step each; bad input said beside the field and in the view with Start disabled (a board spec that
 // does not parse, a camera file for another size or corrupt, a video that cannot be decoded, no
-// camera); a camera calibrated from photos of a chessboard and used. Screenshots of the preview
-// while it tracks and after the video ended.
+// camera); a camera calibrated from photos of a chessboard and used. One Stage everywhere: a
+// script in the Script dock plays a gesticon gesture and a body clip, and the AR preview, the 3D
+// view and the posture chart all show the Session's poses of that tick. Screenshots of the
+// preview while it tracks and after the video ended.
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -35,8 +37,12 @@
 #include "editor/ar_calibration_dialog.h"
 #include "editor/ar_preview_panel.h"
 #include "editor/document.h"
+#include "editor/posture_chart_panel.h"
 #include "editor/qt_conversions.h"
+#include "editor/script_panel.h"
 #include "main_window.h"
+#include "motion/posture.h"
+#include "motion/posture_bases.h"
 #include "widgets/video_view.h"
 
 using namespace thespis;
@@ -101,6 +107,7 @@ private slots:
     void testPatternStartsAndStopsAndPlacementIsUndoable();
     void badInputIsSaidAndStartWaits();
     void calibrationFromPhotos();
+    void aScriptShowsInEveryViewAndOverTheVideo();
 
 private:
     editor::ArPreviewPanel* panel() const { return m_window->arPreview(); }
@@ -418,6 +425,90 @@ void ArPreviewTest::calibrationFromPhotos()
     QVERIFY2(p->cameraFileLabel()->text().contains(QStringLiteral("640 × 480")), qPrintable(p->cameraFileLabel()->text()));
     QVERIFY2(p->readiness().isEmpty(), qPrintable(p->readiness()));
     dialog->close();
+}
+
+void ArPreviewTest::aScriptShowsInEveryViewAndOverTheVideo()
+{
+    showPanel();
+    editor::ArPreviewPanel* p = panel();
+    editor::Session* session = m_window->session();
+    p->scaleSpin()->setValue(0.1);
+    p->smoothCheck()->setChecked(false);
+    p->setClock(editor::ArPreviewPanel::Clock::Transport);
+    p->chooseVideoFile(file("board.mp4"));
+    p->setCameraFile(file("camera.yml"));
+    p->setBoardSpec(kBoard);
+    QVERIFY(p->start());
+    QTRY_VERIFY_WITH_TIMEOUT(p->lastSnapshot().tracking.tracked || !p->isRunning(), kTimeout);
+    QVERIFY(p->isRunning());
+
+    // The script: Creon's gesticon gesture "greet" and Antigone's body clip "wave", from now.
+    auto* script = m_window->findChild<editor::ScriptPanel*>();
+    QVERIFY(script);
+    m_window->clock()->seek(1.0);
+    script->setSource(QStringLiteral("animService.activateAction_body('Creon', 'greet')\n"
+                                     "animService.activateAction_body('Antigone', 'wave')\n"));
+    script->run();
+    QTRY_VERIFY_WITH_TIMEOUT(!script->isRunning(), kTimeout);
+    QVERIFY2(script->output().indexOf(QStringLiteral("Error")) < 0, qPrintable(script->output()));
+    // At a moment the gesture and the clip play (their fades done), the transport paused there.
+    m_window->clock()->pause();
+    m_window->clock()->seek(2.0);
+    const core::runtime::PoseSet shown = session->poses();
+    QCOMPARE(shown.time, core::secondsToTicks(2.0));
+    core::runtime::Stage& stage = *session->stage();
+    QVERIFY(*stage.isPlaying("Creon", core::runtime::Track::Body, "greet", shown.time));
+    QVERIFY(*stage.isPlaying("Antigone", core::runtime::Track::Body, "wave", shown.time));
+    // Those poses are the live actions' (the document alone poses both otherwise).
+    core::runtime::Stage authored(stage.runtimeCopy());
+    core::runtime::PoseSet document = authored.makePoseSet();
+    authored.evaluate(shown.time, document);
+    QVERIFY(shown.characters[0].body != document.characters[0].body);
+    QVERIFY(shown.characters[1].body != document.characters[1].body);
+
+    // The AR preview draws exactly those poses over the video ...
+    QTRY_VERIFY_WITH_TIMEOUT(p->lastSnapshot().poses.time == shown.time || !p->isRunning(), kTimeout);
+    QVERIFY(p->isRunning());
+    for (std::size_t c = 0; c < shown.characters.size(); ++c) {
+        QVERIFY(p->lastSnapshot().poses.characters[c].body == shown.characters[c].body);
+        QCOMPARE(p->lastSnapshot().poses.characters[c].placement, shown.characters[c].placement);
+    }
+    // ... the 3D view too ...
+    if (editor::ScenePreview* preview = m_window->scenePreview()) {
+        QCOMPARE(preview->scene()->poses().time, shown.time);
+        for (std::size_t c = 0; c < shown.characters.size(); ++c)
+            QVERIFY(preview->scene()->poses().characters[c].body == shown.characters[c].body);
+    }
+    // ... and the posture chart's bars are the projection of Creon's pose on screen.
+    const auto& creon = stage.runtime().characters[0];
+    auto bases = core::motion::readPostureBasesFile(editor::toFsPath(QStringLiteral(THESPIS_RESOURCES "/motion/cmu_postures.pca")));
+    QVERIFY(bases);
+    auto map = core::motion::PostureMap::create(creon.skeleton, core::motion::PostureSet::UpperBody);
+    QVERIFY(map);
+    std::vector<float> frame = shown.characters[0].body;
+    shown.characters[0].placement.apply(*creon.skeleton.frameLayout(), frame);
+    std::vector<float> posture(std::size_t(map->layout().size())), pcs(posture.size());
+    map->toPosture(frame, posture);
+    bases->upper.project(posture, pcs);
+    const std::vector<float>& bars = m_window->postureChart()->components();
+    QCOMPARE(bars.size(), pcs.size());
+    for (std::size_t i = 0; i < pcs.size(); ++i)
+        QVERIFY2(std::abs(bars[i] - std::abs(pcs[i])) < 1e-5f, qPrintable(QStringLiteral("PC %1").arg(i + 1)));
+    saveScreenshot(m_window.get(), QStringLiteral("ar_preview_script.png"));
+
+    // With every view open (3D, stick figures, chart, AR), a tick evaluates the stage once and
+    // skins each character of the 3D view once.
+    editor::ScenePreview* preview = m_window->scenePreview();
+    QVERIFY(preview);
+    const std::uint64_t evaluations = stage.ticks();
+    std::vector<std::uint64_t> skinned;
+    for (std::size_t c = 0; c < preview->scene()->scene().characterCount(); ++c)
+        skinned.push_back(preview->scene()->scene().character(c).poseCount());
+    m_window->clock()->seek(2.5);
+    QCOMPARE(stage.ticks(), evaluations + 1);
+    for (std::size_t c = 0; c < skinned.size(); ++c)
+        QCOMPARE(preview->scene()->scene().character(c).poseCount(), skinned[c] + 1);
+    p->stop();
 }
 
 QTEST_MAIN(ArPreviewTest)

@@ -29,8 +29,9 @@
 #include "editor/document.h"
 #include "editor/job_runner.h"
 #include "editor/qt_conversions.h"
-#include "editor/qt_conversions.h"
+#include "editor/playback_clock.h"
 #include "editor/scene_preview.h"
+#include "editor/session.h"
 #include "lighting/transfer_bake.h"
 #include "lighting/transfer_bake_job.h"
 #include "render/scenario_scene.h"
@@ -99,7 +100,10 @@ private:
 
     QTemporaryDir m_folder;
     QString m_scenarioPath;
-    std::unique_ptr<editor::Document> m_document;
+    // The document as the studio holds it: the Session's, which its views (the 3D view) follow.
+    editor::PlaybackClock m_clock;
+    std::unique_ptr<editor::Session> m_session;
+    editor::Document* m_document = nullptr;
     std::unique_ptr<editor::BakePanel> m_panel;
     int m_antigone = -1;
 };
@@ -121,13 +125,15 @@ void BakePanelTest::init()
     QDir(bakesFolder()).removeRecursively();
     auto document = editor::Document::open(m_scenarioPath);
     QVERIFY2(document.ok(), document ? "" : document.error().message.c_str());
-    m_document = std::move(document).value();
+    m_session = std::make_unique<editor::Session>(&m_clock);
+    m_session->setDocument(std::move(document).value());
+    m_document = m_session->document();
     const core::scenario::Character* antigone = m_document->scenario().findCharacter("Antigone");
     QVERIFY(antigone);
     m_antigone = int(antigone - m_document->scenario().characters.data());
     m_panel = std::make_unique<editor::BakePanel>();
     m_panel->resize(420, 420);
-    m_panel->setDocument(m_document.get());
+    m_panel->setDocument(m_document);
     m_panel->setCurrentCharacter(m_antigone);
     m_panel->show();
     QCOMPARE(m_panel->currentCharacter(), m_antigone);
@@ -136,7 +142,8 @@ void BakePanelTest::init()
 void BakePanelTest::cleanup()
 {
     m_panel.reset();
-    m_document.reset();
+    m_session.reset();
+    m_document = nullptr;
 }
 
 void BakePanelTest::cancelledBakeChangesNothing()
@@ -198,15 +205,16 @@ void BakePanelTest::completedBakeIsOneUndoStepTheSceneUses()
     QCOMPARE(panel.raysCombo()->currentData().toInt(), 64);
     const core::scenario::Scenario original = m_document->scenario();
     const int undoCount = m_document->undoStack()->count();
-    QSignalSpy edited(m_document.get(), &editor::Document::edited);
+    QSignalSpy edited(m_document, &editor::Document::edited);
     FinishedRecorder finished(panel.job());
-    // The studio's preview, following the document as the main window has it follow: it must
-    // rebuild its scene (keeping the time) when a bake or the tags change, and only then.
+    // The studio's preview, a view of the session: it must rebuild its scene (keeping the time)
+    // when a bake or the tags change, and only then.
     widgets::OsgViewport viewport; // never shown: no drawing, only the scene
     editor::ScenePreview preview(&viewport);
-    QVERIFY(preview.setDocument(m_document.get()).ok());
-    connect(m_document.get(), &editor::Document::edited, &preview, [&] { QVERIFY(preview.updateDocument(m_document.get()).ok()); });
-    preview.setTime(1.5);
+    preview.setSession(m_session.get());
+    QVERIFY2(preview.problem().isEmpty(), qPrintable(preview.problem()));
+    m_clock.setDuration(10);
+    m_clock.seek(1.5);
     auto previewOrder = [&] { return preview.scene()->scene().character(std::size_t(m_antigone)).transferOrder(); };
     QCOMPARE(previewOrder(), 3);
 
@@ -250,7 +258,7 @@ void BakePanelTest::completedBakeIsOneUndoStepTheSceneUses()
         QVERIFY2(warning.find("bake") == std::string::npos, warning.c_str());
     QCOMPARE((*scene)->scene().character(std::size_t(m_antigone)).transferOrder(), 4);
     QCOMPARE(previewOrder(), 4);
-    QCOMPARE(preview.scene()->time(), 1.5);
+    QCOMPARE(preview.scene()->time(), core::secondsToTicks(1.5));
     QVERIFY(preview.warnings().filter(QStringLiteral("bake")).isEmpty());
 
     const QString fileName = QFileInfo(QString::fromStdString(bake)).fileName();
@@ -290,7 +298,7 @@ void BakePanelTest::completedBakeIsOneUndoStepTheSceneUses()
     QCOMPARE((*stale)->scene().character(std::size_t(m_antigone)).transferOrder(), 3);
     QCOMPARE(previewOrder(), 3); // rebuilt for the tags: the stale bake is left out
     QCOMPARE(preview.warnings().filter(QStringLiteral("Antigone: its bake")).size(), 1);
-    QCOMPARE(preview.scene()->time(), 1.5);
+    QCOMPARE(preview.scene()->time(), core::secondsToTicks(1.5));
     bool warned = false;
     for (const std::string& warning : (*stale)->warnings())
         warned = warned || (warning.starts_with("Antigone: ") && warning.find(bake) != std::string::npos);

@@ -34,7 +34,7 @@
 
 #include <functional>
 
-#include "content_actions.h"
+#include "editor/content_actions.h"
 #include "gui_support.h"
 #include "editor/character_dialog.h"
 #include "editor/character_properties.h"
@@ -151,7 +151,7 @@ void BringContentTest::fromNothingToARenderedScenarioAndBack()
     QTRY_VERIFY(QApplication::activeModalWidget() == nullptr);
     editor::Document* document = m_window->document();
     const core::scenario::Scenario empty = document->scenario();
-    studio::ContentActions* content = m_window->contentActions();
+    editor::ContentActions* content = m_window->contentActions();
     QVERIFY(!content->importMotionAction()->isEnabled()); // nothing to import into yet
 
     // Character ▸ Add Character…: the built-in humanoid, the paper's 25 joints.
@@ -272,14 +272,14 @@ void BringContentTest::fromNothingToARenderedScenarioAndBack()
     // Render headless from the saved file: everyone on the ground, at their own size.
     auto scene = core::render::ScenarioScene::create(*reread, std::filesystem::path(m_dir.path().toStdString()));
     QVERIFY2(scene.ok(), scene.ok() ? "" : scene.error().message.c_str());
-    (*scene)->setTime(-1.0);
+    (*scene)->playAt(core::secondsToTicks(-1.0));
     std::vector<double> restHeight;
     for (std::size_t c = 0; c < (*scene)->scene().characterCount(); ++c) {
         const auto b = (*scene)->scene().character(c).bounds();
         restHeight.push_back(b.max.y - b.min.y);
     }
     for (double t : {0.5, 1.5, 2.5}) {
-        (*scene)->setTime(t);
+        (*scene)->playAt(core::secondsToTicks(t));
         for (std::size_t c = 0; c < (*scene)->scene().characterCount(); ++c) {
             const auto b = (*scene)->scene().character(c).bounds();
             const double cm = std::max(restHeight[c], 1.8) / 180.0;
@@ -289,7 +289,7 @@ void BringContentTest::fromNothingToARenderedScenarioAndBack()
         }
     }
     if (auto renderer = core::render::OffscreenRenderer::create(960, 540, 4)) {
-        (*scene)->setTime(1.5);
+        (*scene)->playAt(core::secondsToTicks(1.5));
         const auto camera = core::render::frameBounds((*scene)->boundsOverTimeline(), 20.0, 8.0, 960.0 / 540.0, 40.0);
         if (auto picture = (*renderer)->render((*scene)->scene(), camera))
             QVERIFY(core::render::writePng(THESPIS_SCREENSHOT_DIR "/content_7_rendered.png", *picture).ok());

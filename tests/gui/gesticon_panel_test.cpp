@@ -28,6 +28,7 @@
 #include "editor/gesticon_panel.h"
 #include "editor/playback_clock.h"
 #include "editor/scene_preview.h"
+#include "editor/session.h"
 #include "editor/translations.h"
 #include "render/character_node.h"
 #include "util/tick.h"
@@ -84,13 +85,6 @@ double angleBetween(const core::anim::Quat& a, const core::anim::Quat& b)
     return 2.0 * std::acos(std::min(1.0, cosine)) * 180.0 / M_PI;
 }
 
-std::vector<float> bodyFrame(const core::scenario::CharacterRuntime& character, double t)
-{
-    std::vector<float> frame(character.skeleton.frameLayout()->floatCount());
-    character.body->evaluate(t, frame);
-    return frame;
-}
-
 float largestDistance(std::span<const core::anim::Vec3> a, std::span<const core::anim::Vec3> b)
 {
     float largest = 0;
@@ -110,7 +104,7 @@ private slots:
     void listsEachCharactersGestures();
     void everyEditIsOneUndoStepAndUndoAllRestores();
     void editorsInTheTableEditTheDocument();
-    void previewIsDisabledWithoutA3DView();
+    void previewIsDisabledWithoutASession();
     void previewPlaysTheGestureOnTheCharacter();
 };
 
@@ -356,29 +350,22 @@ void GesticonPanelTest::editorsInTheTableEditTheDocument()
     QCOMPARE(panel.selectedRows(), QList<int>{0});
 }
 
-void GesticonPanelTest::previewIsDisabledWithoutA3DView()
+void GesticonPanelTest::previewIsDisabledWithoutASession()
 {
     auto document = openDemo();
     GesticonPanel panel;
-    editor::PlaybackClock clock;
     panel.setDocument(document.get());
-    panel.setClock(&clock);
     QCOMPARE(panel.selectedRows(), QList<int>{0});
     QVERIFY(!panel.previewButton()->isEnabled());
-    QVERIFY2(panel.previewButton()->toolTip().contains(QStringLiteral("3D view")),
+    QVERIFY2(panel.previewButton()->toolTip().contains(QStringLiteral("Open a scenario")),
              qPrintable(panel.previewButton()->toolTip()));
     panel.preview();
     QVERIFY(!panel.isPreviewing());
-    QCOMPARE(clock.time(), 0.0);
 }
 
 void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
 {
-    if (!widgets::OsgViewport::isSupported())
-        QSKIP("No OpenGL on this display");
-    auto document = openDemo();
-    const core::scenario::Scenario original = document->scenario();
-
+    QVERIFY2(widgets::OsgViewport::isSupported(), "No OpenGL on this display (Xvfb and Mesa are dependencies)");
     QWidget window;
     window.resize(1200, 520);
     auto* layout = new QHBoxLayout(&window);
@@ -387,80 +374,88 @@ void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
     auto* panel = new GesticonPanel(&window);
     layout->addWidget(viewport, 1);
     layout->addWidget(panel, 1);
-    editor::ScenePreview scene(viewport);
+    // As the studio's window wires them: the 3D view and the panel are views of one session.
     editor::PlaybackClock clock;
-    // As the studio's window wires them: the 3D view follows the clock.
-    connect(&clock, &editor::PlaybackClock::timeChanged, &scene, &editor::ScenePreview::setTime);
+    editor::Session session(&clock);
+    editor::ScenePreview scene(viewport);
+    scene.setSession(&session);
+    session.addPanel(panel);
+    panel->setSession(&session);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QVERIFY2(viewport->glErrorText().isEmpty(), qPrintable(viewport->glErrorText()));
-    QVERIFY(scene.setDocument(document.get()));
-    clock.setDuration(document->previewDuration());
+    session.setDocument(openDemo());
+    editor::Document* document = session.document();
+    const core::scenario::Scenario original = document->scenario();
     clock.setLooping(true);
-    panel->setDocument(document.get());
-    panel->setScenePreview(&scene);
-    panel->setClock(&clock);
     QVERIFY(panel->previewButton()->isEnabled());
     QCOMPARE(panel->previewButton()->text(), QStringLiteral("Preview"));
+    core::runtime::Stage& stage = *session.stage();
 
     // Creon (character 0) "greet": the clip "wave" on the right arm. Before his own wave (1.5 s).
     QCOMPARE(panel->currentCharacter(), 0);
     panel->selectRow(0);
-    const core::scenario::CharacterRuntime& creon = document->runtime().characters[0];
+    const core::scenario::CharacterRuntime& creon = stage.runtime().characters[0];
     const core::anim::TimeDomain wave = creon.clips.at("wave")->domain();
     const double length = wave.end - wave.start;
     QVERIFY(length > 1.5 && length < 6);
     const double start = 0.2, during = start + 1.0;
-    clock.seek(start);
-    const auto poseAt = [&](double t) {
-        scene.setTime(t);
+    // The document's pose during the gesture: the session's at that time, before any preview.
+    clock.seek(during);
+    const std::vector<float> documentFrame = session.poses().characters[0].body;
+    const auto shownPositions = [&] {
         const auto positions = scene.scene()->scene().character(0).posedPositions();
         return std::vector<core::anim::Vec3>(positions.begin(), positions.end());
     };
-    const std::vector<core::anim::Vec3> documentPose = poseAt(during);
-    const std::vector<float> documentFrame = bodyFrame(creon, during);
-    scene.setTime(clock.time());
+    const std::vector<core::anim::Vec3> documentPose = shownPositions();
+    clock.seek(start);
 
+    const std::string live = "greet (gesture preview)";
+    const auto previewShown = [&] { return *stage.isPlaying("Creon", core::runtime::Track::Body, live, core::secondsToTicks(clock.time())); };
     panel->preview();
     QVERIFY(panel->isPreviewing());
+    QVERIFY(previewShown()); // a live action on the session's stage
     QVERIFY(clock.isPlaying());
     QCOMPARE(panel->previewButton()->text(), QStringLiteral("Stop"));
     QVERIFY(!clock.isLooping());
     QVERIFY(clock.duration() >= start + length - 1e-6);
     QVERIFY(document->scenario() == original); // a preview edits nothing
     QCOMPARE(document->undoStack()->count(), 0);
+    // Every view shows the document plus the gesture: the session's poses, and the 3D view.
+    QTRY_VERIFY_WITH_TIMEOUT(clock.time() >= during || !panel->isPreviewing(), 15000);
+    QVERIFY(panel->isPreviewing());
     {
-        // The scene plays the document plus the gesture's own layer.
-        const core::scenario::CharacterRuntime& shown = scene.scene()->runtime().characters[0];
-        QCOMPARE(shown.layers.size(), creon.layers.size() + 1);
-        const std::vector<float> frame = bodyFrame(shown, during);
-        const double rightShoulder = angleBetween(rotationOf(shown, frame, "r_shoulder"),
-                                                  rotationOf(creon, documentFrame, "r_shoulder"));
-        const double leftShoulder = angleBetween(rotationOf(shown, frame, "l_shoulder"),
-                                                 rotationOf(creon, documentFrame, "l_shoulder"));
-        const double hip = angleBetween(rotationOf(shown, frame, "l_hip"), rotationOf(creon, documentFrame, "l_hip"));
+        const std::vector<float>& frame = session.poses().characters[0].body;
+        const double t = clock.time();
+        // The document's pose at the same moment, from a stage of its own.
+        core::runtime::Stage reference(stage.runtimeCopy());
+        core::runtime::PoseSet expected = reference.makePoseSet();
+        reference.evaluate(core::secondsToTicks(t), expected);
+        const std::vector<float>& authored = expected.characters[0].body;
+        const double rightShoulder = angleBetween(rotationOf(creon, frame, "r_shoulder"), rotationOf(creon, authored, "r_shoulder"));
+        const double hip = angleBetween(rotationOf(creon, frame, "l_hip"), rotationOf(creon, authored, "l_hip"));
         QVERIFY2(rightShoulder > 10, qPrintable(QString::number(rightShoulder)));
         // "greet" has the dependent-joint filter on (paper §4.4): the gesture plays over the upper
-        // body, whose other joints follow it (the left shoulder among them), while the legs go on
-        // with the idle as the document has them.
-        QVERIFY2(hip < 0.01, qPrintable(QStringLiteral("%1 %2").arg(leftShoulder).arg(hip)));
-        const float moved = largestDistance(poseAt(during), documentPose);
-        QVERIFY2(moved > 0.05f, qPrintable(QString::number(moved)));
+        // body, while the legs go on with the idle as the document has them.
+        QVERIFY2(hip < 0.01, qPrintable(QString::number(hip)));
+        // The 3D view draws those poses.
+        QCOMPARE(scene.scene()->poses().time, session.poses().time);
+        QVERIFY(scene.scene()->poses().characters[0].body == frame);
         saveScreenshot(&window, QStringLiteral("gesticon_preview.png"));
     }
 
-    // The gesture ends on its own: the document's motion is back, the clock as it was.
+    // The gesture ends on its own: the live action is gone, the clock as it was.
     QTRY_VERIFY_WITH_TIMEOUT(!panel->isPreviewing(), 15000);
     QVERIFY(!clock.isPlaying());
     QCOMPARE(clock.time(), start);
     QCOMPARE(clock.duration(), document->previewDuration());
     QVERIFY(clock.isLooping());
     QCOMPARE(panel->previewButton()->text(), QStringLiteral("Preview"));
-    QCOMPARE(scene.scene()->runtime().characters[0].layers.size(), creon.layers.size());
-    QCOMPARE(largestDistance(poseAt(during), documentPose), 0.0f);
-    QVERIFY(bodyFrame(scene.scene()->runtime().characters[0], during) == documentFrame);
-
-    const auto previewShown = [&] { return scene.scene()->runtime().characters[0].layers.size() == creon.layers.size() + 1; };
+    QVERIFY(!previewShown());
+    clock.seek(during);
+    QVERIFY(session.poses().characters[0].body == documentFrame);
+    QCOMPARE(largestDistance(shownPositions(), documentPose), 0.0f);
+    clock.seek(start);
 
     // Pausing the clock stops the preview.
     panel->preview();
@@ -494,9 +489,11 @@ void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
     // same time. Without it the left shoulder (outside the gesture's mask) keeps the document's
     // motion; with it, it follows the waving arm.
     const auto leftShoulderMoves = [&] {
-        const core::scenario::CharacterRuntime& shown = scene.scene()->runtime().characters[0];
-        return angleBetween(rotationOf(shown, bodyFrame(shown, during), "l_shoulder"),
-                            rotationOf(creon, documentFrame, "l_shoulder"));
+        core::runtime::Stage reference(stage.runtimeCopy());
+        core::runtime::PoseSet expected = reference.makePoseSet();
+        reference.evaluate(session.poses().time, expected);
+        return angleBetween(rotationOf(creon, session.poses().characters[0].body, "l_shoulder"),
+                            rotationOf(creon, expected.characters[0].body, "l_shoulder"));
     };
     clock.seek(start);
     panel->selectRow(0);
@@ -504,13 +501,15 @@ void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
     QTest::mouseClick(panel->compareButton(), Qt::LeftButton);
     QVERIFY(panel->isPreviewing());
     QVERIFY2(panel->playing().startsWith(QStringLiteral("Before:")), qPrintable(panel->playing()));
+    QTRY_VERIFY_WITH_TIMEOUT(clock.time() >= during, 15000);
     const double without = leftShoulderMoves();
     QVERIFY2(without < 0.01, qPrintable(QString::number(without)));
     QTRY_VERIFY_WITH_TIMEOUT(panel->playing().startsWith(QStringLiteral("After:")), 15000);
     QVERIFY(panel->isPreviewing());
+    QTRY_VERIFY_WITH_TIMEOUT(clock.time() >= during || !panel->isPreviewing(), 15000); // the arm up
+    QVERIFY(panel->isPreviewing());
     const double with = leftShoulderMoves();
     QVERIFY2(with > 1.0, qPrintable(QString::number(with)));
-    QTRY_VERIFY_WITH_TIMEOUT(clock.time() >= during || !panel->isPreviewing(), 15000); // the arm up
     saveScreenshot(&window, QStringLiteral("gesticon_before_after.png"));
     QTRY_VERIFY_WITH_TIMEOUT(!panel->isPreviewing(), 15000);
     QVERIFY(panel->playing().isEmpty());

@@ -195,14 +195,19 @@ void MainWindowTest::sliderSeeks()
              qPrintable(QStringLiteral("seeked to %1 of %2 s").arg(time).arg(duration)));
     QVERIFY(!m_window->clock()->isPlaying());
     QCOMPARE(m_window->transportBar()->time(), time);
-    // The figures show the pose at the new time: the same as sampling the document there.
+    // The figures show the pose at the new time: the same as a stage of the document's own
+    // playing there.
     QVERIFY(largestDifference(atStart, allPositions(*m_window->poseView())) > 1e-4f);
-    thespis::editor::PoseSampler sampler(m_window->document()->runtime().characters.front());
-    sampler.sample(time);
+    const auto& character = m_window->document()->runtime().characters.front();
+    thespis::core::runtime::Stage own(m_window->document()->runtime());
+    thespis::core::runtime::PoseSet poses = own.makePoseSet();
+    own.evaluate(thespis::core::secondsToTicks(time), poses);
+    thespis::editor::StickFigure figure(character.name, character.skeleton);
+    figure.setPose(poses.characters.front());
     const auto shown = m_window->poseView()->figurePositions(0);
-    QCOMPARE(shown.size(), sampler.positions().size());
+    QCOMPARE(shown.size(), figure.positions().size());
     for (std::size_t j = 0; j < shown.size(); ++j)
-        QCOMPARE(shown[j], sampler.positions()[j]);
+        QCOMPARE(shown[j], figure.positions()[j]);
 }
 
 QMessageBox* MainWindowTest::waitForErrorBox()

@@ -24,8 +24,10 @@
 #include <memory>
 
 #include "editor/document.h"
+#include "editor/playback_clock.h"
 #include "editor/qt_conversions.h"
 #include "editor/scene_preview.h"
+#include "editor/session.h"
 #include "editor/segment_panel.h"
 #include "editor/segment_table_model.h"
 #include "render/scenario_scene.h"
@@ -63,8 +65,10 @@ struct Studio {
     QWidget window;
     widgets::OsgViewport* viewport = nullptr;
     editor::SegmentPanel* panel = nullptr;
+    editor::PlaybackClock clock;
+    editor::Session session{&clock}; // owns the document, as the studio's does
     std::unique_ptr<editor::ScenePreview> preview;
-    std::unique_ptr<editor::Document> document;
+    editor::Document* document = nullptr;
 
     bool open()
     {
@@ -77,21 +81,21 @@ struct Studio {
         panel->setFixedWidth(540);
         layout->addWidget(panel);
         preview = std::make_unique<editor::ScenePreview>(viewport);
-        document = openDemo();
-        if (!document)
+        auto opened = openDemo();
+        if (!opened)
             return false;
         window.show();
         if (!QTest::qWaitForWindowExposed(&window))
             return false;
-        if (auto shown = preview->setDocument(document.get()); !shown) {
-            qWarning("%s", shown.error().message.c_str());
+        // As the studio does: the view follows every document, edit, undo and redo.
+        preview->setSession(&session);
+        session.setDocument(std::move(opened));
+        document = session.document();
+        if (!preview->problem().isEmpty()) {
+            qWarning("%s", qPrintable(preview->problem()));
             return false;
         }
-        preview->setTime(0.0);
-        // As the studio does: the view follows every edit, undo and redo.
-        QObject::connect(document.get(), &editor::Document::edited, preview.get(),
-                         [this] { QVERIFY(preview->updateDocument(document.get()).ok()); });
-        panel->setDocument(document.get());
+        panel->setDocument(document);
         panel->setScenePreview(preview.get());
         QSignalSpy frames(viewport, &widgets::OsgViewport::frameDrawn);
         viewport->update();
@@ -420,8 +424,11 @@ void SegmentPanelTest::clickInTheViewportSelectsAndHighlights()
     QVERIFY(!studio.node(character).segmentHighlighted(std::size_t(skull)));
     panel.show();
     QVERIFY(studio.node(character).segmentHighlighted(std::size_t(skull)));
-    // A rebuilt scene keeps the highlight.
-    QVERIFY(studio.preview->setDocument(studio.document.get()).ok());
+    // A rebuilt scene keeps the highlight: the session says its stage was made anew (as after
+    // an edit of the cast), and the 3D view builds its scene again.
+    QSignalSpy built(studio.preview.get(), &editor::ScenePreview::sceneBuilt);
+    emit studio.session.edited(true);
+    QCOMPARE(built.count(), 1);
     QVERIFY(studio.node(character).segmentHighlighted(std::size_t(skull)));
 
     // The paper's example (Fig. 14): the hair a receiver; then the left arm selected, for the picture.

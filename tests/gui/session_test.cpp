@@ -1,12 +1,15 @@
 // editor::Session: views registered once follow every document (detached from the old one before
-// it goes), and the session's stage follows edits — the same stage, with a live action playing
-// on, when an action moves; a stage of the new cast when a character is added. On the demo.
+// it goes), the session's stage follows edits — the same stage, with a live action playing on,
+// when an action moves; a stage of the new cast when a character is added — and every tick
+// evaluates the stage exactly once and publishes those poses to the views and the mailbox. On
+// the demo.
 
 #include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "edit/content_edits.h"
@@ -33,6 +36,8 @@ private slots:
     void viewsFollowEveryDocument();
     void aLiveActionPlaysOnThroughAnEdit();
     void anotherCastGetsANewStage();
+    void aTickEvaluatesOnceAndPublishesTheStagesPoses();
+    void anEditSetsTheRuntimeOnceAndShowsItAtOnce();
 };
 
 void SessionTest::viewsFollowEveryDocument()
@@ -105,6 +110,70 @@ void SessionTest::anotherCastGetsANewStage()
     QCOMPARE(session.stage()->runtime().characters.size(), document.scenario().characters.size());
     document.undoStack()->undo();
     QCOMPARE(session.stage()->runtime().characters.size(), document.scenario().characters.size());
+}
+
+void SessionTest::aTickEvaluatesOnceAndPublishesTheStagesPoses()
+{
+    editor::PlaybackClock clock;
+    editor::Session session(&clock);
+    session.setDocument(demo());
+    const auto stage = session.stage();
+    // Scripts see the time before the evaluation, views get the poses after it.
+    std::vector<std::string> order;
+    connect(&session, &editor::Session::aboutToTick, &session, [&](core::Tick) { order.push_back("script"); });
+    connect(&session, &editor::Session::posesChanged, &session, [&](const core::runtime::PoseSet&) { order.push_back("view"); });
+    connect(&session, &editor::Session::posesChanged, &session, [&](const core::runtime::PoseSet&) { order.push_back("view"); });
+    QVERIFY(stage->activateAction("Antigone", core::runtime::Track::Body, "nod", core::secondsToTicks(0.5)).ok());
+
+    core::runtime::PoseSet expected = stage->makePoseSet(), mailed;
+    std::uint64_t mailSeen = 0;
+    for (const double t : {1.0, 1.5, 0.25, 3.0}) {
+        order.clear();
+        const std::uint64_t before = stage->ticks(), evaluations = session.evaluations();
+        clock.seek(t);
+        QCOMPARE(stage->ticks(), before + 1); // the stage evaluated once, by the session
+        QCOMPARE(session.evaluations(), evaluations + 1);
+        QCOMPARE(order, (std::vector<std::string>{"script", "view", "view"}));
+        const core::runtime::PoseSet& shown = session.poses();
+        QCOMPARE(shown.time, core::secondsToTicks(t));
+        // Those are the stage's poses at that tick, the live action included ...
+        core::runtime::Stage reference(stage->runtimeCopy());
+        QVERIFY(reference.activateAction("Antigone", core::runtime::Track::Body, "nod", core::secondsToTicks(0.5)).ok());
+        reference.evaluate(core::secondsToTicks(t), expected);
+        for (std::size_t c = 0; c < expected.characters.size(); ++c)
+            QCOMPARE(shown.characters[c].body, expected.characters[c].body);
+        // ... and the mailbox holds the same for the AR renderer.
+        mailSeen = session.mailbox()->takeNewer(mailed, mailSeen);
+        QVERIFY(mailSeen > 0);
+        QCOMPARE(mailed.time, shown.time);
+        QCOMPARE(mailed.characters[1].body, shown.characters[1].body);
+        if (t == 1.0) { // the nod shows: Antigone's pose differs from her authored one
+            core::runtime::Stage authored(stage->runtimeCopy());
+            authored.evaluate(core::secondsToTicks(t), expected);
+            QVERIFY(shown.characters[1].body != expected.characters[1].body);
+        }
+    }
+}
+
+void SessionTest::anEditSetsTheRuntimeOnceAndShowsItAtOnce()
+{
+    editor::PlaybackClock clock;
+    editor::Session session(&clock);
+    session.setDocument(demo());
+    editor::Document& document = *session.document();
+    clock.seek(2.0);
+    const auto stage = session.stage();
+    const core::runtime::PoseSet before = session.poses();
+    const std::uint64_t runtimes = session.runtimesSet(), evaluations = session.evaluations();
+    QSignalSpy shown(&session, &editor::Session::posesChanged);
+    // Creon's first action moved 1 s later: at 2 s he is somewhere else in it.
+    const std::vector<core::edit::ActionPath> moved{{0, 0, 0}};
+    QVERIFY(document.edit(core::edit::moveActions(document.scenario(), moved, core::TicksPerSecond), QStringLiteral("Move")).ok());
+    QCOMPARE(session.runtimesSet(), runtimes + 1);
+    QCOMPARE(session.evaluations(), evaluations + 1);
+    QCOMPARE(shown.count(), 1);
+    QCOMPARE(session.stage(), stage);
+    QVERIFY(session.poses().characters[0].body != before.characters[0].body);
 }
 
 QTEST_MAIN(SessionTest)

@@ -1,0 +1,35 @@
+#include "scenario/runtime_gestures.h"
+
+#include "scenario/gesture_action.h"
+
+namespace thespis::core::scenario {
+
+void buildGestures(const Scenario& scenario, const Character& character, const BuildGestureAction& build,
+                   bool basesReadable, CharacterRuntime& runtime)
+{
+    for (const Gesture& gesture : character.gestures) {
+        if (gesture.name.empty() || runtime.gestures.contains(gesture.name))
+            continue; // reported by the builder's checks
+        GestureActions actions;
+        actions.filter = gesture.dependentJointFilter;
+        const std::string where = "Character \"" + character.name + "\", gesture \"" + gesture.name + "\"";
+        for (const bool filter : {false, true}) {
+            if (filter && !basesReadable)
+                continue;
+            Gesture variant = gesture;
+            variant.dependentJointFilter = filter;
+            GestureSpec spec = gestureSpec(scenario, variant, 0);
+            if (auto built = build(spec.action, spec.widenedMask ? &*spec.widenedMask : nullptr, where))
+                (filter ? actions.withFilter : actions.withoutFilter) = std::move(*built);
+        }
+        if (actions.played().source) {
+            runtime.gestures.emplace(gesture.name, std::move(actions));
+        } else if (gesture.dependentJointFilter && !basesReadable) {
+            runtime.warnings.push_back(where + ": its dependent-joint filter needs the scenario's posture bases, which "
+                                               "cannot be read; scripts cannot play this gesture.");
+            runtime.warningClips.resize(runtime.warnings.size(), gesture.clip);
+        }
+    }
+}
+
+} // namespace thespis::core::scenario

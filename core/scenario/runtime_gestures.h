@@ -1,0 +1,27 @@
+#pragma once
+// The gesticon of a character's runtime: every gesture built as the actions that play it live
+// (with and without the dependent-joint filter), for the Stage's library.
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "anim/blending_schedule.h"
+#include "scenario/scenario.h"
+#include "scenario/scenario_runtime.h"
+
+namespace thespis::core::scenario {
+
+/// Builds a body action of the character as the runtime builds an authored one (problems are
+/// the builder's to report); `widened` is the mask the action plays over when the scenario has
+/// none of its name yet.
+using BuildGestureAction =
+    std::function<std::optional<anim::BlendingAction>(const ActionSpec&, const NamedMask* widened, const std::string& where)>;
+
+/// Fills runtime.gestures from the character's gesticon. The filtered action is built only when
+/// `basesReadable` (the dependent-joint filter needs the scenario's posture bases); a gesture
+/// with its filter on is then left out, with a warning.
+void buildGestures(const Scenario& scenario, const Character& character, const BuildGestureAction& build,
+                   bool basesReadable, CharacterRuntime& runtime);
+
+} // namespace thespis::core::scenario
