@@ -185,3 +185,20 @@ def test_a_live_action_fades_in_over_the_authored_motion():
     np.testing.assert_allclose(anim.evaluate_body("Creon"), before, atol=1e-5)
     nod = runtime.characters[0].clips["nod"].evaluate(0.5)
     assert np.abs(anim.evaluate_body("Creon", 3.0) - nod).max() < 1e-4
+
+
+def test_a_script_plays_the_gesticon_and_face_clips():
+    """activateAction_body plays a gesture of the character's gesticon (its fades, body part and
+    filter); activateAction_face plays a clip of FAP values; unknown names list what exists."""
+    clock = thespis.ExternalClock()
+    anim, _ = demo_service(clock)
+    assert "greet" in anim.actions_body("Creon") and "blink" in anim.actions_face("Creon")
+    before = anim.evaluate_body("Creon", 1.4)
+    anim.activateAction_body("Creon", "greet")
+    assert np.abs(anim.evaluate_body("Creon", 1.4) - before).max() > 0.05
+    assert not np.any(anim.evaluate_face("Creon", 1.5))  # between the authored blinks
+    clock.set_time(1.0)
+    anim.activateAction_face("Creon", "blink")
+    assert np.any(anim.evaluate_face("Creon", 1.5))  # the lids half shut, 0.5 s into the blink
+    with pytest.raises(KeyError, match="greet"):
+        anim.activateAction_body("Creon", "bow")

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -365,6 +366,54 @@ TEST(Clock, RealTimeClockMovesOnAndWaits)
     std::stop_source stop;
     stop.request_stop();
     EXPECT_FALSE(clock.waitUntil(start + secondsToTicks(100.0), stop.get_token()));
+}
+
+// What a script can play live: body clips, face clips (on the face track), the scenario's
+// actions and the gesticon's gestures, each as the runtime built it. Creon's "greet" is the
+// wave over his right arm through the dependent-joint filter; an unknown name lists them all.
+TEST(Stage, ScriptsPlayGesticonGesturesAndFaceClips)
+{
+    auto stage = demoStage();
+    const auto body = stage->actionNames("Creon", Track::Body);
+    ASSERT_TRUE(body);
+    EXPECT_NE(std::find(body->begin(), body->end(), "greet"), body->end());
+    const auto face = stage->actionNames("Creon", Track::Face);
+    ASSERT_TRUE(face);
+    EXPECT_NE(std::find(face->begin(), face->end(), "blink"), face->end()) << "a clip of FAP values plays on the face";
+    EXPECT_EQ(std::find(body->begin(), body->end(), "blink"), body->end()) << "and not on the body";
+
+    const Tick start = secondsToTicks(0.2), during = secondsToTicks(1.4);
+    PoseSet authored = stage->makePoseSet(), played = stage->makePoseSet();
+    stage->evaluate(during, authored);
+    ASSERT_TRUE(stage->activateAction("Creon", Track::Body, "greet", start));
+    stage->evaluate(during, played);
+    const auto& creon = stage->runtime().characters[0];
+    const auto& layout = *creon.skeleton.frameLayout();
+    const auto rotation = [&](const PoseSet& poses, const char* joint) {
+        return core::anim::rotationAt(std::span<const float>(poses.characters[0].body),
+                                      layout.find(joint, core::anim::ElementKind::Rotation));
+    };
+    const auto angle = [](core::anim::Quat a, core::anim::Quat b) {
+        return 2.0 * std::acos(std::min(1.0, std::abs(double(core::anim::dot(a, b)))));
+    };
+    EXPECT_GT(angle(rotation(played, "r_shoulder"), rotation(authored, "r_shoulder")), 0.2) << "the arm waves";
+    EXPECT_GT(angle(rotation(played, "l_shoulder"), rotation(authored, "l_shoulder")), 1e-3)
+        << "the filter moves the upper body outside the gesture's mask";
+    EXPECT_LT(angle(rotation(played, "l_hip"), rotation(authored, "l_hip")), 1e-6) << "the legs go on as authored";
+    // The gesture ends after its clip, faded out.
+    const double end = *stage->actionEnd("Creon", Track::Body, "greet");
+    EXPECT_NEAR(end, 0.2 + creon.clips.at("wave")->domain().duration(), 1e-9);
+
+    // A face clip plays on the face track: a blink started at 1 s half shuts the lids at 1.5 s,
+    // where the authored blinks leave the face neutral.
+    stage->evaluate(secondsToTicks(1.5), authored);
+    ASSERT_EQ(authored.characters[0].face, neutralFrame(*FrameLayout::mpeg4Face()));
+    ASSERT_TRUE(stage->activateAction("Creon", Track::Face, "blink", secondsToTicks(1.0), {.fadeIn = 0}));
+    stage->evaluate(secondsToTicks(1.5), played);
+    EXPECT_NE(played.characters[0].face, neutralFrame(*FrameLayout::mpeg4Face()));
+    const auto unknown = stage->activateAction("Creon", Track::Body, "bow", start);
+    ASSERT_FALSE(unknown);
+    EXPECT_NE(unknown.error().message.find("greet"), std::string::npos) << unknown.error().message;
 }
 
 // The studio's Session evaluates on the GUI thread and the AR preview draws on its own: what
