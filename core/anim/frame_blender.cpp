@@ -119,8 +119,9 @@ void addTail(const FrameLayout& layout, const BlendInput& input, std::span<const
 // Function multiversioning: the blend's eight-joint loop gets an AVX2 build, chosen at load time
 // on CPUs that have it, and a baseline build for the others (the only one without
 // THESPIS_CPU_DISPATCH, which is how the sanitizer build tests it). Both round alike: this file
-// is built without contracting a·b + c into FMA, and uses no hardware estimates, so a pose is the
-// same bit for bit on every x86-64 CPU (tested against a scalar reference). GCC only: Clang 14 refuses
+// is built without contracting a·b + c into FMA, and 1/√x comes from plain arithmetic
+// (simd::reciprocalSqrt), not a hardware estimate, so a pose is the same bit for bit on every
+// x86-64 CPU (tested against a scalar reference). GCC only: Clang 14 refuses
 // the AVX clone's calls to the inline simd helpers, which it compiles without AVX.
 #if defined(__x86_64__) && defined(THESPIS_CPU_DISPATCH) && !defined(__clang__)
 #define THESPIS_AVX2_CLONE [[gnu::target_clones("arch=x86-64-v3", "default")]]
@@ -237,7 +238,7 @@ void blendRotations(std::span<const BlendInput> inputs, const float* __restrict 
         // The same operations as the eight-joint lanes, so that every joint rounds alike.
         const float norm2 = (q[0] * q[0] + q[1] * q[1]) + (q[2] * q[2] + q[3] * q[3]);
         const bool keepRest = norm2 < 1e-24f || t == 0.0f;
-        const float inv = keepRest ? 1.0f : 1.0f / std::sqrt(norm2);
+        const float inv = keepRest ? 1.0f : simd::reciprocalSqrt(norm2);
         for (int c = 0; c < 4; ++c)
             q[c] = keepRest ? base[c] : q[c] * inv;
     }

@@ -10,6 +10,7 @@
 #include "anim/blending_schedule.h"
 #include "anim/bvh.h"
 #include "anim/joint_mask.h"
+#include "anim/simd.h"
 #include "test_support.h"
 
 using namespace thespis::core;
@@ -322,8 +323,9 @@ TEST(MocapBlend, CutOffFadesOutOverExactlyTheGivenTime)
 }
 
 // The blend is the same bit for bit on every CPU and in both builds (AVX2 clone, baseline): it
-// rounds exactly as this plain scalar reference of its rules does, with IEEE square roots and
-// divisions and no hardware estimate. A walk frame and a wave frame, weights over every lane.
+// rounds exactly as this plain scalar reference of its rules does, with plain arithmetic (the
+// scalar simd::reciprocalSqrt, no hardware estimate). A walk frame and a wave frame, weights
+// over every lane.
 TEST(MocapBlend, BlendRoundsAsTheScalarReferenceOnEveryJoint)
 {
     const KeyframeClip& walk = *clips().walk.clip;
@@ -362,7 +364,7 @@ TEST(MocapBlend, BlendRoundsAsTheScalarReferenceOnEveryJoint)
                 q[c] = q[c] + restWeight * r[c];
         }
         const float norm2 = (q[0] * q[0] + q[1] * q[1]) + (q[2] * q[2] + q[3] * q[3]);
-        const float inv = 1.0f / std::sqrt(norm2);
+        const float inv = simd::reciprocalSqrt(norm2);
         for (int c = 0; c < 4; ++c) {
             const float expected = t == 0.0f ? r[c] : q[c] * inv;
             EXPECT_EQ(out[4 * j + c], expected) << "joint " << j << " component " << c;
