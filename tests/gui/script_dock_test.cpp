@@ -79,6 +79,7 @@ private slots:
     void aScenarioScriptRunsOnlyOnceTheFileIsTrusted();
     void savingAScriptToTheScenarioIsOneUndoStep();
     void aVoiceStartsWithTheView();
+    void stopPlayerPausesTheTransportAndStartPlayerPlaysIt();
 
 private:
     editor::ScriptPanel* panel() const { return m_window->findChild<editor::ScriptPanel*>(); }
@@ -257,6 +258,25 @@ void ScriptDockTest::aVoiceStartsWithTheView()
     QCOMPARE(activations[0].owner, std::string("Creon"));
     QVERIFY(core::ticksToSeconds(activations[0].start) >= 0.3);
     QVERIFY(activations[0].end > activations[0].start);
+}
+
+void ScriptDockTest::stopPlayerPausesTheTransportAndStartPlayerPlaysIt()
+{
+    // The paper's start_player / stop_player: the studio's Session is the player, so they play
+    // and pause the transport. The script waits for half a second of playing, then pauses it.
+    panel()->setSource(QStringLiteral("anim.start_player()\nanim.wait(0.5)\nanim.stop_player()\nprint('paused at', anim.now())\n"));
+    QTest::mouseClick(button("runScript"), Qt::LeftButton);
+    QVERIFY(m_window->clock()->isPlaying());
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isRunning(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_window->clock()->isPlaying(), 5000);
+    QVERIFY2(panel()->output().contains(QLatin1String("paused at")), qPrintable(panel()->output()));
+    QVERIFY(m_window->clock()->time() >= 0.5);
+    // Paused, a script that starts the player plays the view again.
+    m_window->clock()->pause();
+    panel()->setSource(QStringLiteral("anim.stop_player()\nanim.start_player()\n"));
+    QTest::mouseClick(button("runScript"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isRunning(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->clock()->isPlaying(), 5000);
 }
 
 QTEST_MAIN(ScriptDockTest)
