@@ -108,6 +108,7 @@ private slots:
     void badInputIsSaidAndStartWaits();
     void calibrationFromPhotos();
     void aScriptShowsInEveryViewAndOverTheVideo();
+    void onTheVideosTimeThePlayheadFollowsTheVideo();
 
 private:
     editor::ArPreviewPanel* panel() const { return m_window->arPreview(); }
@@ -508,6 +509,30 @@ void ArPreviewTest::aScriptShowsInEveryViewAndOverTheVideo()
     QCOMPARE(stage.ticks(), evaluations + 1);
     for (std::size_t c = 0; c < skinned.size(); ++c)
         QCOMPARE(preview->scene()->scene().character(c).poseCount(), skinned[c] + 1);
+    p->stop();
+}
+
+void ArPreviewTest::onTheVideosTimeThePlayheadFollowsTheVideo()
+{
+    showPanel();
+    editor::ArPreviewPanel* p = panel();
+    p->setClock(editor::ArPreviewPanel::Clock::Video);
+    QCOMPARE(QSettings().value(QStringLiteral("arPreview/clock")).toString(), QStringLiteral("video"));
+    p->smoothCheck()->setChecked(false);
+    p->chooseVideoFile(file("board.mp4"));
+    p->setCameraFile(file("camera.yml"));
+    p->setBoardSpec(kBoard);
+    QVERIFY(p->start());
+    // The playhead goes where each frame shown is in the video (30 fps), the transport paused,
+    // and the frames after it are drawn with the poses of that time.
+    QTRY_VERIFY_WITH_TIMEOUT(p->shownFrame() >= 30 || !p->isRunning(), kTimeout);
+    QVERIFY(p->isRunning());
+    QVERIFY(!m_window->clock()->isPlaying());
+    QCOMPARE(m_window->clock()->time(), core::ticksToSeconds(p->lastSnapshot().videoTime));
+    QVERIFY(std::abs(m_window->clock()->time() - double(p->shownFrame()) / 30.0) < 1e-6);
+    const core::Tick drawnAt = p->lastSnapshot().poses.time;
+    QTRY_VERIFY_WITH_TIMEOUT(p->lastSnapshot().poses.time > drawnAt || !p->isRunning(), kTimeout);
+    QVERIFY(p->lastSnapshot().poses.time <= p->lastSnapshot().videoTime);
     p->stop();
 }
 
