@@ -19,6 +19,9 @@
 #include <QTextBlock>
 #include <QVBoxLayout>
 
+#include "edit/content_edits.h"
+#include "editor/document.h"
+#include "editor/session.h"
 #include "runtime/animation_service.h"
 #include "script_runner.h"
 #include "widgets/python_highlighter.h"
@@ -118,6 +121,30 @@ void ScriptPanel::setStage(std::shared_ptr<core::runtime::Stage> stage)
     updateButtons();
 }
 
+void ScriptPanel::setSession(Session* session)
+{
+    m_session = session;
+    session->addView([this](Document*) { followSession(); }, this);
+    connect(session, &Session::edited, this, &ScriptPanel::followSession);
+    // A waiting script sees each new time before the stage is evaluated at it.
+    connect(session, &Session::aboutToTick, this, [this](core::Tick time) { setTime(core::ticksToSeconds(time)); });
+}
+
+void ScriptPanel::followSession()
+{
+    const Document* document = m_session->document();
+    setStage(m_session->stage());
+    setAssets(document ? document->assets() : core::scenario::Assets("."));
+    QStringList names, sources;
+    if (document)
+        for (const core::scenario::ScriptSpec& script : document->scenario().scripts) {
+            names.push_back(QString::fromStdString(script.name));
+            sources.push_back(QString::fromStdString(script.source));
+        }
+    setScenarioScripts(names, sources);
+    setSaveEnabled(document != nullptr);
+}
+
 void ScriptPanel::setAssets(const core::scenario::Assets& assets) { m_assets = assets; }
 
 void ScriptPanel::setTime(double seconds)
@@ -211,7 +238,10 @@ void ScriptPanel::onSave()
         if (!ok || name.isEmpty())
             return;
     }
-    emit saveRequested(name, m_editor->toPlainText());
+    if (Document* document = m_session ? m_session->document() : nullptr)
+        (void)document->edit(core::edit::setScript(document->scenario(), name.toStdString(),
+                                                   m_editor->toPlainText().toStdString()),
+                             tr("Save Script “%1”").arg(name));
     if (showScenarioScript(name))
         m_editor->document()->setModified(false);
 }

@@ -9,6 +9,7 @@
 // are picked from a list and saved back to it; one read from the file (and not edited since) runs
 // only once the trust check (the window's: does the user trust that file?) says yes.
 
+#include <QPointer>
 #include <QWidget>
 
 #include <functional>
@@ -33,12 +34,18 @@ class ScriptRunner;
 
 namespace thespis::editor {
 
+class Session;
+
 class ScriptPanel : public QWidget {
     Q_OBJECT
 public:
     explicit ScriptPanel(QWidget* parent = nullptr);
     ~ScriptPanel() override; ///< stops a running script and waits for its thread
 
+    /// Follows `session` from now on: its stage is what scripts play on (a running script is
+    /// stopped when the stage is replaced), its ticks are the scripts' time, its document keeps
+    /// the scripts listed and saved (Save Script to Scenario, one undo step).
+    void setSession(Session* session);
     /// The stage scripts play on (null: no scenario shown). A running script is stopped when
     /// the stage is replaced.
     void setStage(std::shared_ptr<core::runtime::Stage> stage);
@@ -73,8 +80,6 @@ signals:
     void playRequested();
     /// The script called stop_player(): the view should pause.
     void pauseRequested();
-    /// Save Script: keep `source` in the scenario as `name` (one undo step).
-    void saveRequested(const QString& name, const QString& source);
     void runningChanged(bool running);
     /// The script ended: `message` is empty when it ran to its end, else why not.
     void finished(const QString& message);
@@ -85,6 +90,8 @@ private:
     void updateButtons();
     void onChoice(int index);
     void onSave();
+    // The session's stage, assets and scripts, after a new document or an edit.
+    void followSession();
 
     QPlainTextEdit* m_editor = nullptr;
     QPlainTextEdit* m_console = nullptr;
@@ -96,6 +103,7 @@ private:
     QString m_scratch;      // the Scratch text while a scenario script is shown
     int m_shown = 0;        // the list's item shown in the editor
     std::function<bool()> m_trustCheck;
+    QPointer<Session> m_session;
     QString m_fileName; // the running script's name in tracebacks ("script.py", "NAME.py")
     QLabel* m_status = nullptr;
     std::shared_ptr<core::runtime::Stage> m_stage;

@@ -2881,6 +2881,10 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
         <source>Not run: the scenario&apos;s scripts are not trusted.</source>
         <translation>Nicht ausgeführt: den Skripten des Szenarios wird nicht vertraut.</translation>
     </message>
+    <message>
+        <source>Save Script “%1”</source>
+        <translation>Skript „%1“ speichern</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::SegmentPanel</name>
@@ -3607,10 +3611,6 @@ Der Reiter Skelette zeigt die Animation; thespis-cli render zeichnet die Szene o
     <message>
         <source>Script: %1</source>
         <translation>Skript: %1</translation>
-    </message>
-    <message>
-        <source>Save Script “%1”</source>
-        <translation>Skript „%1“ speichern</translation>
     </message>
     <message>
         <source>Run Scripts From This File?</source>

@@ -2881,6 +2881,10 @@ Un point vert signale une action jouée à l’instant courant.</translation>
         <source>Not run: the scenario&apos;s scripts are not trusted.</source>
         <translation>Non exécuté : les scripts du scénario ne sont pas approuvés.</translation>
     </message>
+    <message>
+        <source>Save Script “%1”</source>
+        <translation>Enregistrer le script « %1 »</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::SegmentPanel</name>
@@ -3607,10 +3611,6 @@ L’onglet Squelettes montre l’animation ; thespis-cli render dessine la scèn
     <message>
         <source>Script: %1</source>
         <translation>Script : %1</translation>
-    </message>
-    <message>
-        <source>Save Script “%1”</source>
-        <translation>Enregistrer le script « %1 »</translation>
     </message>
     <message>
         <source>Run Scripts From This File?</source>

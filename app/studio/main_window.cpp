@@ -453,8 +453,6 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> next)
     m_outline->expandAll();
     const QString sceneProblem =
         m_preview && !m_preview->problem().isEmpty() ? tr("The 3D view is empty: %1").arg(m_preview->problem()) : QString();
-    updateScriptStage();
-    refreshScripts();
 
     const bool open = document() != nullptr;
     m_transport->setEnabled(open);
@@ -595,8 +593,6 @@ void MainWindow::onDocumentEdited()
             m_outline->setCurrentIndex(index);
     refreshMessages();
     m_content->updateEnabled();
-    updateScriptStage();
-    refreshScripts();
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -136,10 +136,6 @@ private:
     void refreshMessages();
     void createMessagesDock();
     void createScriptDock();
-    /// Hands the Script dock the Session's stage (none without a document).
-    void updateScriptStage();
-    /// Hands the Script dock the scenario's scripts.
-    void refreshScripts();
     /// True when the open scenario's file may run its scripts (asks the user once per file).
     bool confirmScriptTrust();
     void createStatusBar();

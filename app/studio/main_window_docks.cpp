@@ -18,7 +18,6 @@
 
 #include "editor/content_actions.h"
 #include "startup.h"
-#include "edit/content_edits.h"
 #include "editor/ar_preview_panel.h"
 #include "editor/bake_panel.h"
 #include "editor/clip_library_panel.h"
@@ -114,40 +113,11 @@ void MainWindow::createScriptDock()
             m_clock->play();
     });
     connect(m_script, &editor::ScriptPanel::pauseRequested, m_clock, &editor::PlaybackClock::pause);
-    // A waiting script sees each new time before the stage is evaluated at it.
-    connect(m_session, &editor::Session::aboutToTick, m_script,
-            [this](core::Tick time) { m_script->setTime(core::ticksToSeconds(time)); });
-    connect(m_script, &editor::ScriptPanel::saveRequested, this, [this](const QString& name, const QString& source) {
-        if (document())
-            (void)document()->edit(core::edit::setScript(document()->scenario(), name.toStdString(), source.toStdString()),
-                                   tr("Save Script “%1”").arg(name));
-    });
+    m_script->setSession(m_session);
     m_script->setTrustCheck([this] { return confirmScriptTrust(); });
     connect(m_script, &editor::ScriptPanel::finished, this, [this](const QString& message) {
         statusBar()->showMessage(message.isEmpty() ? tr("The script ran to its end.") : tr("Script: %1").arg(message), 8000);
     });
-#endif
-}
-
-void MainWindow::updateScriptStage()
-{
-#ifdef THESPIS_WITH_PYTHON
-    m_script->setStage(m_session->stage());
-    m_script->setAssets(document() ? document()->assets() : core::scenario::Assets("."));
-#endif
-}
-
-void MainWindow::refreshScripts()
-{
-#ifdef THESPIS_WITH_PYTHON
-    QStringList names, sources;
-    if (document())
-        for (const core::scenario::ScriptSpec& script : document()->scenario().scripts) {
-            names.push_back(QString::fromStdString(script.name));
-            sources.push_back(QString::fromStdString(script.source));
-        }
-    m_script->setScenarioScripts(names, sources);
-    m_script->setSaveEnabled(document() != nullptr);
 #endif
 }
 
