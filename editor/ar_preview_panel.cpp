@@ -325,7 +325,7 @@ void ArPreviewPanel::followVideo()
         return;
     PlaybackClock* playhead = m_studio->clock();
     playhead->pause();
-    playhead->seek(core::ticksToSeconds(m_snapshot.videoTime));
+    playhead->seek(m_snapshot.videoTime);
 }
 
 void ArPreviewPanel::showSnapshot()

@@ -460,8 +460,7 @@ void BakePanel::refreshCurrentBake()
     QString key = m_document->baseDir() + u'\n' + fromUtf8(character.name) + u'\n' + fromUtf8(character.bake) + u'\n'
                   + fromUtf8(character.model) + u'\n' + fromUtf8(character.skeleton);
     for (const core::scene::SegmentTag& tag : character.segmentTags)
-        key += u'\n' + fromUtf8(tag.segment) + u':' + QString::number(int(tag.role)) + u':'
-               + QString::number(tag.posture ? int(*tag.posture) : -1);
+        key += u'\n' + fromUtf8(tag.segment) + u':' + QString::number(int(tag.role));
     if (key == m_currentBakeKey)
         return;
     m_currentBakeKey = key;

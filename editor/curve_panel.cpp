@@ -172,15 +172,15 @@ void CurvePanel::setAction(std::optional<core::edit::ActionPath> action)
     refresh();
 }
 
-void CurvePanel::setTime(double seconds)
+void CurvePanel::setTime(core::Tick time)
 {
-    m_time = seconds;
+    m_time = time;
     if (!curve(WeightCurve))
         return;
     const auto& p = *m_action;
     const core::Tick start =
         m_document->scenario().characters[std::size_t(p.character)].layers[std::size_t(p.layer)].actions[std::size_t(p.action)].start;
-    m_view->setPlayhead(seconds - core::ticksToSeconds(start));
+    m_view->setPlayhead(core::ticksToSeconds(time - start));
 }
 
 void CurvePanel::setEditedCurve(CurveIndex curve)

@@ -12,6 +12,7 @@
 
 #include "anim/curve.h"
 #include "edit/scenario_edit.h"
+#include "util/tick.h"
 #include "widgets/curve_view.h"
 
 class QComboBox;
@@ -34,7 +35,7 @@ public:
     void setAction(std::optional<core::edit::ActionPath> action);
     std::optional<core::edit::ActionPath> action() const { return m_action; }
     /// The document's time; shown as the playhead in the action's local time.
-    void setTime(double seconds);
+    void setTime(core::Tick time);
 
     widgets::CurveView* view() const { return m_view; }
     QComboBox* presetCombo() const { return m_preset; }
@@ -58,7 +59,7 @@ private:
 
     Document* m_document = nullptr;
     std::optional<core::edit::ActionPath> m_action;
-    double m_time = 0;
+    core::Tick m_time = 0;
     double m_duration = 0;                     // the action's length; infinity when open-ended
     std::optional<core::anim::Curve> m_dragStart; // the dragged curve as it was when the drag began
     int m_dragCurve = -1;

@@ -12,7 +12,7 @@
 namespace thespis::editor {
 
 namespace {
-constexpr double kOpenEndedPreviewSeconds = 10.0;
+constexpr core::Tick kOpenEndedPreview = 10 * core::TicksPerSecond;
 } // namespace
 
 Document::Document(core::scenario::Scenario scenario, core::scenario::ScenarioRuntime runtime, QString filePath,
@@ -116,9 +116,9 @@ QList<Document::Message> Document::messages() const
     return list;
 }
 
-double Document::previewDuration() const
+core::Tick Document::previewDuration() const
 {
-    return m_runtime.duration > 0 ? m_runtime.duration : kOpenEndedPreviewSeconds;
+    return m_runtime.duration > 0 ? m_runtime.duration : kOpenEndedPreview;
 }
 
 bool Document::isModified() const

@@ -16,6 +16,7 @@
 #include "scenario/scenario.h"
 #include "scenario/scenario_runtime.h"
 #include "util/error.h"
+#include "util/tick.h"
 
 class QUndoStack;
 
@@ -76,11 +77,11 @@ public:
     };
     QList<Message> messages() const;
 
-    /// Length of the timeline in seconds (the runtime's duration).
-    double duration() const { return m_runtime.duration; }
+    /// Length of the timeline (the runtime's duration).
+    core::Tick duration() const { return m_runtime.duration; }
     /// What a preview plays: the duration, or 10 s when the scenario has no finite length
     /// (only open-ended actions), so that there is always something to scrub.
-    double previewDuration() const;
+    core::Tick previewDuration() const;
 
     QUndoStack* undoStack() const { return m_undoStack; }
     bool isModified() const;

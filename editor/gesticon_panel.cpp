@@ -529,17 +529,17 @@ void GesticonPanel::startPreview(std::optional<bool> filter)
                         .arg(name));
         return;
     }
-    const double start = clock.time();
+    const core::Tick start = clock.time();
     const std::string live = previewActionName(current->name);
     if (auto played = stage.playAction(characterName, core::runtime::Track::Body, live,
                                        {action.source, action.params, action.renderOutsideDomain},
-                                       core::secondsToTicks(start), {.fadeIn = 0});
+                                       start, {.fadeIn = 0});
         !played) {
         showMessage(tr("Cannot preview gesture \"%1\": %2").arg(name, fromUtf8(played.error().message)));
         return;
     }
     const auto end = stage.actionEnd(characterName, core::runtime::Track::Body, live);
-    if (!end || !std::isfinite(*end) || *end <= start) {
+    if (!end || !std::isfinite(*end) || core::secondsToTicks(*end) <= start) {
         (void)stage.removeAction(characterName, core::runtime::Track::Body, live);
         showMessage(tr("Cannot preview gesture \"%1\": its clip has no finite length.").arg(name));
         return;
@@ -550,7 +550,7 @@ void GesticonPanel::startPreview(std::optional<bool> filter)
     m_previewCharacter = characterName;
     m_previewAction = live;
     m_previewStart = start;
-    m_previewEnd = *end;
+    m_previewEnd = core::secondsToTicks(*end);
     m_savedLooping = clock.isLooping();
     m_savedClockDuration = clock.duration();
     // The gesture may reach past the end of the timeline: the clock must get there.
@@ -583,7 +583,7 @@ void GesticonPanel::stopPreview()
         // Put back what the preview changed, unless someone (an edit) set the duration since.
         if (clock->duration() == m_previewClockDuration)
             clock->setDuration(m_savedClockDuration);
-        const double before = clock->time();
+        const core::Tick before = clock->time();
         clock->seek(std::min(m_previewStart, clock->duration()));
         clock->setLooping(m_savedLooping);
         if (clock->time() == before)
@@ -593,9 +593,9 @@ void GesticonPanel::stopPreview()
     emit previewingChanged(false);
 }
 
-void GesticonPanel::onClockTime(double seconds)
+void GesticonPanel::onClockTime(core::Tick time)
 {
-    if (!m_previewing || seconds < m_previewEnd)
+    if (!m_previewing || time < m_previewEnd)
         return;
     if (m_comparePass != 1) {
         stopPreviewLater();

@@ -86,7 +86,7 @@ private:
     void refreshCharacters();
     void updateActions();
     void showMessage(const QString& message);
-    void onClockTime(double seconds);
+    void onClockTime(core::Tick time);
     // Starts a preview; `filter` overrides the gesture's dependent-joint flag.
     void startPreview(std::optional<bool> filter);
     // Stops the preview playing now from the event loop: for stops asked for from inside the
@@ -111,10 +111,10 @@ private:
     bool m_previewing = false;
     int m_comparePass = 0; // 1: before (filter off), 2: after (filter on); 0: a plain preview
     int m_previewSerial = 0;
-    double m_previewStart = 0;
-    double m_previewEnd = 0;
-    double m_previewClockDuration = 0; // what the preview set the clock's duration to
-    double m_savedClockDuration = 0;
+    core::Tick m_previewStart = 0;
+    core::Tick m_previewEnd = 0;
+    core::Tick m_previewClockDuration = 0; // what the preview set the clock's duration to
+    core::Tick m_savedClockDuration = 0;
     bool m_savedLooping = false;
     std::string m_previewCharacter, m_previewAction; // the live action the preview plays, and whose
 };

@@ -5,6 +5,17 @@
 
 namespace thespis::editor {
 
+namespace {
+
+// Nanoseconds to ticks, exactly (705 600 000 ticks per second = 7056 ticks per 10 000 ns).
+core::Tick ticksOfNanoseconds(qint64 nanoseconds)
+{
+    static_assert(core::TicksPerSecond % 100'000 == 0);
+    return core::Tick(nanoseconds) * (core::TicksPerSecond / 100'000) / 10'000;
+}
+
+} // namespace
+
 PlaybackClock::PlaybackClock(QObject* parent) : QObject(parent)
 {
     m_timer.setTimerType(Qt::PreciseTimer);
@@ -12,9 +23,9 @@ PlaybackClock::PlaybackClock(QObject* parent) : QObject(parent)
     connect(&m_timer, &QTimer::timeout, this, &PlaybackClock::onTick);
 }
 
-void PlaybackClock::setDuration(double seconds)
+void PlaybackClock::setDuration(core::Tick duration)
 {
-    const double duration = std::isfinite(seconds) ? std::max(0.0, seconds) : 0.0;
+    duration = std::max<core::Tick>(0, duration);
     if (duration != m_duration) {
         m_duration = duration;
         emit durationChanged(m_duration);
@@ -40,11 +51,12 @@ void PlaybackClock::step(int frames)
 {
     pause();
     // The frame the playhead is in; the epsilon keeps t = n / fps on frame n despite rounding.
-    const double position = m_time * m_frameRate;
+    const double position = core::ticksToSeconds(m_time) * m_frameRate;
     double frame = std::floor(position + 1e-6);
     if (frames < 0 && position - frame > 1e-6)
         ++frame; // between frames: one step back lands on this frame's start
-    seek((frame + frames) / m_frameRate);
+    const double target = std::clamp((frame + frames) / m_frameRate, 0.0, core::ticksToSeconds(m_duration));
+    seek(core::secondsToTicks(target));
 }
 
 void PlaybackClock::play()
@@ -52,7 +64,7 @@ void PlaybackClock::play()
     if (isPlaying() || m_duration <= 0)
         return;
     if (!m_looping && m_time >= m_duration)
-        setTimeInternal(0.0); // at the end: play again from the start, as every player does
+        setTimeInternal(0); // at the end: play again from the start, as every player does
     m_anchorTime = m_time;
     m_sinceAnchor.start();
     m_timer.start();
@@ -78,11 +90,9 @@ void PlaybackClock::togglePlayPause()
         play();
 }
 
-void PlaybackClock::seek(double seconds)
+void PlaybackClock::seek(core::Tick time)
 {
-    if (!std::isfinite(seconds))
-        return;
-    const double t = std::clamp(seconds, 0.0, m_duration);
+    const core::Tick t = std::clamp<core::Tick>(time, 0, m_duration);
     m_anchorTime = t;
     if (isPlaying())
         m_sinceAnchor.start();
@@ -99,11 +109,11 @@ void PlaybackClock::setLooping(bool looping)
 
 void PlaybackClock::onTick()
 {
-    double t = m_anchorTime + double(m_sinceAnchor.nsecsElapsed()) * 1e-9;
+    core::Tick t = m_anchorTime + ticksOfNanoseconds(m_sinceAnchor.nsecsElapsed());
     if (t >= m_duration) {
         if (m_looping && m_duration > 0) {
-            t = std::fmod(t, m_duration);
-            // Re-anchor at the wrap so that the error of fmod does not grow over many loops.
+            // Whole ticks wrap exactly; re-anchoring keeps the elapsed count small.
+            t %= m_duration;
             m_anchorTime = t;
             m_sinceAnchor.start();
         } else {
@@ -116,12 +126,12 @@ void PlaybackClock::onTick()
     setTimeInternal(t);
 }
 
-void PlaybackClock::setTimeInternal(double seconds)
+void PlaybackClock::setTimeInternal(core::Tick time)
 {
-    if (seconds == m_time)
+    if (time == m_time)
         return;
-    m_time = seconds;
-    emit timeChanged(seconds);
+    m_time = time;
+    emit timeChanged(time);
 }
 
 } // namespace thespis::editor

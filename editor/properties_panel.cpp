@@ -299,7 +299,7 @@ void PropertiesPanel::showScenario()
                  tr("%n character(s)", nullptr, int(scenario.characters.size())),
                  tr("%n action(s)", nullptr, actions))
             .arg(scenario.markers.size())
-            .arg(seconds(m_document->duration()), hint));
+            .arg(seconds(core::ticksToSeconds(m_document->duration())), hint));
 }
 
 void PropertiesPanel::showAction()

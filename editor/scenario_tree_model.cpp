@@ -133,13 +133,13 @@ void ScenarioTreeModel::rebuild()
     }
 }
 
-void ScenarioTreeModel::setTime(double seconds)
+void ScenarioTreeModel::setTime(core::Tick time)
 {
     for (std::size_t i = 0; i < m_nodes.size(); ++i) {
         Node& node = m_nodes[i];
         if (node.kind != NodeKind::Action)
             continue;
-        const bool active = actionActive(node, seconds);
+        const bool active = actionActive(node, time);
         if (active == node.active)
             continue;
         node.active = active;
@@ -149,8 +149,9 @@ void ScenarioTreeModel::setTime(double seconds)
     }
 }
 
-bool ScenarioTreeModel::actionActive(const Node& node, double seconds) const
+bool ScenarioTreeModel::actionActive(const Node& node, core::Tick time) const
 {
+    const double seconds = core::ticksToSeconds(time); // the schedule's own time
     const core::scenario::ScenarioRuntime& runtime = m_document->runtime();
     if (node.character >= int(runtime.characters.size()))
         return false;

@@ -14,6 +14,7 @@
 
 #include "anim/blending_params.h"
 #include "anim/curve.h"
+#include "util/tick.h"
 
 namespace thespis::editor {
 
@@ -48,7 +49,7 @@ public:
     /// The row of a character (layer -1) or of one of its layers.
     QModelIndex indexOf(int character, int layer = -1) const;
     /// Updates which actions are marked as playing; emits dataChanged only for rows that change.
-    void setTime(double seconds);
+    void setTime(core::Tick time);
 
     QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
     QModelIndex parent(const QModelIndex& child) const override;
@@ -71,7 +72,7 @@ private:
     const Node* nodeOf(const QModelIndex& index) const;
     QVariant displayData(const Node& node, int column) const;
     QString toolTip(const Node& node) const;
-    bool actionActive(const Node& node, double seconds) const;
+    bool actionActive(const Node& node, core::Tick time) const;
 
     const Document* m_document = nullptr;
     std::vector<Node> m_nodes;

@@ -127,7 +127,7 @@ void ScriptPanel::setSession(Session* session)
     session->addView([this](Document*) { followSession(); }, this);
     connect(session, &Session::edited, this, &ScriptPanel::followSession);
     // A waiting script sees each new time before the stage is evaluated at it.
-    connect(session, &Session::aboutToTick, this, [this](core::Tick time) { setTime(core::ticksToSeconds(time)); });
+    connect(session, &Session::aboutToTick, this, [this](core::Tick time) { setTime(time); });
 }
 
 void ScriptPanel::followSession()
@@ -147,9 +147,8 @@ void ScriptPanel::followSession()
 
 void ScriptPanel::setAssets(const core::scenario::Assets& assets) { m_assets = assets; }
 
-void ScriptPanel::setTime(double seconds)
+void ScriptPanel::setTime(core::Tick now)
 {
-    const core::Tick now = core::secondsToTicks(seconds);
     m_clock->setTime(now);
     // Sounds the script started since the last tick play from where they are now; ended ones go.
     std::erase_if(m_players, [&](const auto& player) {

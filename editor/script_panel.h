@@ -20,6 +20,7 @@
 #include "runtime/sound.h"
 #include "runtime/stage.h"
 #include "util/error.h"
+#include "util/tick.h"
 
 class QAudioOutput;
 class QComboBox;
@@ -50,7 +51,7 @@ public:
     /// the stage is replaced.
     void setStage(std::shared_ptr<core::runtime::Stage> stage);
     /// The playhead: scripts' time. Sounds the script started play from here (Qt Multimedia).
-    void setTime(double seconds);
+    void setTime(core::Tick time);
     /// Where the scripts' sound files are found (the scenario's assets).
     void setAssets(const core::scenario::Assets& assets);
     /// The sound service of the script running or run last (null before the first run).

@@ -22,13 +22,11 @@
 
 namespace thespis::editor {
 
-using core::scene::Posture;
 using core::scene::SegmentRole;
 
 namespace {
 
 constexpr SegmentRole kRoles[] = {SegmentRole::None, SegmentRole::Receiver, SegmentRole::Occluder};
-constexpr Posture kPostures[] = {Posture::Independent, Posture::Dependent};
 
 // A small rounded square of a role's colour, for buttons and combo items.
 QIcon swatch(const QColor& color)
@@ -43,7 +41,7 @@ QIcon swatch(const QColor& color)
     return QIcon(pixmap);
 }
 
-// Role and Posture cells edit through a combo box that commits as soon as an item is chosen.
+// Role cells edit through a combo box that commits as soon as an item is chosen.
 class TagDelegate : public QStyledItemDelegate {
 public:
     using QStyledItemDelegate::QStyledItemDelegate;
@@ -52,16 +50,9 @@ public:
     {
         auto* combo = new QComboBox(parent);
         combo->setObjectName(QStringLiteral("segmentTagEditor"));
-        if (index.column() == SegmentTableModel::RoleColumn) {
-            for (SegmentRole role : kRoles) {
-                combo->addItem(swatch(SegmentTableModel::roleColor(role)), SegmentTableModel::roleText(role), int(role));
-                combo->setItemData(combo->count() - 1, SegmentTableModel::roleDescription(role), Qt::ToolTipRole);
-            }
-        } else {
-            for (Posture posture : kPostures) {
-                combo->addItem(SegmentTableModel::postureText(posture), int(posture));
-                combo->setItemData(combo->count() - 1, SegmentTableModel::postureDescription(posture), Qt::ToolTipRole);
-            }
+        for (SegmentRole role : kRoles) {
+            combo->addItem(swatch(SegmentTableModel::roleColor(role)), SegmentTableModel::roleText(role), int(role));
+            combo->setItemData(combo->count() - 1, SegmentTableModel::roleDescription(role), Qt::ToolTipRole);
         }
         auto* self = const_cast<TagDelegate*>(this);
         QObject::connect(combo, &QComboBox::activated, self, [self, combo] {
@@ -135,18 +126,6 @@ SegmentPanel::SegmentPanel(QWidget* parent) : QWidget(parent)
             m_roleButtons.resize(std::size_t(role) + 1);
         m_roleButtons[std::size_t(role)] = button;
     }
-    bar->addSpacing(12);
-    bar->addWidget(new QLabel(tr("Posture:"), this));
-    const QString postureNames[] = {QStringLiteral("tagIndependent"), QStringLiteral("tagDependent")};
-    for (Posture posture : kPostures) {
-        auto* button = tagButton(SegmentTableModel::postureText(posture),
-                                 tr("Mark the selected segments %1. %2")
-                                     .arg(SegmentTableModel::postureText(posture), SegmentTableModel::postureDescription(posture)),
-                                 postureNames[int(posture)], this);
-        connect(button, &QToolButton::clicked, this, [this, posture] { applyPosture(posture); });
-        bar->addWidget(button);
-        m_postureButtons.push_back(button);
-    }
     bar->addStretch(1);
     m_selectionCount = new QLabel(this);
     m_selectionCount->setObjectName(QStringLiteral("segmentSelectionCount"));
@@ -175,7 +154,6 @@ SegmentPanel::SegmentPanel(QWidget* parent) : QWidget(parent)
     m_table->setTextElideMode(Qt::ElideMiddle);
     const QFontMetrics metrics = m_table->fontMetrics();
     m_table->setColumnWidth(SegmentTableModel::RoleColumn, metrics.horizontalAdvance(tr("Occluder")) + 44);
-    m_table->setColumnWidth(SegmentTableModel::PostureColumn, metrics.horizontalAdvance(tr("Posture")) + 20);
     m_table->setColumnWidth(SegmentTableModel::VerticesColumn, metrics.horizontalAdvance(tr("Vertices")) + 20);
     m_table->setColumnWidth(SegmentTableModel::TrianglesColumn, metrics.horizontalAdvance(tr("Triangles")) + 20);
     layout->addWidget(m_table, 1);
@@ -286,16 +264,7 @@ void SegmentPanel::selectSegments(const std::vector<int>& segments)
 
 void SegmentPanel::applyRole(SegmentRole role)
 {
-    if (auto done = m_model->applyTags(selectedSegments(), role, std::nullopt); !done)
-        showMessage(fromUtf8(done.error().message));
-    else
-        showMessage({});
-    updateActions();
-}
-
-void SegmentPanel::applyPosture(Posture posture)
-{
-    if (auto done = m_model->applyTags(selectedSegments(), std::nullopt, posture); !done)
+    if (auto done = m_model->applyTags(selectedSegments(), role); !done)
         showMessage(fromUtf8(done.error().message));
     else
         showMessage({});
@@ -373,12 +342,6 @@ void SegmentPanel::updateActions()
                                                  [&](int row) { return m_model->role(row) == SegmentRole(r); });
         m_roleButtons[r]->setEnabled(editable);
         m_roleButtons[r]->setChecked(all);
-    }
-    for (std::size_t p = 0; p < m_postureButtons.size(); ++p) {
-        const bool all = editable && std::all_of(selected.begin(), selected.end(),
-                                                 [&](int row) { return m_model->posture(row) == Posture(p); });
-        m_postureButtons[p]->setEnabled(editable);
-        m_postureButtons[p]->setChecked(all);
     }
     if (m_model->rowCount() == 0)
         m_selectionCount->clear();

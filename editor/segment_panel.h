@@ -1,9 +1,9 @@
 #pragma once
 // SegmentPanel: the segment tag editor (paper §6.1.3). For one character of the document it
 // lists the body's mesh segments (SegmentTableModel) with their joint, role (none / receiver /
-// occluder), posture (PI / PD) and size; rows can be filtered by name, many can be selected,
-// and the tool bar's Receiver / Occluder / None / PI / PD buttons tag every selected segment at
-// once as one undoable edit (a Role or Posture cell also edits on its own, through a combo box).
+// occluder) and size; rows can be filtered by name, many can be selected, and the tool bar's
+// Receiver / Occluder / None buttons tag every selected segment at once as one undoable edit (a
+// Role cell also edits on its own, through a combo box).
 //
 // Selection and the 3D view go together when a ScenePreview is set: the selected segments are
 // highlighted in the viewport while the panel is visible, and a click on a character in the
@@ -57,7 +57,6 @@ public:
     void selectSegments(const std::vector<int>& segments);
     /// Tags every selected segment: one undoable edit. Refusals go to the message line.
     void applyRole(core::scene::SegmentRole role);
-    void applyPosture(core::scene::Posture posture);
 
 signals:
     /// The selected segments changed (by the table or by a click in the viewport).
@@ -84,7 +83,6 @@ private:
     QLineEdit* m_filter = nullptr;
     QTableView* m_table = nullptr;
     std::vector<QToolButton*> m_roleButtons;    // by SegmentRole
-    std::vector<QToolButton*> m_postureButtons; // by Posture
     QLabel* m_selectionCount = nullptr;
     QLabel* m_message = nullptr;
     QLabel* m_hint = nullptr;

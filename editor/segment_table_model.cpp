@@ -15,7 +15,6 @@
 
 namespace thespis::editor {
 
-using core::scene::Posture;
 using core::scene::SegmentRole;
 using core::scene::SegmentTag;
 
@@ -74,7 +73,7 @@ const SegmentTableModel::Body* SegmentTableModel::loadBody(int character)
     if (loaded) {
         for (const core::scene::Segment& segment : loaded->mesh.segments)
             body.rows.push_back({fromUtf8(segment.name), fromUtf8(segment.joint), segment.vertexCount,
-                                 segment.triangleCount, segment.posture});
+                                 segment.triangleCount});
     } else {
         body.error = fromUtf8(loaded.error().message);
     }
@@ -118,7 +117,7 @@ void SegmentTableModel::onDocumentEdited()
         return;
     m_tags = tags;
     if (!m_rows.empty())
-        emit dataChanged(index(0, RoleColumn), index(int(m_rows.size()) - 1, PostureColumn));
+        emit dataChanged(index(0, RoleColumn), index(int(m_rows.size()) - 1, RoleColumn));
 }
 
 int SegmentTableModel::rowOf(const QString& segment) const
@@ -156,21 +155,7 @@ SegmentRole SegmentTableModel::role(int row) const
     return tag ? tag->role : SegmentRole::None;
 }
 
-Posture SegmentTableModel::posture(int row) const
-{
-    if (const SegmentTag* tag = tagOf(row); tag && tag->posture)
-        return *tag->posture;
-    return row >= 0 && std::size_t(row) < m_rows.size() ? m_rows[std::size_t(row)].defaultPosture : Posture::Dependent;
-}
-
-bool SegmentTableModel::postureTagged(int row) const
-{
-    const SegmentTag* tag = tagOf(row);
-    return tag && tag->posture;
-}
-
-core::Result<void> SegmentTableModel::applyTags(const std::vector<int>& rows, std::optional<SegmentRole> role,
-                                                std::optional<Posture> posture)
+core::Result<void> SegmentTableModel::applyTags(const std::vector<int>& rows, SegmentRole role)
 {
     if (!m_document || m_character < 0)
         return core::makeError(core::ErrorCode::InvalidArgument, tr("No character is shown.").toStdString());
@@ -183,14 +168,11 @@ core::Result<void> SegmentTableModel::applyTags(const std::vector<int>& rows, st
         const std::string name = m_rows[std::size_t(row)].name.toStdString();
         auto tag = std::find_if(tags.begin(), tags.end(), [&](const SegmentTag& t) { return t.segment == name; });
         if (tag == tags.end()) {
-            tags.push_back({name, SegmentRole::None, std::nullopt});
+            tags.push_back({name, SegmentRole::None});
             tag = tags.end() - 1;
         }
-        if (role)
-            tag->role = *role;
-        if (posture)
-            tag->posture = *posture;
-        if (tag->role == SegmentRole::None && !tag->posture)
+        tag->role = role;
+        if (tag->role == SegmentRole::None)
             tags.erase(tag);
     }
     if (count == 0)
@@ -221,18 +203,6 @@ QString SegmentTableModel::roleDescription(SegmentRole role)
     return {};
 }
 
-QString SegmentTableModel::postureText(Posture posture)
-{
-    return posture == Posture::Independent ? tr("PI") : tr("PD");
-}
-
-QString SegmentTableModel::postureDescription(Posture posture)
-{
-    return posture == Posture::Independent
-               ? tr("Posture-independent: keeps its shape in every pose (skull, pelvis, thighs, hands); baked once.")
-               : tr("Posture-dependent: its shadows change with the pose (arms, spine, legs).");
-}
-
 QColor SegmentTableModel::roleColor(SegmentRole role)
 {
     switch (role) {
@@ -259,15 +229,12 @@ QVariant SegmentTableModel::data(const QModelIndex& index, int role) const
         return {};
     const SegmentRow& row = m_rows[std::size_t(index.row())];
     const SegmentRole segmentRole = this->role(index.row());
-    const Posture segmentPosture = posture(index.row());
-    const bool defaultPosture = !postureTagged(index.row());
     switch (role) {
     case Qt::DisplayRole:
         switch (index.column()) {
         case SegmentColumn: return row.name;
         case JointColumn: return row.joint.isEmpty() ? tr("(root)") : row.joint;
         case RoleColumn: return roleText(segmentRole);
-        case PostureColumn: return postureText(segmentPosture);
         case VerticesColumn: return QLocale().toString(qulonglong(row.vertices));
         case TrianglesColumn: return QLocale().toString(qulonglong(row.triangles));
         }
@@ -275,7 +242,6 @@ QVariant SegmentTableModel::data(const QModelIndex& index, int role) const
     case Qt::EditRole:
         switch (index.column()) {
         case RoleColumn: return int(segmentRole);
-        case PostureColumn: return int(segmentPosture);
         case VerticesColumn: return qulonglong(row.vertices);
         case TrianglesColumn: return qulonglong(row.triangles);
         default: return data(index, Qt::DisplayRole);
@@ -285,9 +251,8 @@ QVariant SegmentTableModel::data(const QModelIndex& index, int role) const
             return roleColor(segmentRole);
         break;
     case Qt::ForegroundRole:
-        // Values nobody set (role None, the body's default posture) recede; tags stand out.
-        if ((index.column() == RoleColumn && segmentRole == SegmentRole::None)
-            || (index.column() == PostureColumn && defaultPosture) || index.column() == VerticesColumn
+        // Values nobody set (role None) recede; tags stand out.
+        if ((index.column() == RoleColumn && segmentRole == SegmentRole::None) || index.column() == VerticesColumn
             || index.column() == TrianglesColumn)
             return QGuiApplication::palette().color(QPalette::PlaceholderText);
         break;
@@ -301,9 +266,6 @@ QVariant SegmentTableModel::data(const QModelIndex& index, int role) const
         case JointColumn:
             return tr("Segment %1 follows joint %2").arg(row.name, row.joint.isEmpty() ? tr("(root)") : row.joint);
         case RoleColumn: return roleText(segmentRole) + QStringLiteral(": ") + roleDescription(segmentRole);
-        case PostureColumn:
-            return postureDescription(segmentPosture)
-                   + (defaultPosture ? QStringLiteral(" ") + tr("(the body's default)") : QString());
         }
         break;
     default: break;
@@ -319,9 +281,7 @@ bool SegmentTableModel::setData(const QModelIndex& index, const QVariant& value,
     const int number = value.toInt(&ok);
     core::Result<void> done;
     if (index.column() == RoleColumn && ok && number >= 0 && number <= int(SegmentRole::Occluder))
-        done = applyTags({index.row()}, SegmentRole(number), std::nullopt);
-    else if (index.column() == PostureColumn && ok && number >= 0 && number <= int(Posture::Dependent))
-        done = applyTags({index.row()}, std::nullopt, Posture(number));
+        done = applyTags({index.row()}, SegmentRole(number));
     else
         return false;
     if (!done) {
@@ -340,7 +300,6 @@ QVariant SegmentTableModel::headerData(int section, Qt::Orientation orientation,
         case SegmentColumn: return tr("Segment");
         case JointColumn: return tr("Joint");
         case RoleColumn: return tr("Role");
-        case PostureColumn: return tr("Posture");
         case VerticesColumn: return tr("Vertices");
         case TrianglesColumn: return tr("Triangles");
         }
@@ -350,7 +309,6 @@ QVariant SegmentTableModel::headerData(int section, Qt::Orientation orientation,
         case JointColumn: return tr("The H-Anim joint whose frame the segment follows");
         case RoleColumn:
             return tr("Receiver: in shadow but casts none. Occluder: casts shadows, not lit. None: both.");
-        case PostureColumn: return tr("PI: posture-independent (rigid). PD: posture-dependent.");
         case VerticesColumn: return tr("Vertices of the segment");
         case TrianglesColumn: return tr("Triangles of the segment");
         }
@@ -365,7 +323,7 @@ Qt::ItemFlags SegmentTableModel::flags(const QModelIndex& index) const
     if (!index.isValid())
         return Qt::NoItemFlags;
     Qt::ItemFlags result = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
-    if (index.column() == RoleColumn || index.column() == PostureColumn)
+    if (index.column() == RoleColumn)
         result |= Qt::ItemIsEditable;
     return result;
 }

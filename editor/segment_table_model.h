@@ -1,14 +1,13 @@
 #pragma once
 // SegmentTableModel: the mesh segments of one character's body as a table — segment, H-Anim
-// joint, role (none / receiver / occluder), posture (PI / PD), vertex and triangle counts — for
+// joint, role (none / receiver / occluder), vertex and triangle counts — for
 // the segment tag editor (paper §6.1.3). Rows follow the body's segment order, so a row is also
 // the segment's index in the rendered body (ScenePreview's picks and highlights).
 //
-// The body comes from core::scenario::loadCharacterBody without the scenario's tags (so the
-// table knows each segment's default posture), and is cached per character of the document: it
-// is loaded again only when what decides it (skeleton level, model file, folder) changes. Roles
-// and postures shown are the document's segment tags over those defaults, read again after every
-// edit, undo and redo. Changing them — one cell (setData) or many rows at once (applyTags) —
+// The body comes from core::scenario::loadCharacterBody without the scenario's tags, and is
+// cached per character of the document: it is loaded again only when what decides it (skeleton
+// level, model file, folder) changes. Roles shown are the document's segment tags, read again
+// after every edit, undo and redo. Changing them — one cell (setData) or many rows at once (applyTags) —
 // pushes one undoable setSegmentTags edit to the document.
 
 #include <QAbstractTableModel>
@@ -17,7 +16,6 @@
 
 #include <cstdint>
 #include <map>
-#include <optional>
 #include <vector>
 
 #include "scene/character_mesh.h"
@@ -32,7 +30,7 @@ class Document;
 class SegmentTableModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { SegmentColumn, JointColumn, RoleColumn, PostureColumn, VerticesColumn, TrianglesColumn, ColumnCount };
+    enum Column { SegmentColumn, JointColumn, RoleColumn, VerticesColumn, TrianglesColumn, ColumnCount };
 
     explicit SegmentTableModel(QObject* parent = nullptr);
     ~SegmentTableModel() override;
@@ -53,28 +51,22 @@ public:
     QString segmentName(int row) const;
     QString jointName(int row) const;
     core::scene::SegmentRole role(int row) const;
-    core::scene::Posture posture(int row) const;
-    /// Whether the row's posture is set by a tag (false: the body's default).
-    bool postureTagged(int row) const;
 
-    /// Sets the role and / or the posture of the segments in `rows` as one undoable edit ("Tag 3
-    /// Segments"). A segment tagged back to role None without a posture of its own loses its tag.
-    /// Changing nothing pushes nothing. Errors (no document, a refused edit) say why.
-    core::Result<void> applyTags(const std::vector<int>& rows, std::optional<core::scene::SegmentRole> role,
-                                 std::optional<core::scene::Posture> posture);
+    /// Sets the role of the segments in `rows` as one undoable edit ("Tag 3 Segments"). A segment
+    /// tagged back to role None loses its tag. Changing nothing pushes nothing. Errors (no
+    /// document, a refused edit) say why.
+    core::Result<void> applyTags(const std::vector<int>& rows, core::scene::SegmentRole role);
 
     static QString roleText(core::scene::SegmentRole role);       ///< "None", "Receiver", "Occluder"
     static QString roleDescription(core::scene::SegmentRole role); ///< what the role does, one sentence
-    static QString postureText(core::scene::Posture posture);      ///< "PI", "PD"
-    static QString postureDescription(core::scene::Posture posture);
     /// The colour that stands for a role in the table and on the panel's buttons.
     static QColor roleColor(core::scene::SegmentRole role);
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
-    /// Display texts; EditRole of Role and Posture is the enum's integer value; tool tips.
+    /// Display texts; EditRole of Role is the enum's integer value; tool tips.
     QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
-    /// Role and Posture cells take the enum's integer value (EditRole); one undoable edit each.
+    /// Role cells take the enum's integer value (EditRole); one undoable edit each.
     bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
     QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
     Qt::ItemFlags flags(const QModelIndex& index) const override;
@@ -91,7 +83,6 @@ private:
         QString joint;
         std::uint32_t vertices = 0;
         std::uint32_t triangles = 0;
-        core::scene::Posture defaultPosture = core::scene::Posture::Dependent;
     };
     struct Body {
         std::string key; // what the body depends on (skeleton, model, folder)

@@ -53,9 +53,9 @@ void Session::setDocument(std::unique_ptr<Document> document)
     attachViews(m_document.get());
     emit documentChanged(m_document.get());
     // From the start; a clock already there says nothing, so the first poses are made here.
-    m_clock->setDuration(m_document ? m_document->previewDuration() : 0.0);
-    const double before = m_clock->time();
-    m_clock->seek(0.0);
+    m_clock->setDuration(m_document ? m_document->previewDuration() : 0);
+    const core::Tick before = m_clock->time();
+    m_clock->seek(0);
     if (m_clock->time() == before)
         tick();
 }
@@ -70,7 +70,7 @@ void Session::onDocumentEdited()
         ++m_runtimesSet;
     m_samples.reset();
     emit edited(replaced);
-    const double before = m_clock->time();
+    const core::Tick before = m_clock->time();
     m_clock->setDuration(m_document->previewDuration());
     if (m_clock->time() == before) // else the clamped time ticked already
         tick();
@@ -80,7 +80,7 @@ void Session::tick()
 {
     if (!m_stage)
         return;
-    const core::Tick now = core::secondsToTicks(m_clock->time());
+    const core::Tick now = m_clock->time();
     emit aboutToTick(now);
     m_stage->evaluate(now, m_poses);
     ++m_evaluations;

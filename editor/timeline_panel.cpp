@@ -73,7 +73,7 @@ TimelinePanel::TimelinePanel(QWidget* parent) : QWidget(parent)
     connect(m_snap, &QAction::toggled, m_view, &widgets::TimelineView::setSnapping);
 
     connect(m_view, &widgets::TimelineView::seekRequested, this,
-            [this](qint64 ticks) { emit seekRequested(core::ticksToSeconds(ticks)); });
+            [this](qint64 ticks) { emit seekRequested(ticks); });
     connect(m_view, &widgets::TimelineView::selectionChanged, this, [this](const QList<int>& ids) {
         const auto paths = pathsOf(ids);
         emit currentActionChanged(paths.empty() ? std::nullopt : std::optional<ActionPath>(paths.front()));
@@ -192,9 +192,9 @@ void TimelinePanel::setDocument(Document* document)
     m_view->frameAll();
 }
 
-void TimelinePanel::setTime(double seconds)
+void TimelinePanel::setTime(core::Tick time)
 {
-    m_playhead = core::secondsToTicks(seconds);
+    m_playhead = time;
     m_view->setPlayhead(m_playhead);
     m_view->ensureTimeVisible(m_playhead);
 }
@@ -260,7 +260,7 @@ void TimelinePanel::refresh()
     m_view->setTracks(std::move(tracks));
     m_view->setClips(std::move(clips));
     m_view->setMarkers(std::move(markers));
-    m_view->setDuration(m_document ? core::secondsToTicks(m_document->previewDuration()) : 0);
+    m_view->setDuration(m_document ? m_document->previewDuration() : 0);
     selectActions(selected);
     const bool open = m_document != nullptr;
     for (QAction* action : {m_delete, m_rippleDelete, m_copy, m_paste, m_duplicate, m_split})

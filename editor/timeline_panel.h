@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "edit/document_edits.h"
+#include "util/tick.h"
 
 class QAction;
 class QToolButton;
@@ -31,7 +32,7 @@ public:
 
     void setDocument(Document* document);
     /// The playback time shown by the playhead (seconds); the lanes scroll to keep it in view.
-    void setTime(double seconds);
+    void setTime(core::Tick time);
     /// Whole frames per second of snapping, trimming and the ruler (default 30).
     void setFrameRate(int framesPerSecond);
     /// The idle motion database (absolute path) an "Idle" dropped from the clip library plays.
@@ -55,7 +56,7 @@ public:
     QAction* snapAction() const { return m_snap; }
 
 signals:
-    void seekRequested(double seconds);
+    void seekRequested(core::Tick time);
     /// The first selected action (the curve editor shows it), or none.
     void currentActionChanged(std::optional<core::edit::ActionPath> action);
     void actionActivated(core::edit::ActionPath action);

@@ -203,7 +203,7 @@ def mask(name, weights, default=0.0):
 def scenario():
     creon = {
         # Creon stands on the left, turned towards Antigone.
-        "schema": "Character.3", "name": "Creon", "skeleton": "hanim-25", "position": [-0.55, 0.0, 0.0],
+        "schema": "Character.4", "name": "Creon", "skeleton": "hanim-25", "position": [-0.55, 0.0, 0.0],
         "heading": 25.0,
         "clips": [
             idle_synthesizer("creon_idle", seed=1),
@@ -237,7 +237,7 @@ def scenario():
         ],
     }
     antigone = {
-        "schema": "Character.3", "name": "Antigone", "skeleton": "hanim-25", "position": [0.55, 0.0, 0.0],
+        "schema": "Character.4", "name": "Antigone", "skeleton": "hanim-25", "position": [0.55, 0.0, 0.0],
         "heading": -25.0,
         "clips": [
             idle_synthesizer("antigone_idle", seed=2),
@@ -260,8 +260,8 @@ def scenario():
     }
     return {
         "format": "thespis-scenario",
-        "version": 5,
-        "schema": "Scenario.5",
+        "version": 6,
+        "schema": "Scenario.6",
         "name": "Antigone, act 1 (demo)",
         "duration": ticks(12.0),
         "masks": [

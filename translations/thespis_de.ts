@@ -2909,20 +2909,8 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
         <translation>Die ausgewählten Segmente als %1 markieren. %2</translation>
     </message>
     <message>
-        <source>Posture:</source>
-        <translation>Haltung:</translation>
-    </message>
-    <message>
-        <source>Mark the selected segments %1. %2</source>
-        <translation>Die ausgewählten Segmente als %1 kennzeichnen. %2</translation>
-    </message>
-    <message>
         <source>Occluder</source>
         <translation>Verdecker</translation>
-    </message>
-    <message>
-        <source>Posture</source>
-        <translation>Haltung</translation>
     </message>
     <message>
         <source>Vertices</source>
@@ -2979,32 +2967,12 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
         <translation>Wirft Schatten, wird aber selbst nicht beleuchtet: Dafür wird kein Transfer gebacken (Requisiten, Phantomgeometrie).</translation>
     </message>
     <message>
-        <source>PI</source>
-        <translation>PI</translation>
-    </message>
-    <message>
-        <source>PD</source>
-        <translation>PD</translation>
-    </message>
-    <message>
-        <source>Posture-independent: keeps its shape in every pose (skull, pelvis, thighs, hands); baked once.</source>
-        <translation>Haltungsunabhängig: behält in jeder Pose seine Form (Schädel, Becken, Oberschenkel, Hände); einmal gebacken.</translation>
-    </message>
-    <message>
-        <source>Posture-dependent: its shadows change with the pose (arms, spine, legs).</source>
-        <translation>Haltungsabhängig: seine Schatten ändern sich mit der Pose (Arme, Wirbelsäule, Beine).</translation>
-    </message>
-    <message>
         <source>(root)</source>
         <translation>(Wurzel)</translation>
     </message>
     <message>
         <source>Segment %1 follows joint %2</source>
         <translation>Segment %1 folgt Gelenk %2</translation>
-    </message>
-    <message>
-        <source>(the body&apos;s default)</source>
-        <translation>(Standard des Körpers)</translation>
     </message>
     <message>
         <source>Segment</source>
@@ -3017,10 +2985,6 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
     <message>
         <source>Role</source>
         <translation>Rolle</translation>
-    </message>
-    <message>
-        <source>Posture</source>
-        <translation>Haltung</translation>
     </message>
     <message>
         <source>Vertices</source>
@@ -3041,10 +3005,6 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
     <message>
         <source>Receiver: in shadow but casts none. Occluder: casts shadows, not lit. None: both.</source>
         <translation>Empfänger: im Schatten, wirft aber keinen. Verdecker: wirft Schatten, nicht beleuchtet. Keine: beides.</translation>
-    </message>
-    <message>
-        <source>PI: posture-independent (rigid). PD: posture-dependent.</source>
-        <translation>PI: haltungsunabhängig (starr). PD: haltungsabhängig.</translation>
     </message>
     <message>
         <source>Vertices of the segment</source>

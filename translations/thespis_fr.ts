@@ -2909,20 +2909,8 @@ Un point vert signale une action jouée à l’instant courant.</translation>
         <translation>Marquer les segments sélectionnés comme %1. %2</translation>
     </message>
     <message>
-        <source>Posture:</source>
-        <translation>Posture :</translation>
-    </message>
-    <message>
-        <source>Mark the selected segments %1. %2</source>
-        <translation>Marquer les segments sélectionnés %1. %2</translation>
-    </message>
-    <message>
         <source>Occluder</source>
         <translation>Occulteur</translation>
-    </message>
-    <message>
-        <source>Posture</source>
-        <translation>Posture</translation>
     </message>
     <message>
         <source>Vertices</source>
@@ -2979,32 +2967,12 @@ Un point vert signale une action jouée à l’instant courant.</translation>
         <translation>Projette des ombres sans être lui-même éclairé : aucun transfert n’est précalculé pour lui (accessoires, géométrie fantôme).</translation>
     </message>
     <message>
-        <source>PI</source>
-        <translation>PI</translation>
-    </message>
-    <message>
-        <source>PD</source>
-        <translation>PD</translation>
-    </message>
-    <message>
-        <source>Posture-independent: keeps its shape in every pose (skull, pelvis, thighs, hands); baked once.</source>
-        <translation>Indépendant de la posture : garde sa forme dans toutes les poses (crâne, bassin, cuisses, mains) ; précalculé une seule fois.</translation>
-    </message>
-    <message>
-        <source>Posture-dependent: its shadows change with the pose (arms, spine, legs).</source>
-        <translation>Dépendant de la posture : ses ombres changent avec la pose (bras, colonne, jambes).</translation>
-    </message>
-    <message>
         <source>(root)</source>
         <translation>(racine)</translation>
     </message>
     <message>
         <source>Segment %1 follows joint %2</source>
         <translation>Le segment %1 suit l’articulation %2</translation>
-    </message>
-    <message>
-        <source>(the body&apos;s default)</source>
-        <translation>(valeur par défaut du corps)</translation>
     </message>
     <message>
         <source>Segment</source>
@@ -3017,10 +2985,6 @@ Un point vert signale une action jouée à l’instant courant.</translation>
     <message>
         <source>Role</source>
         <translation>Rôle</translation>
-    </message>
-    <message>
-        <source>Posture</source>
-        <translation>Posture</translation>
     </message>
     <message>
         <source>Vertices</source>
@@ -3041,10 +3005,6 @@ Un point vert signale une action jouée à l’instant courant.</translation>
     <message>
         <source>Receiver: in shadow but casts none. Occluder: casts shadows, not lit. None: both.</source>
         <translation>Récepteur : reçoit les ombres sans en projeter. Occulteur : projette des ombres, non éclairé. Aucun : les deux.</translation>
-    </message>
-    <message>
-        <source>PI: posture-independent (rigid). PD: posture-dependent.</source>
-        <translation>PI : indépendant de la posture (rigide). PD : dépendant de la posture.</translation>
     </message>
     <message>
         <source>Vertices of the segment</source>

@@ -51,7 +51,7 @@ int validateScenario(const CommandSpec& spec, const core::scenario::Scenario& sc
         }
         std::printf("%s: valid. '%s': %zu character%s, %zu clip%s, %zu action%s, %.3f s.\n", path.string().c_str(),
                     scenario.name.c_str(), scenario.characters.size(), scenario.characters.size() == 1 ? "" : "s",
-                    clips, clips == 1 ? "" : "s", actions, actions == 1 ? "" : "s", runtime->duration);
+                    clips, clips == 1 ? "" : "s", actions, actions == 1 ? "" : "s", core::ticksToSeconds(runtime->duration));
     }
     return ExitOk;
 }

@@ -126,7 +126,7 @@ int main(int argc, char** argv)
             return;
         const bool opened = window.openScenario(scenario);
         if (opened)
-            window.clock()->seek(startTime);
+            window.clock()->seek(thespis::core::secondsToTicks(startTime));
         if (screenshot.isEmpty())
             return;
         // Give the window a moment to lay out and paint, then save it and quit.

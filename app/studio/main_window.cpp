@@ -113,7 +113,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     // The transport asks; the clock decides; everything shown follows the clock.
     connect(m_transport, &widgets::TransportBar::playRequested, m_clock, &editor::PlaybackClock::play);
     connect(m_transport, &widgets::TransportBar::pauseRequested, m_clock, &editor::PlaybackClock::pause);
-    connect(m_transport, &widgets::TransportBar::seekRequested, m_clock, &editor::PlaybackClock::seek);
+    connect(m_transport, &widgets::TransportBar::seekRequested, m_clock,
+            [this](double seconds) { m_clock->seek(core::secondsToTicks(seconds)); });
     connect(m_transport, &widgets::TransportBar::loopRequested, m_clock, &editor::PlaybackClock::setLooping);
     connect(m_clock, &editor::PlaybackClock::timeChanged, this, &MainWindow::onTimeChanged);
     connect(m_clock, &editor::PlaybackClock::playingChanged, this, &MainWindow::onPlayingChanged);
@@ -121,7 +122,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
         m_transport->setLooping(looping);
         m_loopAction->setChecked(looping);
     });
-    connect(m_clock, &editor::PlaybackClock::durationChanged, m_transport, &widgets::TransportBar::setDuration);
+    connect(m_clock, &editor::PlaybackClock::durationChanged, m_transport,
+            [this](core::Tick duration) { m_transport->setDuration(core::ticksToSeconds(duration)); });
     connect(m_transport, &widgets::TransportBar::stepRequested, m_clock, &editor::PlaybackClock::step);
     connect(m_transport, &widgets::TransportBar::frameRateRequested, this, &MainWindow::setFrameRate);
 
@@ -231,7 +233,7 @@ void MainWindow::createActions()
 
     m_toStartAction = new QAction(tr("Go to &Start"), this);
     m_toStartAction->setShortcut(Qt::Key_Home);
-    connect(m_toStartAction, &QAction::triggered, m_clock, [this] { m_clock->seek(0.0); });
+    connect(m_toStartAction, &QAction::triggered, m_clock, [this] { m_clock->seek(0); });
     addAction(m_toStartAction);
 
     m_toEndAction = new QAction(tr("Go to &End"), this);
@@ -466,7 +468,7 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> next)
     m_stepBackAction->setEnabled(open);
     m_stepForwardAction->setEnabled(open);
     m_loopAction->setEnabled(open);
-    m_transport->setDuration(m_clock->duration());
+    m_transport->setDuration(core::ticksToSeconds(m_clock->duration()));
     onTimeChanged(m_clock->time()); // the time shown everywhere, even when it did not change
 
     if (open) {
@@ -479,7 +481,7 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> next)
         QString summary = tr("Opened %1: %n character(s)", nullptr, int(document()->scenario().characters.size()))
                               .arg(document()->fileName()) +
                           tr(", %n action(s)", nullptr, actions) +
-                          tr(", %1 s long. Press Space to play.").arg(document()->previewDuration(), 0, 'f', 1);
+                          tr(", %1 s long. Press Space to play.").arg(core::ticksToSeconds(document()->previewDuration()), 0, 'f', 1);
         refreshMessages();
         if (const int warnings = m_messages->count() - (m_messages->item(0)->flags() == Qt::NoItemFlags ? 1 : 0); warnings > 0)
             summary += QLatin1Char(' ') + tr("%n warning(s): see Messages.", nullptr, warnings);
@@ -506,13 +508,13 @@ void MainWindow::onAbout()
                            .arg(QStringLiteral(THESPIS_VERSION)));
 }
 
-void MainWindow::onTimeChanged(double seconds)
+void MainWindow::onTimeChanged(core::Tick time)
 {
     // The time shown; what plays then is drawn by the Session's views at its tick.
-    m_transport->setTime(seconds);
-    m_model->setTime(seconds);
-    m_timeline->setTime(seconds);
-    m_curves->setTime(seconds);
+    m_transport->setTime(core::ticksToSeconds(time));
+    m_model->setTime(time);
+    m_timeline->setTime(time);
+    m_curves->setTime(time);
     ++m_framesSinceFps;
 }
 

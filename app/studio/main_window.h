@@ -19,6 +19,7 @@
 #include "editor/scene_preview.h"
 #include "editor/session.h"
 #include "editor/skeleton_view.h"
+#include "util/tick.h"
 
 class QAction;
 class QActionGroup;
@@ -143,7 +144,7 @@ private:
     void onOpen();
     void onReload();
     void onAbout();
-    void onTimeChanged(double seconds);
+    void onTimeChanged(core::Tick time);
     void onPlayingChanged(bool playing);
     void updateFps();
     void updateTitle();

@@ -257,7 +257,7 @@ void MainWindow::createEditorDocks()
     connect(m_curves, &editor::CurvePanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     connect(m_masks, &editor::JointMaskPanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     connect(m_properties, &editor::PropertiesPanel::problem, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
-    connect(m_timeline, &editor::TimelinePanel::seekRequested, m_clock, &editor::PlaybackClock::seek);
+    connect(m_timeline, &editor::TimelinePanel::seekRequested, m_clock, [this](core::Tick time) { m_clock->seek(time); });
     connect(m_timeline, &editor::TimelinePanel::currentActionChanged, this,
             [this](std::optional<core::edit::ActionPath> action) {
                 m_curves->setAction(action);

@@ -60,7 +60,7 @@ void MainWindow::onReload()
         return;
     // A copy: opening replaces the document that owns the path.
     const QString path = document()->filePath();
-    const double time = m_clock->time();
+    const core::Tick time = m_clock->time();
     if (openScenario(path))
         m_clock->seek(time);
 }

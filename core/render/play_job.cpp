@@ -41,7 +41,7 @@ public:
     }
     Result<void> writeRest(double scriptEnd) override
     {
-        const double end = std::max(m_shot.scene().duration(), scriptEnd);
+        const double end = std::max(ticksToSeconds(m_shot.scene().duration()), scriptEnd);
         const auto count = std::int64_t(std::floor(end * m_fps)) + 1;
         if (std::uint64_t(count) > m_context.progress().total) { // a script that outlasts the scenario
             m_context.beginStage(PlayJob::FramesStage, std::uint64_t(count));
@@ -135,8 +135,9 @@ private:
             return makeError(ErrorCode::Cancelled, "stopped");
         const ar::TrackedFrame seen = m_tracking.process(m_frame);
         m_tracked += seen.tracked ? 1 : 0;
-        const double duration = m_ar.scene().duration();
-        m_ar.scene().playAt(secondsToTicks(m_loop && duration > 0 ? std::fmod(m_frame.time, duration) : m_frame.time));
+        const Tick duration = m_ar.scene().duration();
+        const Tick videoTime = secondsToTicks(m_frame.time);
+        m_ar.scene().playAt(m_loop && duration > 0 ? videoTime % duration : videoTime);
         if (seen.hasPose)
             if (auto drawn = m_ar.compose(m_frame, seen.pose); !drawn)
                 return drawn;
@@ -250,7 +251,7 @@ Result<void> PlayJob::onItsOwn(JobContext& context)
     auto writer = ar::VideoWriter::create(output, picture.width, picture.height, fps);
     if (!writer)
         return writer.error();
-    context.beginStage(FramesStage, std::uint64_t(std::floor(shot.scene().duration() * fps)) + 1);
+    context.beginStage(FramesStage, std::uint64_t(std::floor(ticksToSeconds(shot.scene().duration()) * fps)) + 1);
     OwnFrames frameWriter(shot, **writer, fps, context, frames);
     return play(context, frameWriter, shot.scene().sharedStage());
 }

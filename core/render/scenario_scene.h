@@ -74,7 +74,7 @@ public:
     /// The stage the scene draws: scripts and the live runtime activate actions on it.
     runtime::Stage& stage() { return *m_stage; }
     const std::shared_ptr<runtime::Stage>& sharedStage() const { return m_stage; }
-    double duration() const { return runtime().duration; }
+    Tick duration() const { return runtime().duration; }
     /// Things worth telling the user (unmapped joints, characters whose skeleton shares few
     /// joints with their body, bake files left out); one sentence each.
     const std::vector<std::string>& warnings() const { return m_warnings; }

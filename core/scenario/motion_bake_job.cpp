@@ -68,7 +68,7 @@ Result<void> MotionBakeJob::run(JobContext& context)
     if (!end && runtime->duration <= 0)
         return makeError(ErrorCode::InvalidArgument,
                          "The scenario has no duration and no finite action; give the bake's end.");
-    const double last = end.value_or(runtime->duration);
+    const double last = end.value_or(ticksToSeconds(runtime->duration));
     if (last < start)
         return makeError(ErrorCode::InvalidArgument, "The bake starts (" + std::to_string(start)
                                                          + " s) after the scenario ends (" + std::to_string(last) + " s).");

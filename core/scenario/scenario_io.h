@@ -1,6 +1,6 @@
 #pragma once
 // Reading and writing scenario files (.thespis): JSON with
-//   {"format": "thespis-scenario", "version": N, "schema": "Scenario.5", …}
+//   {"format": "thespis-scenario", "version": N, "schema": "Scenario.6", …}
 // Readers accept every older version (upgrade steps run in order before parsing) and refuse
 // newer ones with ErrorCode::NewerVersion, never loading part of a file. Any malformed input
 // gets CorruptData naming the field path ("characters[0].layers[1].actions[2].start: expected an
@@ -27,7 +27,8 @@ enum Version : int {
                              ///< placement, loop root motion, character placement, probe rotation
     Scripts = 4,             ///< Python scripts kept in the scenario
     IdleMotion = 5,          ///< clips that are idle motion synthesizers
-    Current = IdleMotion,
+    NoPostureTags = 6,       ///< segment tags lost "posture" (PI / PD), which changed nothing
+    Current = NoPostureTags,
 };
 } // namespace format
 

@@ -273,7 +273,7 @@ bool isSkeletonSpec(const std::string& spec)
            || (spec.starts_with("clip:") && spec.size() > 5);
 }
 
-// {"name": "hair", "role": "receiver", "posture": "pi"}; role and posture are optional.
+// {"name": "hair", "role": "receiver"}; the role is optional.
 scene::SegmentTag readSegmentTag(const json& value, const std::string& path)
 {
     ObjectReader r(value, path, "");
@@ -285,15 +285,9 @@ scene::SegmentTag readSegmentTag(const json& value, const std::string& path)
             fail(r.fieldPath("role"), parsed.error().message);
         tag.role = *parsed;
     }
-    if (const std::string posture = r.string("posture", false); !posture.empty()) {
-        auto parsed = scene::parsePosture(posture);
-        if (!parsed)
-            fail(r.fieldPath("posture"), parsed.error().message);
-        tag.posture = *parsed;
-    }
     // Unknown members of a tag are not kept: a tag is a small closed record.
     if (!r.extra().empty())
-        fail(path + "." + r.extra().begin().key(), "unknown member of a segment tag (known: name, role, posture)");
+        fail(path + "." + r.extra().begin().key(), "unknown member of a segment tag (known: name, role)");
     return tag;
 }
 
@@ -352,7 +346,7 @@ ScriptSpec readScript(const json& value, const std::string& path)
 
 Character readCharacter(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Character.3");
+    ObjectReader r(value, path, "Character.4");
     Character character;
     character.name = r.name();
     character.skeleton = r.string("skeleton", false, "hanim-loa1");
@@ -434,7 +428,7 @@ NamedMask readMask(const json& value, const std::string& path)
 
 Scenario readScenario(const json& document)
 {
-    ObjectReader r(document, "", "Scenario.5");
+    ObjectReader r(document, "", "Scenario.6");
     r.find("format");  // checked before
     r.find("version");
     Scenario scenario;

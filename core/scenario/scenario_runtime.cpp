@@ -113,13 +113,13 @@ public:
 private:
     void setDuration(ScenarioRuntime& runtime) const
     {
-        runtime.duration = ticksToSeconds(m_scenario.duration);
+        runtime.duration = m_scenario.duration;
         if (m_scenario.duration == 0) {
             for (const CharacterRuntime& character : runtime.characters)
                 for (const auto& layer : character.layers)
                     for (const anim::ActionId id : layer->actionIds())
                         if (const double end = layer->endTime(id); std::isfinite(end))
-                            runtime.duration = std::max(runtime.duration, end);
+                            runtime.duration = std::max(runtime.duration, secondsToTicks(end));
         }
     }
 

@@ -64,7 +64,7 @@ struct CharacterRuntime {
 
 struct ScenarioRuntime {
     std::vector<CharacterRuntime> characters;
-    double duration = 0; ///< seconds: Scenario::duration, or the latest end of a finite action
+    Tick duration = 0; ///< Scenario::duration, or the latest end of a finite action
     const CharacterRuntime* findCharacter(const std::string& name) const;
 };
 

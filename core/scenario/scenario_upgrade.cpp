@@ -13,30 +13,38 @@ namespace thespis::core::scenario {
 
 namespace detail {
 
+// Renames an object's "schema" from `from` to `to`; anything else is left for the reader, which
+// names the field that is not an object.
+static void renameSchema(nlohmann::json& object, std::string_view from, std::string_view to)
+{
+    if (!object.is_object())
+        return;
+    const auto schema = object.find("schema");
+    if (schema != object.end() && schema->is_string() && schema->get_ref<const std::string&>() == from)
+        *schema = to;
+}
+
+// Calls `visit` on each item of the array `object[member]`, when there is one (a document of the
+// wrong shape is left as it is for the reader to name).
+template <class Visit> void forEachIn(nlohmann::json& object, const char* member, const Visit& visit)
+{
+    if (!object.is_object())
+        return;
+    const auto list = object.find(member);
+    if (list != object.end() && list->is_array())
+        for (nlohmann::json& item : *list)
+            visit(item);
+}
+
 // 1 → 2: layers gained mute / solo / lock, characters a gesticon, the scenario markers. All are
 // optional, so a version 1 document only needs the new schema names of the objects that changed.
 static Result<void> upgradeV1toV2(nlohmann::json& document)
 {
-    auto renameSchema = [](nlohmann::json& object, std::string_view from, std::string_view to) {
-        if (!object.is_object())
-            return; // the reader names the field that is not an object
-        const auto schema = object.find("schema");
-        if (schema != object.end() && schema->is_string() && schema->get_ref<const std::string&>() == from)
-            *schema = to;
-    };
     renameSchema(document, "Scenario.1", "Scenario.2");
-    const auto characters = document.find("characters");
-    if (characters == document.end() || !characters->is_array())
-        return {};
-    for (nlohmann::json& character : *characters) {
+    forEachIn(document, "characters", [](nlohmann::json& character) {
         renameSchema(character, "Character.1", "Character.2");
-        if (!character.is_object())
-            continue;
-        const auto layers = character.find("layers");
-        if (layers != character.end() && layers->is_array())
-            for (nlohmann::json& layer : *layers)
-                renameSchema(layer, "Layer.1", "Layer.2");
-    }
+        forEachIn(character, "layers", [](nlohmann::json& layer) { renameSchema(layer, "Layer.1", "Layer.2"); });
+    });
     return {};
 }
 
@@ -45,32 +53,17 @@ static Result<void> upgradeV1toV2(nlohmann::json& document)
 // All are optional: only the schema names of the objects that changed are new.
 static Result<void> upgradeV2toV3(nlohmann::json& document)
 {
-    const auto renameSchema = [](nlohmann::json& object, std::string_view from, std::string_view to) {
-        if (!object.is_object())
-            return;
-        const auto schema = object.find("schema");
-        if (schema != object.end() && schema->is_string() && schema->get_ref<const std::string&>() == from)
-            *schema = to;
-    };
-    const auto each = [](nlohmann::json& object, const char* member, const auto& visit) {
-        if (!object.is_object())
-            return;
-        const auto list = object.find(member);
-        if (list != object.end() && list->is_array())
-            for (nlohmann::json& item : *list)
-                visit(item);
-    };
     renameSchema(document, "Scenario.2", "Scenario.3");
     if (document.is_object())
         if (const auto lighting = document.find("lighting"); lighting != document.end())
             renameSchema(*lighting, "Lighting.1", "Lighting.2");
-    each(document, "characters", [&](nlohmann::json& character) {
+    forEachIn(document, "characters", [](nlohmann::json& character) {
         renameSchema(character, "Character.2", "Character.3");
-        each(character, "clips", [&](nlohmann::json& clip) { renameSchema(clip, "Clip.1", "Clip.2"); });
-        each(character, "layers", [&](nlohmann::json& layer) {
-            each(layer, "actions", [&](nlohmann::json& action) {
+        forEachIn(character, "clips", [](nlohmann::json& clip) { renameSchema(clip, "Clip.1", "Clip.2"); });
+        forEachIn(character, "layers", [](nlohmann::json& layer) {
+            forEachIn(layer, "actions", [](nlohmann::json& action) {
                 renameSchema(action, "Action.1", "Action.2");
-                each(action, "modifiers", [&](nlohmann::json& m) { renameSchema(m, "Modifier.1", "Modifier.2"); });
+                forEachIn(action, "modifiers", [](nlohmann::json& m) { renameSchema(m, "Modifier.1", "Modifier.2"); });
             });
         });
     });
@@ -80,10 +73,7 @@ static Result<void> upgradeV2toV3(nlohmann::json& document)
 // 3 → 4: scenarios may hold scripts (an optional list); only the scenario's schema is new.
 static Result<void> upgradeV3toV4(nlohmann::json& document)
 {
-    if (document.is_object())
-        if (const auto schema = document.find("schema");
-            schema != document.end() && schema->is_string() && schema->get_ref<const std::string&>() == "Scenario.3")
-            *schema = "Scenario.4";
+    renameSchema(document, "Scenario.3", "Scenario.4");
     return {};
 }
 
@@ -91,27 +81,25 @@ static Result<void> upgradeV3toV4(nlohmann::json& document)
 // clips' schemas are new.
 static Result<void> upgradeV4toV5(nlohmann::json& document)
 {
-    const auto renameSchema = [](nlohmann::json& object, std::string_view from, std::string_view to) {
-        if (!object.is_object())
-            return;
-        const auto schema = object.find("schema");
-        if (schema != object.end() && schema->is_string() && schema->get_ref<const std::string&>() == from)
-            *schema = to;
-    };
     renameSchema(document, "Scenario.4", "Scenario.5");
-    if (!document.is_object())
-        return {};
-    const auto characters = document.find("characters");
-    if (characters == document.end() || !characters->is_array())
-        return {};
-    for (nlohmann::json& character : *characters) {
-        if (!character.is_object())
-            continue;
-        const auto clips = character.find("clips");
-        if (clips != character.end() && clips->is_array())
-            for (nlohmann::json& clip : *clips)
-                renameSchema(clip, "Clip.2", "Clip.3");
-    }
+    forEachIn(document, "characters", [](nlohmann::json& character) {
+        forEachIn(character, "clips", [](nlohmann::json& clip) { renameSchema(clip, "Clip.2", "Clip.3"); });
+    });
+    return {};
+}
+
+// 5 → 6: segment tags lose "posture" ("pi" / "pd"): neither the bake nor the renderer ever read
+// it, so dropping it changes no result. The scenario's and the characters' schemas are new.
+static Result<void> upgradeV5toV6(nlohmann::json& document)
+{
+    renameSchema(document, "Scenario.5", "Scenario.6");
+    forEachIn(document, "characters", [](nlohmann::json& character) {
+        renameSchema(character, "Character.3", "Character.4");
+        forEachIn(character, "segments", [](nlohmann::json& tag) {
+            if (tag.is_object())
+                tag.erase("posture");
+        });
+    });
     return {};
 }
 
@@ -122,6 +110,7 @@ std::span<const UpgradeStep> upgradeSteps()
         {format::TimelineAndGesticon, "clip import options and placement", &upgradeV2toV3},
         {format::ImportAndPlacement, "scripts", &upgradeV3toV4},
         {format::Scripts, "idle motion clips", &upgradeV4toV5},
+        {format::IdleMotion, "segment tags without posture", &upgradeV5toV6},
     };
     return steps;
 }

@@ -243,7 +243,7 @@ ojson writeClip(const ClipAsset& clip)
 ojson writeCharacter(const Character& character)
 {
     ojson out = ojson::object();
-    out["schema"] = "Character.3";
+    out["schema"] = "Character.4";
     out["name"] = character.name;
     out["skeleton"] = character.skeleton;
     // Written only when set, so that scenarios without models stay as they were.
@@ -260,8 +260,6 @@ ojson writeCharacter(const Character& character)
             ojson entry = ojson::object();
             entry["name"] = tag.segment;
             entry["role"] = scene::segmentRoleName(tag.role);
-            if (tag.posture)
-                entry["posture"] = scene::postureName(*tag.posture);
             segments.push_back(std::move(entry));
         }
         out["segments"] = std::move(segments);
@@ -382,7 +380,7 @@ ojson writeScenario(const Scenario& scenario)
     ojson out = ojson::object();
     out["format"] = FormatName;
     out["version"] = int(format::Current);
-    out["schema"] = "Scenario.5";
+    out["schema"] = "Scenario.6";
     out["name"] = scenario.name;
     out["duration"] = scenario.duration;
     ojson masks = ojson::array();

@@ -8,7 +8,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "anim/hanim.h"
 #include "util/file_io.h"
 
 namespace thespis::core::scene {
@@ -30,37 +29,6 @@ Result<SegmentRole> parseSegmentRole(std::string_view name)
             return role;
     return makeError(ErrorCode::InvalidArgument,
                      "Unknown segment role \"" + std::string(name) + "\": use none, receiver or occluder.");
-}
-
-const char* postureName(Posture posture)
-{
-    return posture == Posture::Independent ? "pi" : "pd";
-}
-
-Result<Posture> parsePosture(std::string_view name)
-{
-    if (name == "pi")
-        return Posture::Independent;
-    if (name == "pd")
-        return Posture::Dependent;
-    return makeError(ErrorCode::InvalidArgument,
-                     "Unknown posture \"" + std::string(name) + "\": use pi (posture-independent) or pd (posture-dependent).");
-}
-
-Posture defaultPosture(std::string_view hanimJoint)
-{
-    // The paper's PI set by the H-Anim 2.0 joint that carries each segment: skull (skullbase),
-    // T1 (vt1) and the clavicles (l_/r_sternoclavicular), sacrum (humanoid_root), pelvis
-    // (sacroiliac), thighs (l_/r_hip) and hands (l_/r_radiocarpal). Finger joints are not in the
-    // set: fingers bend, so their segments deform with the posture. H-Anim 1.1 names
-    // ("HumanoidRoot", "l_wrist") are accepted too.
-    static constexpr std::string_view kIndependent[] = {
-        "skullbase", "vt1", "l_sternoclavicular", "r_sternoclavicular", "humanoid_root",
-        "sacroiliac", "l_hip", "r_hip", "l_radiocarpal", "r_radiocarpal"};
-    const std::string_view name = anim::hanim::fromHAnim11(hanimJoint);
-    return std::find(std::begin(kIndependent), std::end(kIndependent), name) != std::end(kIndependent)
-               ? Posture::Independent
-               : Posture::Dependent;
 }
 
 const Segment* CharacterMesh::findSegment(std::string_view name) const
@@ -136,8 +104,6 @@ Result<void> applySegmentTags(CharacterMesh& mesh, const std::vector<SegmentTag>
     for (const SegmentTag& tag : tags) {
         Segment* segment = mesh.findSegment(tag.segment);
         segment->role = tag.role;
-        if (tag.posture)
-            segment->posture = *tag.posture;
     }
     return {};
 }
@@ -157,7 +123,7 @@ Result<std::vector<SegmentTag>> readSegmentTagsFile(const std::filesystem::path&
     }
     if (!document.is_object())
         return makeError(ErrorCode::CorruptData,
-                         "The tags file " + file + " must hold a JSON object {\"segment\": {\"role\": …, \"posture\": …}}.");
+                         "The tags file " + file + " must hold a JSON object {\"segment\": {\"role\": …}}.");
 
     auto bad = [&](const std::string& member, const std::string& what) {
         return makeError(ErrorCode::CorruptData, "In the tags file " + file + ", \"" + member + "\" " + what);
@@ -174,24 +140,20 @@ Result<std::vector<SegmentTag>> readSegmentTagsFile(const std::filesystem::path&
         } else if (value.is_object()) {
             for (const auto& [key, field] : value.items()) {
                 const std::string member = name + "." + key;
-                if (key != "role" && key != "posture")
-                    return bad(member, "is not a tag member (use \"role\" and \"posture\").");
+                if (key == "posture")
+                    return bad(member, "is no longer a tag: posture-independent / -dependent tags never changed the "
+                                       "bake or the renderer and were removed; delete the member.");
+                if (key != "role")
+                    return bad(member, "is not a tag member (use \"role\").");
                 if (!field.is_string())
                     return bad(member, "must be a string.");
-                if (key == "role") {
-                    Result<SegmentRole> role = parseSegmentRole(field.get<std::string>());
-                    if (!role)
-                        return bad(member, "is wrong: " + role.error().message);
-                    tag.role = *role;
-                } else {
-                    Result<Posture> posture = parsePosture(field.get<std::string>());
-                    if (!posture)
-                        return bad(member, "is wrong: " + posture.error().message);
-                    tag.posture = *posture;
-                }
+                Result<SegmentRole> role = parseSegmentRole(field.get<std::string>());
+                if (!role)
+                    return bad(member, "is wrong: " + role.error().message);
+                tag.role = *role;
             }
         } else {
-            return bad(name, "must be a role string or an object {\"role\": …, \"posture\": …}.");
+            return bad(name, "must be a role string or an object {\"role\": …}.");
         }
         tags.push_back(std::move(tag));
     }

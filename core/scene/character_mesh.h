@@ -7,7 +7,6 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,17 +24,9 @@ using anim::Vec3d;
 /// M′, transparent to rays); an occluder casts but receives none (in M′, no transfer baked);
 /// None both casts and receives.
 enum class SegmentRole : std::uint8_t { None, Receiver, Occluder };
-/// Posture-independent segments keep their shape whatever the pose (skull, T1 and clavicles,
-/// sacrum, pelvis, thighs, hands); posture-dependent ones deform with it.
-enum class Posture : std::uint8_t { Independent, Dependent };
 
 const char* segmentRoleName(SegmentRole role); ///< "none", "receiver", "occluder"
 Result<SegmentRole> parseSegmentRole(std::string_view name);
-const char* postureName(Posture posture);     ///< "pi", "pd"
-Result<Posture> parsePosture(std::string_view name);
-
-/// The paper's default posture-independent set, by H-Anim joint name of the segment.
-Posture defaultPosture(std::string_view hanimJoint);
 
 struct Segment {
     std::string name;          ///< unique within the character (mesh node name, or joint name)
@@ -49,7 +40,6 @@ struct Segment {
     Quatd bindRotation;
     Vec3d bindTranslation;
     SegmentRole role = SegmentRole::None;
-    Posture posture = Posture::Dependent;
 };
 
 /// Vertices and triangles are grouped by segment: segment s owns vertices
@@ -71,11 +61,10 @@ struct CharacterMesh {
 };
 
 /// Segment tags as users give them (scenario file or `--tags` JSON file: an object
-/// {"segment name": {"role": "receiver", "posture": "pi"}, …} or {"name": "receiver", …}).
+/// {"segment name": {"role": "receiver"}, …} or {"name": "receiver", …}).
 struct SegmentTag {
     std::string segment;
     SegmentRole role = SegmentRole::None;
-    std::optional<Posture> posture; ///< unset: keep the mesh's (default) posture
     bool operator==(const SegmentTag&) const = default;
 };
 

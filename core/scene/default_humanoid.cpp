@@ -504,9 +504,6 @@ Result<Character> makeDefaultHumanoid(const DefaultHumanoidOptions& options)
         segment.firstVertex = std::uint32_t(mesh.positions.size());
         segment.firstTriangle = std::uint32_t(mesh.triangleCount());
         segment.bindTranslation = restPosition(segment.joint);
-        // The hair is rigid and rides on the skull, so like the skull its shape does not
-        // depend on the posture: posture-independent.
-        segment.posture = hair ? Posture::Independent : defaultPosture(segment.joint);
         for (const Piece& piece : pieces) {
             if (piece.joint != joint || piece.hair != hair)
                 continue;

@@ -235,7 +235,7 @@ Result<anim::Skeleton> buildSkeleton(const Import& import, const std::vector<glt
 }
 
 /// Points every segment at the skeleton joint at or above the node it follows (the root when
-/// none is), with that joint's default posture; returns the joint of each segment.
+/// none is); returns the joint of each segment.
 std::vector<int> followJoints(const Import& import, const std::vector<gltf::SegmentSource>& sources,
                               Character& character)
 {
@@ -249,7 +249,6 @@ std::vector<int> followJoints(const Import& import, const std::vector<gltf::Segm
             }
         Segment& segment = character.mesh.segments[s];
         segment.joint = character.skeleton.joint(segmentJoint[s]).name;
-        segment.posture = defaultPosture(segment.joint);
         if (sources[s].mixedMaterials)
             mixed.push_back(segment.name);
     }

@@ -21,8 +21,7 @@
 // joint and by material, so that every segment has one material). Split segments are named
 // after their joint's (mapped) name; Segment.joint is the skeleton joint a segment follows (its
 // joint when split from a skinned mesh, the nearest joint above a mesh node, the skin's root
-// joint for an unsplit skinned mesh, the root when none), and its posture is the paper's default
-// for that joint. When a mesh is skinned, every vertex has weights: the skinned ones as the file
+// joint for an unsplit skinned mesh, the root when none). When a mesh is skinned, every vertex has weights: the skinned ones as the file
 // gives them (normalized; 4 or 8 influences as the file needs), those of rigid mesh nodes weight 1
 // on their segment's joint. Texture coordinates are the set the base colour texture reads.
 // Materials: every glTF material, same indices, with its base colour factor (glTF's default is

@@ -433,7 +433,6 @@ std::size_t MeshBuilder::builderFor(Key key, const std::string& baseName, const 
     builder.segment.joint = joint;
     builder.segment.bindRotation = rotationOf(frame);
     builder.segment.bindTranslation = {frame[12], frame[13], frame[14]};
-    builder.segment.posture = defaultPosture(joint);
     builder.source = source;
     m_builders.push_back(std::move(builder));
     m_builderByKey.emplace(key, m_builders.size() - 1);

@@ -358,7 +358,7 @@ void bindEdit(py::module_& m)
             return unwrap(edit::setSegmentTags(scenario, character, std::move(tags)));
         },
         "scenario"_a, "character"_a, "tags"_a,
-        "Sets the receiver / occluder and posture tags (thespis.scene.SegmentTag) of a character's segments.");
+        "Sets the receiver / occluder tags (thespis.scene.SegmentTag) of a character's segments.");
     e.def(
         "set_character_bake",
         [](const Scenario& scenario, int character, std::string path) {

@@ -451,8 +451,9 @@ void bindScenarioRuntime(py::module_& m)
 
     py::class_<ScenarioRuntime>(m, "ScenarioRuntime", "Runnable schedules for every character of a scenario.")
         .def_readonly("characters", &ScenarioRuntime::characters)
-        .def_readonly("duration", &ScenarioRuntime::duration,
-                      "Seconds: the scenario's duration, or the latest end of a finite action.")
+        .def_property_readonly(
+            "duration", [](const ScenarioRuntime& runtime) { return core::ticksToSeconds(runtime.duration); },
+            "Seconds: the scenario's duration, or the latest end of a finite action.")
         .def("find_character", &ScenarioRuntime::findCharacter, "name"_a, py::return_value_policy::reference_internal);
 }
 

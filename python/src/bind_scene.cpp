@@ -51,22 +51,15 @@ void bindScene(py::module_& m)
         .value("NONE", SegmentRole::None)
         .value("RECEIVER", SegmentRole::Receiver)
         .value("OCCLUDER", SegmentRole::Occluder);
-    py::enum_<Posture>(s, "Posture", "Posture-independent (skull, pelvis, hands, …) or posture-dependent segment.")
-        .value("INDEPENDENT", Posture::Independent)
-        .value("DEPENDENT", Posture::Dependent);
 
     py::class_<SegmentTag>(s, "SegmentTag", "Tags for one segment, by name.")
-        .def(py::init([](std::string segment, SegmentRole role, std::optional<Posture> posture) {
-                 return SegmentTag{std::move(segment), role, posture};
-             }),
-             "segment"_a, "role"_a = SegmentRole::None, "posture"_a = std::nullopt)
+        .def(py::init([](std::string segment, SegmentRole role) { return SegmentTag{std::move(segment), role}; }),
+             "segment"_a, "role"_a = SegmentRole::None)
         .def_readwrite("segment", &SegmentTag::segment)
         .def_readwrite("role", &SegmentTag::role)
-        .def_readwrite("posture", &SegmentTag::posture, "None keeps the segment's own posture.")
         .def("__eq__", [](const SegmentTag& a, const SegmentTag& b) { return a == b; })
         .def("__repr__", [](const SegmentTag& t) {
-            return "<thespis.scene.SegmentTag '" + t.segment + "' " + segmentRoleName(t.role)
-                   + (t.posture ? std::string(" ") + postureName(*t.posture) : std::string()) + ">";
+            return "<thespis.scene.SegmentTag '" + t.segment + "' " + segmentRoleName(t.role) + ">";
         });
 
     py::class_<Segment>(s, "Segment", "One mesh segment: its vertex and triangle ranges, bind frame and tags.")
@@ -79,10 +72,9 @@ void bindScene(py::module_& m)
         .def_readonly("bind_rotation", &Segment::bindRotation, "World rotation (x, y, z, w) of the bind frame.")
         .def_readonly("bind_translation", &Segment::bindTranslation)
         .def_readonly("role", &Segment::role)
-        .def_readonly("posture", &Segment::posture)
         .def("__repr__", [](const Segment& seg) {
             return "<thespis.scene.Segment '" + seg.name + "' " + std::to_string(seg.vertexCount) + " vertices, "
-                   + segmentRoleName(seg.role) + ", " + postureName(seg.posture) + ">";
+                   + segmentRoleName(seg.role) + ">";
         });
 
     py::class_<CharacterMesh>(s, "CharacterMesh",
@@ -108,7 +100,7 @@ void bindScene(py::module_& m)
             "name"_a, "A copy of the segment called `name`, or None.")
         .def(
             "apply_tags", [](CharacterMesh& mesh, const std::vector<SegmentTag>& tags) { unwrap(applySegmentTags(mesh, tags)); },
-            "tags"_a, "Sets roles and postures by segment name; an unknown name raises ValueError and changes nothing.")
+            "tags"_a, "Sets roles by segment name; an unknown name raises ValueError and changes nothing.")
         .def("validate", [](const CharacterMesh& mesh) { unwrap(mesh.validate()); },
              "Raises ValueError naming what breaks the mesh's invariants.")
         .def("__repr__", [](const CharacterMesh& mesh) {
@@ -161,7 +153,7 @@ void bindScene(py::module_& m)
             "vertices × influences weights, summing to 1 per vertex")
         .def("apply_tags",
              [](Character& c, const std::vector<SegmentTag>& tags) { unwrap(applySegmentTags(c.mesh, tags)); }, "tags"_a,
-             "Sets roles and postures of the mesh's segments by name (ValueError on an unknown name).")
+             "Sets the roles of the mesh's segments by name (ValueError on an unknown name).")
         .def(
             "skin",
             [](const Character& c, const py::array_t<float, py::array::c_style | py::array::forcecast>& frame,
@@ -212,8 +204,6 @@ void bindScene(py::module_& m)
         "{source name: H-Anim name}), skin, segments, materials and animations as clips.");
     s.def("automatic_hanim_name", &automaticHAnimName, "source_name"_a,
           "The H-Anim name the automatic mapping gives a joint name ('' when it knows none).");
-    s.def("default_posture", &defaultPosture, "hanim_joint"_a,
-          "The paper's posture-independent set: INDEPENDENT for skull, T1, clavicles, sacrum, pelvis, thighs, hands.");
 }
 
 } // namespace thespis::python

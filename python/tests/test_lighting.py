@@ -155,7 +155,7 @@ def test_robot_loads_with_segments(robot):
 def test_tags_apply_by_name_or_fail_whole(robot):
     mesh = scene.load_gltf_mesh(need(ROBOT))
     name = mesh.segments[1].name
-    mesh.apply_tags([scene.SegmentTag(name, scene.SegmentRole.RECEIVER, scene.Posture.INDEPENDENT)])
+    mesh.apply_tags([scene.SegmentTag(name, scene.SegmentRole.RECEIVER)])
     assert mesh.find_segment(name).role == scene.SegmentRole.RECEIVER
     with pytest.raises(ValueError, match="nobody"):
         mesh.apply_tags([scene.SegmentTag(mesh.segments[2].name, scene.SegmentRole.OCCLUDER),

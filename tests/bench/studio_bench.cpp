@@ -280,9 +280,9 @@ void StudioTick(benchmark::State& state)
     StudioViews views;
     if (!views.open(state, nullptr, true))
         return;
-    const double step = 1.0 / 60, duration = views.clock.duration();
+    const core::Tick step = core::ticksPerFrame(60), duration = views.clock.duration();
     const std::uint64_t evaluations = views.session.stage()->ticks(), skinnings = views.skinnings();
-    double t = 0;
+    core::Tick t = 0;
     for (auto _ : state) {
         t += step;
         if (t > duration)
@@ -316,9 +316,9 @@ void ScrubToFrame(benchmark::State& state)
     timeline.setDocument(views.session.document());
     QObject::connect(&views.clock, &editor::PlaybackClock::timeChanged, &timeline, &editor::TimelinePanel::setTime);
     core::render::RgbaImage frame;
-    double t = 0;
+    core::Tick t = 0;
     for (auto _ : state) {
-        t += 0.37; // a scrub jumps: no two frames alike
+        t += core::secondsToTicks(0.37); // a scrub jumps: no two frames alike
         if (t > views.clock.duration())
             t -= views.clock.duration();
         views.clock.seek(t);
@@ -340,7 +340,7 @@ void DragStep(benchmark::State& state)
     if (!views.open(state, std::move(document), false))
         return;
     editor::Document& edited = *views.session.document();
-    views.clock.seek(3.0);
+    views.clock.seek(3 * core::TicksPerSecond);
     // An action in the middle of the first character's first track, dragged back and forth.
     const int middle = int(edited.scenario().characters[0].layers[0].actions.size()) / 2;
     const core::edit::ActionPath dragged{0, 0, middle};

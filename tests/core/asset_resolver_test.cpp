@@ -77,7 +77,7 @@ TEST(FolderResolver, AScenarioBuildsFromTheFolderItsNamesAreRelativeTo)
 
     auto runtime = scenario::buildRuntime(s, Assets(thespis::test::sharedData()));
     ASSERT_TRUE(runtime.ok()) << runtime.error().message;
-    EXPECT_GT(runtime->duration, 1.0);
+    EXPECT_GT(runtime->duration, TicksPerSecond);
     EXPECT_TRUE(scenario::validateScenario(s, Assets(thespis::test::sharedData())).empty());
 
     // From another folder the same names find nothing, and the errors name what was looked for.

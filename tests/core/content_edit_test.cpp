@@ -64,7 +64,7 @@ TEST(ContentEdits, CharactersComeAndGo)
 TEST(ContentEdits, ANewModelDropsTheOldOnesTagsAndBake)
 {
     Scenario s = withWalker();
-    s.characters[0].segmentTags = {{"hair", scene::SegmentRole::Receiver, std::nullopt}};
+    s.characters[0].segmentTags = {{"hair", scene::SegmentRole::Receiver}};
     s.characters[0].bake = "bakes/old.prt";
     auto body = setCharacterBody(s, 0, "characters/CesiumMan/CesiumMan.glb", "model");
     ASSERT_TRUE(body.ok());

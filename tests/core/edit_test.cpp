@@ -118,7 +118,7 @@ TEST(Edit, EveryKindOfChangeRoundTrips)
     expectRoundTrip(s, *renameMask(s, 0, "neck and head"));
     expectRoundTrip(s, *addGesture(s, 1, Gesture{"wave hello", "wave", "leftArm", Second / 4, Second / 4, true}));
     expectRoundTrip(s, *removeGesture(s, {0, 0}));
-    scene::SegmentTag tag{"l_hand", scene::SegmentRole::Receiver, std::nullopt};
+    scene::SegmentTag tag{"l_hand", scene::SegmentRole::Receiver};
     expectRoundTrip(s, *setSegmentTags(s, 0, {tag}));
     expectRoundTrip(s, *setCharacterBake(s, 1, "bakes/demo-Antigone-dsm-o5-0123abcd.prt"));
     EXPECT_EQ(s.characters[1].bake, "bakes/demo-Antigone-dsm-o5-0123abcd.prt");

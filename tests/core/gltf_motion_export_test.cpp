@@ -92,7 +92,7 @@ Expected expectedFrames(const Scenario& scenario, const Assets& assets)
     const std::size_t from = body.skeleton.frameLayout()->floatCount(), to = model->skeleton.frameLayout()->floatCount();
     Expected expected{model->skeleton, {}};
     std::vector<float> source(from), target(to);
-    for (int i = 0; i <= int(runtime->duration * kFps + 1e-6); ++i) {
+    for (int i = 0; i <= int(ticksToSeconds(runtime->duration) * kFps + 1e-6); ++i) {
         body.body->evaluate(double(i) / kFps, source);
         retarget.apply(source, target);
         expected.frames.insert(expected.frames.end(), target.begin(), target.end());

@@ -1,5 +1,5 @@
 // The procedural default humanoid (core/scene/default_humanoid.h): valid at every H-Anim level,
-// H-Anim segment names and the paper's PI/PD tags, closed outward-facing surfaces with seams that
+// H-Anim segment names with no role tags, closed outward-facing surfaces with seams that
 // stay shut, smooth skin weights, a hair shell a few millimetres above the skull (paper Fig. 14),
 // left/right symmetry, proportions, determinism.
 
@@ -165,7 +165,7 @@ TEST(DefaultHumanoid, NamesSegmentsAfterHAnimBodySegments)
     }
 }
 
-TEST(DefaultHumanoid, TagsFollowThePapersDefaults)
+TEST(DefaultHumanoid, SegmentsFollowTheirJointsUntagged)
 {
     for (Level level : kLevels) {
         SCOPED_TRACE(levelName(level));
@@ -173,18 +173,11 @@ TEST(DefaultHumanoid, TagsFollowThePapersDefaults)
         const std::vector<Vec3d> rest = character.skeleton.worldPositions(character.skeleton.restFrame());
         for (const Segment& s : character.mesh.segments) {
             EXPECT_EQ(s.role, SegmentRole::None) << s.name;
-            EXPECT_EQ(s.posture, defaultPosture(s.joint)) << s.name;
             EXPECT_EQ(s.bindRotation, Quatd::identity()) << s.name;
             const Vec3d joint = rest[std::size_t(character.skeleton.find(s.joint))];
             EXPECT_LT(length(s.bindTranslation - joint), 1e-9) << s.name;
         }
     }
-    const Character character = makeHumanoid(Level::Subset25);
-    for (const char* name : {"skull", "hair", "t1", "l_clavicle", "r_clavicle", "sacrum", "pelvis", "l_thigh", "r_thigh",
-                             "l_carpal", "r_carpal"})
-        EXPECT_EQ(segment(character, name).posture, Posture::Independent) << name;
-    for (const char* name : {"l5", "t6", "c4", "l_calf", "l_upperarm", "l_forearm", "l_talus"})
-        EXPECT_EQ(segment(character, name).posture, Posture::Dependent) << name;
 }
 
 TEST(DefaultHumanoid, DressesTheFigureWithFiveMaterials)

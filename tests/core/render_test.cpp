@@ -287,7 +287,7 @@ TEST(ScenarioScene, UsesTheCharactersBakeFileOnlyWhileItFitsTheBody)
         {"missing file", [](scenario::Scenario& d) { d.characters[1].bake = "bakes/gone.prt"; }, "does not exist"},
         {"not a bake", [](scenario::Scenario& d) { d.characters[1].bake = "bakes/garbage.prt"; }, "not a Thespis bake file"},
         {"tags changed since", [](scenario::Scenario& d) {
-             d.characters[1].segmentTags = {{"hair", scene::SegmentRole::Receiver, std::nullopt}};
+             d.characters[1].segmentTags = {{"hair", scene::SegmentRole::Receiver}};
          }, "was baked as none and is now tagged receiver"},
     };
     ASSERT_EQ(antigone, 1u);

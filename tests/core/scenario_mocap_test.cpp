@@ -129,7 +129,7 @@ Seen watch(render::ScenarioScene& scene)
     const double step = 0.1;
 #endif
     int frames = 0, grounded = 0;
-    for (double t = 0; t <= scene.duration(); t += step) {
+    for (double t = 0; t <= core::ticksToSeconds(scene.duration()); t += step) {
         scene.playAt(core::secondsToTicks(t));
         const double lowest = lowestFoot() - floor;
         if (t == 0) {

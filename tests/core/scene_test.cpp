@@ -181,23 +181,11 @@ TEST(CharacterMesh, ValidateNamesWhatIsBroken)
     }
 }
 
-TEST(CharacterMesh, DefaultPostureIsThePapersSet)
-{
-    for (const char* joint : {"skullbase", "vt1", "l_sternoclavicular", "r_sternoclavicular", "humanoid_root",
-                              "sacroiliac", "l_hip", "r_hip", "l_radiocarpal", "r_radiocarpal", "l_wrist", "HumanoidRoot"})
-        EXPECT_EQ(defaultPosture(joint), Posture::Independent) << joint;
-    for (const char* joint : {"l_elbow", "r_knee", "vc4", "l_shoulder", "l_metacarpophalangeal_2", "", "Head"})
-        EXPECT_EQ(defaultPosture(joint), Posture::Dependent) << joint;
-}
-
-TEST(CharacterMesh, RoleAndPostureNamesRoundTrip)
+TEST(CharacterMesh, RoleNamesRoundTrip)
 {
     for (SegmentRole role : {SegmentRole::None, SegmentRole::Receiver, SegmentRole::Occluder})
         EXPECT_EQ(*parseSegmentRole(segmentRoleName(role)), role);
-    for (Posture posture : {Posture::Independent, Posture::Dependent})
-        EXPECT_EQ(*parsePosture(postureName(posture)), posture);
     EXPECT_FALSE(parseSegmentRole("caster").ok());
-    EXPECT_FALSE(parsePosture("PI").ok());
 }
 
 // ---- files the tests write --------------------------------------------------------------------
@@ -402,12 +390,12 @@ using SegmentTags = ScratchFolder;
 TEST_F(SegmentTags, ReadsBothForms)
 {
     const Result<std::vector<SegmentTag>> tags = readSegmentTagsFile(write(
-        "tags.json", R"({"hair": "receiver", "Head": {"role": "occluder", "posture": "pi"}, "arm": {"posture": "pd"}})"));
+        "tags.json", R"({"hair": "receiver", "Head": {"role": "occluder"}, "arm": {}})"));
     ASSERT_TRUE(tags.ok()) << describe(tags.error());
     const std::vector<SegmentTag> expected = {
-        {"hair", SegmentRole::Receiver, std::nullopt},
-        {"Head", SegmentRole::Occluder, Posture::Independent},
-        {"arm", SegmentRole::None, Posture::Dependent},
+        {"hair", SegmentRole::Receiver},
+        {"Head", SegmentRole::Occluder},
+        {"arm", SegmentRole::None},
     };
     EXPECT_EQ(*tags, expected);
 }
@@ -420,7 +408,7 @@ TEST_F(SegmentTags, ErrorsNameTheFileAndTheMember)
     };
     for (const Case& c : {Case{R"({"hair": "caster"})", "hair"}, Case{R"({"hair": {"role": 3}})", "hair.role"},
                           Case{R"({"hair": {"colour": "red"}})", "hair.colour"},
-                          Case{R"({"hair": {"posture": "sometimes"}})", "hair.posture"}, Case{R"({"hair": 1})", "hair"}}) {
+                          Case{R"({"hair": {"posture": "pi"}})", "hair.posture"}, Case{R"({"hair": 1})", "hair"}}) {
         const Result<std::vector<SegmentTag>> tags = readSegmentTagsFile(write("bad_tags.json", c.json));
         ASSERT_FALSE(tags.ok()) << c.json;
         EXPECT_NE(tags.error().message.find("bad_tags.json"), std::string::npos) << tags.error().message;
@@ -440,12 +428,11 @@ TEST(SegmentTagsApply, AppliesByNameAndRefusesUnknownSegments)
     Result<CharacterMesh> mesh =
         loadGltfMesh(sharedData("characters/RobotExpressive/RobotExpressive.glb"), {.splitSkinnedByJoint = false});
     ASSERT_TRUE(mesh.ok());
-    ASSERT_TRUE(applySegmentTags(*mesh, {{"Head", SegmentRole::Receiver, Posture::Independent}}).ok());
+    ASSERT_TRUE(applySegmentTags(*mesh, {{"Head", SegmentRole::Receiver}}).ok());
     EXPECT_EQ(mesh->findSegment("Head")->role, SegmentRole::Receiver);
-    EXPECT_EQ(mesh->findSegment("Head")->posture, Posture::Independent);
 
     const Result<void> unknown =
-        applySegmentTags(*mesh, {{"Torso", SegmentRole::Occluder, std::nullopt}, {"Tail", SegmentRole::None, std::nullopt}});
+        applySegmentTags(*mesh, {{"Torso", SegmentRole::Occluder}, {"Tail", SegmentRole::None}});
     ASSERT_FALSE(unknown.ok());
     EXPECT_NE(unknown.error().message.find("\"Tail\""), std::string::npos);
     EXPECT_NE(unknown.error().detail.find("Torso"), std::string::npos);

@@ -28,8 +28,8 @@ const scene::CharacterMesh* taggedRobot()
             scene::loadGltfMesh(thespis::test::sharedData("characters/RobotExpressive/RobotExpressive.glb"));
         if (!loaded || loaded->segments.size() < 5)
             return std::nullopt;
-        const std::vector<scene::SegmentTag> tags = {{loaded->segments[1].name, scene::SegmentRole::Occluder, {}},
-                                                     {loaded->segments[3].name, scene::SegmentRole::Receiver, {}}};
+        const std::vector<scene::SegmentTag> tags = {{loaded->segments[1].name, scene::SegmentRole::Occluder},
+                                                     {loaded->segments[3].name, scene::SegmentRole::Receiver}};
         if (!scene::applySegmentTags(*loaded, tags))
             return std::nullopt;
         return std::move(loaded).value();

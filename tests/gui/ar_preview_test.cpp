@@ -446,7 +446,7 @@ void ArPreviewTest::aScriptShowsInEveryViewAndOverTheVideo()
     // The script: Creon's gesticon gesture "greet" and Antigone's body clip "wave", from now.
     auto* script = m_window->findChild<editor::ScriptPanel*>();
     QVERIFY(script);
-    m_window->clock()->seek(1.0);
+    m_window->clock()->seek(core::secondsToTicks(1.0));
     script->setSource(QStringLiteral("animService.activateAction_body('Creon', 'greet')\n"
                                      "animService.activateAction_body('Antigone', 'wave')\n"));
     script->run();
@@ -454,7 +454,7 @@ void ArPreviewTest::aScriptShowsInEveryViewAndOverTheVideo()
     QVERIFY2(script->output().indexOf(QStringLiteral("Error")) < 0, qPrintable(script->output()));
     // At a moment the gesture and the clip play (their fades done), the transport paused there.
     m_window->clock()->pause();
-    m_window->clock()->seek(2.0);
+    m_window->clock()->seek(core::secondsToTicks(2.0));
     const core::runtime::PoseSet shown = session->poses();
     QCOMPARE(shown.time, core::secondsToTicks(2.0));
     core::runtime::Stage& stage = *session->stage();
@@ -505,7 +505,7 @@ void ArPreviewTest::aScriptShowsInEveryViewAndOverTheVideo()
     std::vector<std::uint64_t> skinned;
     for (std::size_t c = 0; c < preview->scene()->scene().characterCount(); ++c)
         skinned.push_back(preview->scene()->scene().character(c).poseCount());
-    m_window->clock()->seek(2.5);
+    m_window->clock()->seek(core::secondsToTicks(2.5));
     QCOMPARE(stage.ticks(), evaluations + 1);
     for (std::size_t c = 0; c < skinned.size(); ++c)
         QCOMPARE(preview->scene()->scene().character(c).poseCount(), skinned[c] + 1);
@@ -528,8 +528,8 @@ void ArPreviewTest::onTheVideosTimeThePlayheadFollowsTheVideo()
     QTRY_VERIFY_WITH_TIMEOUT(p->shownFrame() >= 30 || !p->isRunning(), kTimeout);
     QVERIFY(p->isRunning());
     QVERIFY(!m_window->clock()->isPlaying());
-    QCOMPARE(m_window->clock()->time(), core::ticksToSeconds(p->lastSnapshot().videoTime));
-    QVERIFY(std::abs(m_window->clock()->time() - double(p->shownFrame()) / 30.0) < 1e-6);
+    QCOMPARE(m_window->clock()->time(), p->lastSnapshot().videoTime);
+    QCOMPARE(m_window->clock()->time(), p->shownFrame() * core::ticksPerFrame(30));
     const core::Tick drawnAt = p->lastSnapshot().poses.time;
     QTRY_VERIFY_WITH_TIMEOUT(p->lastSnapshot().poses.time > drawnAt || !p->isRunning(), kTimeout);
     QVERIFY(p->lastSnapshot().poses.time <= p->lastSnapshot().videoTime);

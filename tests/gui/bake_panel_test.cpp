@@ -213,8 +213,8 @@ void BakePanelTest::completedBakeIsOneUndoStepTheSceneUses()
     editor::ScenePreview preview(&viewport);
     preview.setSession(m_session.get());
     QVERIFY2(preview.problem().isEmpty(), qPrintable(preview.problem()));
-    m_clock.setDuration(10);
-    m_clock.seek(1.5);
+    m_clock.setDuration(core::secondsToTicks(10));
+    m_clock.seek(core::secondsToTicks(1.5));
     auto previewOrder = [&] { return preview.scene()->scene().character(std::size_t(m_antigone)).transferOrder(); };
     QCOMPARE(previewOrder(), 3);
 
@@ -289,7 +289,7 @@ void BakePanelTest::completedBakeIsOneUndoStepTheSceneUses()
 
     // A tag edit that changes what shadows what makes the DSM bake stale: the panel says so and the
     // scene falls back to DU with a warning naming the character and the file.
-    const std::vector<core::scene::SegmentTag> tags{{"hair", core::scene::SegmentRole::Receiver, std::nullopt}};
+    const std::vector<core::scene::SegmentTag> tags{{"hair", core::scene::SegmentRole::Receiver}};
     QVERIFY(m_document->edit(core::edit::setSegmentTags(m_document->scenario(), m_antigone, tags), QStringLiteral("Tag")));
     QVERIFY2(panel.currentBakeText().contains(QStringLiteral("stale")), qPrintable(panel.currentBakeText()));
     saveScreenshot(&panel, QStringLiteral("bake_panel_stale.png"));
@@ -325,7 +325,7 @@ void BakePanelTest::bakeOfACharacterEditedMeanwhileIsThrownAway()
     panel.start();
     QVERIFY(panel.isRunning());
     // The result can only arrive through the event loop, so this edit lands while it bakes.
-    const std::vector<core::scene::SegmentTag> tags{{"hair", core::scene::SegmentRole::Receiver, std::nullopt}};
+    const std::vector<core::scene::SegmentTag> tags{{"hair", core::scene::SegmentRole::Receiver}};
     QVERIFY(m_document->edit(core::edit::setSegmentTags(m_document->scenario(), m_antigone, tags), QStringLiteral("Tag")));
     const core::scenario::Scenario tagged = m_document->scenario();
     QTRY_VERIFY_WITH_TIMEOUT(finished.result.has_value(), 60000);

@@ -256,7 +256,7 @@ void BringContentTest::fromNothingToARenderedScenarioAndBack()
         QTRY_VERIFY_WITH_TIMEOUT(!preview->isLightLoading(), 60000);
         QVERIFY2(preview->warnings().filter(QStringLiteral("probe")).isEmpty(), qPrintable(preview->warnings().join(u'\n')));
     }
-    m_window->clock()->seek(1.0);
+    m_window->clock()->seek(core::secondsToTicks(1.0));
     QApplication::processEvents();
     saveScreenshot(m_window.get(), QStringLiteral("content_6_built.png"));
 

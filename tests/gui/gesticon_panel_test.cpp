@@ -399,7 +399,7 @@ void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
     const core::anim::TimeDomain wave = creon.clips.at("wave")->domain();
     const double length = wave.end - wave.start;
     QVERIFY(length > 1.5 && length < 6);
-    const double start = 0.2, during = start + 1.0;
+    const core::Tick start = core::secondsToTicks(0.2), during = start + core::TicksPerSecond;
     // The document's pose during the gesture: the session's at that time, before any preview.
     clock.seek(during);
     const std::vector<float> documentFrame = session.poses().characters[0].body;
@@ -411,14 +411,14 @@ void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
     clock.seek(start);
 
     const std::string live = "greet (gesture preview)";
-    const auto previewShown = [&] { return *stage.isPlaying("Creon", core::runtime::Track::Body, live, core::secondsToTicks(clock.time())); };
+    const auto previewShown = [&] { return *stage.isPlaying("Creon", core::runtime::Track::Body, live, clock.time()); };
     panel->preview();
     QVERIFY(panel->isPreviewing());
     QVERIFY(previewShown()); // a live action on the session's stage
     QVERIFY(clock.isPlaying());
     QCOMPARE(panel->previewButton()->text(), QStringLiteral("Stop"));
     QVERIFY(!clock.isLooping());
-    QVERIFY(clock.duration() >= start + length - 1e-6);
+    QVERIFY(clock.duration() >= start + core::secondsToTicks(length) - 1);
     QVERIFY(document->scenario() == original); // a preview edits nothing
     QCOMPARE(document->undoStack()->count(), 0);
     // Every view shows the document plus the gesture: the session's poses, and the 3D view.
@@ -426,11 +426,11 @@ void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
     QVERIFY(panel->isPreviewing());
     {
         const std::vector<float>& frame = session.poses().characters[0].body;
-        const double t = clock.time();
+        const core::Tick t = clock.time();
         // The document's pose at the same moment, from a stage of its own.
         core::runtime::Stage reference(stage.runtimeCopy());
         core::runtime::PoseSet expected = reference.makePoseSet();
-        reference.evaluate(core::secondsToTicks(t), expected);
+        reference.evaluate(t, expected);
         const std::vector<float>& authored = expected.characters[0].body;
         const double rightShoulder = angleBetween(rotationOf(creon, frame, "r_shoulder"), rotationOf(creon, authored, "r_shoulder"));
         const double hip = angleBetween(rotationOf(creon, frame, "l_hip"), rotationOf(creon, authored, "l_hip"));

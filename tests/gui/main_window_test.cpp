@@ -106,7 +106,7 @@ void MainWindowTest::showsTheScenarioInTitleAndStatusBar()
     QCOMPARE(fileLabel->text(), QFileInfo(m_scenarioPath).fileName());
     QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("Press Space to play")));
     QCOMPARE(m_window->poseView()->figureCount(), int(scenario.characters.size()));
-    QCOMPARE(m_window->transportBar()->duration(), m_window->document()->previewDuration());
+    QCOMPARE(m_window->transportBar()->duration(), thespis::core::ticksToSeconds(m_window->document()->previewDuration()));
 }
 
 void MainWindowTest::outlineListsCharactersAndActions()
@@ -144,7 +144,7 @@ void MainWindowTest::outlineListsCharactersAndActions()
 void MainWindowTest::spacePlaysAndPauses()
 {
     thespis::editor::PlaybackClock* clock = m_window->clock();
-    clock->seek(0.0);
+    clock->seek(0);
     const std::vector<QVector3D> before = allPositions(*m_window->poseView());
     QVERIFY(!before.empty());
 
@@ -156,18 +156,18 @@ void MainWindowTest::spacePlaysAndPauses()
     QVERIFY(clock->isPlaying());
     QVERIFY(m_window->transportBar()->isPlaying());
     QTest::qWait(600);
-    QVERIFY2(clock->time() > 0.3, qPrintable(QString::number(clock->time())));
+    QVERIFY2(clock->time() > thespis::core::secondsToTicks(0.3), qPrintable(QString::number(clock->time())));
     const std::vector<QVector3D> during = allPositions(*m_window->poseView());
     QVERIFY2(largestDifference(before, during) > 1e-4f, "the figures should move while playing");
     // The transport shows the clock's time.
-    QCOMPARE(m_window->transportBar()->time(), clock->time());
+    QCOMPARE(m_window->transportBar()->time(), thespis::core::ticksToSeconds(clock->time()));
     auto* fps = m_window->findChild<QLabel*>(QStringLiteral("fpsLabel"));
     QVERIFY2(fps->text().contains(QStringLiteral("fps")), qPrintable(fps->text()));
 
     QTest::keyClick(m_window->outlineView(), Qt::Key_Space);
     QVERIFY(!clock->isPlaying());
     QVERIFY(!m_window->transportBar()->isPlaying());
-    const double paused = clock->time();
+    const thespis::core::Tick paused = clock->time();
     QTest::qWait(100);
     QCOMPARE(clock->time(), paused);
     QCOMPARE(fps->text(), QStringLiteral("Paused"));
@@ -177,7 +177,7 @@ void MainWindowTest::sliderSeeks()
 {
     auto* slider = m_window->transportBar()->findChild<QSlider*>(QStringLiteral("timeSlider"));
     QVERIFY(slider);
-    m_window->clock()->seek(0.0);
+    m_window->clock()->seek(0);
     const std::vector<QVector3D> atStart = allPositions(*m_window->poseView());
 
     // Drag the handle from the start to about 60 % of the groove.
@@ -189,8 +189,8 @@ void MainWindowTest::sliderSeeks()
         QTest::mouseMove(slider, from + (to - from) * step / 6);
     QTest::mouseRelease(slider, Qt::LeftButton, {}, to);
 
-    const double duration = m_window->document()->previewDuration();
-    const double time = m_window->clock()->time();
+    const double duration = thespis::core::ticksToSeconds(m_window->document()->previewDuration());
+    const double time = thespis::core::ticksToSeconds(m_window->clock()->time());
     QVERIFY2(std::abs(time - 0.6 * duration) < 0.05 * duration,
              qPrintable(QStringLiteral("seeked to %1 of %2 s").arg(time).arg(duration)));
     QVERIFY(!m_window->clock()->isPlaying());
@@ -287,7 +287,7 @@ void MainWindowTest::viewportShowsTheCharactersLit()
     QVERIFY2(viewport->glErrorText().isEmpty(), qPrintable(viewport->glErrorText()));
     QVERIFY(m_window->scenePreview()->scene());
     QCOMPARE(m_window->scenePreview()->scene()->scene().characterCount(), m_window->document()->scenario().characters.size());
-    m_window->clock()->seek(1.0);
+    m_window->clock()->seek(thespis::core::secondsToTicks(1.0));
     const QImage prt = viewport->grabFramebuffer();
     const QRgb clear = prt.pixel(2, 2);
     const int samples = (prt.width() / 2) * (prt.height() / 2);
@@ -303,7 +303,7 @@ void MainWindowTest::viewportShowsTheCharactersLit()
     QCOMPARE(viewport->grabFramebuffer(), prt);
 
     // Playing moves the characters in the viewport too.
-    m_window->clock()->seek(3.0);
+    m_window->clock()->seek(thespis::core::secondsToTicks(3.0));
     QVERIFY(viewport->grabFramebuffer() != prt);
 }
 
@@ -313,11 +313,11 @@ void MainWindowTest::savesAScreenshot()
     QVERIFY(m_window->openScenario(m_scenarioPath));
     // The moment where the figures move farthest from their first pose (someone waves), so
     // that the picture shows the blending at work.
-    const double duration = m_window->document()->previewDuration();
+    const double duration = thespis::core::ticksToSeconds(m_window->document()->previewDuration());
     double best = 0, bestTime = 0;
     std::vector<QVector3D> first;
     for (double t = 0; t <= duration; t += 0.25) {
-        m_window->clock()->seek(t);
+        m_window->clock()->seek(thespis::core::secondsToTicks(t));
         const std::vector<QVector3D> pose = allPositions(*m_window->poseView());
         if (first.empty())
             first = pose;
@@ -326,7 +326,7 @@ void MainWindowTest::savesAScreenshot()
             bestTime = t;
         }
     }
-    m_window->clock()->seek(bestTime);
+    m_window->clock()->seek(thespis::core::secondsToTicks(bestTime));
     QTest::qWait(100);
     const QString dir = QStringLiteral(THESPIS_SCREENSHOT_DIR);
     QVERIFY(QDir().mkpath(dir));

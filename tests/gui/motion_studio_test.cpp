@@ -193,7 +193,7 @@ void MotionStudioTest::postureChartShowsTheComponentsOfThePose()
 
     // At the height of Creon's hand-keyed wave, and while he only idles.
     const double waving = 3.0, idling = 0.5;
-    m_window->clock()->seek(waving);
+    m_window->clock()->seek(core::secondsToTicks(waving));
     QApplication::processEvents();
     const std::vector<float> wave = componentsAt(waving);
     QCOMPARE(panel->components().size(), std::size_t(45));
@@ -211,7 +211,7 @@ void MotionStudioTest::postureChartShowsTheComponentsOfThePose()
     const double keyed = energyFrom(wave, 20), captured = energyFrom(componentsAt(idling), 20);
     qInfo("energy above PC 20: waving %.2f %%, idling %.2f %%", 100 * keyed, 100 * captured);
     QVERIFY2(keyed > 2 * captured, qPrintable(QStringLiteral("%1 %2").arg(keyed).arg(captured)));
-    m_window->clock()->seek(idling);
+    m_window->clock()->seek(core::secondsToTicks(idling));
     QApplication::processEvents();
     QCOMPARE(panel->components()[0], std::abs(componentsAt(idling)[0]));
 

@@ -128,7 +128,7 @@ void PackageStudioTest::exportOpenAndSaveAPackage()
     QCOMPARE(document->fileName(), QStringLiteral("antigone.thespkg"));
     QCOMPARE(document->scenario(), original);
     QCOMPARE(m_window->findChild<QLabel*>(QStringLiteral("fileLabel"))->text(), QStringLiteral("antigone.thespkg"));
-    m_window->clock()->seek(3.0);
+    m_window->clock()->seek(core::secondsToTicks(3.0));
     QTest::qWait(200);
     saveScreenshot(m_window.get(), QStringLiteral("package_opened.png"));
 

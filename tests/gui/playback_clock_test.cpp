@@ -1,15 +1,20 @@
-// PlaybackClock: real-time playback, pause, seek, loop and the end of the timeline.
+// PlaybackClock: real-time playback, pause, seek, loop and the end of the timeline, in ticks.
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTest>
 
-#include <cmath>
-#include <limits>
 
 #include "editor/playback_clock.h"
 
+using thespis::core::Tick;
+using thespis::core::TicksPerSecond;
 using thespis::editor::PlaybackClock;
+
+namespace {
+Tick ticks(double seconds) { return thespis::core::secondsToTicks(seconds); }
+double seconds(Tick ticks) { return thespis::core::ticksToSeconds(ticks); }
+} // namespace
 
 class PlaybackClockTest : public QObject {
     Q_OBJECT
@@ -28,7 +33,7 @@ private slots:
 void PlaybackClockTest::playsInRealTime()
 {
     PlaybackClock clock;
-    clock.setDuration(10.0);
+    clock.setDuration(ticks(10.0));
     QSignalSpy playing(&clock, &PlaybackClock::playingChanged);
     QSignalSpy times(&clock, &PlaybackClock::timeChanged);
     QElapsedTimer beforePlay, afterPlay;
@@ -43,21 +48,21 @@ void PlaybackClockTest::playsInRealTime()
     const double atMost = double(beforePlay.nsecsElapsed()) * 1e-9;
     // The time follows the wall clock, whatever the number of ticks that were delivered: it was
     // started between the two timers and read at pause().
-    QVERIFY2(clock.time() >= atLeast && clock.time() <= atMost,
-             qPrintable(QStringLiteral("clock %1 s, wall %2 … %3 s").arg(clock.time()).arg(atLeast).arg(atMost)));
+    QVERIFY2(seconds(clock.time()) >= atLeast && seconds(clock.time()) <= atMost,
+             qPrintable(QStringLiteral("clock %1 s, wall %2 … %3 s").arg(seconds(clock.time())).arg(atLeast).arg(atMost)));
     for (int i = 1; i < times.count(); ++i)
-        QVERIFY(times.at(i).at(0).toDouble() > times.at(i - 1).at(0).toDouble());
+        QVERIFY(times.at(i).at(0).value<Tick>() > times.at(i - 1).at(0).value<Tick>());
 }
 
 void PlaybackClockTest::pauseHoldsTheTime()
 {
     PlaybackClock clock;
-    clock.setDuration(10.0);
+    clock.setDuration(ticks(10.0));
     clock.play();
     QTest::qWait(100);
     clock.pause();
     QVERIFY(!clock.isPlaying());
-    const double paused = clock.time();
+    const Tick paused = clock.time();
     QVERIFY(paused > 0);
     QTest::qWait(100);
     QCOMPARE(clock.time(), paused);
@@ -70,50 +75,48 @@ void PlaybackClockTest::pauseHoldsTheTime()
 void PlaybackClockTest::seekClampsIntoTheTimeline()
 {
     PlaybackClock clock;
-    clock.setDuration(10.0);
+    clock.setDuration(ticks(10.0));
     QSignalSpy times(&clock, &PlaybackClock::timeChanged);
-    clock.seek(3.5);
-    QCOMPARE(clock.time(), 3.5);
+    clock.seek(ticks(3.5));
+    QCOMPARE(clock.time(), ticks(3.5));
     QCOMPARE(times.count(), 1);
-    QCOMPARE(times.at(0).at(0).toDouble(), 3.5);
-    clock.seek(-2.0);
-    QCOMPARE(clock.time(), 0.0);
-    clock.seek(25.0);
-    QCOMPARE(clock.time(), 10.0);
-    clock.seek(std::numeric_limits<double>::quiet_NaN());
-    QCOMPARE(clock.time(), 10.0);
-    // Shortening the timeline pulls the playhead in.
-    clock.setDuration(4.0);
-    QCOMPARE(clock.time(), 4.0);
+    QCOMPARE(times.at(0).at(0).value<Tick>(), ticks(3.5));
+    clock.seek(ticks(-2.0));
+    QCOMPARE(clock.time(), ticks(0.0));
+    clock.seek(ticks(25.0));
+    QCOMPARE(clock.time(), ticks(10.0));
+        // Shortening the timeline pulls the playhead in.
+    clock.setDuration(ticks(4.0));
+    QCOMPARE(clock.time(), ticks(4.0));
 }
 
 void PlaybackClockTest::seekWhilePlayingContinuesFromThere()
 {
     PlaybackClock clock;
-    clock.setDuration(10.0);
+    clock.setDuration(ticks(10.0));
     clock.play();
     QTest::qWait(50);
     QElapsedTimer beforeSeek, afterSeek;
     beforeSeek.start();
-    clock.seek(6.0);
+    clock.seek(ticks(6.0));
     afterSeek.start();
     QVERIFY(clock.isPlaying());
     QTest::qWait(150);
     const double atLeast = 6.0 + double(afterSeek.nsecsElapsed()) * 1e-9;
     clock.pause();
     const double atMost = 6.0 + double(beforeSeek.nsecsElapsed()) * 1e-9;
-    QVERIFY2(clock.time() >= atLeast && clock.time() <= atMost,
-             qPrintable(QStringLiteral("clock %1 s, expected %2 … %3 s").arg(clock.time()).arg(atLeast).arg(atMost)));
+    QVERIFY2(seconds(clock.time()) >= atLeast && seconds(clock.time()) <= atMost,
+             qPrintable(QStringLiteral("clock %1 s, expected %2 … %3 s").arg(seconds(clock.time())).arg(atLeast).arg(atMost)));
 }
 
 void PlaybackClockTest::stopsAtTheEnd()
 {
     PlaybackClock clock;
-    clock.setDuration(0.2);
+    clock.setDuration(ticks(0.2));
     QSignalSpy playing(&clock, &PlaybackClock::playingChanged);
     clock.play();
     QTRY_VERIFY_WITH_TIMEOUT(!clock.isPlaying(), 2000);
-    QCOMPARE(clock.time(), 0.2);
+    QCOMPARE(clock.time(), ticks(0.2));
     QCOMPARE(playing.count(), 2);
     QCOMPARE(playing.at(1).at(0).toBool(), false);
 }
@@ -121,18 +124,18 @@ void PlaybackClockTest::stopsAtTheEnd()
 void PlaybackClockTest::playAtTheEndStartsOver()
 {
     PlaybackClock clock;
-    clock.setDuration(5.0);
-    clock.seek(5.0);
+    clock.setDuration(ticks(5.0));
+    clock.seek(ticks(5.0));
     clock.play();
     QVERIFY(clock.isPlaying());
-    QVERIFY(clock.time() < 0.1);
+    QVERIFY(clock.time() < ticks(0.1));
     clock.pause();
 }
 
 void PlaybackClockTest::loopsOverTheTimeline()
 {
     PlaybackClock clock;
-    clock.setDuration(0.15);
+    clock.setDuration(ticks(0.15));
     QSignalSpy looping(&clock, &PlaybackClock::loopingChanged);
     clock.setLooping(true);
     clock.setLooping(true);
@@ -141,7 +144,7 @@ void PlaybackClockTest::loopsOverTheTimeline()
     auto wraps = [&times] {
         int count = 0;
         for (int i = 1; i < times.count(); ++i)
-            if (times.at(i).at(0).toDouble() < times.at(i - 1).at(0).toDouble())
+            if (times.at(i).at(0).value<Tick>() < times.at(i - 1).at(0).value<Tick>())
                 ++count;
         return count;
     };
@@ -150,8 +153,8 @@ void PlaybackClockTest::loopsOverTheTimeline()
     QVERIFY(clock.isPlaying());
     clock.pause();
     for (int i = 0; i < times.count(); ++i) {
-        const double t = times.at(i).at(0).toDouble();
-        QVERIFY(t >= 0.0 && t < 0.15);
+        const Tick t = times.at(i).at(0).value<Tick>();
+        QVERIFY(t >= 0 && t < ticks(0.15));
     }
 }
 
@@ -160,8 +163,8 @@ void PlaybackClockTest::doesNotPlayAnEmptyTimeline()
     PlaybackClock clock;
     clock.play();
     QVERIFY(!clock.isPlaying());
-    clock.setDuration(std::numeric_limits<double>::infinity());
-    QCOMPARE(clock.duration(), 0.0);
+    clock.setDuration(-TicksPerSecond);
+    QCOMPARE(clock.duration(), Tick(0));
     clock.play();
     QVERIFY(!clock.isPlaying());
 }
@@ -169,23 +172,23 @@ void PlaybackClockTest::doesNotPlayAnEmptyTimeline()
 void PlaybackClockTest::stepsWholeFrames()
 {
     PlaybackClock clock;
-    clock.setDuration(2.0);
+    clock.setDuration(ticks(2.0));
     clock.setFrameRate(25);
     clock.step(1);
-    QCOMPARE(clock.time(), 0.04);
+    QCOMPARE(clock.time(), ticks(0.04));
     clock.step(3);
-    QCOMPARE(clock.time(), 4 / 25.0);
-    clock.seek(0.5 + 0.01); // inside frame 12: back lands on its start, forward on 13
+    QCOMPARE(clock.time(), ticks(4 / 25.0));
+    clock.seek(ticks(0.5 + 0.01)); // inside frame 12: back lands on its start, forward on 13
     clock.step(-1);
-    QCOMPARE(clock.time(), 12 / 25.0);
+    QCOMPARE(clock.time(), ticks(12 / 25.0));
     clock.step(-1);
-    QCOMPARE(clock.time(), 11 / 25.0);
+    QCOMPARE(clock.time(), ticks(11 / 25.0));
     clock.step(-100);
-    QCOMPARE(clock.time(), 0.0);
-    clock.seek(1.99);
+    QCOMPARE(clock.time(), ticks(0.0));
+    clock.seek(ticks(1.99));
     clock.step(5);
-    QCOMPARE(clock.time(), 2.0);
-    clock.seek(0.0);
+    QCOMPARE(clock.time(), ticks(2.0));
+    clock.seek(ticks(0.0));
     clock.play();
     QVERIFY(clock.isPlaying());
     clock.step(1); // stepping pauses

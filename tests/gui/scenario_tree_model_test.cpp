@@ -10,6 +10,7 @@
 #include "editor/translations.h"
 #include "fixture_scenario.h"
 
+using namespace thespis;
 using thespis::editor::Document;
 using thespis::editor::ScenarioTreeModel;
 
@@ -97,7 +98,7 @@ void ScenarioTreeModelTest::listsCharactersLayersAndActions()
 void ScenarioTreeModelTest::isAConsistentItemModel()
 {
     QAbstractItemModelTester tester(m_model.get(), QAbstractItemModelTester::FailureReportingMode::QtTest);
-    m_model->setTime(1.0);
+    m_model->setTime(core::secondsToTicks(1.0));
     m_model->setDocument(nullptr);
     m_model->setDocument(m_document.get());
 }
@@ -110,11 +111,11 @@ void ScenarioTreeModelTest::marksActionsPlayingAtATime()
     const QModelIndex bow = m_model->index(0, 0, m_model->index(0, 0, m_model->index(1, 0)));
     QSignalSpy changed(m_model.get(), &QAbstractItemModel::dataChanged);
 
-    m_model->setTime(0.0);
+    m_model->setTime(core::secondsToTicks(0.0));
     QVERIFY(!raise.data(ScenarioTreeModel::ActiveRole).toBool());
     QCOMPARE(changed.count(), 0); // nothing plays at 0, nothing changed
 
-    m_model->setTime(0.75); // raise plays over [0.5, 1.5]
+    m_model->setTime(core::secondsToTicks(0.75)); // raise plays over [0.5, 1.5]
     QVERIFY(raise.data(ScenarioTreeModel::ActiveRole).toBool());
     QVERIFY(!raiseAgain.data(ScenarioTreeModel::ActiveRole).toBool());
     QVERIFY(!bow.data(ScenarioTreeModel::ActiveRole).toBool());
@@ -123,12 +124,12 @@ void ScenarioTreeModelTest::marksActionsPlayingAtATime()
     QVERIFY(raise.data(Qt::FontRole).value<QFont>().bold());
 
     changed.clear();
-    m_model->setTime(1.2); // raise and bow ([1.0, 2.5])
+    m_model->setTime(core::secondsToTicks(1.2)); // raise and bow ([1.0, 2.5])
     QVERIFY(raise.data(ScenarioTreeModel::ActiveRole).toBool());
     QVERIFY(bow.data(ScenarioTreeModel::ActiveRole).toBool());
     QCOMPARE(changed.count(), 1);
 
-    m_model->setTime(3.9); // everything has ended
+    m_model->setTime(core::secondsToTicks(3.9)); // everything has ended
     QVERIFY(!raise.data(ScenarioTreeModel::ActiveRole).toBool());
     QVERIFY(!raiseAgain.data(ScenarioTreeModel::ActiveRole).toBool());
     QVERIFY(!bow.data(ScenarioTreeModel::ActiveRole).toBool());
@@ -152,7 +153,7 @@ void ScenarioTreeModelTest::emptiesWithoutADocument()
     m_model->setDocument(nullptr);
     QCOMPARE(reset.count(), 1);
     QCOMPARE(m_model->rowCount(), 0);
-    m_model->setTime(1.0); // no document: nothing to do, no crash
+    m_model->setTime(core::secondsToTicks(1.0)); // no document: nothing to do, no crash
 }
 
 QTEST_MAIN(ScenarioTreeModelTest)

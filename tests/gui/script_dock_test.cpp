@@ -123,7 +123,7 @@ void ScriptDockTest::thePapersScriptPlaysWhileTheViewPlays()
     bool sawLiveWave = false;
     QTRY_VERIFY_WITH_TIMEOUT((sawLiveWave = sawLiveWave || *scene->stage().isPlaying(
                                   "Antigone", Track::Body, "antigone_wave",
-                                  core::secondsToTicks(m_window->clock()->time())),
+                                  m_window->clock()->time()),
                               !panel()->isRunning()),
                              20000);
     QVERIFY(sawLiveWave);
@@ -144,7 +144,7 @@ void ScriptDockTest::stopEndsAScriptStuckInAWaitAndTheViewPlaysOn()
     QCOMPARE(panel()->findChild<QLabel*>(QStringLiteral("scriptStatus"))->text(), QStringLiteral("Stopped."));
     // The view was never held up: it plays on after the stop.
     QVERIFY(m_window->clock()->isPlaying());
-    const double before = m_window->clock()->time();
+    const core::Tick before = m_window->clock()->time();
     QTRY_VERIFY_WITH_TIMEOUT(m_window->clock()->time() > before, 2000);
     QVERIFY(button("runScript")->isEnabled());
 }
@@ -155,7 +155,7 @@ void ScriptDockTest::stopEndsAnEndlessLoop()
     QTest::mouseClick(button("runScript"), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(panel()->output().contains(QLatin1String("looping")), 5000);
     // The window stays responsive while the loop spins in its thread.
-    const double before = m_window->clock()->time();
+    const core::Tick before = m_window->clock()->time();
     QTRY_VERIFY_WITH_TIMEOUT(m_window->clock()->time() > before, 2000);
     QTest::mouseClick(button("stopScript"), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(!panel()->isRunning(), 5000);
@@ -176,7 +176,7 @@ void ScriptDockTest::anErrorShowsItsTracebackAndLine()
     saveScreenshot(m_window.get(), QStringLiteral("script_dock_error.png"));
     // The stage plays on: the action activated before the error is live.
     QVERIFY(*m_window->scenePreview()->scene()->stage().isPlaying(
-        "Creon", Track::Body, "creon_wave", core::secondsToTicks(m_window->clock()->time())));
+        "Creon", Track::Body, "creon_wave", m_window->clock()->time()));
 }
 
 void ScriptDockTest::aScenarioScriptRunsOnlyOnceTheFileIsTrusted()
@@ -270,7 +270,7 @@ void ScriptDockTest::stopPlayerPausesTheTransportAndStartPlayerPlaysIt()
     QTRY_VERIFY_WITH_TIMEOUT(!panel()->isRunning(), 10000);
     QTRY_VERIFY_WITH_TIMEOUT(!m_window->clock()->isPlaying(), 5000);
     QVERIFY2(panel()->output().contains(QLatin1String("paused at")), qPrintable(panel()->output()));
-    QVERIFY(m_window->clock()->time() >= 0.5);
+    QVERIFY(m_window->clock()->time() >= core::TicksPerSecond / 2);
     // Paused, a script that starts the player plays the view again.
     m_window->clock()->pause();
     panel()->setSource(QStringLiteral("anim.stop_player()\nanim.start_player()\n"));

@@ -35,7 +35,6 @@
 #include "widgets/osg_viewport.h"
 
 using namespace thespis;
-using core::scene::Posture;
 using core::scene::SegmentRole;
 using core::scene::SegmentTag;
 using editor::SegmentTableModel;
@@ -209,10 +208,8 @@ void SegmentPanelTest::listsTheBodysSegmentsWithTheirJoints()
     const int skull = segmentRow(panel, "skull");
     QVERIFY(skull >= 0);
     QCOMPARE(model->index(skull, SegmentTableModel::JointColumn).data().toString(), QStringLiteral("skullbase"));
-    // The paper's defaults: the skull is posture-independent, a forearm dependent.
-    QCOMPARE(model->index(skull, SegmentTableModel::PostureColumn).data().toString(), QStringLiteral("PI"));
-    QCOMPARE(model->index(segmentRow(panel, "l_forearm"), SegmentTableModel::PostureColumn).data().toString(),
-             QStringLiteral("PD"));
+    // No column the bake would not read: segment, joint, role and the two sizes.
+    QCOMPARE(model->columnCount(), 5);
     QCOMPARE(model->headerData(SegmentTableModel::RoleColumn, Qt::Horizontal).toString(), QStringLiteral("Role"));
 
     // The other character, and the filter.
@@ -274,7 +271,6 @@ void SegmentPanelTest::bulkTagIsOneUndoableEdit()
         const auto tag = std::find_if(tags.begin(), tags.end(), [&](const SegmentTag& t) { return t.segment == name; });
         QVERIFY2(tag != tags.end(), name.c_str());
         QCOMPARE(tag->role, SegmentRole::Receiver);
-        QVERIFY(!tag->posture); // the body's default posture is kept
         QCOMPARE(table->model()->index(row, SegmentTableModel::RoleColumn).data().toString(), QStringLiteral("Receiver"));
     }
     QCOMPARE(panel.selectedSegments(), expected); // the selection survives the edit
@@ -282,21 +278,10 @@ void SegmentPanelTest::bulkTagIsOneUndoableEdit()
     for (std::size_t s = 0; s < studio.node(0).segmentCount(); ++s)
         QCOMPARE(studio.node(0).segmentHighlighted(s), std::find(expected.begin(), expected.end(), int(s)) != expected.end());
 
-    // PI on the same three: one more step, roles kept.
-    auto* independent = panel.findChild<QToolButton*>(QStringLiteral("tagIndependent"));
-    QVERIFY(independent);
-    QTest::mouseClick(independent, Qt::LeftButton);
-    QCOMPARE(document.undoStack()->count(), steps + 2);
-    for (const SegmentTag& tag : tagsOf(document, 0)) {
-        QCOMPARE(tag.role, SegmentRole::Receiver);
-        QCOMPARE(tag.posture, std::optional<Posture>(Posture::Independent));
-    }
     // Applying what is already there pushes nothing.
-    panel.applyPosture(Posture::Independent);
-    QCOMPARE(document.undoStack()->count(), steps + 2);
+    panel.applyRole(SegmentRole::Receiver);
+    QCOMPARE(document.undoStack()->count(), steps + 1);
 
-    document.undoStack()->undo();
-    QCOMPARE(tagsOf(document, 0), tags);
     document.undoStack()->undo();
     QCOMPARE(tagsOf(document, 0), before);
     for (int row : rows)
@@ -306,7 +291,7 @@ void SegmentPanelTest::bulkTagIsOneUndoableEdit()
     QCOMPARE(tagsOf(document, 0), tags);
     QCOMPARE(table->model()->index(rows[0], SegmentTableModel::RoleColumn).data().toString(), QStringLiteral("Receiver"));
 
-    // Tagging back to None without a posture of its own removes the tags.
+    // Tagging back to None removes the tags.
     panel.applyRole(SegmentRole::None);
     QVERIFY(tagsOf(document, 0).empty());
     saveScreenshot(&panel, QStringLiteral("segment_panel_none.png"));
@@ -332,15 +317,17 @@ void SegmentPanelTest::cellEditThroughTheComboIsOneEdit()
     combo->setCurrentIndex(occluder);
     emit combo->activated(occluder);
     QCOMPARE(document.undoStack()->count(), steps + 1);
-    QCOMPARE(tagsOf(document, 0), (std::vector<SegmentTag>{{"hair", SegmentRole::Occluder, std::nullopt}}));
+    QCOMPARE(tagsOf(document, 0), (std::vector<SegmentTag>{{"hair", SegmentRole::Occluder}}));
     QCOMPARE(cell.data().toString(), QStringLiteral("Occluder"));
     QTRY_VERIFY(!panel.table()->findChild<QComboBox*>(QStringLiteral("segmentTagEditor")));
     QCOMPARE(document.undoStack()->count(), steps + 1); // closing the editor added nothing
     // And the model itself, as a script or another view would.
-    QVERIFY(panel.table()->model()->setData(panel.table()->model()->index(hair, SegmentTableModel::PostureColumn),
-                                            int(Posture::Dependent)));
+    QVERIFY(panel.table()->model()->setData(cell, int(SegmentRole::Receiver)));
     QCOMPARE(document.undoStack()->count(), steps + 2);
-    QCOMPARE(tagsOf(document, 0), (std::vector<SegmentTag>{{"hair", SegmentRole::Occluder, Posture::Dependent}}));
+    QCOMPARE(tagsOf(document, 0), (std::vector<SegmentTag>{{"hair", SegmentRole::Receiver}}));
+    // Only the role is editable.
+    QVERIFY(!(panel.table()->model()->flags(panel.table()->model()->index(hair, SegmentTableModel::JointColumn))
+              & Qt::ItemIsEditable));
 }
 
 void SegmentPanelTest::clickInTheViewportSelectsAndHighlights()
@@ -435,8 +422,7 @@ void SegmentPanelTest::clickInTheViewportSelectsAndHighlights()
     panel.selectSegments({segmentRow(panel, "hair")});
     panel.applyRole(SegmentRole::Receiver);
     panel.selectSegments({segmentRow(panel, "l_upperarm"), segmentRow(panel, "l_forearm"), segmentRow(panel, "l_carpal")});
-    panel.applyPosture(Posture::Independent);
-    QCOMPARE(tagsOf(*studio.document, character).size(), std::size_t(4));
+    QCOMPARE(tagsOf(*studio.document, character).size(), std::size_t(1));
     QVERIFY(studio.node(character).segmentHighlighted(std::size_t(segmentRow(panel, "l_forearm"))));
     saveScreenshot(&studio.window, QStringLiteral("segment_window_tagged.png"));
 }

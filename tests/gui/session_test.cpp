@@ -130,7 +130,7 @@ void SessionTest::aTickEvaluatesOnceAndPublishesTheStagesPoses()
     for (const double t : {1.0, 1.5, 0.25, 3.0}) {
         order.clear();
         const std::uint64_t before = stage->ticks(), evaluations = session.evaluations();
-        clock.seek(t);
+        clock.seek(core::secondsToTicks(t));
         QCOMPARE(stage->ticks(), before + 1); // the stage evaluated once, by the session
         QCOMPARE(session.evaluations(), evaluations + 1);
         QCOMPARE(order, (std::vector<std::string>{"script", "view", "view"}));
@@ -161,7 +161,7 @@ void SessionTest::anEditSetsTheRuntimeOnceAndShowsItAtOnce()
     editor::Session session(&clock);
     session.setDocument(demo());
     editor::Document& document = *session.document();
-    clock.seek(2.0);
+    clock.seek(core::secondsToTicks(2.0));
     const auto stage = session.stage();
     const core::runtime::PoseSet before = session.poses();
     const std::uint64_t runtimes = session.runtimesSet(), evaluations = session.evaluations();

@@ -45,7 +45,7 @@ void StickFigureTest::matchesSkeletonForwardKinematics()
 {
     StickFigure figure = adaFigure();
     for (double t : {0.0, 0.6, 1.0, 2.4, 3.99}) {
-        m_clock.seek(t);
+        m_clock.seek(thespis::core::secondsToTicks(t));
         figure.setPose(m_session->poses().characters[0]);
         const std::vector<thespis::core::anim::Vec3d> expected = ada().skeleton.worldPositions(figure.frame());
         QCOMPARE(figure.positions().size(), expected.size());
@@ -63,10 +63,10 @@ void StickFigureTest::followsTheSchedule()
     StickFigure figure = adaFigure();
     const int wrist = ada().skeleton.find("r_radiocarpal");
     QVERIFY(wrist >= 0);
-    m_clock.seek(0.0); // nothing plays: rest pose, arm down
+    m_clock.seek(0); // nothing plays: rest pose, arm down
     figure.setPose(m_session->poses().characters[0]);
     const QVector3D rest = figure.positions()[std::size_t(wrist)];
-    m_clock.seek(1.0); // "raise" at its peak: the right arm swings out (−X is the right)
+    m_clock.seek(thespis::core::secondsToTicks(1.0)); // "raise" at its peak: the right arm swings out (−X is the right)
     figure.setPose(m_session->poses().characters[0]);
     const QVector3D raised = figure.positions()[std::size_t(wrist)];
     QVERIFY2(raised.y() > rest.y() + 0.2, qPrintable(QStringLiteral("%1 → %2").arg(rest.y()).arg(raised.y())));
@@ -108,7 +108,7 @@ void StickFigureTest::theViewIsFramedOnEveryPoseOfTheTimeline()
     }
     QVERIFY(high.y() - low.y() > 1.3f); // a standing figure
     for (double t = 0; t <= 4.0; t += 0.25) {
-        m_clock.seek(t);
+        m_clock.seek(thespis::core::secondsToTicks(t));
         QCOMPARE(skeletons.figures()[0].positions().size(), view.figurePositions(0).size());
         for (const QVector3D& p : view.figurePositions(0)) {
             QVERIFY(p.x() >= low.x() - 0.02f && p.x() <= high.x() + 0.02f);

@@ -389,13 +389,13 @@ void StudioEditingTest::framesStepWithTheArrowsAndEndGoesToTheEnd()
     QCOMPARE(QApplication::focusWidget(), scene);
     QTest::keyClick(scene, Qt::Key_Right);
     QTest::keyClick(scene, Qt::Key_Right);
-    QCOMPARE(clock->time(), 2.0 / clock->frameRate());
+    QCOMPARE(clock->time(), core::secondsToTicks(2.0 / clock->frameRate()));
     QTest::keyClick(scene, Qt::Key_Left);
-    QCOMPARE(clock->time(), 1.0 / clock->frameRate());
+    QCOMPARE(clock->time(), core::secondsToTicks(1.0 / clock->frameRate()));
     QTest::keyClick(scene, Qt::Key_End);
     QCOMPARE(clock->time(), clock->duration());
     QTest::keyClick(scene, Qt::Key_Home);
-    QCOMPARE(clock->time(), 0.0);
+    QCOMPARE(clock->time(), core::Tick(0));
 
     // A frame rate picked in the transport steps in its frames and is remembered.
     auto* rate = m_window->transportBar()->findChild<QComboBox*>(QStringLiteral("frameRateChoice"));
@@ -405,7 +405,7 @@ void StudioEditingTest::framesStepWithTheArrowsAndEndGoesToTheEnd()
     emit rate->activated(index);
     QCOMPARE(clock->frameRate(), 25.0);
     QTest::keyClick(scene, Qt::Key_Right);
-    QCOMPARE(clock->time(), 0.04);
+    QCOMPARE(clock->time(), core::secondsToTicks(0.04));
     QCOMPARE(QSettings().value(QStringLiteral("playback/frameRate")).toInt(), 25);
 }
 
