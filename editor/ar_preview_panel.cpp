@@ -182,16 +182,26 @@ void ArPreviewPanel::setSession(Session* session)
         disconnect(m_studio, nullptr, this, nullptr);
     m_studio = session;
     if (m_studio)
-        // New schedules play on the same stage at once; a new cast needs a new scene.
-        connect(m_studio, &Session::edited, this, [this](bool stageReplaced) {
-            if (!stageReplaced || !m_session)
-                return;
-            stop();
-            m_endTitle = tr("Stopped");
-            m_endText = tr("The characters changed.\nPress Start to see them over the video.");
-            updateEnabled();
-        });
+        connect(m_studio, &Session::edited, this, &ArPreviewPanel::onStudioEdited);
     updateEnabled();
+}
+
+void ArPreviewPanel::onStudioEdited(bool stageReplaced)
+{
+    // New schedules play on the same stage at once; other bodies, light or cast need a new scene:
+    // the preview starts again over its source — unless it records, which a restart would end.
+    if (!m_session || !m_document || (!stageReplaced && SceneSources::of(m_document->scenario()) == m_sources))
+        return;
+    if (isRecording()) {
+        stop();
+        m_endTitle = tr("Stopped");
+        m_endText = tr("The characters changed, which ended the recording.\nPress Start to see them over the video.");
+        updateEnabled();
+        return;
+    }
+    retire();
+    if (start())
+        setStatus(tr("The characters changed: the preview started again with them."), false);
 }
 
 void ArPreviewPanel::setClock(Clock clock)
@@ -270,6 +280,7 @@ bool ArPreviewPanel::start()
     if (playing) {
         settings.stage = m_studio->stage();
         settings.poses = m_studio->mailbox();
+        m_sources = SceneSources::of(m_document->scenario());
     }
     auto session = core::render::ArSession::start(std::move(source).value(), playing ? m_document->scenario() : nothing,
                                                   assets, settings);

@@ -34,6 +34,7 @@
 #include "ar/board.h"
 #include "ar/camera_file.h"
 #include "editor/ar_sources.h"
+#include "editor/scene_sources.h"
 #include "render/ar_session.h"
 #include "util/error.h"
 
@@ -157,6 +158,8 @@ private:
     void poll();
     void showSnapshot();
     void followVideo();
+    // After an edit: the same scene plays on, or the preview starts again with the new one.
+    void onStudioEdited(bool stageReplaced);
     void onSessionEnded();
     void retire();
     void forgetFailedStart();
@@ -179,6 +182,7 @@ private:
     std::uint64_t m_probeVersion = 0; // of the mirror ball's picture shown
     QString m_recordingPath;
     QString m_endTitle, m_endText; // how the last run ended, or why it could not start
+    SceneSources m_sources;        // what the running session's scene was built from
     bool m_startFailed = false;    // m_end* say why a start failed
     QTimer* m_timer = nullptr;
     QPointer<ArCalibrationDialog> m_calibration;

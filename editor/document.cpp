@@ -31,6 +31,13 @@ core::Result<std::unique_ptr<Document>> Document::open(const QString& path)
     return openReplacing(path, std::nullopt);
 }
 
+QString Document::firstCharacterName(const QString& path)
+{
+    auto opened = core::scenario::openScenario(toFsPath(QFileInfo(path).absoluteFilePath()));
+    return opened && !opened->scenario.characters.empty() ? fromUtf8(opened->scenario.characters.front().name)
+                                                          : QString();
+}
+
 core::Result<std::unique_ptr<Document>> Document::openReplacing(const QString& path,
                                                                 std::optional<core::scenario::Scenario> replacement)
 {

@@ -49,6 +49,9 @@ public:
     /// `baseDir`.
     static core::Result<std::unique_ptr<Document>> fromScenario(core::scenario::Scenario scenario,
                                                                 const QString& baseDir);
+    /// The first character's name in the scenario or package at `path`, read without building
+    /// anything (for help texts); empty when it cannot be read or has no character.
+    static QString firstCharacterName(const QString& path);
 
     const core::scenario::Scenario& scenario() const { return m_scenario; }
     const core::scenario::ScenarioRuntime& runtime() const { return m_runtime; }

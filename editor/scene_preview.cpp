@@ -69,8 +69,7 @@ void ScenePreview::build(bool frameCamera)
         return;
     }
     m_scene = std::move(scene).value();
-    m_bodySources = bodySources(document->scenario());
-    m_lighting = document->scenario().lighting;
+    m_sources = SceneSources::of(document->scenario());
     projectLight(*document);
     m_scene->scene().setShading(m_shading);
     m_scene->scene().setGroundVisible(m_groundVisible);
@@ -92,32 +91,17 @@ void ScenePreview::build(bool frameCamera)
     }
 }
 
-std::vector<ScenePreview::BodySource> ScenePreview::bodySources(const core::scenario::Scenario& scenario)
-{
-    std::vector<BodySource> sources;
-    for (const core::scenario::Character& character : scenario.characters)
-        sources.push_back({character.name, character.skeleton, character.model, character.bake, character.segmentTags});
-    return sources;
-}
-
 void ScenePreview::onEdited(bool stageReplaced)
 {
     // Same bodies and stage: only the schedules changed, and the scene draws the stage as it is
     // (the session's next tick shows the edit).
     const Document* document = m_session->document();
-    if (m_scene && !stageReplaced && bodySources(document->scenario()) == m_bodySources
-        && document->scenario().lighting == m_lighting && m_scene->followStage())
+    const SceneSources next = SceneSources::of(document->scenario());
+    if (m_scene && !stageReplaced && next == m_sources && m_scene->followStage())
         return;
     // Other bodies (a bake, tags, a model): rebuilt where the user is looking; characters come
     // or go: framed anew, so that every one is in view.
-    bool sameCast = m_scene != nullptr;
-    if (sameCast) {
-        const std::vector<BodySource> next = bodySources(document->scenario());
-        sameCast = next.size() == m_bodySources.size()
-                   && std::equal(next.begin(), next.end(), m_bodySources.begin(),
-                                 [](const BodySource& a, const BodySource& b) { return a.name == b.name; });
-    }
-    build(!sameCast);
+    build(!(m_scene && next.sameCast(m_sources)));
 }
 
 void ScenePreview::setPoses(const core::runtime::PoseSet& poses)

@@ -17,6 +17,7 @@
 #include <optional>
 #include <vector>
 
+#include "editor/scene_sources.h"
 #include "render/scenario_scene.h"
 #include "render/shading.h"
 #include "util/error.h"
@@ -89,16 +90,6 @@ signals:
     void sceneBuilt();
 
 private:
-    // What each character's body was built from (ScenarioScene::create): an edit that changes
-    // any of it (its bake, its segment tags, its model) needs the scene rebuilt, not only new
-    // schedules. Recorded by build(), compared by onEdited().
-    struct BodySource {
-        std::string name, skeleton, model, bake;
-        std::vector<core::scene::SegmentTag> segmentTags;
-        bool operator==(const BodySource&) const = default;
-    };
-    static std::vector<BodySource> bodySources(const core::scenario::Scenario& scenario);
-
     // Builds the scene of the session's document; frameCamera: also aim the home view.
     void build(bool frameCamera);
     void onEdited(bool stageReplaced);
@@ -113,8 +104,7 @@ private:
     Session* m_session = nullptr;
     QString m_problem;
     std::unique_ptr<core::render::ScenarioScene> m_scene;
-    std::vector<BodySource> m_bodySources;
-    core::scenario::LightingSpec m_lighting; // the scene's; another one rebuilds it
+    SceneSources m_sources; // what the scene was built from (build()); compared by onEdited()
     std::unique_ptr<JobRunner> m_lightJob;   // the probe's projection; replaced (so cancelled) by a rebuild
     QString m_lightProblem;
     core::render::Shading m_shading = core::render::Shading::Prt;

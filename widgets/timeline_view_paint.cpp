@@ -47,6 +47,27 @@ void fillBar(QPainter& painter, const QRect& r, const QBrush& fill, const QBrush
     painter.fillRect(QRect(x + b, y + b, w - 2 * b, h - 2 * b), fill);
 }
 
+// An open-ended clip's bar: no right border, and from `fadeStart` on the fill and the border fade
+// out (`fillFade`, `borderFade`). Only that last stretch is drawn with the gradients: a gradient
+// costs a colour-table lookup per pixel, and open clips (idle motion) reach the lanes' edge.
+void fillOpenBar(QPainter& painter, const QRect& r, const QColor& fill, const QColor& border, int b, int fadeStart,
+                 const QBrush& fillFade, const QBrush& borderFade)
+{
+    const int x = r.left(), y = r.top(), right = r.left() + r.width(), h = r.height();
+    if (h <= 2 * b + 1) {
+        painter.fillRect(r, borderFade);
+        return;
+    }
+    const int solidEnd = std::clamp(fadeStart, x + b, right);
+    painter.fillRect(QRect(x, y + 1, b, h - 2), border); // left
+    for (const int top : {y, y + h - b}) {               // top and bottom
+        painter.fillRect(QRect(x + 1, top, solidEnd - x - 1, b), border);
+        painter.fillRect(QRect(solidEnd, top, right - solidEnd, b), borderFade);
+    }
+    painter.fillRect(QRect(x + b, y + b, solidEnd - x - b, h - 2 * b), fill);
+    painter.fillRect(QRect(solidEnd, y + b, right - solidEnd, h - 2 * b), fillFade);
+}
+
 } // namespace
 
 void TimelineView::updateColors()
@@ -239,7 +260,8 @@ void TimelineView::paintClip(QPainter& painter, const TimelineGeometry& g, int i
         QLinearGradient borderFade(laneRight - kOpenFadeWidth, 0, laneRight, 0);
         borderFade.setColorAt(0, borderColor);
         borderFade.setColorAt(1, withAlpha(borderColor, 0));
-        fillBar(painter, r.adjusted(0, 0, 4, 0), QBrush(fillFade), QBrush(borderFade), borderWidth);
+        fillOpenBar(painter, r.adjusted(0, 0, 4, 0), fill, borderColor, borderWidth, laneRight - kOpenFadeWidth,
+                    QBrush(fillFade), QBrush(borderFade));
     } else {
         fillBar(painter, r, fill, borderColor, borderWidth);
     }

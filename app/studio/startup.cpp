@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <system_error>
 
+#include "editor/document.h"
 #include "editor/qt_conversions.h"
-#include "scenario/scenario_io.h"
 
 namespace thespis::studio {
 
@@ -71,9 +71,9 @@ QString noDisplayHelp(const QString& reason, const QString& scenarioPath, const 
     // Plain English on purpose: this is printed before any translator is installed.
     const QString scenario = scenarioPath.isEmpty() ? QStringLiteral("resources/demo.thespis") : scenarioPath;
     // A real character name makes the bake-motion example runnable as printed.
-    QString character = QStringLiteral("NAME");
-    if (auto loaded = core::scenario::loadScenario(editor::toFsPath(scenario)); loaded && !loaded->characters.empty())
-        character = editor::fromUtf8(loaded->characters.front().name);
+    QString character = editor::Document::firstCharacterName(scenario);
+    if (character.isEmpty())
+        character = QStringLiteral("NAME");
     return QStringLiteral(
                "thespis: cannot open the studio window: no display (%1).\n"
                "\n"

@@ -65,8 +65,9 @@ core::Result<core::scenario::Scenario> demoScenario()
 }
 
 // The demo with `actionCount` actions spread over 8 body tracks (4 layers per character), each
-// a copy of one of the character's finite actions (not its idle loops), one every 0.4 s on its
-// track: after Frame All every clip is in view, wide enough for its name, fades and curve.
+// a copy of one of the character's actions other than endless loops, one every 0.4 s on its
+// track: after Frame All every clip is in view, wide enough for its name, fades and curve. The
+// copies of the idle motion are open-ended: their bars reach the view's right edge.
 core::Result<core::scenario::Scenario> scenarioWithActions(int actionCount)
 {
     auto scenario = demoScenario();

@@ -34,6 +34,7 @@
 #include "ar/frame_source.h"
 #include "ar/synthetic_source.h"
 #include "ar/video_writer.h"
+#include "edit/content_edits.h"
 #include "editor/ar_calibration_dialog.h"
 #include "editor/ar_preview_panel.h"
 #include "editor/document.h"
@@ -109,6 +110,7 @@ private slots:
     void calibrationFromPhotos();
     void aScriptShowsInEveryViewAndOverTheVideo();
     void onTheVideosTimeThePlayheadFollowsTheVideo();
+    void anEditOfTheCastShowsOverTheVideoAtOnce();
 
 private:
     editor::ArPreviewPanel* panel() const { return m_window->arPreview(); }
@@ -509,6 +511,39 @@ void ArPreviewTest::aScriptShowsInEveryViewAndOverTheVideo()
     QCOMPARE(stage.ticks(), evaluations + 1);
     for (std::size_t c = 0; c < skinned.size(); ++c)
         QCOMPARE(preview->scene()->scene().character(c).poseCount(), skinned[c] + 1);
+    p->stop();
+}
+
+// Removing a character while the preview runs: the preview starts again by itself with the new
+// cast (no Stop / Start), and undoing brings both characters back over the video.
+void ArPreviewTest::anEditOfTheCastShowsOverTheVideoAtOnce()
+{
+    showPanel();
+    editor::ArPreviewPanel* p = panel();
+    editor::Document& document = *m_window->document();
+    p->smoothCheck()->setChecked(false);
+    p->chooseTestPattern();
+    p->setBoardSpec(kBoard);
+    QVERIFY(p->start());
+    QTRY_VERIFY_WITH_TIMEOUT(p->lastSnapshot().poses.characters.size() == 2 || !p->isRunning(), kTimeout);
+    QVERIFY(p->isRunning());
+
+    QVERIFY(document.edit(core::edit::removeCharacter(document.scenario(), 1), QStringLiteral("Remove")).ok());
+    QVERIFY(p->isRunning());
+    QVERIFY2(p->statusText().contains(QStringLiteral("started again")), qPrintable(p->statusText()));
+    QTRY_VERIFY_WITH_TIMEOUT(p->lastSnapshot().poses.characters.size() == 1 || !p->isRunning(), kTimeout);
+    QVERIFY2(p->isRunning(), qPrintable(p->view()->messageText()));
+
+    document.undoStack()->undo();
+    QVERIFY(p->isRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(p->lastSnapshot().poses.characters.size() == 2 || !p->isRunning(), kTimeout);
+    QVERIFY(p->isRunning());
+    // An edit of the schedules only plays on the same session.
+    const auto before = p->lastSnapshot().tracking.frame;
+    m_window->clock()->seek(core::secondsToTicks(1.0));
+    QVERIFY(document.edit(core::edit::setCharacterPlacement(document.scenario(), 0, {0.2f, 0, 0}, 0), QStringLiteral("Move")).ok());
+    QTRY_VERIFY_WITH_TIMEOUT(p->lastSnapshot().tracking.frame > before + 2 || !p->isRunning(), kTimeout);
+    QVERIFY(p->isRunning());
     p->stop();
 }
 
