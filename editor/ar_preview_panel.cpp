@@ -349,6 +349,12 @@ void ArPreviewPanel::showSnapshot()
                   << tr("latency %1 ms").arg(m_snapshot.latency * 1000, 0, 'f', 0);
     if (tracking.tracked) {
         overlay.lines << tr("Tracking: %n feature(s)", nullptr, tracking.measured.features);
+        // Blur and an unsure tilt make a frame count for less (the filter weighs it so): said, so
+        // that a jumpy placement has its reason on screen.
+        if (tracking.measured.blur.length >= 2)
+            overlay.lines << tr("motion blur %1 px").arg(tracking.measured.blur.length, 0, 'f', 1);
+        if (tracking.measured.ambiguity > 0 && tracking.measured.ambiguity < 3)
+            overlay.lines << tr("tilt unsure (ratio %1)").arg(tracking.measured.ambiguity, 0, 'f', 1);
         overlay.status = widgets::VideoOverlay::Status::Good;
     } else if (tracking.hasPose) {
         overlay.lines << tr("Target lost: holding its last place");

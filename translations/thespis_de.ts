@@ -666,10 +666,22 @@ Beheben, dann „Starten“ drücken.</translation>
         <translation>Die Transportleiste: Abspielen, Scrubben und Schleifen im Studio, und das Video zeigt es. Die Zeit des Videos: Der Abspielkopf folgt dem Video Bild für Bild, wie eine Aufnahme.</translation>
     </message>
     <message>
-        <source>The characters changed.
+        <source>The characters changed, which ended the recording.
 Press Start to see them over the video.</source>
-        <translation>Die Figuren haben sich geändert.
+        <translation>Die Figuren haben sich geändert, das hat die Aufnahme beendet.
 Drücken Sie Start, um sie über dem Video zu sehen.</translation>
+    </message>
+    <message>
+        <source>The characters changed: the preview started again with them.</source>
+        <translation>Die Figuren haben sich geändert: die Vorschau ist mit ihnen neu gestartet.</translation>
+    </message>
+    <message>
+        <source>motion blur %1 px</source>
+        <translation>Bewegungsunschärfe %1 px</translation>
+    </message>
+    <message>
+        <source>tilt unsure (ratio %1)</source>
+        <translation>Neigung unsicher (Verhältnis %1)</translation>
     </message>
 </context>
 <context>

@@ -666,10 +666,22 @@ Corrigez-le, puis cliquez sur « Démarrer ».</translation>
         <translation>La barre de transport : lecture, défilement et boucle dans le studio, et la vidéo le montre. Le temps de la vidéo : la tête de lecture suit la vidéo image par image, comme un enregistrement.</translation>
     </message>
     <message>
-        <source>The characters changed.
+        <source>The characters changed, which ended the recording.
 Press Start to see them over the video.</source>
-        <translation>Les personnages ont changé.
+        <translation>Les personnages ont changé, ce qui a arrêté l'enregistrement.
 Appuyez sur Démarrer pour les voir sur la vidéo.</translation>
+    </message>
+    <message>
+        <source>The characters changed: the preview started again with them.</source>
+        <translation>Les personnages ont changé : l'aperçu a redémarré avec eux.</translation>
+    </message>
+    <message>
+        <source>motion blur %1 px</source>
+        <translation>flou de bougé %1 px</translation>
+    </message>
+    <message>
+        <source>tilt unsure (ratio %1)</source>
+        <translation>inclinaison incertaine (rapport %1)</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,7 @@
 // thespis-cli track: runs core's TrackJob over a video or pictures (paper §7.2): a marker board or
 // a printed picture followed frame by frame, filtered over time, one CSV row per frame
-// (frame,tracked,rx,ry,rz,tx,ty,tz: target → camera, Rodrigues vector and metres).
+// (frame,tracked,rx,ry,rz,tx,ty,tz: target → camera, Rodrigues vector and metres; then the frame's
+// motion blur and IPPE ambiguity).
 
 #include <cstdio>
 
@@ -29,8 +30,10 @@ CommandSpec trackSpec()
     addTargetOptions(spec);
     spec.description =
         "VIDEO is a video file, or several pictures played in order at --fps.\n"
-        "Rows: frame,tracked,rx,ry,rz,tx,ty,tz (target -> camera: Rodrigues vector, metres; for an\n"
-        "ArUco grid in the board frame OpenCV 4.6's aruco::GridBoard uses). A frame where the target\n"
+        "Rows: frame,tracked,rx,ry,rz,tx,ty,tz,blur_px,blur_deg,ambiguity (target -> camera: Rodrigues\n"
+        "vector, metres; for an ArUco grid in the board frame OpenCV 4.6's aruco::GridBoard uses; the\n"
+        "motion blur the board's edges show, its length in pixels and direction in degrees; the ratio\n"
+        "of IPPE's two poses' errors, below 3 when the tilt is unsure). A frame where the target\n"
         "is not found has tracked 0 and no pose. The summary gives the tracked share, how often the\n"
         "target was lost, and the time from a frame's capture to its pose.\n"
         "Example: thespis-cli track clip.mp4 --camera camera.yml --board aruco-grid:DICT_4X4_50:4x3:0.04:0.01 --out poses.csv\n"

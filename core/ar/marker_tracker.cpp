@@ -8,6 +8,7 @@
 
 #include "ar/aruco_board.h"
 #include "ar/charuco_corners.h"
+#include "ar/edge_refine.h"
 #include "ar/opencv_bridge.h"
 #include "ar/pose_fit.h"
 
@@ -32,83 +33,10 @@ cv::Ptr<cv::aruco::DetectorParameters> detectorParameters()
     return parameters;
 }
 
-// The grey level at a sub-pixel position (bilinear), or −1 outside the picture.
-float sample(const cv::Mat& grey, cv::Point2f p)
+// A marker's width in cells: its bits and the black border round them.
+int markerCells(const cv::aruco::Dictionary& dictionary, const cv::aruco::DetectorParameters& parameters)
 {
-    const int x = int(std::floor(p.x)), y = int(std::floor(p.y));
-    if (x < 0 || y < 0 || x + 1 >= grey.cols || y + 1 >= grey.rows)
-        return -1;
-    const float fx = p.x - float(x), fy = p.y - float(y);
-    const std::uint8_t* row = grey.ptr<std::uint8_t>(y);
-    const std::uint8_t* next = grey.ptr<std::uint8_t>(y + 1);
-    return (1 - fy) * ((1 - fx) * row[x] + fx * row[x + 1]) + fy * ((1 - fx) * next[x] + fx * next[x + 1]);
-}
-
-// A marker's corner is where two straight edges of a black square meet: an L, not the saddle
-// cv::cornerSubPix is made for, which it places a few tenths of a pixel off, always the same way
-// for a given view (so no temporal filter can average it out). Each side's edge is found instead
-// at many points along it (the steepest grey-level step across the side, to a fraction of a
-// pixel), a line fitted through them, and the corners are where the lines cross.
-bool refineAlongEdges(const cv::Mat& grey, std::vector<cv::Point2f>& corners)
-{
-    cv::Vec4f lines[4];
-    for (int side = 0; side < 4; ++side) {
-        const cv::Point2f a = corners[std::size_t(side)], b = corners[std::size_t((side + 1) % 4)];
-        const cv::Point2f along = b - a;
-        const float length = std::hypot(along.x, along.y);
-        if (length < 8)
-            return false;
-        const cv::Point2f normal(-along.y / length, along.x / length);
-        // Search no farther than a quarter of a marker bit, so the bits inside are not taken.
-        const float reach = std::clamp(length / 24, 1.0f, 4.0f), step = 0.25f;
-        const int steps = int(reach / step);
-        std::vector<cv::Point2f> edge;
-        const int count = std::max(6, int(length / 2));
-        for (int i = 0; i < count; ++i) {
-            const cv::Point2f centre = a + along * (0.12f + 0.76f * float(i) / float(count - 1));
-            float best = 0, bestOffset = 0;
-            float before = sample(grey, centre - normal * float(steps + 1) * step);
-            float here = sample(grey, centre - normal * float(steps) * step);
-            float gradients[64];
-            int n = 0;
-            for (int k = -steps; k <= steps && n < 64; ++k, ++n) {
-                const float after = sample(grey, centre + normal * float(k + 1) * step);
-                if (before < 0 || after < 0)
-                    return false;
-                gradients[n] = std::abs(after - before);
-                before = here;
-                here = after;
-            }
-            int peak = -1;
-            for (int k = 1; k + 1 < n; ++k)
-                if (gradients[k] > best && gradients[k] >= gradients[k - 1] && gradients[k] >= gradients[k + 1])
-                    best = gradients[k], peak = k;
-            if (peak < 0 || best < 8)
-                continue;
-            const float curvature = gradients[peak - 1] - 2 * gradients[peak] + gradients[peak + 1];
-            bestOffset = curvature < 0 ? 0.5f * (gradients[peak - 1] - gradients[peak + 1]) / curvature : 0;
-            edge.push_back(centre + normal * ((float(peak - steps) + bestOffset) * step));
-        }
-        if (int(edge.size()) < count / 2)
-            return false;
-        cv::fitLine(edge, lines[side], cv::DIST_L2, 0, 0.01, 0.01);
-    }
-    std::vector<cv::Point2f> refined(4);
-    for (int corner = 0; corner < 4; ++corner) {
-        // Corner c joins side c − 1 (ending at it) and side c (starting from it).
-        const cv::Vec4f& p = lines[(corner + 3) % 4];
-        const cv::Vec4f& q = lines[corner];
-        const float denominator = p[0] * q[1] - p[1] * q[0];
-        if (std::abs(denominator) < 1e-3f)
-            return false;
-        const float t = ((q[2] - p[2]) * q[1] - (q[3] - p[3]) * q[0]) / denominator;
-        refined[std::size_t(corner)] = {p[2] + t * p[0], p[3] + t * p[1]};
-        const cv::Point2f moved = refined[std::size_t(corner)] - corners[std::size_t(corner)];
-        if (moved.dot(moved) > 4) // more than 2 px: a bad edge, keep what the detector found
-            return false;
-    }
-    corners = refined;
-    return true;
+    return dictionary.markerSize + 2 * parameters.markerBorderBits;
 }
 
 void toDetected(const std::vector<std::vector<cv::Point2f>>& corners, const std::vector<int>& ids,
@@ -138,10 +66,11 @@ Result<std::vector<DetectedMarker>> detectMarkers(const VideoFrame& frame, std::
     cv::Ptr<cv::aruco::DetectorParameters> parameters = detectorParameters();
     if (precision == MarkerCorners::WholePixels)
         parameters->cornerRefinementMethod = cv::aruco::CORNER_REFINE_NONE;
-    cv::aruco::detectMarkers(grey, cv::aruco::getPredefinedDictionary(id), corners, ids, parameters);
+    const cv::Ptr<cv::aruco::Dictionary> markerDictionary = cv::aruco::getPredefinedDictionary(id);
+    cv::aruco::detectMarkers(grey, markerDictionary, corners, ids, parameters);
     if (precision == MarkerCorners::SubPixel)
         for (std::vector<cv::Point2f>& marker : corners)
-            refineAlongEdges(grey, marker);
+            refineMarkerEdges(grey, marker, markerCells(*markerDictionary, *parameters));
     std::vector<DetectedMarker> markers;
     toDetected(corners, ids, markers);
     return markers;
@@ -161,6 +90,7 @@ struct MarkerTracker::State {
     std::vector<cv::Point2f> charucoPixels;
     std::vector<cv::Point3f> objectPoints;
     std::vector<cv::Point2f> imagePoints;
+    std::vector<EdgeRamp> ramps;
 
     std::vector<cv::Point3f> outline; // the board's extent in its plane, for the search region
     std::vector<cv::Point2f> projectedOutline;
@@ -238,7 +168,7 @@ Result<std::unique_ptr<MarkerTracker>> MarkerTracker::create(const BoardSpec& bo
     state->camera = camera;
     if (board.kind == BoardKind::Charuco)
         state->charuco = charucoBoard(board);
-    else // the edges place a grid's corners (refineAlongEdges); cv::cornerSubPix would only cost time
+    else // the edges place a grid's corners (edge_refine.h); cv::cornerSubPix would only cost time
         state->parameters->cornerRefinementMethod = cv::aruco::CORNER_REFINE_NONE;
     state->board = state->charuco ? cv::Ptr<cv::aruco::Board>(state->charuco) : arucoBoard(board);
     float minX = 1e9f, minY = 1e9f, maxX = -1e9f, maxY = -1e9f;
@@ -276,14 +206,24 @@ TrackerEstimate MarkerTracker::estimate(const VideoFrame& frame)
     if (!s.ids.empty() && (s.charuco || s.ids.size() < s.board->ids.size()))
         cv::aruco::refineDetectedMarkers(s.grey, s.board, s.corners, s.ids, s.rejected, cameraMat(s.camera),
                                          distortionMat(s.camera), 10.f, 3.f, true, cv::noArray(), s.parameters);
-    if (!s.charuco)
-        for (std::vector<cv::Point2f>& marker : s.corners)
-            refineAlongEdges(s.grey, marker);
+    // A grid's corners are its markers' corners, placed by their edges; a ChArUco board's come
+    // from its chessboard, and its markers' edges only say how blurred the frame is.
+    s.ramps.clear();
+    const int cells = markerCells(*s.board->dictionary, *s.parameters);
+    for (std::vector<cv::Point2f>& marker : s.corners) {
+        if (s.charuco) {
+            std::vector<cv::Point2f> copy = marker;
+            refineMarkerEdges(s.grey, copy, cells, &s.ramps);
+        } else {
+            refineMarkerEdges(s.grey, marker, cells, &s.ramps);
+        }
+    }
+    const MotionBlur blur = estimateMotionBlur(s.ramps);
     toDetected(s.corners, s.ids, s.markers);
     s.correspondences();
     const std::optional<TargetPose> previous =
         s.framesSinceSeen <= RememberPoseFrames ? s.lastPose : std::optional<TargetPose>();
-    std::optional<TrackerEstimate> fit = fitPlanarPose(s.objectPoints, s.imagePoints, s.camera, previous);
+    std::optional<TrackerEstimate> fit = fitPlanarPose(s.objectPoints, s.imagePoints, s.camera, previous, blur);
     if (!fit) {
         ++s.framesSinceSeen;
         return {};

@@ -1,5 +1,6 @@
 #include "ar/pose_fit.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <opencv2/calib3d.hpp>
@@ -13,9 +14,13 @@ namespace {
 // A clearly better fit wins over nearness to the last pose: the ratio of RMS errors beyond which
 // the worse of IPPE's two poses is the mirror image, not noise.
 constexpr double ClearlyBetterFit = 3.0;
-// The pixel noise assumed at least: corners found in a picture are off by a tenth or two of a
-// pixel in ways that change slowly from frame to frame, which a close fit of few points hides.
-constexpr double MinimumPixelNoise = 0.2;
+// The pixel noise assumed at least: a close fit of few points hides some. The marker edges place
+// sharp corners to about 0.03 px (issue 29), so a higher floor would make the filter trust its
+// prediction over a sharp frame, and carry a smeared frame's error into the sharp ones after it.
+constexpr double MinimumPixelNoise = 0.05;
+// How far, as a share of a smear's length, its points may be off along it: the edges' bias left
+// after refinement is about a tenth of the smear, more on small or slanted markers (issue 29).
+constexpr double SmearShare = 0.5;
 
 double rmsError(const std::vector<cv::Point3f>& objectPoints, const std::vector<cv::Point2f>& imagePoints,
                 const CameraIntrinsics& camera, const cv::Vec3d& rotation, const cv::Vec3d& translation)
@@ -30,15 +35,17 @@ double rmsError(const std::vector<cv::Point3f>& objectPoints, const std::vector<
     return std::sqrt(sum / double(projected.size()));
 }
 
-// JᵀJ / σ² of the reprojection, for a perturbation R·exp([δθ]) and t + δt: a point X of the plane
-// is seen at P = R X + t, so ∂P/∂t = I and ∂P/∂δθ = −R [X]×; then the pinhole's ∂(u, v)/∂P.
-// (Lens distortion changes the Jacobian only slightly and is left out.)
-std::array<double, 36> information(const std::vector<cv::Point3f>& objectPoints, const CameraIntrinsics& camera,
-                                   const cv::Vec3d& rotation, const cv::Vec3d& translation, double pixelNoise)
+// JᵀWJ of the reprojection, W the inverse of each point's 2 × 2 pixel covariance, for a
+// perturbation R·exp([δθ]) and t + δt: a point X of the plane is seen at P = R X + t, so
+// ∂P/∂t = I and ∂P/∂δθ = −R [X]×; then the pinhole's ∂(u, v)/∂P. (Lens distortion changes the
+// Jacobian only slightly and is left out.)
+cv::Matx66d information(const std::vector<cv::Point3f>& objectPoints, const CameraIntrinsics& camera,
+                        const cv::Vec3d& rotation, const cv::Vec3d& translation, const cv::Matx22d& pixelCovariance)
 {
     cv::Matx33d r;
     cv::Rodrigues(rotation, r);
-    cv::Matx66d jtj = cv::Matx66d::zeros();
+    const cv::Matx22d weight = pixelCovariance.inv();
+    cv::Matx66d jtwj = cv::Matx66d::zeros();
     for (const cv::Point3f& point : objectPoints) {
         const cv::Vec3d x(point.x, point.y, point.z);
         const cv::Vec3d p = r * x + translation;
@@ -54,20 +61,50 @@ std::array<double, 36> information(const std::vector<cv::Point3f>& objectPoints,
                 j(row, c) = dt(row, c);
                 j(row, 3 + c) = dtheta(row, c);
             }
-        jtj += j.t() * j;
+        jtwj += j.t() * weight * j;
     }
-    std::array<double, 36> result;
-    const double weight = 1.0 / (pixelNoise * pixelNoise);
-    for (int i = 0; i < 36; ++i)
-        result[std::size_t(i)] = jtj.val[i] * weight;
-    return result;
+    return jtwj;
+}
+
+// A point's pixel covariance: the noise left after the fit each way, and along the smear a share
+// of its length. A smear biases the edges it crosses by a fraction of a pixel the same way all
+// over the board (the black squares look wider along it), which the residuals hardly show.
+cv::Matx22d pixelCovariance(double noise, const MotionBlur& blur)
+{
+    const double along = SmearShare * blur.length, dx = std::cos(blur.angle), dy = std::sin(blur.angle);
+    return cv::Matx22d(noise * noise, 0, 0, noise * noise) +
+           cv::Matx22d(dx * dx, dx * dy, dx * dy, dy * dy) * (along * along);
+}
+
+// IPPE's two poses of a planar target differ by a turn about an axis in its plane; when they fit
+// nearly alike, the chosen one's rotation about that axis is known less than its Jacobian says.
+// The information along that axis is scaled by (ratio / 3)² (a congruence, so it stays positive).
+void discountAmbiguity(cv::Matx66d& info, const cv::Vec3d& chosen, const cv::Vec3d& other, double ratio)
+{
+    if (!(ratio < ClearlyBetterFit))
+        return;
+    cv::Matx33d a, b;
+    cv::Rodrigues(chosen, a);
+    cv::Rodrigues(other, b);
+    cv::Vec3d axis;
+    cv::Rodrigues(a.t() * b, axis); // about the target's own axes, as the information's rotation is
+    const double angle = cv::norm(axis);
+    if (angle < 1e-9)
+        return;
+    axis /= angle;
+    const double keep = std::max(ratio, 1.0) / ClearlyBetterFit;
+    cv::Matx66d scale = cv::Matx66d::eye();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            scale(3 + i, 3 + j) -= (1 - keep) * axis[i] * axis[j];
+    info = scale * info * scale;
 }
 
 } // namespace
 
 std::optional<TrackerEstimate> fitPlanarPose(const std::vector<cv::Point3f>& objectPoints,
                                              const std::vector<cv::Point2f>& imagePoints, const CameraIntrinsics& camera,
-                                             const std::optional<TargetPose>& previous)
+                                             const std::optional<TargetPose>& previous, const MotionBlur& blur)
 {
     if (objectPoints.size() < 4 || objectPoints.size() != imagePoints.size())
         return std::nullopt;
@@ -96,10 +133,16 @@ std::optional<TrackerEstimate> fitPlanarPose(const std::vector<cv::Point3f>& obj
     estimate.pose = targetPose(rotation, translation);
     estimate.features = int(objectPoints.size());
     estimate.reprojectionError = rmsError(objectPoints, imagePoints, camera, rotation, translation);
+    estimate.blur = blur;
     // The noise left after the fit, per coordinate, with 6 degrees of freedom taken by the pose.
     const double n = double(objectPoints.size());
     const double noise = std::max(MinimumPixelNoise, estimate.reprojectionError * std::sqrt(n / std::max(1.0, 2 * n - 6)));
-    estimate.information = information(objectPoints, camera, rotation, translation, noise);
+    cv::Matx66d info = information(objectPoints, camera, rotation, translation, pixelCovariance(noise, blur));
+    if (rotations.size() == 2) {
+        estimate.ambiguity = errors[0] > 0 ? errors[1] / errors[0] : ClearlyBetterFit * 1e3;
+        discountAmbiguity(info, rotation, cv::Vec3d(rotations[1 - chosen]), estimate.ambiguity);
+    }
+    std::copy(info.val, info.val + 36, estimate.information.begin());
     return estimate;
 }
 

@@ -17,9 +17,10 @@ namespace thespis::core::ar {
 /// At least 4 points, on the plane z = 0. `previous`, when the target was seen lately, chooses
 /// between IPPE's two poses when the picture alone cannot (a small or distant target seen nearly
 /// face-on): the one nearer to it wins. Without it, or when one pose fits clearly better, the
-/// better fit wins. Empty when OpenCV finds no pose.
+/// better fit wins. `blur`, the frame's motion blur, makes the information matrix trust each point
+/// less along the smear. Empty when OpenCV finds no pose.
 std::optional<TrackerEstimate> fitPlanarPose(const std::vector<cv::Point3f>& objectPoints,
                                              const std::vector<cv::Point2f>& imagePoints, const CameraIntrinsics& camera,
-                                             const std::optional<TargetPose>& previous);
+                                             const std::optional<TargetPose>& previous, const MotionBlur& blur = {});
 
 } // namespace thespis::core::ar

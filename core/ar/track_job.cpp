@@ -76,16 +76,18 @@ void TrackJob::discardOutput()
 
 std::string formatPosesCsv(const std::vector<TrackedFrame>& frames)
 {
-    std::string csv = "frame,tracked,rx,ry,rz,tx,ty,tz\n";
-    char line[256];
+    std::string csv = "frame,tracked,rx,ry,rz,tx,ty,tz,blur_px,blur_deg,ambiguity\n";
+    char line[320];
     for (const TrackedFrame& f : frames) {
         if (f.tracked) {
             const TargetPose& p = f.pose;
-            std::snprintf(line, sizeof line, "%lld,1,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", static_cast<long long>(f.frame),
-                          p.rotation[0], p.rotation[1], p.rotation[2], p.translation[0], p.translation[1],
-                          p.translation[2]);
+            const TrackerEstimate& m = f.measured;
+            std::snprintf(line, sizeof line, "%lld,1,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.3f,%.1f,%.3g\n",
+                          static_cast<long long>(f.frame), p.rotation[0], p.rotation[1], p.rotation[2], p.translation[0],
+                          p.translation[1], p.translation[2], m.blur.length, m.blur.angle * 180 / 3.14159265358979323846,
+                          m.ambiguity);
         } else {
-            std::snprintf(line, sizeof line, "%lld,0,,,,,,\n", static_cast<long long>(f.frame));
+            std::snprintf(line, sizeof line, "%lld,0,,,,,,,,,\n", static_cast<long long>(f.frame));
         }
         csv += line;
     }

@@ -39,7 +39,9 @@ struct TrackJob final : Job {
     void discardOutput() override;
 };
 
-/// The CSV of TrackJob for these frames (header line first).
+/// The CSV of TrackJob for these frames (header line first): frame, tracked, the filtered pose
+/// (rx ry rz Rodrigues, tx ty tz metres), and the frame's own blur (length px, direction degrees)
+/// and IPPE ambiguity (TrackerEstimate); the pose and those are empty where the target was not found.
 std::string formatPosesCsv(const std::vector<TrackedFrame>& frames);
 
 } // namespace thespis::core::ar

@@ -12,6 +12,12 @@
 
 namespace thespis::core::ar {
 
+/// The motion blur a frame shows on the target's edges (marker boards only; zero elsewhere).
+struct MotionBlur {
+    double length = 0; ///< pixels a point of the picture was smeared over; 0 when sharp
+    double angle = 0;  ///< the smear's direction, radians from the picture's x towards its y, in [0, π)
+};
+
 struct TrackerEstimate {
     bool found = false;
     TargetPose pose;               ///< when found
@@ -22,6 +28,11 @@ struct TrackerEstimate {
     /// reprojection's Jacobian and the pixel noise left give it. The temporal filter weighs the
     /// frame by it: one small marker seen edge-on counts for less than a whole board face-on.
     std::array<double, 36> information{};
+    MotionBlur blur; ///< the frame's blur, which `information` already discounts
+    /// The worse of IPPE's two poses' RMS error over the better one's (0: only one pose). Below
+    /// about 3 the picture hardly tells a planar target's two tilts apart, and `information`
+    /// trusts the rotation between them less.
+    double ambiguity = 0;
 };
 
 /// The target's shape in its own frame, for placing a scene on it.

@@ -372,6 +372,12 @@ void bindTracking(py::module_& a)
         .def_readonly("features", &ar::TrackerEstimate::features, "Markers, ChArUco corners or matched points used.")
         .def_readonly("reprojection_error", &ar::TrackerEstimate::reprojectionError, "RMS px; −1 when not found.")
         .def_property_readonly(
+            "blur", [](const ar::TrackerEstimate& e) { return py::make_tuple(e.blur.length, e.blur.angle); },
+            "The frame's motion blur on the target's edges: (length px, direction rad from x towards y); "
+            "(0, 0) sharp or not a marker board.")
+        .def_readonly("ambiguity", &ar::TrackerEstimate::ambiguity,
+                      "IPPE's worse pose's RMS error over the better one's (0: one pose); below 3 the tilt is unsure.")
+        .def_property_readonly(
             "information",
             [](const ar::TrackerEstimate& e) { return toArray<double>(std::span<const double>(e.information), {6, 6}); },
             "The pose's information matrix over [translation (m), rotation (rad)], 6 × 6.");
@@ -600,7 +606,7 @@ void bindJobs(py::module_& a)
              "One row per frame: frame (int64), time, tracked (bool), rvec (3), tvec (3) (NaN without a pose), "
              "event (str), latency.")
         .def("csv", [](const TrackResult& r) { return ar::formatPosesCsv(r.frames); },
-             "The CSV thespis-cli track writes (frame,tracked,rx,ry,rz,tx,ty,tz).");
+             "The CSV thespis-cli track writes (frame,tracked,rx,ry,rz,tx,ty,tz,blur_px,blur_deg,ambiguity).");
     a.def(
         "track",
         [](const std::optional<std::filesystem::path>& video, const std::optional<std::vector<std::filesystem::path>>& pictures,

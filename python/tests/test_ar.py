@@ -106,7 +106,7 @@ def test_the_real_charuco_photos_track_as_pictures(tmp_path):
     np.testing.assert_allclose(rows["tvec"][2], result[2].tvec)
     assert list(rows["event"]) == ["found", "", "", ""]
     assert (tmp_path / "poses.csv").read_text() == result.csv()
-    assert result.csv().startswith("frame,tracked,rx,ry,rz,tx,ty,tz\n")
+    assert result.csv().startswith("frame,tracked,rx,ry,rz,tx,ty,tz,blur_px,blur_deg,ambiguity\n")
 
 
 def test_a_tracking_session_gives_what_the_track_job_gives():

@@ -53,6 +53,9 @@ def test_the_tutorial_photos_give_one_pose_per_frame(views, tmp_path):
         assert 0.3 < float(row["tz"]) < 0.45 and distance < 0.5
         angle = math.degrees(math.hypot(*[float(row[k]) for k in ("rx", "ry", "rz")]))
         assert angle < 45, "the board faces the camera"
+        # Photos held still: the markers' edges show no smear, and the tilt is not in doubt.
+        assert 0 <= float(row["blur_px"]) < 2 and 0 <= float(row["blur_deg"]) < 180
+        assert float(row["ambiguity"]) == 0 or float(row["ambiguity"]) > 3
 
 
 def test_mistakes_say_what_is_wrong(views, tmp_path):

@@ -33,7 +33,7 @@ std::vector<CsvRow> readCsv(const std::filesystem::path& path)
     std::ifstream in(path);
     std::string line;
     std::getline(in, line);
-    EXPECT_EQ(line, "frame,tracked,rx,ry,rz,tx,ty,tz");
+    EXPECT_EQ(line, "frame,tracked,rx,ry,rz,tx,ty,tz,blur_px,blur_deg,ambiguity");
     std::vector<CsvRow> rows;
     while (std::getline(in, line)) {
         CsvRow row;
