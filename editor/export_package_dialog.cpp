@@ -19,6 +19,7 @@
 #include <QTableWidget>
 
 #include "editor/document.h"
+#include "editor/job_progress.h"
 #include "editor/job_runner.h"
 #include "editor/qt_conversions.h"
 #include "scenario/package.h"
@@ -88,17 +89,8 @@ ExportPackageDialog::ExportPackageDialog(const Document& document, QWidget* pare
     m_bake->setObjectName(QStringLiteral("packageBake"));
     layout->addWidget(m_bake);
 
-    m_progress = new QProgressBar(this);
-    m_progress->setObjectName(QStringLiteral("packageProgress"));
-    m_progress->setRange(0, 1);
-    m_progress->setValue(0);
-    m_progress->setFormat(tr("Not exported yet"));
-    m_progress->setAlignment(Qt::AlignCenter);
+    m_progress = new JobProgress(tr("Not exported yet"), this);
     layout->addWidget(m_progress);
-    m_message = new QLabel(this);
-    m_message->setObjectName(QStringLiteral("packageMessage"));
-    m_message->setWordWrap(true);
-    layout->addWidget(m_message);
 
     auto* buttons = new QDialogButtonBox(this);
     m_export = buttons->addButton(tr("Export"), QDialogButtonBox::AcceptRole);
@@ -116,7 +108,7 @@ ExportPackageDialog::ExportPackageDialog(const Document& document, QWidget* pare
             setOutput(path);
     });
     connect(m_output, &QLineEdit::textChanged, this, &ExportPackageDialog::updateEnabled);
-    connect(m_job, &JobRunner::progress, this, &ExportPackageDialog::onProgress);
+    connect(m_job, &JobRunner::progress, m_progress, &JobProgress::setProgress);
     connect(m_job, &JobRunner::finished, this, &ExportPackageDialog::onFinished);
 
     auto planned = core::scenario::planPackage(document.scenario(), document.assets(), scenarioEntry(document).toStdString());
@@ -188,12 +180,10 @@ bool ExportPackageDialog::exportPackage()
     job->output = toFsPath(QDir::fromNativeSeparators(m_output->text().trimmed()));
     job->bakeLighting = m_bake->isChecked();
     if (auto started = m_job->start(std::move(job)); !started) {
-        m_message->setText(fromUtf8(started.error().message));
-        m_message->setStyleSheet(kErrorStyle);
+        m_progress->refused(fromUtf8(started.error().message));
         return false;
     }
-    m_message->clear();
-    m_progress->setFormat(tr("Starting…"));
+    m_progress->started();
     updateEnabled();
     return true;
 }
@@ -206,38 +196,31 @@ void ExportPackageDialog::cancel()
         reject();
 }
 
-void ExportPackageDialog::onProgress(const QString& stage, qint64 done, qint64 total)
-{
-    // Counts above 2³¹ bytes do not fit a progress bar: it shows thousandths.
-    m_progress->setRange(0, 1000);
-    m_progress->setValue(total > 0 ? int(1000 * std::min(done, total) / total) : 0);
-    m_progress->setFormat(tr("%1 — %p%").arg(stage));
-}
-
 void ExportPackageDialog::onFinished(const core::Result<void>& result)
 {
     updateEnabled();
     if (!result) {
-        const bool cancelled = result.error().code == core::ErrorCode::Cancelled;
-        m_progress->setRange(0, 1);
-        m_progress->setValue(0);
-        m_progress->setFormat(cancelled ? tr("Cancelled") : tr("Failed"));
-        m_message->setText(cancelled ? tr("Cancelled: nothing was written.") : fromUtf8(result.error().message));
-        m_message->setStyleSheet(cancelled ? QString() : kErrorStyle);
+        m_progress->failed(result.error());
         return;
     }
     const auto* job = m_job->jobAs<core::scenario::ExportPackageJob>();
-    m_progress->setRange(0, 1);
-    m_progress->setValue(1);
-    m_progress->setFormat(tr("Exported"));
     const QString path = fromFsPath(job->output);
     QString text = tr("Wrote %1: %2 (%3 before compression).")
                        .arg(QDir::toNativeSeparators(path), sizeText(qint64(job->packageBytes)), sizeText(qint64(job->contentBytes)));
     for (const std::string& baked : job->baked)
         text += QLatin1Char('\n') + tr("Baked the lighting of %1.").arg(fromUtf8(baked));
-    m_message->setText(text);
-    m_message->setStyleSheet(QString());
+    m_progress->finished(tr("Exported"), text);
     emit exported(path);
+}
+
+QLabel* ExportPackageDialog::messageLabel() const
+{
+    return m_progress->message();
+}
+
+QProgressBar* ExportPackageDialog::progressBar() const
+{
+    return m_progress->bar();
 }
 
 void ExportPackageDialog::updateEnabled()

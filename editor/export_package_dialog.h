@@ -22,6 +22,7 @@ class QTableWidget;
 namespace thespis::editor {
 
 class Document;
+class JobProgress;
 class JobRunner;
 
 class ExportPackageDialog : public QDialog {
@@ -39,9 +40,9 @@ public:
     bool isExporting() const;
 
     QTableWidget* contentsTable() const { return m_contents; }
-    QLabel* messageLabel() const { return m_message; }
+    QLabel* messageLabel() const;
     QLineEdit* outputEdit() const { return m_output; }
-    QProgressBar* progressBar() const { return m_progress; }
+    QProgressBar* progressBar() const;
     QPushButton* exportButton() const { return m_export; }
     QCheckBox* bakeCheck() const { return m_bake; }
 
@@ -51,7 +52,6 @@ signals:
 
 private:
     void showPlan();
-    void onProgress(const QString& stage, qint64 done, qint64 total);
     void onFinished(const core::Result<void>& result);
     void updateEnabled();
 
@@ -63,8 +63,7 @@ private:
     QLabel* m_summary = nullptr;
     QLineEdit* m_output = nullptr;
     QCheckBox* m_bake = nullptr;
-    QProgressBar* m_progress = nullptr;
-    QLabel* m_message = nullptr;
+    JobProgress* m_progress = nullptr;
     QPushButton* m_export = nullptr;
     QPushButton* m_cancel = nullptr;
 };

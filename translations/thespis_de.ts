@@ -1480,6 +1480,76 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     </message>
 </context>
 <context>
+    <name>thespis::editor::ExportMotionDialog</name>
+    <message>
+        <source>Export Motion</source>
+        <translation>Bewegung exportieren</translation>
+    </message>
+    <message>
+        <source>A character&apos;s motion over the whole scenario, as the studio plays it, for Blender, three.js and game engines: a glTF file (.glb) with the character and its motion, or a BVH clip.</source>
+        <translation>Die Bewegung einer Figur über das ganze Szenario, wie das Studio sie abspielt, für Blender, three.js und Spiel-Engines: eine glTF-Datei (.glb) mit der Figur und ihrer Bewegung oder ein BVH-Clip.</translation>
+    </message>
+    <message>
+        <source>%1 (built-in humanoid)</source>
+        <translation>%1 (eingebauter Humanoid)</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Character:</source>
+        <translation>Figur:</translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation> B/s</translation>
+    </message>
+    <message>
+        <source>Frame rate:</source>
+        <translation>Bildrate:</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Wählen…</translation>
+    </message>
+    <message>
+        <source>Write to:</source>
+        <translation>Schreiben nach:</translation>
+    </message>
+    <message>
+        <source>Animation only (.glb): the joints and the motion without meshes and materials, to play onto a model already in the other tool</source>
+        <translation>Nur Animation (.glb): die Gelenke und die Bewegung ohne Netze und Materialien, um sie auf ein Modell zu spielen, das schon im anderen Werkzeug ist</translation>
+    </message>
+    <message>
+        <source>Not exported yet</source>
+        <translation>Noch nicht exportiert</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <source>glTF 2.0 (*.glb);;BVH motion (*.bvh)</source>
+        <translation>glTF 2.0 (*.glb);;BVH-Bewegung (*.bvh)</translation>
+    </message>
+    <message>
+        <source>“Animation only” goes with a .glb file; a BVH file is always the motion alone.</source>
+        <translation>„Nur Animation“ gilt für eine .glb-Datei; eine BVH-Datei ist immer nur die Bewegung.</translation>
+    </message>
+    <message>
+        <source>Exported</source>
+        <translation>Exportiert</translation>
+    </message>
+    <message numerus="yes">
+        <source>Wrote %1: %n frame(s) at %2 fps.</source>
+        <translation>
+            <numerusform>%1 geschrieben: %n Bild bei %2 fps.</numerusform>
+            <numerusform>%1 geschrieben: %n Bilder bei %2 fps.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::ExportPackageDialog</name>
     <message>
         <source>Export Package</source>
@@ -1531,26 +1601,6 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
             <numerusform>Das Szenario und %n Datei, %1 vor der Kompression.</numerusform>
             <numerusform>Das Szenario und %n Dateien, %1 vor der Kompression.</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Starting…</source>
-        <translation>Starte…</translation>
-    </message>
-    <message>
-        <source>%1 — %p%</source>
-        <translation>%1 — %p%</translation>
-    </message>
-    <message>
-        <source>Cancelled</source>
-        <translation>Abgebrochen</translation>
-    </message>
-    <message>
-        <source>Failed</source>
-        <translation>Fehlgeschlagen</translation>
-    </message>
-    <message>
-        <source>Cancelled: nothing was written.</source>
-        <translation>Abgebrochen: nichts wurde geschrieben.</translation>
     </message>
     <message>
         <source>Exported</source>
@@ -2050,6 +2100,29 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
             <numerusform>Davon bewegt %n nichts an dieser Figur (weder es noch ein Gelenk darunter ist in ihrem Skelett): %1.</numerusform>
             <numerusform>Davon bewegen %n nichts an dieser Figur (weder sie noch ein Gelenk darunter sind in ihrem Skelett): %1.</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::JobProgress</name>
+    <message>
+        <source>Starting…</source>
+        <translation>Starte…</translation>
+    </message>
+    <message>
+        <source>%1 — %p%</source>
+        <translation>%1 — %p%</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>Abgebrochen</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>Fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was written.</source>
+        <translation>Abgebrochen: nichts wurde geschrieben.</translation>
     </message>
 </context>
 <context>
@@ -3627,6 +3700,14 @@ Führen Sie die Skripte des Szenarios nur aus, wenn Sie der Herkunft dieser Date
     <message>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
+    </message>
+    <message>
+        <source>Export &amp;Motion…</source>
+        <translation>&amp;Bewegung exportieren…</translation>
+    </message>
+    <message>
+        <source>Write a character&apos;s motion as glTF (.glb, with the character) or BVH, for Blender, three.js and game engines</source>
+        <translation>Die Bewegung einer Figur als glTF (.glb, mit der Figur) oder BVH schreiben, für Blender, three.js und Spiel-Engines</translation>
     </message>
 </context>
 <context>

@@ -83,6 +83,16 @@
     </message>
 </context>
 <context>
+    <name>thespis::editor::ExportMotionDialog</name>
+    <message numerus="yes">
+        <source>Wrote %1: %n frame(s) at %2 fps.</source>
+        <translation>
+            <numerusform>Wrote %1: %n frame at %2 fps.</numerusform>
+            <numerusform>Wrote %1: %n frames at %2 fps.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::ExportPackageDialog</name>
     <message numerus="yes">
         <source>The scenario and %n file(s), %1 before compression.</source>

@@ -668,12 +668,12 @@ Corrigez-le, puis cliquez sur « Démarrer ».</translation>
     <message>
         <source>The characters changed, which ended the recording.
 Press Start to see them over the video.</source>
-        <translation>Les personnages ont changé, ce qui a arrêté l'enregistrement.
+        <translation>Les personnages ont changé, ce qui a arrêté l&apos;enregistrement.
 Appuyez sur Démarrer pour les voir sur la vidéo.</translation>
     </message>
     <message>
         <source>The characters changed: the preview started again with them.</source>
-        <translation>Les personnages ont changé : l'aperçu a redémarré avec eux.</translation>
+        <translation>Les personnages ont changé : l&apos;aperçu a redémarré avec eux.</translation>
     </message>
     <message>
         <source>motion blur %1 px</source>
@@ -1480,6 +1480,76 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     </message>
 </context>
 <context>
+    <name>thespis::editor::ExportMotionDialog</name>
+    <message>
+        <source>Export Motion</source>
+        <translation>Exporter le mouvement</translation>
+    </message>
+    <message>
+        <source>A character&apos;s motion over the whole scenario, as the studio plays it, for Blender, three.js and game engines: a glTF file (.glb) with the character and its motion, or a BVH clip.</source>
+        <translation>Le mouvement d&apos;un personnage sur tout le scénario, tel que le studio le joue, pour Blender, three.js et les moteurs de jeu : un fichier glTF (.glb) avec le personnage et son mouvement, ou un clip BVH.</translation>
+    </message>
+    <message>
+        <source>%1 (built-in humanoid)</source>
+        <translation>%1 (humanoïde intégré)</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Character:</source>
+        <translation>Personnage :</translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation> i/s</translation>
+    </message>
+    <message>
+        <source>Frame rate:</source>
+        <translation>Cadence :</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Choisir…</translation>
+    </message>
+    <message>
+        <source>Write to:</source>
+        <translation>Écrire dans :</translation>
+    </message>
+    <message>
+        <source>Animation only (.glb): the joints and the motion without meshes and materials, to play onto a model already in the other tool</source>
+        <translation>Animation seule (.glb) : les articulations et le mouvement sans maillages ni matériaux, à jouer sur un modèle déjà dans l&apos;autre outil</translation>
+    </message>
+    <message>
+        <source>Not exported yet</source>
+        <translation>Pas encore exporté</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exporter</translation>
+    </message>
+    <message>
+        <source>glTF 2.0 (*.glb);;BVH motion (*.bvh)</source>
+        <translation>glTF 2.0 (*.glb);;Mouvement BVH (*.bvh)</translation>
+    </message>
+    <message>
+        <source>“Animation only” goes with a .glb file; a BVH file is always the motion alone.</source>
+        <translation>« Animation seule » va avec un fichier .glb ; un fichier BVH est toujours le mouvement seul.</translation>
+    </message>
+    <message>
+        <source>Exported</source>
+        <translation>Exporté</translation>
+    </message>
+    <message numerus="yes">
+        <source>Wrote %1: %n frame(s) at %2 fps.</source>
+        <translation>
+            <numerusform>%1 écrit : %n image à %2 i/s.</numerusform>
+            <numerusform>%1 écrit : %n images à %2 i/s.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::ExportPackageDialog</name>
     <message>
         <source>Export Package</source>
@@ -1531,26 +1601,6 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
             <numerusform>Le scénario et %n fichier, %1 avant compression.</numerusform>
             <numerusform>Le scénario et %n fichiers, %1 avant compression.</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Starting…</source>
-        <translation>Démarrage…</translation>
-    </message>
-    <message>
-        <source>%1 — %p%</source>
-        <translation>%1 — %p%</translation>
-    </message>
-    <message>
-        <source>Cancelled</source>
-        <translation>Annulé</translation>
-    </message>
-    <message>
-        <source>Failed</source>
-        <translation>Échec</translation>
-    </message>
-    <message>
-        <source>Cancelled: nothing was written.</source>
-        <translation>Annulé : rien n’a été écrit.</translation>
     </message>
     <message>
         <source>Exported</source>
@@ -2050,6 +2100,29 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
             <numerusform>Parmi elles, %n ne bouge rien de ce personnage (ni elle ni une articulation en dessous n’est dans son squelette) : %1.</numerusform>
             <numerusform>Parmi elles, %n ne bougent rien de ce personnage (ni elles ni une articulation en dessous ne sont dans son squelette) : %1.</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::JobProgress</name>
+    <message>
+        <source>Starting…</source>
+        <translation>Démarrage…</translation>
+    </message>
+    <message>
+        <source>%1 — %p%</source>
+        <translation>%1 — %p%</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>Annulé</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>Échec</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was written.</source>
+        <translation>Annulé : rien n’a été écrit.</translation>
     </message>
 </context>
 <context>
@@ -3627,6 +3700,14 @@ N’exécutez les scripts du scénario que si vous faites confiance à la proven
     <message>
         <source>Exported %1</source>
         <translation>%1 exporté</translation>
+    </message>
+    <message>
+        <source>Export &amp;Motion…</source>
+        <translation>Exporter le &amp;mouvement…</translation>
+    </message>
+    <message>
+        <source>Write a character&apos;s motion as glTF (.glb, with the character) or BVH, for Blender, three.js and game engines</source>
+        <translation>Écrire le mouvement d&apos;un personnage en glTF (.glb, avec le personnage) ou BVH, pour Blender, three.js et les moteurs de jeu</translation>
     </message>
 </context>
 <context>

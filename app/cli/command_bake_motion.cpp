@@ -50,7 +50,7 @@ CommandSpec bakeMotionSpec()
     spec.options = {
         {"character", "NAME", "the character whose body schedule is baked", true},
         {"out", "FILE.bvh|FILE.glb", "the file to write; an existing file is replaced atomically", true},
-        {"animation-only", "", ".glb: only the model's nodes and the animation, without meshes and images"},
+        {"animation-only", "", ".glb: only the nodes and the animation, without meshes and images"},
         {"fps", "N", "frames per second (default 30)"},
         {"start", "SECONDS", "first frame's time (default 0)"},
         {"end", "SECONDS", "last frame's time (default: the scenario's duration)"},
@@ -61,8 +61,10 @@ CommandSpec bakeMotionSpec()
         "frames. The BVH uses the character's skeleton and joint names and opens in Blender and other\n"
         "tools. A .glb holds the character's glTF model (meshes, skin, materials) with the motion as its\n"
         "animation, retargeted onto the model's rig as the studio shows it; face layers drive the morph\n"
-        "targets named after their FAPs (\"fap19\" ...). With --animation-only it holds the model's nodes\n"
-        "and the animation alone, which three.js or Blender play onto the model by node name.\n"
+        "targets named after their FAPs (\"fap19\" ...). The built-in humanoid is written whole as a glTF\n"
+        "character: its joints, skinned mesh, materials and the motion. With --animation-only a .glb\n"
+        "holds the nodes and the animation alone, which three.js or Blender play onto the model by node\n"
+        "name.\n"
         "Example: thespis-cli bake-motion demo.thespis --character Creon --out creon.glb\n"
         "Progress is a bar on a terminal and plain lines otherwise; Ctrl-C stops the bake\n"
         "without writing anything.\n"
@@ -125,6 +127,8 @@ int runBakeMotion(const CommandSpec& spec, const ParsedArguments& arguments)
                     job.start, job.lastTime, fps, characterName.c_str(), outPath.string().c_str(), seconds);
     if (!quiet && !job.morphTargets.empty())
         std::printf("Face layers drive the morph targets %s.\n", joinNames(job.morphTargets).c_str());
+    for (const std::string& warning : job.warnings)
+        std::fprintf(stderr, "%s: warning: %s\n", spec.name.c_str(), warning.c_str());
     return ExitOk;
 }
 

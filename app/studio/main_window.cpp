@@ -200,6 +200,11 @@ void MainWindow::createActions()
     m_exportPackageAction->setObjectName(QStringLiteral("exportPackage"));
     m_exportPackageAction->setStatusTip(tr("Write the scenario and every file it names into one package (.thespkg)"));
     connect(m_exportPackageAction, &QAction::triggered, this, &MainWindow::onExportPackage);
+    m_exportMotionAction = new QAction(tr("Export &Motion…"), this);
+    m_exportMotionAction->setObjectName(QStringLiteral("exportMotion"));
+    m_exportMotionAction->setStatusTip(tr("Write a character's motion as glTF (.glb, with the character) or BVH, for "
+                                          "Blender, three.js and game engines"));
+    connect(m_exportMotionAction, &QAction::triggered, this, &MainWindow::onExportMotion);
 
     m_undoGroup = new QUndoGroup(this);
     m_undoAction = m_undoGroup->createUndoAction(this, tr("&Undo"));
@@ -337,6 +342,7 @@ void MainWindow::createMenus()
     file->addAction(m_saveAction);
     file->addAction(m_saveAsAction);
     file->addAction(m_exportPackageAction);
+    file->addAction(m_exportMotionAction);
     file->addSeparator();
     file->addAction(m_quitAction);
 
@@ -462,6 +468,7 @@ void MainWindow::setDocument(std::unique_ptr<editor::Document> next)
     m_saveAction->setEnabled(open);
     m_saveAsAction->setEnabled(open);
     m_exportPackageAction->setEnabled(open);
+    m_exportMotionAction->setEnabled(open && !document()->scenario().characters.empty());
     m_playPauseAction->setEnabled(open);
     m_toStartAction->setEnabled(open);
     m_toEndAction->setEnabled(open);

@@ -131,6 +131,7 @@ private:
     void onNew();
     bool onSaveAs();
     void onExportPackage();
+    void onExportMotion();
     void updateRecentMenu();
     bool maybeSave();
     void onDocumentEdited();
@@ -190,6 +191,7 @@ private:
     QAction* m_saveAction = nullptr;
     QAction* m_saveAsAction = nullptr;
     QAction* m_exportPackageAction = nullptr;
+    QAction* m_exportMotionAction = nullptr;
     QAction* m_undoAction = nullptr;
     QAction* m_redoAction = nullptr;
     QAction* m_reloadAction = nullptr;

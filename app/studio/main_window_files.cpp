@@ -17,6 +17,7 @@
 #include "editor/script_trust.h"
 #include "editor/autosave.h"
 #include "editor/error_dialog.h"
+#include "editor/export_motion_dialog.h"
 #include "editor/export_package_dialog.h"
 #include "editor/qt_conversions.h"
 #include "editor/new_document.h"
@@ -141,6 +142,17 @@ void MainWindow::onExportPackage()
         return;
     editor::ExportPackageDialog dialog(*document(), this);
     connect(&dialog, &editor::ExportPackageDialog::exported, this, [this](const QString& path) {
+        statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(path)), 5000);
+    });
+    dialog.exec();
+}
+
+void MainWindow::onExportMotion()
+{
+    if (!document())
+        return;
+    editor::ExportMotionDialog dialog(*document(), currentCharacter(), this);
+    connect(&dialog, &editor::ExportMotionDialog::exported, this, [this](const QString& path) {
         statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(path)), 5000);
     });
     dialog.exec();

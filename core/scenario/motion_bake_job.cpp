@@ -7,6 +7,7 @@
 #include "anim/keyframe_clip.h"
 #include "scenario/scenario_character.h"
 #include "scenario/scenario_runtime.h"
+#include "scene/gltf_character_export.h"
 #include "scene/gltf_motion_export.h"
 
 namespace thespis::core::scenario {
@@ -45,13 +46,9 @@ Result<void> MotionBakeJob::validate() const
     if (std::error_code ec; !std::filesystem::is_directory(folder, ec))
         return makeError(ErrorCode::FileNotFound, "Cannot write " + output.string() + ": the folder " + folder.string()
                                                       + " does not exist.");
-    const Character* spec = scenario.findCharacter(character);
-    if (!spec)
+    if (!scenario.findCharacter(character))
         return makeError(ErrorCode::NotFound, "The scenario has no character named '" + character
                                                   + "' (its characters: " + joinNames(scenario) + ").");
-    if (output.extension() == ".glb" && spec->model.empty())
-        return makeError(ErrorCode::InvalidArgument, "Character '" + character + "' is the built-in humanoid, which has no glTF "
-                                                     "model to carry the motion; bake it to a .bvh file.");
     return {};
 }
 
@@ -151,8 +148,16 @@ Result<void> MotionBakeJob::writeGltf(const CharacterRuntime& body, std::span<co
             body.face->evaluate(start + double(i) / fps, std::span<float>(face).subspan(std::size_t(i) * floats, floats));
         motion.faceFrames = face;
     }
-    auto written = scene::writeGltfMotion(output, assets.path(scenario.findCharacter(character)->model), model->skeleton,
-                                          motion, animationOnly);
+    const std::string& modelFile = scenario.findCharacter(character)->model;
+    if (modelFile.empty()) {
+        // The built-in humanoid has no file to carry the motion: it is written whole.
+        auto written = scene::writeGltfCharacter(output, *model, motion, animationOnly);
+        if (!written)
+            return written.error();
+        warnings = written->warnings;
+        return {};
+    }
+    auto written = scene::writeGltfMotion(output, assets.path(modelFile), model->skeleton, motion, animationOnly);
     if (!written)
         return written.error();
     morphTargets = written->morphTargets;

@@ -1,7 +1,8 @@
 #pragma once
 // Baking a character's motion as a job (util/job.h): the body schedule evaluated at a fixed
 // frame rate over the scenario (or part of it) and written as a BVH clip on the character's
-// skeleton, or as a glTF 2.0 animation (.glb, scene/gltf_motion_export.h) on the rig of its model —
+// skeleton, or as a glTF 2.0 animation (.glb) on the rig of its model (scene/gltf_motion_export.h)
+// or, for the built-in humanoid, with the humanoid itself (scene/gltf_character_export.h) —
 // the frames retargeted onto the body as the renderer poses it, the face layers as morph-target
 // weights where the model has targets named after them. `thespis-cli bake-motion` and Python's
 // thespis.scenario.bake_motion run it. Frames are baked into memory first and written atomically
@@ -41,10 +42,13 @@ struct MotionBakeJob final : Job {
     double lastTime = 0;   ///< after run(): the last frame's time
     /// After run() of a .glb: the morph targets that got face weights ("mesh Head: fap19").
     std::vector<std::string> morphTargets;
+    /// After run(): what the file leaves out, one sentence each.
+    std::vector<std::string> warnings;
 
     std::string title() const override;
     /// fps > 0; start ≥ 0; end ≥ start; the output ends in .bvh or .glb and its folder exists;
-    /// the scenario has the character, and a glTF model for a .glb.
+    /// the scenario has the character. A .glb of a character with a glTF model is that model
+    /// with the motion; of the built-in humanoid, the humanoid written as a glTF character.
     Result<void> validate() const override;
     Result<void> run(JobContext& context) override;
     void discardOutput() override;

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <cstring>
 #include <map>
-#include <sstream>
 
 #include "anim/rig_orientation.h"
 #include "scene/gltf_reader.h"
+#include "scene/gltf_writing.h"
 #include "util/file_io.h"
 #include "util/text.h"
 
@@ -52,58 +52,6 @@ std::pair<Quatd, double> findTurn(std::span<const Vec3d> file, std::span<const V
     return best;
 }
 
-/// Appends bytes to buffer 0 as a bufferView of their own (4-byte aligned); returns its index.
-int addView(tinygltf::Model& model, const void* bytes, std::size_t size)
-{
-    std::vector<unsigned char>& data = model.buffers[0].data;
-    data.resize((data.size() + 3) / 4 * 4, 0);
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = data.size();
-    view.byteLength = size;
-    const auto* first = static_cast<const unsigned char*>(bytes);
-    data.insert(data.end(), first, first + size);
-    model.bufferViews.push_back(std::move(view));
-    return int(model.bufferViews.size()) - 1;
-}
-
-/// A float accessor of `count` elements of `type` (TINYGLTF_TYPE_*), `components` floats each.
-int addAccessor(tinygltf::Model& model, const std::vector<float>& values, int type, int components, bool withBounds)
-{
-    tinygltf::Accessor accessor;
-    accessor.bufferView = addView(model, values.data(), values.size() * sizeof(float));
-    accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-    accessor.type = type;
-    accessor.count = values.size() / std::size_t(components);
-    if (withBounds && !values.empty()) {
-        accessor.minValues.assign(std::size_t(components), std::numeric_limits<double>::infinity());
-        accessor.maxValues.assign(std::size_t(components), -std::numeric_limits<double>::infinity());
-        for (std::size_t i = 0; i < values.size(); ++i) {
-            double& low = accessor.minValues[i % std::size_t(components)];
-            double& high = accessor.maxValues[i % std::size_t(components)];
-            low = std::min(low, double(values[i]));
-            high = std::max(high, double(values[i]));
-        }
-    }
-    model.accessors.push_back(std::move(accessor));
-    return int(model.accessors.size()) - 1;
-}
-
-void addChannel(tinygltf::Model& model, tinygltf::Animation& animation, int times, int node, const char* path,
-                const std::vector<float>& values, int type, int components)
-{
-    tinygltf::AnimationSampler sampler;
-    sampler.input = times;
-    sampler.output = addAccessor(model, values, type, components, false);
-    sampler.interpolation = "LINEAR";
-    animation.samplers.push_back(std::move(sampler));
-    tinygltf::AnimationChannel channel;
-    channel.sampler = int(animation.samplers.size()) - 1;
-    channel.target_node = node;
-    channel.target_path = path;
-    animation.channels.push_back(std::move(channel));
-}
-
 const char* mimeTypeOf(const std::filesystem::path& file)
 {
     const std::string extension = lowercase(file.extension().string());
@@ -140,7 +88,7 @@ Result<void> gatherIntoOneBuffer(tinygltf::Model& model, const std::filesystem::
             return makeError(ErrorCode::FileNotFound, "The image " + image.uri + " of " + source.string() +
                                                           " cannot be read, so it cannot go into the .glb.",
                              bytes.error().message);
-        image.bufferView = addView(model, bytes->data(), bytes->size());
+        image.bufferView = gltf::addView(model, bytes->data(), bytes->size());
         image.mimeType = mimeTypeOf(file);
         image.uri.clear();
     }
@@ -282,12 +230,7 @@ Result<GltfMotionResult> writeGltfMotion(const std::filesystem::path& output, co
                 parentRotation = animated ? nodeRotation[std::size_t(p)] : gltf::rotationOf(rest);
                 parentPosition = animated ? nodePosition[std::size_t(p)] : translationOf(rest);
             }
-            Quatd local = anim::normalize(anim::conjugate(parentRotation) * nodeRotation[n]);
-            std::vector<float>& r = rotations[std::size_t(j)];
-            if (r.size() >= 4 && double(r[r.size() - 4]) * local.x + double(r[r.size() - 3]) * local.y +
-                                         double(r[r.size() - 2]) * local.z + double(r[r.size() - 1]) * local.w < 0)
-                local = {-local.x, -local.y, -local.z, -local.w}; // the same rotation, on the path LINEAR blends along
-            r.insert(r.end(), {float(local.x), float(local.y), float(local.z), float(local.w)});
+            gltf::appendRotation(rotations[std::size_t(j)], anim::normalize(anim::conjugate(parentRotation) * nodeRotation[n]));
             const Vec3d t = anim::rotate(anim::conjugate(parentRotation), nodePosition[n] - parentPosition) * (1 / parentScale);
             translations[std::size_t(j)].insert(translations[std::size_t(j)].end(), {float(t.x), float(t.y), float(t.z)});
             const tinygltf::Node& node = source.nodes[n];
@@ -300,25 +243,29 @@ Result<GltfMotionResult> writeGltfMotion(const std::filesystem::path& output, co
     }
 
     tinygltf::Model out = animationOnly ? nodesOnly(source) : source;
+    // Every node named (as import names it): a node with nothing else left, a mesh's node in an
+    // animation-only file, would be written as null, which no reader takes.
+    for (std::size_t n = 0; n < out.nodes.size(); ++n)
+        if (out.nodes[n].name.empty())
+            out.nodes[n].name = gltf::nodeName(source, int(n));
     if (!animationOnly) {
+        // The model's own animations give way to the bake, their data with them.
         out.animations.clear();
         if (auto gathered = gatherIntoOneBuffer(out, model); !gathered)
             return gathered.error();
+        gltf::dropUnused(out);
     }
     out.asset.generator = "Thespis Studio (bake-motion)";
     tinygltf::Animation animation;
     animation.name = motion.name;
-    std::vector<float> times(frameCount);
-    for (std::size_t f = 0; f < frameCount; ++f)
-        times[f] = float(double(f) / motion.fps);
-    const int timeAccessor = addAccessor(out, times, TINYGLTF_TYPE_SCALAR, 1, true);
+    const int timeAccessor = gltf::addFrameTimes(out, frameCount, motion.fps);
     GltfMotionResult result;
     for (int j = 0; j < jointCount; ++j) {
         const int n = nodeOfJoint[std::size_t(j)];
         toTrs(out.nodes[std::size_t(n)]);
-        addChannel(out, animation, timeAccessor, n, "rotation", rotations[std::size_t(j)], TINYGLTF_TYPE_VEC4, 4);
+        gltf::addChannel(out, animation, timeAccessor, n, "rotation", rotations[std::size_t(j)], TINYGLTF_TYPE_VEC4, 4);
         if (moves[std::size_t(j)])
-            addChannel(out, animation, timeAccessor, n, "translation", translations[std::size_t(j)], TINYGLTF_TYPE_VEC3, 3);
+            gltf::addChannel(out, animation, timeAccessor, n, "translation", translations[std::size_t(j)], TINYGLTF_TYPE_VEC3, 3);
         ++result.animatedNodes;
     }
 
@@ -355,16 +302,12 @@ Result<GltfMotionResult> writeGltfMotion(const std::filesystem::path& output, co
                 for (std::size_t k = 0; k < targets; ++k)
                     weights.push_back(scalarOf[k] >= 0 ? motion.faceFrames[f * faceFloats + std::size_t(scalarOf[k])]
                                                        : k < mesh.weights.size() ? float(mesh.weights[k]) : 0.0f);
-            addChannel(out, animation, timeAccessor, int(n), "weights", weights, TINYGLTF_TYPE_SCALAR, 1);
+            gltf::addChannel(out, animation, timeAccessor, int(n), "weights", weights, TINYGLTF_TYPE_SCALAR, 1);
         }
     }
     out.animations.push_back(std::move(animation));
 
-    tinygltf::TinyGLTF writer;
-    std::ostringstream bytes;
-    if (!writer.WriteGltfSceneToStream(&out, bytes, false, true))
-        return makeError(ErrorCode::Internal, "The glTF writer could not write " + output.string() + ".");
-    if (auto written = writeFileAtomically(output, bytes.str()); !written)
+    if (auto written = gltf::writeGlb(out, output); !written)
         return written.error();
     return result;
 }

@@ -593,7 +593,7 @@ TEST(Edit, RebuildingTheTouchedCharacterGivesTheSameMotionAsBuildingAll)
     EXPECT_NE(rebuilt->characters[1].body, before->characters[1].body);
     for (std::size_t c = 0; c < s.characters.size(); ++c) {
         std::vector<float> a = built->characters[c].skeleton.restFrame(), b = a;
-        for (double t = 0; t <= built->duration; t += 0.25) {
+        for (double t = 0; t <= ticksToSeconds(built->duration); t += 0.25) {
             built->characters[c].evaluateBody(t, a);
             rebuilt->characters[c].evaluateBody(t, b);
             ASSERT_EQ(a, b) << "character " << c << " at " << t << " s";
@@ -602,7 +602,7 @@ TEST(Edit, RebuildingTheTouchedCharacterGivesTheSameMotionAsBuildingAll)
     // The motion did change for the touched character.
     std::vector<float> old = before->characters[1].skeleton.restFrame(), moved = old;
     bool differs = false;
-    for (double t = 0; t <= built->duration && !differs; t += 0.25) {
+    for (double t = 0; t <= ticksToSeconds(built->duration) && !differs; t += 0.25) {
         before->characters[1].evaluateBody(t, old);
         rebuilt->characters[1].evaluateBody(t, moved);
         differs = old != moved;
