@@ -18,7 +18,7 @@
 #include "editor/job_progress.h"
 #include "editor/job_runner.h"
 #include "editor/qt_conversions.h"
-#include "scenario/motion_bake_job.h"
+#include "runtime/motion_bake_job.h"
 
 namespace thespis::editor {
 
@@ -135,7 +135,7 @@ bool ExportMotionDialog::exportMotion()
 {
     if (m_job->isRunning() || m_character->currentIndex() < 0)
         return false;
-    auto job = std::make_unique<core::scenario::MotionBakeJob>();
+    auto job = std::make_unique<core::runtime::MotionBakeJob>();
     job->scenario = m_document.scenario();
     job->assets = m_document.assets();
     job->character = m_document.scenario().characters[std::size_t(m_character->currentIndex())].name;
@@ -170,7 +170,7 @@ void ExportMotionDialog::onFinished(const core::Result<void>& result)
         m_progress->failed(result.error());
         return;
     }
-    const auto* job = m_job->jobAs<core::scenario::MotionBakeJob>();
+    const auto* job = m_job->jobAs<core::runtime::MotionBakeJob>();
     const QString path = fromFsPath(job->output);
     QString text = tr("Wrote %1: %n frame(s) at %2 fps.", nullptr, int(job->frameCount))
                        .arg(QDir::toNativeSeparators(path))

@@ -1,4 +1,4 @@
-// thespis-cli bake-motion: runs core's MotionBakeJob (a character's body schedule evaluated at a
+// thespis-cli bake-motion: runs core's MotionBakeJob (a character's poses as the Stage plays them, at a
 // fixed frame rate, written as a BVH clip or a glTF animation) with a progress bar; Ctrl-C stops
 // it and nothing is written.
 
@@ -13,7 +13,7 @@
 #include "commands.h"
 #include "exit_codes.h"
 #include "job_progress.h"
-#include "scenario/motion_bake_job.h"
+#include "runtime/motion_bake_job.h"
 
 namespace thespis::cli {
 namespace {
@@ -101,7 +101,7 @@ int runBakeMotion(const CommandSpec& spec, const ParsedArguments& arguments)
     auto document = openScenarioReporting(spec.name, scenarioPath);
     if (!document)
         return ExitInvalidInput;
-    core::scenario::MotionBakeJob job;
+    core::runtime::MotionBakeJob job;
     job.scenario = std::move(document->scenario);
     job.assets = std::move(document->assets);
     job.character = characterName;
@@ -113,7 +113,7 @@ int runBakeMotion(const CommandSpec& spec, const ParsedArguments& arguments)
     job.frameDelay = debugFrameDelay();
 
     const auto began = std::chrono::steady_clock::now();
-    const auto baked = runJobWithProgress(spec.name, job, {core::scenario::MotionBakeJob::FramesStage, "frames"}, quiet,
+    const auto baked = runJobWithProgress(spec.name, job, {core::runtime::MotionBakeJob::FramesStage, "frames"}, quiet,
                                           outPath.string() + " was not written");
     if (!baked) {
         if (baked.error().code == core::ErrorCode::Cancelled)

@@ -14,7 +14,7 @@
 #include "errors.h"
 #include "run_job.h"
 #include "scenario/clip_import.h"
-#include "scenario/motion_bake_job.h"
+#include "runtime/motion_bake_job.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_io.h"
 #include "scenario/scenario_runtime.h"
@@ -511,7 +511,7 @@ void bindScenario(py::module_& m)
         [](const Scenario& scenario, const std::string& character, const std::filesystem::path& out,
            const py::object& baseDir, double fps, double start, std::optional<double> end, const py::object& progress,
            bool animationOnly) {
-            MotionBakeJob job;
+            core::runtime::MotionBakeJob job;
             job.scenario = scenario;
             job.assets = assetsArgument(baseDir);
             job.character = character;

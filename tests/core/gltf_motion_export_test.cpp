@@ -15,7 +15,7 @@
 #include <sstream>
 
 #include "anim/quat.h"
-#include "scenario/motion_bake_job.h"
+#include "runtime/motion_bake_job.h"
 #include "scenario/scenario_character.h"
 #include "scenario/scenario_runtime.h"
 #include "scene/gltf_character.h"
@@ -23,6 +23,7 @@
 
 using namespace thespis::core;
 using namespace thespis::core::scenario;
+using thespis::core::runtime::MotionBakeJob;
 namespace fs = std::filesystem;
 
 namespace {

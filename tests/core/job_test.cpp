@@ -14,7 +14,7 @@
 #include "lighting/probe_projection_job.h"
 #include "lighting/transfer_bake_job.h"
 #include "render/frame_sequence_job.h"
-#include "scenario/motion_bake_job.h"
+#include "runtime/motion_bake_job.h"
 #include "scenario/scenario_io.h"
 #include "scene/gltf_mesh.h"
 #include "util/file_io.h"
@@ -172,7 +172,7 @@ TEST(TransferBakeJob, WritesWhatItBakedAndACancelledOneLeavesNoFile)
 TEST(MotionBakeJob, BakesTheDemoAndACancelledOneLeavesNoFile)
 {
     const fs::path folder = freshFolder("motion");
-    scenario::MotionBakeJob job;
+    runtime::MotionBakeJob job;
     job.scenario = demo();
     job.assets = thespis::test::resources();
     job.character = job.scenario.characters.front().name;
@@ -186,17 +186,17 @@ TEST(MotionBakeJob, BakesTheDemoAndACancelledOneLeavesNoFile)
     ASSERT_TRUE(clip.ok()) << clip.error().message;
     EXPECT_EQ(clip->clip->frameCount(), 21);
 
-    scenario::MotionBakeJob slow = job;
+    runtime::MotionBakeJob slow = job;
     slow.output = folder / "cancelled.bvh";
     slow.frameDelay = std::chrono::milliseconds(20);
     const auto cancelled = runJobWatched(slow, std::chrono::milliseconds(5), [](const JobProgress& p) {
-        return !(p.stage == scenario::MotionBakeJob::FramesStage && p.done >= 2);
+        return !(p.stage == runtime::MotionBakeJob::FramesStage && p.done >= 2);
     });
     ASSERT_FALSE(cancelled.ok());
     EXPECT_EQ(cancelled.error().code, ErrorCode::Cancelled);
     EXPECT_FALSE(fs::exists(slow.output));
 
-    scenario::MotionBakeJob nobody = job;
+    runtime::MotionBakeJob nobody = job;
     nobody.character = "Nobody";
     const auto refused = nobody.validate();
     ASSERT_FALSE(refused.ok());

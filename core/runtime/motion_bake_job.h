@@ -1,6 +1,7 @@
 #pragma once
-// Baking a character's motion as a job (util/job.h): the body schedule evaluated at a fixed
-// frame rate over the scenario (or part of it) and written as a BVH clip on the character's
+// Baking a character's motion as a job (util/job.h): the character's poses as the Stage plays them
+// (runtime/stage.h: the idle motion under the authored schedule, as the studio shows it), taken
+// at a fixed frame rate over the scenario (or part of it) and written as a BVH clip on the character's
 // skeleton, or as a glTF 2.0 animation (.glb) on the rig of its model (scene/gltf_motion_export.h)
 // or, for the built-in humanoid, with the humanoid itself (scene/gltf_character_export.h) —
 // the frames retargeted onto the body as the renderer poses it, the face layers as morph-target
@@ -20,14 +21,14 @@
 #include "scenario/scenario_runtime.h"
 #include "util/job.h"
 
-namespace thespis::core::scenario {
+namespace thespis::core::runtime {
 
 struct MotionBakeJob final : Job {
     static constexpr const char* LoadingStage = "Loading the scenario";
     static constexpr const char* FramesStage = "Evaluating frames";
 
-    Scenario scenario;
-    Assets assets{"."}; ///< where the scenario's files are
+    scenario::Scenario scenario;
+    scenario::Assets assets{"."}; ///< where the scenario's files are
     std::string character;
     std::filesystem::path output; ///< a .bvh or .glb file
     /// .glb: only the model's nodes and the animation, without its meshes and images.
@@ -54,7 +55,8 @@ struct MotionBakeJob final : Job {
     void discardOutput() override;
 
 private:
-    Result<void> writeGltf(const CharacterRuntime& body, std::span<const float> frames, long count);
+    Result<void> writeGltf(const scenario::CharacterRuntime& body, std::span<const float> frames,
+                           std::span<const float> face, long count);
 };
 
-} // namespace thespis::core::scenario
+} // namespace thespis::core::runtime

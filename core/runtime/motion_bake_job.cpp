@@ -1,16 +1,21 @@
-#include "scenario/motion_bake_job.h"
+#include "runtime/motion_bake_job.h"
 
 #include <cmath>
 #include <thread>
 
 #include "anim/bvh.h"
 #include "anim/keyframe_clip.h"
+#include "runtime/stage.h"
 #include "scenario/scenario_character.h"
 #include "scenario/scenario_runtime.h"
 #include "scene/gltf_character_export.h"
 #include "scene/gltf_motion_export.h"
 
-namespace thespis::core::scenario {
+namespace thespis::core::runtime {
+
+using scenario::Character;
+using scenario::CharacterRuntime;
+using scenario::Scenario;
 
 namespace {
 // Refuse bakes whose frames would not fit comfortably in memory (1 GiB of floats).
@@ -56,7 +61,7 @@ Result<void> MotionBakeJob::run(JobContext& context)
 {
     frameCount = 0;
     context.beginStage(LoadingStage);
-    auto runtime = buildRuntime(scenario, assets);
+    auto runtime = scenario::buildRuntime(scenario, assets);
     if (!runtime)
         return runtime.error();
     const CharacterRuntime* body = runtime->findCharacter(character);
@@ -70,9 +75,14 @@ Result<void> MotionBakeJob::run(JobContext& context)
         return makeError(ErrorCode::InvalidArgument, "The bake starts (" + std::to_string(start)
                                                          + " s) after the scenario ends (" + std::to_string(last) + " s).");
 
-    const anim::BlendingSchedule& schedule = *body->body;
-    const anim::FrameLayoutPtr& layout = schedule.layout();
+    // The frames are the Stage's, as the studio plays them: the idle motion under the authored
+    // schedule, muted and soloed layers as they are.
+    Stage stage(*runtime);
+    PoseSet poses = stage.makePoseSet();
+    const auto index = std::size_t(body - runtime->characters.data());
+    const anim::FrameLayoutPtr& layout = body->body->layout();
     const std::size_t floats = layout->floatCount();
+    const std::size_t faceFloats = body->face ? body->face->layout()->floatCount() : 0;
     // A small tolerance so that e.g. 8.4 s × 30 fps gives 253 frames despite rounding.
     const double intervals = std::floor((last - start) * fps + 1e-6);
     if ((intervals + 1) * double(floats) > MaxBakeFloats)
@@ -83,18 +93,22 @@ Result<void> MotionBakeJob::run(JobContext& context)
 
     // The frame buffer is allocated once; evaluation itself allocates nothing.
     context.beginStage(FramesStage, std::uint64_t(count));
-    std::vector<float> frames(std::size_t(count) * floats);
+    std::vector<float> frames(std::size_t(count) * floats), face(std::size_t(count) * faceFloats);
     for (long i = 0; i < count; ++i) {
         if (context.stopRequested())
             return cancelledError(title());
-        schedule.evaluate(start + double(i) / fps, std::span<float>(frames.data() + std::size_t(i) * floats, floats));
+        stage.evaluate(secondsToTicks(start + double(i) / fps), poses);
+        const CharacterPose& pose = poses.characters[index];
+        std::copy(pose.body.begin(), pose.body.end(), frames.begin() + std::ptrdiff_t(std::size_t(i) * floats));
+        if (faceFloats > 0)
+            std::copy(pose.face.begin(), pose.face.end(), face.begin() + std::ptrdiff_t(std::size_t(i) * faceFloats));
         context.setDone(std::uint64_t(i + 1));
         if (frameDelay.count() > 0)
             std::this_thread::sleep_for(frameDelay);
     }
 
     if (output.extension() == ".glb") {
-        if (auto written = writeGltf(*body, frames, count); !written)
+        if (auto written = writeGltf(*body, frames, face, count); !written)
             return written;
         frameCount = count;
         lastTime = start + double(count - 1) / fps;
@@ -123,13 +137,14 @@ Result<void> MotionBakeJob::run(JobContext& context)
 }
 
 // The frames onto the model's rig, as the renderer poses it, and the face at the same times.
-Result<void> MotionBakeJob::writeGltf(const CharacterRuntime& body, std::span<const float> frames, long count)
+Result<void> MotionBakeJob::writeGltf(const CharacterRuntime& body, std::span<const float> frames,
+                                      std::span<const float> face, long count)
 {
     const auto index = std::size_t(scenario.findCharacter(character) - scenario.characters.data());
-    auto model = loadCharacterBody(scenario, index, assets);
+    auto model = scenario::loadCharacterBody(scenario, index, assets);
     if (!model)
         return model.error();
-    const anim::FrameRetarget retarget = retargetOntoBody(body.skeleton, *model);
+    const anim::FrameRetarget retarget = scenario::retargetOntoBody(body.skeleton, *model);
     const std::size_t from = body.skeleton.frameLayout()->floatCount();
     const std::size_t to = model->skeleton.frameLayout()->floatCount();
     std::vector<float> onModel(std::size_t(count) * to);
@@ -139,13 +154,8 @@ Result<void> MotionBakeJob::writeGltf(const CharacterRuntime& body, std::span<co
     motion.name = character;
     motion.fps = fps;
     motion.bodyFrames = onModel;
-    std::vector<float> face;
     if (body.face) {
         motion.faceLayout = body.face->layout();
-        const std::size_t floats = motion.faceLayout->floatCount();
-        face.resize(std::size_t(count) * floats);
-        for (long i = 0; i < count; ++i)
-            body.face->evaluate(start + double(i) / fps, std::span<float>(face).subspan(std::size_t(i) * floats, floats));
         motion.faceFrames = face;
     }
     const std::string& modelFile = scenario.findCharacter(character)->model;
@@ -170,4 +180,4 @@ void MotionBakeJob::discardOutput()
     std::filesystem::remove(output, ignored);
 }
 
-} // namespace thespis::core::scenario
+} // namespace thespis::core::runtime
