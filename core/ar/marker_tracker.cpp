@@ -9,6 +9,7 @@
 #include "ar/aruco_board.h"
 #include "ar/charuco_corners.h"
 #include "ar/edge_refine.h"
+#include "ar/marker_synthesis.h"
 #include "ar/opencv_bridge.h"
 #include "ar/pose_fit.h"
 
@@ -25,6 +26,10 @@ constexpr int CharucoMinimumMarkers = 2;
 // The search region around the board's last place reaches this much farther (pixels) than a
 // quarter of its size, for a small board moving fast.
 constexpr int SearchMarginPixels = 24;
+// Smears longer than this (pixels) bias the edges of the markers' borders (edge_refine.h); the
+// markers' patterns are fitted to the picture instead (marker_synthesis.h). Sharp frames' edges
+// are found to 0.03 px already, and show about a pixel of "smear" (the pixels' own area).
+constexpr double SynthesisSmear = 2.0;
 
 cv::Ptr<cv::aruco::DetectorParameters> detectorParameters()
 {
@@ -91,6 +96,8 @@ struct MarkerTracker::State {
     std::vector<cv::Point3f> objectPoints;
     std::vector<cv::Point2f> imagePoints;
     std::vector<EdgeRamp> ramps;
+    std::vector<MarkerPattern> patterns; // a grid's markers as printed, by id
+    float whiteMargin = 0;               // cells of paper known round each of a grid's markers
 
     std::vector<cv::Point3f> outline; // the board's extent in its plane, for the search region
     std::vector<cv::Point2f> projectedOutline;
@@ -124,6 +131,34 @@ struct MarkerTracker::State {
             for (std::vector<cv::Point2f>& marker : *found)
                 for (cv::Point2f& corner : marker)
                     corner += offset;
+    }
+
+    // Each marker's pattern fitted to the picture, smeared; the frame's smear is then what the
+    // markers' fits agree on (the mean of their smears' outer products, which have no sign).
+    MotionBlur alignPatterns(const MotionBlur& estimated)
+    {
+        double xx = 0, xy = 0, yy = 0;
+        int fitted = 0;
+        MotionBlur start = estimated;
+        for (std::size_t m = 0; m < corners.size(); ++m) {
+            MotionBlur own;
+            if (ids[m] < 0 || std::size_t(ids[m]) >= patterns.size() ||
+                !alignMarkerPattern(grey, corners[m], patterns[std::size_t(ids[m])], whiteMargin, start,
+                                    fitted ? SmearDirection::Known : SmearDirection::Search, &own))
+                continue;
+            start = own; // the next markers start from this one's smear
+            const double x = own.length * std::cos(own.angle), y = own.length * std::sin(own.angle);
+            xx += x * x, xy += x * y, yy += y * y, ++fitted;
+        }
+        if (fitted == 0)
+            return estimated;
+        xx /= fitted, xy /= fitted, yy /= fitted;
+        MotionBlur blur;
+        blur.length = std::sqrt(0.5 * (xx + yy) + std::hypot(0.5 * (xx - yy), xy));
+        blur.angle = 0.5 * std::atan2(2 * xy, xx - yy);
+        if (blur.angle < 0)
+            blur.angle += CV_PI;
+        return blur;
     }
 
     // The board's points and where they are seen, from the markers found in `grey`.
@@ -171,6 +206,23 @@ Result<std::unique_ptr<MarkerTracker>> MarkerTracker::create(const BoardSpec& bo
     else // the edges place a grid's corners (edge_refine.h); cv::cornerSubPix would only cost time
         state->parameters->cornerRefinementMethod = cv::aruco::CORNER_REFINE_NONE;
     state->board = state->charuco ? cv::Ptr<cv::aruco::Board>(state->charuco) : arucoBoard(board);
+    if (!state->charuco) {
+        // Half the gap between markers is known to be white round each (the other half may be
+        // smeared over by the neighbour).
+        const int cells = markerCells(*state->board->dictionary, *state->parameters);
+        state->whiteMargin = float(0.5 * board.second / board.square * cells);
+        for (const int id : state->board->ids) {
+            if (std::size_t(id) >= state->patterns.size())
+                state->patterns.resize(std::size_t(id) + 1);
+            cv::Mat drawn;
+            state->board->dictionary->drawMarker(id, cells, drawn, state->parameters->markerBorderBits);
+            MarkerPattern& pattern = state->patterns[std::size_t(id)];
+            pattern.cells = cells;
+            pattern.white.assign(drawn.begin<std::uint8_t>(), drawn.end<std::uint8_t>());
+            for (std::uint8_t& cell : pattern.white)
+                cell = cell > 127;
+        }
+    }
     float minX = 1e9f, minY = 1e9f, maxX = -1e9f, maxY = -1e9f;
     for (const auto& marker : state->board->objPoints)
         for (const cv::Point3f& corner : marker) {
@@ -218,7 +270,9 @@ TrackerEstimate MarkerTracker::estimate(const VideoFrame& frame)
             refineMarkerEdges(s.grey, marker, cells, &s.ramps);
         }
     }
-    const MotionBlur blur = estimateMotionBlur(s.ramps);
+    MotionBlur blur = estimateMotionBlur(s.ramps);
+    if (!s.charuco && blur.length > SynthesisSmear)
+        blur = s.alignPatterns(blur);
     toDetected(s.corners, s.ids, s.markers);
     s.correspondences();
     const std::optional<TargetPose> previous =

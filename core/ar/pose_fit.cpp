@@ -18,9 +18,10 @@ constexpr double ClearlyBetterFit = 3.0;
 // sharp corners to about 0.03 px (issue 29), so a higher floor would make the filter trust its
 // prediction over a sharp frame, and carry a smeared frame's error into the sharp ones after it.
 constexpr double MinimumPixelNoise = 0.05;
-// How far, as a share of a smear's length, its points may be off along it: the edges' bias left
-// after refinement is about a tenth of the smear, more on small or slanted markers (issue 29).
-constexpr double SmearShare = 0.5;
+// How far, as a share of a smear's length, its points may be off along it: fitting the markers'
+// patterns leaves a few hundredths of the smear on a grid, the edges alone about a tenth, more on
+// small or slanted markers (issue 29).
+constexpr double SmearShare = 0.25;
 
 double rmsError(const std::vector<cv::Point3f>& objectPoints, const std::vector<cv::Point2f>& imagePoints,
                 const CameraIntrinsics& camera, const cv::Vec3d& rotation, const cv::Vec3d& translation)
