@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <numbers>
@@ -58,6 +59,7 @@ std::ostream& operator<<(std::ostream& out, const Score& s)
 
 struct FootageRun {
     Score filtered, raw, opencv;
+    double milliseconds[2] = {}; // tracking time, sharp and smeared frames (for the log only)
     std::vector<double> smearedLengths, smearedAngles, sharpLengths;
 };
 
@@ -87,7 +89,11 @@ FootageRun track(const SensorFootageSettings& settings)
     FootageRun run;
     for (int i = 0; i < footage.frames(); ++i) {
         const SensorFootage::Frame frame = footage.render(i);
-        const TrackedFrame tracked = session.process(SensorFootage::videoFrame(frame.grey, i));
+        const VideoFrame video = SensorFootage::videoFrame(frame.grey, i);
+        const auto start = std::chrono::steady_clock::now();
+        const TrackedFrame tracked = session.process(video);
+        run.milliseconds[frame.smeared] +=
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         if (tracked.tracked) {
             run.filtered.add(tracked.pose, frame.truth, frame.smeared);
             run.raw.add(tracked.measured.pose, frame.truth, frame.smeared);
@@ -134,7 +140,9 @@ TEST(MarkerFootage, TheIssuesFootageMeetsItsFigures)
     SensorFootageSettings settings;
     settings.frames = 120;
     const FootageRun run = track(settings);
-    std::cout << "filtered: " << run.filtered << "\nraw:      " << run.raw << "\nOpenCV:   " << run.opencv << "\n";
+    std::cout << "filtered: " << run.filtered << "\nraw:      " << run.raw << "\nOpenCV:   " << run.opencv
+              << "\ntracking: " << run.milliseconds[0] / run.filtered.frames[0] << " ms a sharp frame, "
+              << run.milliseconds[1] / run.filtered.frames[1] << " ms a smeared one\n";
     EXPECT_EQ(run.filtered.missed, 0);
     EXPECT_EQ(run.opencv.missed, 0);
     EXPECT_LE(run.filtered.meanRotation(), 0.10 * Degree);
@@ -143,14 +151,15 @@ TEST(MarkerFootage, TheIssuesFootageMeetsItsFigures)
     EXPECT_LE(run.filtered.meanTranslation(), 0.001);
     EXPECT_LE(run.filtered.maxTranslation, 0.003);
     EXPECT_LE(run.raw.maxTranslation, 0.003);
-    // Smeared frames: better than OpenCV's on the same frames, and within twice what OpenCV
-    // reaches on the sharp ones. (The issue asks for 2× our own sharp frames; those are at 0.008°
-    // now and the smeared ones 13× that: a smear longer than a marker's border still biases its
-    // edges, see core/ar/edge_refine.h.)
+    // Smeared frames: better than OpenCV's on the same frames, and within a few times our sharp
+    // ones (the issue asks for 2×). Fitting each marker's pattern, smeared, to the picture
+    // (core/ar/marker_synthesis.h) brings them from 13× to about 5× filtered and 7× alone; the
+    // edges alone leave a smear longer than the border biased outward.
     EXPECT_LT(run.filtered.smearedRotation(), run.opencv.smearedRotation());
     EXPECT_LT(run.raw.smearedRotation(), run.opencv.smearedRotation());
-    EXPECT_LE(run.filtered.smearedRotation(), 0.15 * Degree);
-    EXPECT_LE(run.filtered.smearedRotation(), 2 * run.opencv.sharpRotation());
+    EXPECT_LE(run.filtered.smearedRotation(), 0.06 * Degree);
+    EXPECT_LE(run.filtered.smearedRotation(), 7 * run.filtered.sharpRotation());
+    EXPECT_LE(run.raw.smearedRotation(), 9 * run.raw.sharpRotation());
     // The filter never makes the sharp frames worse than they are alone, and it makes the
     // smeared ones better.
     EXPECT_LE(run.filtered.sharpRotation(), run.raw.sharpRotation());
@@ -189,15 +198,20 @@ TEST(MarkerFootage, SmearsOfEveryLengthAndDirection)
             if (length == 0)
                 continue;
             EXPECT_LT(run.raw.smearedRotation(), run.opencv.smearedRotation());
-            EXPECT_NEAR(median(run.smearedLengths), length, 0.3 * length);
-            // Square markers' two edge directions cannot tell +45° from −45°. Along x, with the
-            // board turned 45° about its vertical, the borders across the smear are narrower than
-            // it and the direction is off by up to 55° on those frames (30° median at 9 px).
-            if (angle != 45) {
-                std::vector<double> off;
-                for (const double a : run.smearedAngles)
-                    off.push_back(directionDifference(a, angle * Degree));
-                EXPECT_LT(median(off), (angle == 90 ? 10 : 45) * Degree);
+            // Up to 7 pixels, each smeared frame alone is within 10× the sharp ones (9×, 6× and
+            // 3× at 7 px along 45°, 0° and 90°; the edges alone gave 10×, 26× and 17×); 9 pixels
+            // is wider than the nearer markers' borders and some of their fits fail, falling
+            // back to the edges.
+            if (length <= 7) {
+                EXPECT_LE(run.raw.smearedRotation(), 10 * run.raw.sharpRotation());
             }
+            // The fitted smear, not the edges' ramps alone (which cannot tell a square marker's
+            // +45° from −45°, and are off by 20–30° along x with the board turned about its
+            // vertical): its length and direction.
+            EXPECT_NEAR(median(run.smearedLengths), length, 0.05 * length);
+            std::vector<double> off;
+            for (const double a : run.smearedAngles)
+                off.push_back(directionDifference(a, angle * Degree));
+            EXPECT_LT(median(off), 3 * Degree);
         }
 }
