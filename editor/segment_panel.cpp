@@ -168,8 +168,7 @@ SegmentPanel::SegmentPanel(QWidget* parent) : QWidget(parent)
     layout->addWidget(m_message);
 
     m_hint = new QLabel(tr("Click a segment in the viewport to select it (Ctrl toggles, Shift adds). Receivers are "
-                           "left out of the shadow proxy; occluders cast shadows but are not lit. PI segments keep "
-                           "their shape in every pose."),
+                           "left out of the shadow proxy; occluders cast shadows but are not lit."),
                         this);
     m_hint->setObjectName(QStringLiteral("segmentHint"));
     m_hint->setWordWrap(true);

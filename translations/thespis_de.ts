@@ -3006,12 +3006,12 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
         <translation>Dreiecke</translation>
     </message>
     <message>
-        <source>Click a segment in the viewport to select it (Ctrl toggles, Shift adds). Receivers are left out of the shadow proxy; occluders cast shadows but are not lit. PI segments keep their shape in every pose.</source>
-        <translation>Klicken Sie auf ein Segment in der 3D-Ansicht, um es auszuwählen (Strg schaltet um, Umschalt fügt hinzu). Empfänger werden aus dem Schatten-Proxy ausgelassen; Verdecker werfen Schatten, werden aber nicht beleuchtet. PI-Segmente behalten in jeder Pose ihre Form.</translation>
-    </message>
-    <message>
         <source>%1 of %2 selected</source>
         <translation>%1 von %2 ausgewählt</translation>
+    </message>
+    <message>
+        <source>Click a segment in the viewport to select it (Ctrl toggles, Shift adds). Receivers are left out of the shadow proxy; occluders cast shadows but are not lit.</source>
+        <translation>Klicken Sie im Ansichtsfenster auf ein Segment, um es auszuwählen (Strg schaltet um, Umschalt fügt hinzu). Empfänger bleiben aus dem Schatten-Proxy heraus; Verdecker werfen Schatten, werden aber nicht beleuchtet.</translation>
     </message>
 </context>
 <context>

@@ -3006,12 +3006,12 @@ Un point vert signale une action jouée à l’instant courant.</translation>
         <translation>Triangles</translation>
     </message>
     <message>
-        <source>Click a segment in the viewport to select it (Ctrl toggles, Shift adds). Receivers are left out of the shadow proxy; occluders cast shadows but are not lit. PI segments keep their shape in every pose.</source>
-        <translation>Cliquez sur un segment dans la vue 3D pour le sélectionner (Ctrl : inverser la sélection, Maj : ajouter). Les récepteurs sont exclus du proxy d’ombre ; les occulteurs projettent des ombres mais ne sont pas éclairés. Les segments PI gardent leur forme dans toutes les poses.</translation>
-    </message>
-    <message>
         <source>%1 of %2 selected</source>
         <translation>Sélection : %1 sur %2</translation>
+    </message>
+    <message>
+        <source>Click a segment in the viewport to select it (Ctrl toggles, Shift adds). Receivers are left out of the shadow proxy; occluders cast shadows but are not lit.</source>
+        <translation>Cliquez sur un segment dans la vue pour le sélectionner (Ctrl bascule, Maj ajoute). Les récepteurs sont exclus du proxy d&apos;ombre ; les occulteurs projettent des ombres mais ne sont pas éclairés.</translation>
     </message>
 </context>
 <context>
