@@ -100,6 +100,8 @@ def test_the_real_charuco_photos_track_as_pictures(tmp_path):
         assert frame.measured.features == 24  # every inner corner of the 5 × 7 board
         assert 0.33 < frame.tvec[2] < 0.43  # the tutorial's photos were taken 35–41 cm from the board
         assert frame.measured.information.shape == (6, 6)
+        # Photos held still: no smear on the markers' edges, and the tilt not in doubt.
+        assert 0 <= frame.measured.blur[0] < 2 and frame.measured.ambiguity > 3
     assert [f.event for f in result] == ["found", "", "", ""]
     rows = result.to_numpy()
     assert rows.shape == (4,) and rows["tracked"].all() and rows["rvec"].shape == (4, 3)
