@@ -1,5 +1,5 @@
 #pragma once
-// ExportPackageDialog: File ▸ Export Package… What goes into the package (every file the
+// ExportPackageDialog: File ▸ Export ▸ Package… What goes into the package (every file the
 // scenario names, its size and the field that names it, and the total), where it is written,
 // whether to bake the lighting of characters whose bake is missing or out of date first (into
 // the package only), then the export itself as a job off the GUI thread (ExportPackageJob in a JobRunner) with a

@@ -3682,10 +3682,6 @@ Führen Sie die Skripte des Szenarios nur aus, wenn Sie der Herkunft dieser Date
         <translation>AR-Vorschau</translation>
     </message>
     <message>
-        <source>&amp;Export Package…</source>
-        <translation>Paket &amp;exportieren…</translation>
-    </message>
-    <message>
         <source>Write the scenario and every file it names into one package (.thespkg)</source>
         <translation>Das Szenario und alle Dateien, die es nennt, in ein Paket (.thespkg) schreiben</translation>
     </message>
@@ -3702,12 +3698,20 @@ Führen Sie die Skripte des Szenarios nur aus, wenn Sie der Herkunft dieser Date
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <source>Export &amp;Motion…</source>
-        <translation>&amp;Bewegung exportieren…</translation>
-    </message>
-    <message>
         <source>Write a character&apos;s motion as glTF (.glb, with the character) or BVH, for Blender, three.js and game engines</source>
         <translation>Die Bewegung einer Figur als glTF (.glb, mit der Figur) oder BVH schreiben, für Blender, three.js und Spiel-Engines</translation>
+    </message>
+    <message>
+        <source>&amp;Package…</source>
+        <translation>&amp;Paket…</translation>
+    </message>
+    <message>
+        <source>&amp;Motion (glTF or BVH)…</source>
+        <translation>&amp;Bewegung (glTF oder BVH)…</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>E&amp;xportieren</translation>
     </message>
 </context>
 <context>

@@ -3682,10 +3682,6 @@ N’exécutez les scripts du scénario que si vous faites confiance à la proven
         <translation>Aperçu RA</translation>
     </message>
     <message>
-        <source>&amp;Export Package…</source>
-        <translation>&amp;Exporter un paquet…</translation>
-    </message>
-    <message>
         <source>Write the scenario and every file it names into one package (.thespkg)</source>
         <translation>Écrire le scénario et tous les fichiers qu’il nomme dans un paquet (.thespkg)</translation>
     </message>
@@ -3702,12 +3698,20 @@ N’exécutez les scripts du scénario que si vous faites confiance à la proven
         <translation>%1 exporté</translation>
     </message>
     <message>
-        <source>Export &amp;Motion…</source>
-        <translation>Exporter le &amp;mouvement…</translation>
-    </message>
-    <message>
         <source>Write a character&apos;s motion as glTF (.glb, with the character) or BVH, for Blender, three.js and game engines</source>
         <translation>Écrire le mouvement d&apos;un personnage en glTF (.glb, avec le personnage) ou BVH, pour Blender, three.js et les moteurs de jeu</translation>
+    </message>
+    <message>
+        <source>&amp;Package…</source>
+        <translation>&amp;Paquet…</translation>
+    </message>
+    <message>
+        <source>&amp;Motion (glTF or BVH)…</source>
+        <translation>&amp;Mouvement (glTF ou BVH)…</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>E&amp;xporter</translation>
     </message>
 </context>
 <context>

@@ -196,11 +196,11 @@ void MainWindow::createActions()
     m_saveAsAction = new QAction(tr("Save &As…"), this);
     m_saveAsAction->setShortcut(QKeySequence::SaveAs);
     connect(m_saveAsAction, &QAction::triggered, this, &MainWindow::onSaveAs);
-    m_exportPackageAction = new QAction(tr("&Export Package…"), this);
+    m_exportPackageAction = new QAction(tr("&Package…"), this);
     m_exportPackageAction->setObjectName(QStringLiteral("exportPackage"));
     m_exportPackageAction->setStatusTip(tr("Write the scenario and every file it names into one package (.thespkg)"));
     connect(m_exportPackageAction, &QAction::triggered, this, &MainWindow::onExportPackage);
-    m_exportMotionAction = new QAction(tr("Export &Motion…"), this);
+    m_exportMotionAction = new QAction(tr("&Motion (glTF or BVH)…"), this);
     m_exportMotionAction->setObjectName(QStringLiteral("exportMotion"));
     m_exportMotionAction->setStatusTip(tr("Write a character's motion as glTF (.glb, with the character) or BVH, for "
                                           "Blender, three.js and game engines"));
@@ -341,8 +341,10 @@ void MainWindow::createMenus()
     file->addSeparator();
     file->addAction(m_saveAction);
     file->addAction(m_saveAsAction);
-    file->addAction(m_exportPackageAction);
-    file->addAction(m_exportMotionAction);
+    QMenu* exportMenu = file->addMenu(tr("&Export"));
+    exportMenu->setObjectName(QStringLiteral("exportMenu"));
+    exportMenu->addAction(m_exportPackageAction);
+    exportMenu->addAction(m_exportMotionAction);
     file->addSeparator();
     file->addAction(m_quitAction);
 

@@ -1,4 +1,4 @@
-// File ▸ Export Motion… as a user goes, on the demo: Creon (the built-in humanoid) written as a
+// File ▸ Export ▸ Motion… as a user goes, on the demo: Creon (the built-in humanoid) written as a
 // glTF character with his motion, with progress; the file read back as a character (as Add
 // Character reads it) has his skeleton, a skinned body and his motion at the frame rate asked,
 // posed as the studio poses him. "Animation only" with a .bvh name is refused, saying why.

@@ -1,4 +1,4 @@
-// Scenario packages in the studio, as a user goes: the demo open, File ▸ Export Package… lists
+// Scenario packages in the studio, as a user goes: the demo open, File ▸ Export ▸ Package… lists
 // what goes in with sizes, exports with progress, and the package opens with File ▸ Open like a
 // scenario (playing from the package: the same scenario, the window titled by it); Save As
 // writes the scenario and the package's files into a folder, byte-identical. A scenario naming
@@ -92,7 +92,7 @@ void PackageStudioTest::exportOpenAndSaveAPackage()
     const core::scenario::Scenario original = m_window->document()->scenario();
     const QString package = m_dir.filePath(QStringLiteral("antigone.thespkg"));
 
-    // File ▸ Export Package…: the dialog lists the scenario and its two motion files.
+    // File ▸ Export ▸ Package…: the dialog lists the scenario and its two motion files.
     bool exported = false;
     whenModal<editor::ExportPackageDialog>([&](editor::ExportPackageDialog* dialog) {
         QTableWidget* table = dialog->contentsTable();
