@@ -87,12 +87,14 @@ void discountAmbiguity(cv::Matx66d& info, const cv::Vec3d& chosen, const cv::Vec
     cv::Matx33d a, b;
     cv::Rodrigues(chosen, a);
     cv::Rodrigues(other, b);
-    cv::Vec3d axis;
-    cv::Rodrigues(a.t() * b, axis); // about the target's own axes, as the information's rotation is
-    const double angle = cv::norm(axis);
-    if (angle < 1e-9)
+    // The tilt that takes one pose's plane normal to the other's: an axis in the target's plane
+    // (their relative rotation would also hold their in-plane turn, which the picture does show).
+    const cv::Vec3d normal(a(0, 2), a(1, 2), a(2, 2)), otherNormal(b(0, 2), b(1, 2), b(2, 2));
+    cv::Vec3d axis = a.t() * normal.cross(otherNormal); // in the target's frame, as the information's rotation is
+    const double length = cv::norm(axis);
+    if (length < 1e-9)
         return;
-    axis /= angle;
+    axis /= length;
     const double keep = std::max(ratio, 1.0) / ClearlyBetterFit;
     cv::Matx66d scale = cv::Matx66d::eye();
     for (int i = 0; i < 3; ++i)
