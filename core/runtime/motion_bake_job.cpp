@@ -76,10 +76,13 @@ Result<void> MotionBakeJob::run(JobContext& context)
                                                          + " s) after the scenario ends (" + std::to_string(last) + " s).");
 
     // The frames are the Stage's, as the studio plays them: the idle motion under the authored
-    // schedule, muted and soloed layers as they are.
-    Stage stage(*runtime);
+    // schedule, muted and soloed layers as they are. A stage of this character alone: the
+    // others would be evaluated for nothing.
+    scenario::ScenarioRuntime alone;
+    alone.characters = {*body};
+    alone.duration = runtime->duration;
+    Stage stage(alone);
     PoseSet poses = stage.makePoseSet();
-    const auto index = std::size_t(body - runtime->characters.data());
     const anim::FrameLayoutPtr& layout = body->body->layout();
     const std::size_t floats = layout->floatCount();
     const std::size_t faceFloats = body->face ? body->face->layout()->floatCount() : 0;
@@ -98,7 +101,7 @@ Result<void> MotionBakeJob::run(JobContext& context)
         if (context.stopRequested())
             return cancelledError(title());
         stage.evaluate(secondsToTicks(start + double(i) / fps), poses);
-        const CharacterPose& pose = poses.characters[index];
+        const CharacterPose& pose = poses.characters.front();
         std::copy(pose.body.begin(), pose.body.end(), frames.begin() + std::ptrdiff_t(std::size_t(i) * floats));
         if (faceFloats > 0)
             std::copy(pose.face.begin(), pose.face.end(), face.begin() + std::ptrdiff_t(std::size_t(i) * faceFloats));
