@@ -373,8 +373,10 @@ bool alignMarkerPattern(const cv::Mat& grey, std::vector<cv::Point2f>& corners, 
         border = std::min(border, std::hypot(start[i].x - start[(i + 1) % 4].x, start[i].y - start[(i + 1) % 4].y) /
                                       pattern.cells);
     const double rms = std::sqrt(cost / double(fit.pixels().size()));
-    if (model.contrast < MinimumContrast || rms > MaximumResidual * model.contrast ||
-        largestMove(start, end) > std::max(1.5, 0.5 * border))
+    // The corners may move as far as the smear reaches: a small marker's thresholded contour, where
+    // they start, can be half the smear out (3 px for a 9-pixel smear over 5-pixel cells, issue 29).
+    const double reach = std::max({1.5, 0.5 * border, 0.5 * std::hypot(model.smear.x, model.smear.y)});
+    if (model.contrast < MinimumContrast || rms > MaximumResidual * model.contrast || largestMove(start, end) > reach)
         return false;
     for (std::size_t i = 0; i < 4; ++i)
         corners[i] = cv::Point2f(float(end[i].x), float(end[i].y));

@@ -33,7 +33,8 @@ enum class SmearDirection {
 /// `blur`, best matches `grey`. `margin` is how many cells of white paper are known to surround
 /// the marker (the pixels seen farther out are left out of the fit). The fitted smear is written
 /// to `fitted`. False (corners unchanged) when the marker is too near the picture's border, the
-/// fit does not converge, or it would move a corner farther than half the border.
+/// fit does not converge, or it would move a corner farther than half the border or half the
+/// smear, whichever is longer.
 bool alignMarkerPattern(const cv::Mat& grey, std::vector<cv::Point2f>& corners, const MarkerPattern& pattern,
                         float margin, const MotionBlur& blur, SmearDirection direction,
                         MotionBlur* fitted = nullptr);

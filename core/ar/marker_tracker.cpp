@@ -30,6 +30,10 @@ constexpr int SearchMarginPixels = 24;
 // markers' patterns are fitted to the picture instead (marker_synthesis.h). Sharp frames' edges
 // are found to 0.03 px already, and show about a pixel of "smear" (the pixels' own area).
 constexpr double SynthesisSmear = 2.0;
+// A frame where the detector finds no marker of a grid seen in the last frame is most likely
+// smeared over the markers' cells: their patterns are fitted where they were, starting from the
+// last frame's smear, then from this one (pixels). At least half the markers must fit.
+constexpr double LongSmearGuess = 12.0;
 
 cv::Ptr<cv::aruco::DetectorParameters> detectorParameters()
 {
@@ -102,6 +106,7 @@ struct MarkerTracker::State {
     std::vector<cv::Point3f> outline; // the board's extent in its plane, for the search region
     std::vector<cv::Point2f> projectedOutline;
     std::optional<TargetPose> lastPose;
+    MotionBlur lastBlur;
     int framesSinceSeen = 0;
     std::vector<DetectedMarker> markers;
     std::vector<std::pair<int, std::array<float, 2>>> charucoCorners;
@@ -135,30 +140,72 @@ struct MarkerTracker::State {
 
     // Each marker's pattern fitted to the picture, smeared; the frame's smear is then what the
     // markers' fits agree on (the mean of their smears' outer products, which have no sign).
-    MotionBlur alignPatterns(const MotionBlur& estimated)
+    // Markers whose fit fails keep their corners, or are dropped with `Unfitted::Drop`.
+    enum class Unfitted { Keep, Drop };
+    MotionBlur alignPatterns(const MotionBlur& estimated, Unfitted unfitted = Unfitted::Keep)
     {
         double xx = 0, xy = 0, yy = 0;
         int fitted = 0;
         MotionBlur start = estimated;
+        std::size_t kept = 0;
         for (std::size_t m = 0; m < corners.size(); ++m) {
             MotionBlur own;
-            if (ids[m] < 0 || std::size_t(ids[m]) >= patterns.size() ||
-                !alignMarkerPattern(grey, corners[m], patterns[std::size_t(ids[m])], whiteMargin, start,
-                                    fitted ? SmearDirection::Known : SmearDirection::Search, &own))
+            const bool aligned = ids[m] >= 0 && std::size_t(ids[m]) < patterns.size() &&
+                                 alignMarkerPattern(grey, corners[m], patterns[std::size_t(ids[m])], whiteMargin, start,
+                                                    fitted ? SmearDirection::Known : SmearDirection::Search, &own);
+            if (aligned || unfitted == Unfitted::Keep) {
+                std::swap(corners[kept], corners[m]);
+                std::swap(ids[kept], ids[m]);
+                ++kept;
+            }
+            if (!aligned)
                 continue;
             start = own; // the next markers start from this one's smear
             const double x = own.length * std::cos(own.angle), y = own.length * std::sin(own.angle);
             xx += x * x, xy += x * y, yy += y * y, ++fitted;
         }
+        corners.resize(kept);
+        ids.resize(kept);
         if (fitted == 0)
             return estimated;
         xx /= fitted, xy /= fitted, yy /= fitted;
         MotionBlur blur;
+        blur.modelled = fitted == int(corners.size());
         blur.length = std::sqrt(0.5 * (xx + yy) + std::hypot(0.5 * (xx - yy), xy));
         blur.angle = 0.5 * std::atan2(2 * xy, xx - yy);
         if (blur.angle < 0)
             blur.angle += CV_PI;
         return blur;
+    }
+
+    // A grid the detector cannot see in a smear longer than its cells is looked for where the
+    // last frame saw it: its markers drawn there, smeared, and fitted to the picture. Only
+    // markers whose fit holds are kept; fewer than half the board's leave the frame missed.
+    MotionBlur placeFromLastPose(const MotionBlur& lastBlur)
+    {
+        if (charuco || !lastPose || framesSinceSeen > 0)
+            return {};
+        std::vector<cv::Point2f> projected;
+        for (const double guess : {lastBlur.length, LongSmearGuess}) {
+            if (guess <= SynthesisSmear)
+                continue;
+            corners.clear();
+            ids.clear();
+            for (std::size_t m = 0; m < board->ids.size(); ++m) {
+                cv::projectPoints(board->objPoints[m], rvec(*lastPose), tvec(*lastPose), cameraMat(camera),
+                                  distortionMat(camera), projected);
+                corners.push_back(projected);
+                ids.push_back(board->ids[m]);
+            }
+            MotionBlur blur = alignPatterns({guess, lastBlur.angle}, Unfitted::Drop);
+            if (2 * ids.size() >= board->ids.size()) {
+                blur.modelled = false; // fitted from a guess: trusted along the smear as edges are
+                return blur;
+            }
+        }
+        corners.clear();
+        ids.clear();
+        return {};
     }
 
     // The board's points and where they are seen, from the markers found in `grey`.
@@ -273,6 +320,9 @@ TrackerEstimate MarkerTracker::estimate(const VideoFrame& frame)
     MotionBlur blur = estimateMotionBlur(s.ramps);
     if (!s.charuco && blur.length > SynthesisSmear)
         blur = s.alignPatterns(blur);
+    if (s.ids.empty())
+        blur = s.placeFromLastPose(s.lastBlur);
+    s.lastBlur = blur;
     toDetected(s.corners, s.ids, s.markers);
     s.correspondences();
     const std::optional<TargetPose> previous =
@@ -304,6 +354,7 @@ TargetGeometry MarkerTracker::geometry() const
 void MarkerTracker::reset()
 {
     m_state->lastPose.reset();
+    m_state->lastBlur = {};
     m_state->framesSinceSeen = 0;
 }
 

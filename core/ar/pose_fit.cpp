@@ -19,9 +19,10 @@ constexpr double ClearlyBetterFit = 3.0;
 // prediction over a sharp frame, and carry a smeared frame's error into the sharp ones after it.
 constexpr double MinimumPixelNoise = 0.05;
 // How far, as a share of a smear's length, its points may be off along it: fitting the markers'
-// patterns leaves a few hundredths of the smear on a grid, the edges alone about a tenth, more on
-// small or slanted markers (issue 29).
-constexpr double SmearShare = 0.25;
+// patterns leaves about a hundredth of the smear, the edges alone about a tenth, more on small or
+// slanted markers (issue 29).
+constexpr double ModelledSmearShare = 0.02;
+constexpr double EdgeSmearShare = 0.25;
 
 double rmsError(const std::vector<cv::Point3f>& objectPoints, const std::vector<cv::Point2f>& imagePoints,
                 const CameraIntrinsics& camera, const cv::Vec3d& rotation, const cv::Vec3d& translation)
@@ -69,10 +70,12 @@ cv::Matx66d information(const std::vector<cv::Point3f>& objectPoints, const Came
 
 // A point's pixel covariance: the noise left after the fit each way, and along the smear a share
 // of its length. A smear biases the edges it crosses by a fraction of a pixel the same way all
-// over the board (the black squares look wider along it), which the residuals hardly show.
+// over the board (the black squares look wider along it), which the residuals hardly show; the
+// markers' smeared patterns, fitted, much less.
 cv::Matx22d pixelCovariance(double noise, const MotionBlur& blur)
 {
-    const double along = SmearShare * blur.length, dx = std::cos(blur.angle), dy = std::sin(blur.angle);
+    const double share = blur.modelled ? ModelledSmearShare : EdgeSmearShare;
+    const double along = share * blur.length, dx = std::cos(blur.angle), dy = std::sin(blur.angle);
     return cv::Matx22d(noise * noise, 0, 0, noise * noise) +
            cv::Matx22d(dx * dx, dx * dy, dx * dy, dy * dy) * (along * along);
 }

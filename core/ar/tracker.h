@@ -16,6 +16,8 @@ namespace thespis::core::ar {
 struct MotionBlur {
     double length = 0; ///< pixels a point of the picture was smeared over; 0 when sharp
     double angle = 0;  ///< the smear's direction, radians from the picture's x towards its y, in [0, π)
+    /// Every point was placed by a model of the smeared picture (not by edges the smear biases).
+    bool modelled = false;
 };
 
 struct TrackerEstimate {

@@ -80,14 +80,15 @@ std::optional<TargetPose> opencvPose(const cv::Mat& grey, const SensorFootage& f
     return TargetPose{{rotation[0], rotation[1], rotation[2]}, {translation[0], translation[1], translation[2]}};
 }
 
-FootageRun track(const SensorFootageSettings& settings)
+// The first `frames` frames of the footage (all when 0).
+FootageRun track(const SensorFootageSettings& settings, int frames = 0)
 {
     SensorFootage footage(settings);
     auto tracker = MarkerTracker::create(*parseBoard(SensorFootage::BoardSpec), footage.camera());
     EXPECT_TRUE(tracker);
     TrackingSession session(std::move(*tracker));
     FootageRun run;
-    for (int i = 0; i < footage.frames(); ++i) {
+    for (int i = 0; i < (frames > 0 ? frames : footage.frames()); ++i) {
         const SensorFootage::Frame frame = footage.render(i);
         const VideoFrame video = SensorFootage::videoFrame(frame.grey, i);
         const auto start = std::chrono::steady_clock::now();
@@ -151,20 +152,48 @@ TEST(MarkerFootage, TheIssuesFootageMeetsItsFigures)
     EXPECT_LE(run.filtered.meanTranslation(), 0.001);
     EXPECT_LE(run.filtered.maxTranslation, 0.003);
     EXPECT_LE(run.raw.maxTranslation, 0.003);
-    // Smeared frames: better than OpenCV's on the same frames, and within a few times our sharp
-    // ones (the issue asks for 2×). Fitting each marker's pattern, smeared, to the picture
-    // (core/ar/marker_synthesis.h) brings them from 13× to about 5× filtered and 7× alone; the
-    // edges alone leave a smear longer than the border biased outward.
+    // Smeared frames: better than OpenCV's on the same frames, and within 2× our sharp ones.
+    // Fitting each marker's pattern, smeared, to the picture (core/ar/marker_synthesis.h) brings
+    // them from 13× to about 1.1×; the edges alone leave a smear longer than the border biased
+    // outward.
     EXPECT_LT(run.filtered.smearedRotation(), run.opencv.smearedRotation());
     EXPECT_LT(run.raw.smearedRotation(), run.opencv.smearedRotation());
-    EXPECT_LE(run.filtered.smearedRotation(), 0.06 * Degree);
-    EXPECT_LE(run.filtered.smearedRotation(), 7 * run.filtered.sharpRotation());
-    EXPECT_LE(run.raw.smearedRotation(), 9 * run.raw.sharpRotation());
-    // The filter never makes the sharp frames worse than they are alone, and it makes the
-    // smeared ones better.
+    EXPECT_LE(run.filtered.smearedRotation(), 2 * run.filtered.sharpRotation());
+    EXPECT_LE(run.raw.smearedRotation(), 2 * run.raw.sharpRotation());
+    // The filter never makes the sharp frames worse than they are alone, nor the smeared ones
+    // (which it used to trust too little once they were as good as the sharp ones).
     EXPECT_LE(run.filtered.sharpRotation(), run.raw.sharpRotation());
     EXPECT_LE(run.filtered.maxRotation[0], run.raw.maxRotation[0] * 1.1);
+    EXPECT_LE(run.filtered.smearedRotation(), run.raw.smearedRotation() * 1.05);
+}
+
+// The issue's harder footage: a larger camera, an 11-pixel smear along 30°, the board farther and
+// more oblique (yaw up to ±60° with pitch up to 40°; it stays over 60 pixels across), the first
+// 120 frames of the issue's 300. The issue saw runs of frames 15–43 mm off here and the filter
+// spreading a smeared frame's error into the sharp ones after it. Where the smear is longer than
+// the markers' cells OpenCV's detector finds no marker at all; the tracker then fits the markers'
+// patterns where the last frame saw them (marker_tracker.cpp), which keeps most of those frames.
+TEST(MarkerFootage, FartherAndMoreObliqueWithALongerSmear)
+{
+    SensorFootageSettings settings;
+    settings.width = 1280, settings.height = 720, settings.fx = 1000;
+    settings.smear = 11, settings.smearAngle = 30;
+    settings.nearest = 0.7, settings.farthest = 1.4;
+    settings.yaw = 60;
+    settings.seed = 5;
+    const FootageRun run = track(settings, 120);
+    std::cout << "filtered: " << run.filtered << "\nraw:      " << run.raw << "\nOpenCV:   " << run.opencv << "\n";
+    EXPECT_EQ(run.filtered.frames[0], 96) << "every sharp frame is tracked";
+    EXPECT_GE(run.filtered.frames[1], 12) << "most smeared frames are tracked";
+    EXPECT_GT(run.filtered.frames[1], run.opencv.frames[1] + 8);
+    EXPECT_LE(run.filtered.maxTranslation, 0.005);
+    EXPECT_LE(run.filtered.meanTranslation(), 0.001);
+    EXPECT_LT(run.filtered.meanRotation(), run.opencv.meanRotation() / 5);
     EXPECT_LT(run.filtered.smearedRotation(), run.raw.smearedRotation());
+    // The filter does not carry the smeared frames' error into the sharp ones: they stay as good
+    // as alone (within 5 %: 2–3 % worse here, as without the smeared frames at all).
+    EXPECT_LE(run.filtered.sharpRotation(), 1.05 * run.raw.sharpRotation());
+    EXPECT_LE(run.filtered.maxRotation[0], run.raw.maxRotation[0] * 1.1);
 }
 
 // Smears of 0, 5, 7 and 9 pixels along 0°, 45° and 90°, on every other frame: each frame's own
@@ -188,9 +217,8 @@ TEST(MarkerFootage, SmearsOfEveryLengthAndDirection)
                       << run.opencv << "\n    blur reported: sharp " << median(run.sharpLengths) << " px, smeared "
                       << median(run.smearedLengths) << " px at " << median(run.smearedAngles) / Degree << "°\n";
             EXPECT_EQ(run.raw.missed, 0);
-            // A 9-pixel smear is wider than the nearer markers' borders (see above): 3 mm is
-            // reached up to 7 pixels. OpenCV's own reaches 6 and 28 mm at 9 pixels here.
-            EXPECT_LE(run.raw.maxTranslation, length <= 7 ? 0.003 : 0.006);
+            // OpenCV's own reaches 6 and 28 mm at 9 pixels here.
+            EXPECT_LE(run.raw.maxTranslation, 0.003);
             EXPECT_LT(run.raw.maxTranslation, run.opencv.maxTranslation);
             EXPECT_LT(run.raw.meanRotation(), run.opencv.meanRotation());
             EXPECT_LE(run.raw.sharpRotation(), 0.03 * Degree);
@@ -198,13 +226,10 @@ TEST(MarkerFootage, SmearsOfEveryLengthAndDirection)
             if (length == 0)
                 continue;
             EXPECT_LT(run.raw.smearedRotation(), run.opencv.smearedRotation());
-            // Up to 7 pixels, each smeared frame alone is within 10× the sharp ones (9×, 6× and
-            // 3× at 7 px along 45°, 0° and 90°; the edges alone gave 10×, 26× and 17×); 9 pixels
-            // is wider than the nearer markers' borders and some of their fits fail, falling
-            // back to the edges.
-            if (length <= 7) {
-                EXPECT_LE(run.raw.smearedRotation(), 10 * run.raw.sharpRotation());
-            }
+            // Each smeared frame alone is within 2× the sharp ones up to 7 pixels (1.6× at most,
+            // at 7 px along 90°; the edges alone gave 10×, 26× and 17× at 45°, 0° and 90°), and
+            // within 4× at 9 pixels, which is wider than the nearer markers' borders (3×).
+            EXPECT_LE(run.raw.smearedRotation(), (length <= 7 ? 2 : 4) * run.raw.sharpRotation());
             // The fitted smear, not the edges' ramps alone (which cannot tell a square marker's
             // +45° from −45°, and are off by 20–30° along x with the board turned about its
             // vertical): its length and direction.

@@ -52,8 +52,12 @@ public:
     {
         board = cv::aruco::GridBoard::create(4, 3, 0.04f, 0.01f,
                                              cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_50));
-        // Drawn at 10 000 px/m with a 1 cm white margin. draw() puts board point (X, Y) at pixel
-        // corner coordinates (margin + X s, margin + Y s): pixel centres half a pixel less.
+        // Drawn at 12 000 px/m with a 1 cm white margin: a marker's 6 cells are then 80 print
+        // pixels each. At 10 000 px/m (66⅔ each) drawMarker rounds the inner cells' edges to whole
+        // print pixels, up to 33 µm off: a misprinted board, which the fit of the whole pattern
+        // (marker_synthesis.h) reads as a pose error of 0.01° on smeared frames. draw() puts board
+        // point (X, Y) at pixel corner coordinates (margin + X s, margin + Y s): pixel centres half
+        // a pixel less.
         cv::Mat drawn;
         board->draw(cv::Size(int(BoardWidth * Scale + 2 * Margin), int(BoardHeight * Scale + 2 * Margin)), drawn,
                     int(Margin), 1);
@@ -134,7 +138,7 @@ public:
     cv::Ptr<cv::aruco::GridBoard> board;
 
 private:
-    static constexpr double Scale = 10000, Margin = 100, BoardWidth = 0.19, BoardHeight = 0.14;
+    static constexpr double Scale = 12000, Margin = 120, BoardWidth = 0.19, BoardHeight = 0.14;
     static constexpr double Ink = 25, Paper = 230, Background = 110;
 
     // A box `length` pixels long along `degrees`, symmetric about the pixel, drawn 8× finer so any
