@@ -269,7 +269,8 @@ double largestMove(const std::array<cv::Point2d, 4>& a, const std::array<cv::Poi
 } // namespace
 
 bool alignMarkerPattern(const cv::Mat& grey, std::vector<cv::Point2f>& corners, const MarkerPattern& pattern,
-                        float margin, const MotionBlur& blur, SmearDirection direction, MotionBlur* fitted)
+                        float margin, const MotionBlur& blur, SmearDirection direction, MotionBlur* fitted,
+                        CornerStart cornerStart)
 {
     if (corners.size() != 4 || pattern.cells < 3 || pattern.white.size() != std::size_t(pattern.cells * pattern.cells))
         return false;
@@ -303,6 +304,7 @@ bool alignMarkerPattern(const cv::Mat& grey, std::vector<cv::Point2f>& corners, 
     constexpr int Parameters = 12; // homography 8, dark, contrast, smear 2
     double damping = 1e-4;
     bool converged = false;
+    int steps = 0;
     for (int iteration = 0; iteration < MaximumIterations && !converged; ++iteration) {
         // The model's gradient in the picture stands for its derivative under a small warp (the
         // smear is nearly the same kernel after it); the smear's own by a finite step.
@@ -360,6 +362,7 @@ bool alignMarkerPattern(const cv::Mat& grey, std::vector<cv::Point2f>& corners, 
                 model = next, cost = nextCost, blurred = nextBlurred;
                 damping = std::max(1e-6, damping / 4);
                 improved = true;
+                ++steps;
             } else {
                 damping *= 8;
             }
@@ -376,7 +379,8 @@ bool alignMarkerPattern(const cv::Mat& grey, std::vector<cv::Point2f>& corners, 
     // The corners may move as far as the smear reaches: a small marker's thresholded contour, where
     // they start, can be half the smear out (3 px for a 9-pixel smear over 5-pixel cells, issue 29).
     const double reach = std::max({1.5, 0.5 * border, 0.5 * std::hypot(model.smear.x, model.smear.y)});
-    if (model.contrast < MinimumContrast || rms > MaximumResidual * model.contrast || largestMove(start, end) > reach)
+    if (model.contrast < MinimumContrast || rms > MaximumResidual * model.contrast || largestMove(start, end) > reach ||
+        (cornerStart == CornerStart::Predicted && steps == 0))
         return false;
     for (std::size_t i = 0; i < 4; ++i)
         corners[i] = cv::Point2f(float(end[i].x), float(end[i].y));

@@ -29,14 +29,19 @@ enum class SmearDirection {
     Known   ///< `blur` is close (another marker's fit in the same frame)
 };
 
+enum class CornerStart {
+    Detected, ///< `corners` are the marker's as the detector (and its edges) saw it
+    Predicted ///< `corners` are where a predicted pose puts it: the fit counts only if it moved them
+};
+
 /// Moves `corners` (4, the pattern's top-left first, clockwise) to where the pattern, smeared by
 /// `blur`, best matches `grey`. `margin` is how many cells of white paper are known to surround
 /// the marker (the pixels seen farther out are left out of the fit). The fitted smear is written
 /// to `fitted`. False (corners unchanged) when the marker is too near the picture's border, the
 /// fit does not converge, or it would move a corner farther than half the border or half the
-/// smear, whichever is longer.
+/// smear, whichever is longer; from a predicted start, also when no step lowers the residual.
 bool alignMarkerPattern(const cv::Mat& grey, std::vector<cv::Point2f>& corners, const MarkerPattern& pattern,
                         float margin, const MotionBlur& blur, SmearDirection direction,
-                        MotionBlur* fitted = nullptr);
+                        MotionBlur* fitted = nullptr, CornerStart start = CornerStart::Detected);
 
 } // namespace thespis::core::ar

@@ -140,9 +140,8 @@ struct MarkerTracker::State {
 
     // Each marker's pattern fitted to the picture, smeared; the frame's smear is then what the
     // markers' fits agree on (the mean of their smears' outer products, which have no sign).
-    // Markers whose fit fails keep their corners, or are dropped with `Unfitted::Drop`.
-    enum class Unfitted { Keep, Drop };
-    MotionBlur alignPatterns(const MotionBlur& estimated, Unfitted unfitted = Unfitted::Keep)
+    // Detected markers whose fit fails keep their corners; predicted ones are dropped.
+    MotionBlur alignPatterns(const MotionBlur& estimated, CornerStart cornerStart = CornerStart::Detected)
     {
         double xx = 0, xy = 0, yy = 0;
         int fitted = 0;
@@ -152,8 +151,9 @@ struct MarkerTracker::State {
             MotionBlur own;
             const bool aligned = ids[m] >= 0 && std::size_t(ids[m]) < patterns.size() &&
                                  alignMarkerPattern(grey, corners[m], patterns[std::size_t(ids[m])], whiteMargin, start,
-                                                    fitted ? SmearDirection::Known : SmearDirection::Search, &own);
-            if (aligned || unfitted == Unfitted::Keep) {
+                                                    fitted ? SmearDirection::Known : SmearDirection::Search, &own,
+                                                    cornerStart);
+            if (aligned || cornerStart == CornerStart::Detected) {
                 std::swap(corners[kept], corners[m]);
                 std::swap(ids[kept], ids[m]);
                 ++kept;
@@ -197,7 +197,7 @@ struct MarkerTracker::State {
                 corners.push_back(projected);
                 ids.push_back(board->ids[m]);
             }
-            MotionBlur blur = alignPatterns({guess, lastBlur.angle}, Unfitted::Drop);
+            MotionBlur blur = alignPatterns({guess, lastBlur.angle}, CornerStart::Predicted);
             if (2 * ids.size() >= board->ids.size()) {
                 blur.modelled = false; // fitted from a guess: trusted along the smear as edges are
                 return blur;
