@@ -23,6 +23,10 @@ std::shared_ptr<const FrameLayout> FrameLayout::mpeg4Face()
         std::vector<std::string> names;
         for (int i = 1; i <= 68; ++i)
             names.push_back("fap" + std::to_string(i));
+        for (int i = 1; i <= 14; ++i)
+            names.push_back("viseme" + std::to_string(i));
+        for (int i = 1; i <= 6; ++i)
+            names.push_back("expression" + std::to_string(i));
         return create({}, {}, std::move(names));
     }();
     return face;

@@ -26,13 +26,15 @@ constexpr int floatsPerElement(ElementKind kind)
 
 /// Names and kinds of a frame's elements; immutable and shared by every frame, clip and schedule
 /// built on it. A body layout names a rotation per joint and a translation for the root joint
-/// (same name, other kind); a face layout names 68 FAP scalars.
+/// (same name, other kind); a face layout names 68 FAP scalars and the high-level FAPs' weights.
 class FrameLayout {
 public:
     static std::shared_ptr<const FrameLayout> create(std::vector<std::string> rotations,
                                                      std::vector<std::string> translations = {},
                                                      std::vector<std::string> scalars = {});
-    /// The 68 MPEG-4 facial animation parameters as scalars named fap1 … fap68.
+    /// The 68 MPEG-4 facial animation parameters as scalars named fap1 … fap68, then the weights
+    /// of the 14 visemes (viseme1 … viseme14) and the 6 expressions (expression1 … expression6)
+    /// that FAPs 1 and 2 select (scene/fap.h).
     static std::shared_ptr<const FrameLayout> mpeg4Face();
 
     int rotationCount() const { return int(m_rotations.size()); }

@@ -91,6 +91,12 @@ Result<std::unique_ptr<CharacterNode>> CharacterNode::create(std::shared_ptr<con
     for (std::size_t s = 0; s < c.mesh.segments.size(); ++s)
         node->m_segmentJoints.push_back(c.segmentJoint(s));
     node->m_segmentRotations.resize(c.mesh.segments.size());
+    node->m_face = scene::FaceDeformer(c);
+    if (!node->m_face.empty()) {
+        node->m_frame.resize(c.skeleton.frameLayout()->floatCount());
+        node->m_facePositions = c.mesh.positions;
+        node->m_faceNormals = c.mesh.normals;
+    }
     node->m_worldLight.order = order;
     node->m_segmentLight.order = order;
 
@@ -240,13 +246,19 @@ void CharacterNode::setLight(const lighting::ShRgb& worldLight)
     updateSegmentLights();
 }
 
-void CharacterNode::setPose(std::span<const float> frame)
+void CharacterNode::setPose(std::span<const float> frame, std::span<const float> face)
 {
     const scene::Character& c = *m_character;
     assert(frame.size() == c.skeleton.frameLayout()->floatCount());
+    if (!m_face.empty()) {
+        std::copy(frame.begin(), frame.end(), m_frame.begin());
+        m_face.turnJoints(face, m_frame);
+        frame = m_frame;
+        m_face.deform(face, m_facePositions, m_faceNormals);
+    }
     scene::computeSkinningTransforms(c.skeleton, frame, m_restJointPositions, m_jointPositions, m_jointOrientations,
                                      m_jointTransforms);
-    m_workers->skin(c, m_jointTransforms, m_skinning, m_positions, m_normals);
+    m_workers->skin(c, m_jointTransforms, m_skinning, m_positions, m_normals, m_facePositions, m_faceNormals);
     ++m_poseCount;
 
     std::memcpy(static_cast<void*>(&m_vertexArray->front()), m_positions.data(), m_positions.size() * sizeof(anim::Vec3));

@@ -33,6 +33,7 @@
 #include "render/camera.h"
 #include "render/shading.h"
 #include "scene/character.h"
+#include "scene/face_rig.h"
 #include "scene/skinning.h"
 #include "util/error.h"
 
@@ -68,9 +69,11 @@ public:
     /// The world light (any order; bands beyond the transfer order are dropped, missing ones are 0).
     void setLight(const lighting::ShRgb& worldLight);
 
-    /// Poses the character: skins the mesh for `frame` (the skeleton's frame layout), uploads
-    /// positions and normals, and rotates the light into every segment's new frame.
-    void setPose(std::span<const float> frame);
+    /// Poses the character: moves its face for `face` (a face frame, anim::FrameLayout::mpeg4Face;
+    /// empty: neutral) and skins the mesh for `frame` (the skeleton's frame layout), uploads
+    /// positions and normals, and rotates the light into every segment's new frame. The PRT
+    /// transfer stays the rest face's, per vertex: a moving face is lit as if it had not moved.
+    void setPose(std::span<const float> frame, std::span<const float> face = {});
     /// How many times setPose skinned the mesh.
     std::uint64_t poseCount() const { return m_poseCount; }
 
@@ -101,6 +104,9 @@ private:
     scene::SkinningWorkers* m_workers = nullptr;
 
     // Per-frame buffers, sized once.
+    scene::FaceDeformer m_face;
+    std::vector<float> m_frame;                       // the body frame with the face's joint turns
+    std::vector<anim::Vec3> m_facePositions, m_faceNormals; // the rest mesh with the face moved
     std::vector<anim::Vec3d> m_restJointPositions, m_jointPositions;
     std::vector<anim::Quatd> m_jointOrientations;
     std::vector<scene::RigidTransform> m_jointTransforms;

@@ -181,7 +181,7 @@ void ScenarioScene::pose(Performer& performer, const runtime::CharacterPose& pos
     // Placed after retargeting: a body of another size must not scale where it stands.
     performer.retarget.apply(pose.body, performer.bodyFrame);
     pose.placement.apply(*performer.bodyLayout, performer.bodyFrame);
-    performer.node->setPose(performer.bodyFrame);
+    performer.node->setPose(performer.bodyFrame, pose.face);
 }
 
 Bounds ScenarioScene::boundsOver(std::span<const runtime::PoseSet> samples)

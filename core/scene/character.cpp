@@ -1,5 +1,6 @@
 #include "scene/character.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace thespis::core::scene {
@@ -68,6 +69,54 @@ Result<void> Character::validate() const
     for (const auto& clip : clips)
         if (!clip || !(*clip->layout() == *skeleton.frameLayout()))
             return broken("a clip is not on the character's skeleton.");
+    if (auto valid = validateFace(); !valid)
+        return broken(valid.error().message);
+    return {};
+}
+
+Result<void> Character::validateFace() const
+{
+    const auto broken = [](std::string message) { return makeError(ErrorCode::CorruptData, std::move(message)); };
+    const std::size_t vertices = mesh.vertexCount();
+    const auto ascendingInRange = [&](const std::vector<std::uint32_t>& list) {
+        for (std::size_t i = 0; i < list.size(); ++i)
+            if (list[i] >= vertices || (i > 0 && list[i] <= list[i - 1]))
+                return false;
+        return true;
+    };
+    const auto channelOk = [](int channel) { return channel >= 0 && channel < kFaceChannelCount; };
+    for (const MorphTarget& target : face.targets)
+        if (target.offsets.size() != target.vertices.size() || !ascendingInRange(target.vertices))
+            return broken("face morph target \"" + target.name + "\" names vertices out of order or range.");
+    for (const MorphDrive& drive : face.drives)
+        if (drive.target < 0 || std::size_t(drive.target) >= face.targets.size() || !channelOk(drive.channel))
+            return broken("a face drive names a target or channel that does not exist.");
+    for (const RigidFacePart& part : face.parts) {
+        if (part.weights.size() != part.vertices.size() || !ascendingInRange(part.vertices))
+            return broken("face part \"" + part.name + "\" names vertices out of order or range.");
+        bool channels = part.drop.channel < 0 || channelOk(part.drop.channel);
+        for (const RigidFacePart::Turn& turn : part.turns)
+            channels = channels && channelOk(turn.channel);
+        for (const RigidFacePart::Shift& shift : part.shifts)
+            channels = channels && channelOk(shift.channel);
+        if (!channels)
+            return broken("face part \"" + part.name + "\" is driven by a channel that does not exist.");
+    }
+    for (const FaceJointDrive& drive : face.joints)
+        if (drive.joint < 0 || drive.joint >= skeleton.jointCount() || !channelOk(drive.channel))
+            return broken("a face joint drive names a joint or channel that does not exist.");
+    for (const auto& [upper, lower] : face.lipContacts)
+        if (upper >= vertices || lower >= vertices)
+            return broken("a lip contact names a vertex that does not exist.");
+    for (const FeaturePoint& point : face.featurePoints)
+        if (point.vertex >= vertices)
+            return broken("face feature point " + point.name + " names a vertex that does not exist.");
+    const auto fapsOk = [](const std::vector<FapValue>& values) {
+        return std::all_of(values.begin(), values.end(), [](const FapValue& v) { return v.fap >= 3 && v.fap <= kFapCount; });
+    };
+    if (!std::all_of(face.visemes.begin(), face.visemes.end(), fapsOk) ||
+        !std::all_of(face.expressions.begin(), face.expressions.end(), fapsOk))
+        return broken("a viseme or expression names a FAP that is not a low-level one (3 … 68).");
     return {};
 }
 

@@ -17,6 +17,7 @@
 #include "anim/keyframe_clip.h"
 #include "anim/skeleton.h"
 #include "scene/character_mesh.h"
+#include "scene/face_rig.h"
 #include "util/error.h"
 
 namespace thespis::core::scene {
@@ -63,6 +64,8 @@ struct Character {
     std::vector<int> segmentMaterials;
     std::vector<Material> materials;
     std::vector<TextureImage> textures;
+    /// How its face moves with a face frame (face_rig.h); empty: it does not.
+    FaceRig face;
     /// Animations that came with the file, on `skeleton`'s frame layout.
     std::vector<std::shared_ptr<anim::KeyframeClip>> clips;
     /// What the importer could not map or had to drop (unmapped joints, ignored channels …), one
@@ -72,6 +75,8 @@ struct Character {
     /// Checks that the parts agree: mesh valid, skin sized and in range, texcoords and
     /// segment materials sized, every segment.joint naming a skeleton joint.
     Result<void> validate() const;
+    /// Checks the face rig against the mesh and skeleton (vertices, targets, channels, joints).
+    Result<void> validateFace() const;
     /// Skeleton joint a segment follows (its joint, or the root when it names none).
     int segmentJoint(std::size_t segment) const;
 };

@@ -320,16 +320,19 @@ void skinVertices(const Skin& skin, std::span<const Vec3> restPositions, std::sp
 }
 
 void skinRigidSegments(const Character& character, std::span<const RigidTransform> joints,
-                       std::span<Vec3> outPositions, std::span<Vec3> outNormals)
+                       std::span<Vec3> outPositions, std::span<Vec3> outNormals,
+                       std::span<const Vec3> restPositions, std::span<const Vec3> restNormals)
 {
     const CharacterMesh& mesh = character.mesh;
+    if (restPositions.empty())
+        restPositions = mesh.positions, restNormals = mesh.normals;
     assert(outPositions.size() == mesh.vertexCount() && outNormals.size() == mesh.vertexCount());
     for (std::size_t s = 0; s < mesh.segments.size(); ++s) {
         const Columns m = rigidColumns(joints[std::size_t(character.segmentJoint(s))]);
         const Segment& segment = mesh.segments[s];
         for (std::size_t v = segment.firstVertex; v < segment.firstVertex + segment.vertexCount; ++v) {
-            store(outPositions[v], m.point(mesh.positions[v]));
-            store(outNormals[v], m.direction(mesh.normals[v]));
+            store(outPositions[v], m.point(restPositions[v]));
+            store(outNormals[v], m.direction(restNormals[v]));
         }
     }
 }
@@ -348,6 +351,7 @@ struct SkinningWorkers::Shared {
     // The job, written by the caller before it is published.
     SkinningPalette palette;
     const Character* character = nullptr;
+    std::span<const Vec3> restPositions, restNormals;
     SkinningMethod method = SkinningMethod::Linear;
     std::span<Vec3> outPositions, outNormals;
     std::size_t chunkSize = 0;
@@ -358,8 +362,8 @@ struct SkinningWorkers::Shared {
     {
         const std::size_t vertices = character->mesh.vertexCount();
         for (std::size_t c = nextChunk.fetch_add(1); c < chunkCount; c = nextChunk.fetch_add(1))
-            skinVertices(character->skin, character->mesh.positions, character->mesh.normals, palette, method,
-                         c * chunkSize, std::min(vertices, (c + 1) * chunkSize), outPositions, outNormals);
+            skinVertices(character->skin, restPositions, restNormals, palette, method, c * chunkSize,
+                         std::min(vertices, (c + 1) * chunkSize), outPositions, outNormals);
     }
 
     void work()
@@ -406,21 +410,26 @@ int SkinningWorkers::threadCount() const
 }
 
 void SkinningWorkers::skin(const Character& character, std::span<const RigidTransform> joints,
-                           SkinningMethod method, std::span<Vec3> outPositions, std::span<Vec3> outNormals)
+                           SkinningMethod method, std::span<Vec3> outPositions, std::span<Vec3> outNormals,
+                           std::span<const Vec3> restPositions, std::span<const Vec3> restNormals)
 {
+    if (restPositions.empty())
+        restPositions = character.mesh.positions, restNormals = character.mesh.normals;
     if (character.skin.empty())
-        return skinRigidSegments(character, joints, outPositions, outNormals);
+        return skinRigidSegments(character, joints, outPositions, outNormals, restPositions, restNormals);
     Shared& shared = *m_shared;
     shared.palette.update(joints);
     // A few chunks per thread even out uneven progress; small chunks would cost more than they save.
     const std::size_t vertices = character.mesh.vertexCount();
     const std::size_t chunkSize = std::max<std::size_t>(1024, vertices / (4 * m_threads.size() + 4) + 1);
     if (m_threads.empty() || vertices <= chunkSize)
-        return skinVertices(character.skin, character.mesh.positions, character.mesh.normals, shared.palette,
-                            method, 0, vertices, outPositions, outNormals);
+        return skinVertices(character.skin, restPositions, restNormals, shared.palette, method, 0, vertices,
+                            outPositions, outNormals);
     {
         std::lock_guard lock(shared.mutex);
         shared.character = &character;
+        shared.restPositions = restPositions;
+        shared.restNormals = restNormals;
         shared.method = method;
         shared.outPositions = outPositions;
         shared.outNormals = outNormals;

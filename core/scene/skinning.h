@@ -73,8 +73,10 @@ void skinVertices(const Skin& skin, std::span<const anim::Vec3> restPositions,
                   std::span<anim::Vec3> outPositions, std::span<anim::Vec3> outNormals);
 
 /// For characters without skin: every segment's vertices follow its joint (Character::segmentJoint).
+/// The rest mesh is the character's, or the given one.
 void skinRigidSegments(const Character& character, std::span<const RigidTransform> joints,
-                       std::span<anim::Vec3> outPositions, std::span<anim::Vec3> outNormals);
+                       std::span<anim::Vec3> outPositions, std::span<anim::Vec3> outNormals,
+                       std::span<const anim::Vec3> restPositions = {}, std::span<const anim::Vec3> restNormals = {});
 
 /// Persistent worker threads that skin one mesh in parallel chunks; the calling thread takes
 /// chunks too. threads ≤ 0: one per hardware thread; 1: everything on the calling thread.
@@ -89,8 +91,11 @@ public:
     int threadCount() const;
     /// skinVertices over all vertices (or skinRigidSegments when the skin is empty); returns when
     /// done. Builds its own palette from `joints` (allocating only when the joint count grows).
+    /// The rest mesh is the character's, or `restPositions` / `restNormals` when given (a face
+    /// deformed before skinning, face_rig.h).
     void skin(const Character& character, std::span<const RigidTransform> joints, SkinningMethod method,
-              std::span<anim::Vec3> outPositions, std::span<anim::Vec3> outNormals);
+              std::span<anim::Vec3> outPositions, std::span<anim::Vec3> outNormals,
+              std::span<const anim::Vec3> restPositions = {}, std::span<const anim::Vec3> restNormals = {});
 
 private:
     struct Shared;
