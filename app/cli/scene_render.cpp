@@ -101,6 +101,7 @@ void addPictureOptions(CommandSpec& spec)
         {"skinning", "lbs|dqs", "linear blend or dual-quaternion skinning (default lbs)"},
         {"azimuth", "DEGREES", "camera direction around the vertical: 0 in front, 90 from the character's left (default 20)"},
         {"elevation", "DEGREES", "camera height above the horizon (default 8)"},
+        {"close-up", "CHARACTER", "frame that character's head, following it (--azimuth then counts from where it looks)"},
         {"no-ground", "", "leave out the ground disc"},
         {"probe-background", "", "draw the scenario's light probe behind the characters"},
         {"samples", "N", "multisampling samples per pixel (default 4, 0 for none)"},
@@ -135,6 +136,13 @@ int readPictureSettings(const CommandSpec& spec, const ParsedArguments& argument
     out.azimuth = *azimuth;
     out.elevation = *elevation;
     out.ground = !arguments.has("no-ground");
+    if (const auto closeUp = arguments.value("close-up")) {
+        if (!document.findCharacter(*closeUp)) {
+            printError(spec.name, "--close-up: the scenario has no character named '" + *closeUp + "'.");
+            return ExitInvalidInput;
+        }
+        out.closeUp = *closeUp;
+    }
     out.probeBackground = arguments.has("probe-background");
     if (const auto bakePath = arguments.value("bake")) {
         std::string name;

@@ -81,6 +81,12 @@ public:
     std::span<const anim::Vec3> posedPositions() const { return m_positions; }
     std::span<const anim::Vec3> posedNormals() const { return m_normals; }
     Bounds bounds() const;
+    /// A joint's current world rotation (its turn from the rest pose).
+    anim::Quatd jointRotation(int joint) const
+    {
+        const anim::Quat& q = m_jointTransforms[std::size_t(joint)].rotation;
+        return {q.x, q.y, q.z, q.w};
+    }
     /// A segment's current world rotation Q_joint·bindRotation.
     const anim::Quatd& segmentRotation(std::size_t segment) const { return m_segmentRotations[segment]; }
     /// The light coefficients a segment's shader receives, order² RGB triplets (coefficient i's

@@ -1,6 +1,9 @@
 #include "render/scenario_picture.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 
 namespace thespis::core::render {
 
@@ -24,13 +27,28 @@ Result<std::unique_ptr<ScenarioPicture>> ScenarioPicture::create(const scenario:
     self->m_renderer = std::move(renderer).value();
     self->m_scene->scene().setShading(settings.shading);
     self->m_scene->scene().setGroundVisible(settings.ground);
-    self->m_view = frameBounds(self->m_scene->boundsOverTimeline(), settings.azimuth, settings.elevation,
-                               double(settings.width) / settings.height);
+    if (!settings.closeUp.empty()) {
+        if (auto head = self->m_scene->head(settings.closeUp); !head)
+            return head.error();
+    } else {
+        self->m_view = frameBounds(self->m_scene->boundsOverTimeline(), settings.azimuth, settings.elevation,
+                                   double(settings.width) / settings.height);
+    }
     return self;
 }
 
 Result<const RgbaImage*> ScenarioPicture::draw()
 {
+    if (!m_settings.closeUp.empty()) {
+        auto head = m_scene->head(m_settings.closeUp);
+        if (!head)
+            return head.error();
+        constexpr double Degrees = 180 / std::numbers::pi;
+        const double heading = std::atan2(head->facing.x, head->facing.z) * Degrees;
+        const double pitch = -std::asin(std::clamp(head->facing.y, -1.0, 1.0)) * Degrees; // a bowed head: from below
+        m_view = frameBounds(head->bounds, heading + m_settings.azimuth, m_settings.elevation - pitch,
+                             double(m_settings.width) / m_settings.height, 25);
+    }
     if (auto drawn = m_renderer->render(m_scene->scene(), m_view, m_image); !drawn)
         return drawn.error();
     return &m_image;

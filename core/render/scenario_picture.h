@@ -26,6 +26,9 @@ struct PictureSettings {
     bool probeBackground = false;
     double azimuth = 20;   ///< degrees around the vertical: 0 in front
     double elevation = 8;  ///< degrees above the horizon
+    /// A close-up of this character's head, following it frame by frame (azimuth and elevation
+    /// then count from where its face looks); "" frames every character over the whole timeline.
+    std::string closeUp;
     /// Baked transfer by character name (ScenarioSceneOptions::bakes).
     std::map<std::string, std::shared_ptr<const lighting::TransferBake>> bakes;
 };
@@ -40,7 +43,7 @@ public:
     const PictureSettings& settings() const { return m_settings; }
     const std::string& glDescription() const { return m_renderer->glDescription(); }
 
-    /// Draws the scene as it is posed now.
+    /// Draws the scene as it is posed now (a close-up framed on the head as it is now).
     Result<const RgbaImage*> draw();
     /// Draws the scene as it is posed now into a PNG (written atomically).
     Result<void> writePng(const std::filesystem::path& file);

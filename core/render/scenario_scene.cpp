@@ -184,6 +184,31 @@ void ScenarioScene::pose(Performer& performer, const runtime::CharacterPose& pos
     performer.node->setPose(performer.bodyFrame, pose.face);
 }
 
+Result<ScenarioScene::Head> ScenarioScene::head(std::string_view character) const
+{
+    std::string names;
+    for (const Performer& performer : m_performers) {
+        names += (names.empty() ? "" : ", ") + performer.name;
+        if (performer.name != character)
+            continue;
+        const scene::Character& body = performer.node->character();
+        const int skull = body.skeleton.find("skullbase");
+        Head head;
+        const std::span<const anim::Vec3> posed = performer.node->posedPositions();
+        for (const scene::Segment& segment : body.mesh.segments)
+            if (skull >= 0 && segment.joint == "skullbase")
+                for (std::uint32_t v = segment.firstVertex; v < segment.firstVertex + segment.vertexCount; ++v)
+                    head.bounds.add(anim::Vec3d{posed[v].x, posed[v].y, posed[v].z});
+        if (head.bounds.empty())
+            return makeError(ErrorCode::InvalidArgument, "Character \"" + std::string(character) +
+                                                             "\" has no head to frame (no segment follows skullbase).");
+        head.facing = anim::rotate(performer.node->jointRotation(skull), anim::Vec3d{0, 0, 1});
+        return head;
+    }
+    return makeError(ErrorCode::InvalidArgument,
+                     "There is no character \"" + std::string(character) + "\" (the scenario has: " + names + ").");
+}
+
 Bounds ScenarioScene::boundsOver(std::span<const runtime::PoseSet> samples)
 {
     Bounds bounds;

@@ -102,6 +102,15 @@ public:
     /// boundsOver the stage's authored timeline sampled at 10 Hz.
     Bounds boundsOverTimeline();
 
+    /// A character's head as posed now: the bounds of the segments that follow its skull joint
+    /// (skullbase: skull, hair, eyes, lids, teeth …) and where its face looks (unit, world).
+    struct Head {
+        Bounds bounds;
+        anim::Vec3d facing;
+    };
+    /// Errors: no character of that name (the names there are listed), or one without a head.
+    Result<Head> head(std::string_view character) const;
+
 private:
     ScenarioScene() = default;
 

@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "scene/humanoid_face.h"
+#include "scene/humanoid_head.h"
 #include "scene/humanoid_parts.h"
 
 namespace thespis::core::scene {
@@ -21,96 +23,6 @@ using namespace humanoid;
 
 namespace hanim = anim::hanim;
 using anim::Skeleton;
-
-// ---------------------------------------------------------------------------------------------
-// The head: a soft union of two ellipsoids (cranium, face and jaw) shaped by smooth bumps (nose,
-// chin, brow, ears …). It is star-shaped around kHeadCentre, so a surface point is
-// kHeadCentre + radius(direction)·direction.
-
-struct Ellipsoid {
-    Vec3d centre, radii;
-};
-
-/// Distance from `origin` (inside the ellipsoid) along a unit direction to its surface.
-double distanceToEllipsoid(const Ellipsoid& ellipsoid, Vec3d origin, Vec3d direction)
-{
-    const Vec3d& r = ellipsoid.radii;
-    const Vec3d q{(origin.x - ellipsoid.centre.x) / r.x, (origin.y - ellipsoid.centre.y) / r.y, (origin.z - ellipsoid.centre.z) / r.z};
-    const Vec3d e{direction.x / r.x, direction.y / r.y, direction.z / r.z};
-    const double a = dot(e, e), b = dot(q, e), c = dot(q, q) - 1;
-    return (-b + std::sqrt(b * b - a * c)) / a;
-}
-
-/// A bump in the head's radius around a direction; `width` across and `height` up and down are
-/// angular spreads (radians), `amount` metres (negative: a hollow).
-struct Bump {
-    Vec3d direction;
-    double width, height, amount;
-};
-
-const Vec3d kHeadCentre{0.0, 1.665, 0.02};
-const Ellipsoid kCranium{{0.0, 1.685, -0.008}, {0.079, 0.108, 0.101}};
-const Ellipsoid kFace{{0.0, 1.628, 0.028}, {0.056, 0.068, 0.070}};
-/// Mid-line and left-side bumps; those off the mid-line are mirrored to the right side.
-const Bump kHeadBumps[] = {
-    {{0.0, -0.28, 0.96}, 0.09, 0.08, 0.018},    // nose tip
-    {{0.0, 0.02, 1.0}, 0.07, 0.18, 0.010},      // nose bridge
-    {{0.0, 0.33, 0.94}, 0.40, 0.09, 0.004},     // brow
-    {{0.34, 0.20, 0.92}, 0.12, 0.08, -0.008},   // eye socket
-    {{0.50, -0.15, 0.85}, 0.18, 0.14, 0.004},   // cheek
-    {{0.0, -0.60, 0.80}, 0.16, 0.07, 0.004},    // lips
-    {{0.0, -0.84, 0.54}, 0.16, 0.12, 0.008},    // chin
-    {{1.0, 0.05, -0.12}, 0.10, 0.17, 0.013},    // ear
-};
-
-double headRadius(Vec3d d)
-{
-    const double cranium = distanceToEllipsoid(kCranium, kHeadCentre, d);
-    const double face = distanceToEllipsoid(kFace, kHeadCentre, d);
-    double r = std::pow(std::pow(cranium, 10) + std::pow(face, 10), 0.1); // soft maximum
-    for (const Bump& bump : kHeadBumps) {
-        for (const double side : {1.0, -1.0}) {
-            if (side < 0 && bump.direction.x == 0)
-                continue;
-            const Vec3d centre = normalized({bump.direction.x * side, bump.direction.y, bump.direction.z});
-            const Vec3d delta = d - centre;
-            const double across = dot(delta, delta) - delta.y * delta.y;
-            r += bump.amount * std::exp(-0.5 * (across / (bump.width * bump.width) + delta.y * delta.y / (bump.height * bump.height)));
-        }
-    }
-    return r;
-}
-
-Vec3d headPoint(Vec3d direction) { return kHeadCentre + direction * headRadius(direction); }
-
-SurfacePoint headSurface(Vec3d direction, double lift)
-{
-    // Normal from two small steps across the surface, which works at the poles too.
-    const Vec3d helper = std::abs(direction.y) < 0.9 ? Vec3d{0, 1, 0} : Vec3d{1, 0, 0};
-    const Vec3d e1 = normalized(cross(direction, helper));
-    const Vec3d e2 = cross(direction, e1);
-    constexpr double step = 1e-5;
-    const Vec3d d1 = headPoint(normalized(direction + e1 * step)) - headPoint(normalized(direction - e1 * step));
-    const Vec3d d2 = headPoint(normalized(direction + e2 * step)) - headPoint(normalized(direction - e2 * step));
-    Vec3d normal = normalized(cross(d1, d2));
-    if (dot(normal, direction) < 0)
-        normal = normal * -1.0;
-    return {headPoint(direction) + normal * lift, normal};
-}
-
-/// Direction at polar angle `polar` from `pole` (±Y) and azimuth `angle` from +Z towards +X.
-Vec3d sphereDirection(double polar, double angle, double pole)
-{
-    return {std::sin(polar) * std::sin(angle), pole * std::cos(polar), std::sin(polar) * std::cos(angle)};
-}
-
-// Hair: a shell 3 to 9 mm above the skull (thinning towards its edge) over the top and back of the head, down
-// to a hairline at the forehead, above the ears and at the nape.
-constexpr double kHairInner = 0.003;
-/// Outer surface height above the skull at the crown (t = 0) tapering to the hairline (t = 1).
-double hairOuter(double t) { return 0.0045 + 0.0045 * (1 - t * t); }
-/// Polar angle (from the crown) of the hairline at an azimuth (0 = forehead, π = nape).
-double hairline(double angle) { return std::acos(0.045 + 0.5 * std::cos(angle) - 0.045 * std::cos(2 * angle)); }
 
 // ---------------------------------------------------------------------------------------------
 // The body, left side and mid-line; right-side parts mirror the left ones.
@@ -133,8 +45,8 @@ const SweepKey kTorso[] = {
     {"vt1", "vc4", 0.6, {0, 0, 0.035}, {0.100, 0.066, 0.070, 2.2}},
     {"vc4", "", 0, {0, 0, 0.030}, {0.066, 0.060, 0.064, 2.0}, "vc4"},
     {"vc2", "", 0, {0, 0, 0.025}, {0.060, 0.056, 0.060, 2.0}, "vc2"},
-    {"skullbase", "", 0, {0, 0, 0.018}, {0.057, 0.054, 0.058, 2.0}, "skullbase"},
-    {"skullbase", "", 0, {0, 0.04, 0.02}, {0.050, 0.048, 0.050, 2.0}},
+    {"skullbase", "", 0, {0, 0, 0.008}, {0.057, 0.045, 0.058, 2.0}, "skullbase"},
+    {"skullbase", "", 0, {0, 0.04, 0.0}, {0.050, 0.035, 0.050, 2.0}}, // behind the mouth (humanoid_face.h)
 };
 
 /// Shoulder line (clavicle and trapezius) from the neck to the shoulder; sections: side = front
@@ -264,17 +176,48 @@ std::string segmentName(std::string_view joint)
 }
 
 /// Indices into humanoidMaterials().
-enum MaterialIndex { SkinMaterial, HairMaterial, ShirtMaterial, TrousersMaterial, ShoesMaterial };
+enum MaterialIndex {
+    SkinMaterial,
+    HairMaterial,
+    ShirtMaterial,
+    TrousersMaterial,
+    ShoesMaterial,
+    FaceMaterial,
+    ScleraMaterial,
+    IrisMaterial,
+    PupilMaterial,
+    TeethMaterial,
+    TongueMaterial,
+    MouthMaterial
+};
+
+constexpr std::array<float, 3> kSkin{0.72f, 0.42f, 0.31f};
 
 std::vector<Material> humanoidMaterials(const std::array<float, 3>& shirt)
 {
-    // Linear base colours: light skin, dark brown hair, the shirt, grey-blue trousers, brown shoes.
-    return {{"skin", {0.72f, 0.42f, 0.31f, 1.0f}},
+    // Linear base colours: light skin, dark brown hair, the shirt, grey-blue trousers, brown shoes;
+    // the head's skin is its picture (lips, brows); eyes, teeth, tongue, the inside of the mouth.
+    return {{"skin", {kSkin[0], kSkin[1], kSkin[2], 1.0f}},
             {"hair", {0.10f, 0.05f, 0.025f, 1.0f}},
             {"shirt", {shirt[0], shirt[1], shirt[2], 1.0f}},
             {"trousers", {0.10f, 0.11f, 0.15f, 1.0f}},
-            {"shoes", {0.05f, 0.03f, 0.02f, 1.0f}}};
+            {"shoes", {0.05f, 0.03f, 0.02f, 1.0f}},
+            {"face", {1.0f, 1.0f, 1.0f, 1.0f}, 0},
+            {"sclera", {0.80f, 0.78f, 0.74f, 1.0f}},
+            {"iris", {0.16f, 0.075f, 0.03f, 1.0f}},
+            {"pupil", {0.01f, 0.01f, 0.01f, 1.0f}},
+            {"teeth", {0.78f, 0.74f, 0.62f, 1.0f}},
+            {"tongue", {0.50f, 0.16f, 0.15f, 1.0f}},
+            {"mouth", {0.16f, 0.03f, 0.03f, 1.0f}}};
 }
+
+constexpr FaceMaterials kFaceMaterials{FaceMaterial, SkinMaterial, HairMaterial, ScleraMaterial, IrisMaterial,
+                                       PupilMaterial, TeethMaterial, TongueMaterial, MouthMaterial};
+
+/// The face's own segments (humanoid_face.h), in the order they follow the body's.
+constexpr std::string_view kFaceSegments[] = {"l_eyeball", "r_eyeball", "l_iris",      "r_iris",      "l_pupil",
+                                              "r_pupil",   "l_eyelid",  "r_eyelid",    "l_eyelash",   "r_eyelash",
+                                              "upper_teeth", "lower_teeth", "tongue", "mouth"};
 
 int materialOfJoint(std::string_view joint)
 {
@@ -391,15 +334,7 @@ public:
 
     void addHead(std::vector<Piece>& pieces) const
     {
-        Piece head;
-        head.joint = jointOf("skullbase");
-        const double spacing = m_spacing * kHeadSpacingScale;
-        const int around = aroundFor(2 * kPi * kCranium.radii.z, spacing, 16);
-        const std::vector<double> rings = evenRings(0, kPi, stepsFor(kPi * kCranium.radii.y, spacing));
-        addRings(head, rings, around, true, true, false,
-                 [](double polar, double angle) { return headSurface(sphereDirection(polar, angle, -1), 0); },
-                 [&](double) { return rigid(head.joint); });
-        pieces.push_back(std::move(head));
+        addFace(jointOf("skullbase"), m_spacing, kFaceMaterials, pieces);
     }
 
     /// The hair shell: outer and inner surfaces over the same skull directions, closed by a rim
@@ -492,21 +427,28 @@ Result<Character> makeDefaultHumanoid(const DefaultHumanoidOptions& options)
     }
     builder.addHair(pieces);
 
-    // Segments in skeleton order, one per joint that has pieces, then the hair.
+    // Segments in skeleton order, one per joint that has pieces, then the hair, then the face's.
     CharacterMesh& mesh = character.mesh;
     Skin& skin = character.skin;
     skin.influences = kInfluences;
     character.materials = humanoidMaterials(options.shirtColor);
-    auto appendSegment = [&](std::string name, int joint, bool hair) {
+    character.textures = {makeFaceTexture(kSkin)};
+    std::vector<FaceTag> faceTags;
+    auto appendSegment = [&](std::string name, int joint, bool hair, std::string_view own = {}) {
         Segment segment;
         segment.name = std::move(name);
         segment.joint = character.skeleton.joint(joint).name;
         segment.firstVertex = std::uint32_t(mesh.positions.size());
         segment.firstTriangle = std::uint32_t(mesh.triangleCount());
         segment.bindTranslation = restPosition(segment.joint);
+        int material = -1;
         for (const Piece& piece : pieces) {
-            if (piece.joint != joint || piece.hair != hair)
+            if (piece.joint != joint || piece.hair != hair || piece.segment != own)
                 continue;
+            if (piece.material >= 0)
+                material = piece.material;
+            faceTags.insert(faceTags.end(), piece.face.begin(), piece.face.end());
+            faceTags.resize(faceTags.size() + piece.positions.size() - piece.face.size());
             const std::uint32_t base = std::uint32_t(mesh.positions.size());
             for (std::size_t v = 0; v < piece.positions.size(); ++v) {
                 const Vec3d& p = piece.positions[v];
@@ -526,11 +468,28 @@ Result<Character> makeDefaultHumanoid(const DefaultHumanoidOptions& options)
         if (segment.vertexCount == 0)
             return;
         mesh.segments.push_back(std::move(segment));
-        character.segmentMaterials.push_back(hair ? HairMaterial : materialOfJoint(mesh.segments.back().joint));
+        character.segmentMaterials.push_back(material >= 0 ? material
+                                             : hair       ? HairMaterial
+                                                          : materialOfJoint(mesh.segments.back().joint));
     };
     for (int joint = 0; joint < character.skeleton.jointCount(); ++joint)
         appendSegment(segmentName(character.skeleton.joint(joint).name), joint, false);
-    appendSegment("hair", builder.jointOf("skullbase"), true);
+    const int skull = builder.jointOf("skullbase");
+    appendSegment("hair", skull, true);
+    for (const std::string_view own : kFaceSegments)
+        appendSegment(std::string(own), skull, false, own);
+
+    // The head's skin samples its picture; every other vertex keeps (0, 0) (its material has none).
+    character.texcoords.assign(mesh.vertexCount(), {0.0f, 0.0f});
+    const std::size_t head = std::size_t(std::find_if(mesh.segments.begin(), mesh.segments.end(), [&](const Segment& s) {
+                                                           return s.joint == character.skeleton.joint(skull).name;
+                                                       }) - mesh.segments.begin());
+    const Segment& headSegment = mesh.segments[head];
+    for (std::uint32_t v = headSegment.firstVertex; v < headSegment.firstVertex + headSegment.vertexCount; ++v) {
+        const anim::Vec3& p = mesh.positions[v];
+        character.texcoords[v] = faceTexcoord({p.x, p.y, p.z});
+    }
+    character.face = makeFaceRig(mesh, faceTags, character.skeleton);
     return character;
 }
 

@@ -66,14 +66,39 @@ struct SurfacePoint {
     Vec3d normal; ///< unit, outward
 };
 
+/// What a vertex of the face is, for its rig (humanoid_face.h); None off the face.
+enum class FacePart : std::uint8_t {
+    None,
+    Skin,       ///< the head's skin (side: above or below the mouth's opening)
+    LipRoll,    ///< the lips' inner surface, turning into the mouth
+    Eyelid,     ///< side: upper or lower; eye: which
+    Eyelash,
+    Eyeball,    ///< sclera and iris
+    Pupil,
+    UpperTeeth,
+    LowerTeeth,
+    Tongue,
+    Mouth       ///< the inside of the mouth
+};
+
+struct FaceTag {
+    FacePart part = FacePart::None;
+    std::int8_t side = 0; ///< +1 above the mouth's opening (or an upper lid), −1 below
+    std::int8_t eye = 0;  ///< +1 the left eye (+x), −1 the right
+    std::int16_t slit = -1; ///< the mouth's edge: its column along the opening (pairs upper and lower)
+};
+
 /// A surface of the body that belongs to one segment; its triangles index its own vertices.
 struct Piece {
     int joint = 0; ///< skeleton joint of the segment
     bool hair = false;
+    std::string_view segment; ///< a segment of its own (the face's parts), or "" for the joint's
+    int material = -1;        ///< the segment's material when it has its own, else by joint
     std::vector<Vec3d> positions;
     std::vector<Vec3d> normals;
     std::vector<Influences> influences;
     std::vector<std::uint32_t> triangles;
+    std::vector<FaceTag> face; ///< per vertex, or empty (no face part)
 };
 
 /// Appends to `piece` a grid of rings of `around` vertices at parameters `rings` (the angle runs

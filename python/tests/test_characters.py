@@ -19,9 +19,9 @@ def test_default_humanoid_is_a_skinned_hanim_character():
     body = scene.default_humanoid(hanim.Level.subset25)
     body.validate()
     assert body.skeleton.joint_count == 25
-    assert 15000 <= body.mesh.triangle_count <= 30000
+    assert 25000 <= body.mesh.triangle_count <= 40000  # the body's 20 000 and the face's
     names = {segment.name for segment in body.mesh.segments}
-    assert {"skull", "hair", "l_thigh", "r_upperarm"} <= names
+    assert {"skull", "hair", "l_thigh", "r_upperarm", "l_eyeball", "tongue"} <= names
     weights = body.skin_weights
     assert weights.shape == (body.mesh.vertex_count, body.influences)
     np.testing.assert_allclose(weights.sum(axis=1), 1.0, atol=1e-3)

@@ -23,10 +23,11 @@ def test_frame_layout_orders_elements_by_kind():
         layout.kind(4)
 
 
-def test_mpeg4_face_layout_has_68_faps():
+def test_mpeg4_face_layout_has_68_faps_then_visemes_and_expressions():
     face = FrameLayout.mpeg4_face()
-    assert face.scalar_count == 68 and face.rotation_count == 0
-    assert face.scalar_names[0] == "fap1" and face.scalar_names[-1] == "fap68"
+    assert face.scalar_count == 68 + 14 + 6 and face.rotation_count == 0
+    assert face.scalar_names[0] == "fap1" and face.scalar_names[67] == "fap68"
+    assert face.scalar_names[68] == "viseme1" and face.scalar_names[-1] == "expression6"
 
 
 @pytest.mark.parametrize("level, count", [(hanim.Level.loa1, 18), (hanim.Level.loa2, 71), (hanim.Level.subset25, 25)])

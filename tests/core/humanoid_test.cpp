@@ -92,7 +92,7 @@ TEST(DefaultHumanoid, IsValidAtEveryLevel)
         EXPECT_EQ(character.skeleton.jointCount(), hanim::skeleton(level).jointCount());
         EXPECT_EQ(character.skin.influences, 4);
         EXPECT_EQ(character.segmentMaterials.size(), character.mesh.segments.size());
-        EXPECT_TRUE(character.texcoords.empty());
+        EXPECT_EQ(character.texcoords.size(), character.mesh.vertexCount()); // the face's picture
         EXPECT_TRUE(character.clips.empty());
         for (const Segment& s : character.mesh.segments) {
             EXPECT_GE(character.skeleton.find(s.joint), 0) << s.name << " follows " << s.joint;
@@ -101,13 +101,14 @@ TEST(DefaultHumanoid, IsValidAtEveryLevel)
     }
 }
 
-TEST(DefaultHumanoid, HasAboutTwentyThousandTrianglesAtDetailOne)
+// About 20 000 for the body and 13 000 for the face, whose lips and lids need 2–3 mm.
+TEST(DefaultHumanoid, HasAboutThirtyThousandTrianglesAtDetailOne)
 {
     for (Level level : kLevels) {
         SCOPED_TRACE(levelName(level));
         const std::size_t triangles = makeHumanoid(level).mesh.triangleCount();
-        EXPECT_GE(triangles, 15000u);
-        EXPECT_LE(triangles, 30000u);
+        EXPECT_GE(triangles, 25000u);
+        EXPECT_LE(triangles, 40000u);
         // Half the detail: about a quarter of the triangles.
         const double ratio = double(makeHumanoid(level, 0.5).mesh.triangleCount()) / double(triangles);
         EXPECT_GT(ratio, 0.15);
@@ -142,13 +143,18 @@ TEST(DefaultHumanoid, NamesSegmentsAfterHAnimBodySegments)
         {"l_upperarm", "l_shoulder"}, {"l_forearm", "l_elbow"}, {"l_carpal", "l_radiocarpal"},
         {"r_thigh", "r_hip"}, {"r_calf", "r_knee"}, {"r_talus", "r_talocrural"},
         {"r_tarsal_proximal_phalanx", "r_metatarsophalangeal"}, {"r_clavicle", "r_sternoclavicular"},
-        {"r_upperarm", "r_shoulder"}, {"r_forearm", "r_elbow"}, {"r_carpal", "r_radiocarpal"}};
+        {"r_upperarm", "r_shoulder"}, {"r_forearm", "r_elbow"}, {"r_carpal", "r_radiocarpal"},
+        // The face's parts, each with its own material, all on the skull.
+        {"l_eyeball", "skullbase"}, {"r_eyeball", "skullbase"}, {"l_iris", "skullbase"}, {"r_iris", "skullbase"},
+        {"l_pupil", "skullbase"}, {"r_pupil", "skullbase"}, {"l_eyelid", "skullbase"}, {"r_eyelid", "skullbase"},
+        {"l_eyelash", "skullbase"}, {"r_eyelash", "skullbase"}, {"upper_teeth", "skullbase"},
+        {"lower_teeth", "skullbase"}, {"tongue", "skullbase"}, {"mouth", "skullbase"}};
     EXPECT_EQ(subset, expected);
 
     // LOA 1 has one segment for the whole spine and neck; LOA 2 splits the spine, the foot and
     // the fingers.
     const std::map<std::string, std::string> loa1 = names(makeHumanoid(Level::Loa1));
-    EXPECT_EQ(loa1.size(), 19u); // 18 joints + hair
+    EXPECT_EQ(loa1.size(), 33u); // 18 joints + hair + the face's 14
     EXPECT_EQ(loa1.count("l5"), 1u);
     EXPECT_EQ(loa1.count("t6"), 0u);
     EXPECT_EQ(loa1.count("l_clavicle"), 0u);
@@ -180,29 +186,47 @@ TEST(DefaultHumanoid, SegmentsFollowTheirJointsUntagged)
     }
 }
 
-TEST(DefaultHumanoid, DressesTheFigureWithFiveMaterials)
+TEST(DefaultHumanoid, DressesTheFigureAndPaintsItsFace)
 {
     const Character character = makeHumanoid();
     std::set<std::string> names;
     for (const Material& material : character.materials) {
         names.insert(material.name);
-        EXPECT_EQ(material.baseColorTexture, -1);
+        EXPECT_EQ(material.baseColorTexture, material.name == "face" ? 0 : -1) << material.name;
         for (float channel : material.baseColor) {
             EXPECT_GT(channel, 0.0f) << material.name;
             EXPECT_LE(channel, 1.0f) << material.name;
         }
     }
-    EXPECT_EQ(names, (std::set<std::string>{"skin", "hair", "shirt", "trousers", "shoes"}));
-    EXPECT_TRUE(character.textures.empty());
+    EXPECT_EQ(names, (std::set<std::string>{"skin", "hair", "shirt", "trousers", "shoes", "face", "sclera", "iris",
+                                            "pupil", "teeth", "tongue", "mouth"}));
+    ASSERT_EQ(character.textures.size(), 1u); // the face's skin: lips and brows
+    EXPECT_EQ(character.textures[0].name, "face");
     auto materialOf = [&](std::string_view name) {
         const std::size_t index = std::size_t(&segment(character, name) - character.mesh.segments.data());
         return character.materials[std::size_t(character.segmentMaterials[index])].name;
     };
     for (const auto& [segmentName, material] : std::map<std::string, std::string>{
-             {"skull", "skin"}, {"c4", "skin"}, {"hair", "hair"}, {"t6", "shirt"}, {"l_upperarm", "shirt"},
+             {"skull", "face"}, {"c4", "skin"}, {"hair", "hair"}, {"t6", "shirt"}, {"l_upperarm", "shirt"},
              {"l_forearm", "skin"}, {"r_carpal", "skin"}, {"pelvis", "trousers"}, {"l_thigh", "trousers"},
-             {"r_calf", "trousers"}, {"l_talus", "shoes"}})
+             {"r_calf", "trousers"}, {"l_talus", "shoes"}, {"l_eyeball", "sclera"}, {"r_iris", "iris"},
+             {"l_pupil", "pupil"}, {"l_eyelid", "skin"}, {"r_eyelash", "hair"}, {"upper_teeth", "teeth"},
+             {"tongue", "tongue"}, {"mouth", "mouth"}})
         EXPECT_EQ(materialOf(segmentName), material) << segmentName;
+    // The skin's picture is skin where the face samples nothing else, lip-red on the lips.
+    const TextureImage& face = character.textures[0];
+    const auto texel = [&](std::array<float, 2> uv) {
+        const int x = std::clamp(int(uv[0] * float(face.width)), 0, face.width - 1);
+        const int y = std::clamp(int(uv[1] * float(face.height)), 0, face.height - 1);
+        return std::array<int, 3>{face.rgba[std::size_t((y * face.width + x) * 4)],
+                                  face.rgba[std::size_t((y * face.width + x) * 4 + 1)],
+                                  face.rgba[std::size_t((y * face.width + x) * 4 + 2)]};
+    };
+    const FeaturePoint* upperLip = character.face.findFeaturePoint("2.2");
+    const FeaturePoint* cheek = character.face.findFeaturePoint("5.1");
+    ASSERT_TRUE(upperLip && cheek);
+    const auto lip = texel(character.texcoords[upperLip->vertex]), skin = texel(character.texcoords[cheek->vertex]);
+    EXPECT_GT(lip[0] - lip[1], skin[0] - skin[1] + 20) << "the lips are redder than the cheek";
 }
 
 TEST(DefaultHumanoid, HairLiesAFewMillimetresAboveTheSkull)
@@ -301,7 +325,26 @@ TEST(DefaultHumanoid, SurfacesAreClosedWithSeamsThatMatchAndFaceOutward)
         }
         EXPECT_GT(seamVertices, 100u);
 
-        // Closed and consistently wound: every welded edge is used once in each direction.
+        // Closed and consistently wound: every welded edge is used once in each direction. The
+        // face's lids, lashes, iris and pupil are shells over the eyeball, and the lips part along
+        // a seam and turn into the mouth (the inside of the mouth closes the head behind them):
+        // their edges are open, but only there.
+        const std::set<std::string> shells{"l_eyelid", "r_eyelid", "l_eyelash", "r_eyelash",
+                                           "l_iris",   "r_iris",   "l_pupil",   "r_pupil"};
+        const Segment& mouth = segment(character, "mouth");
+        Vec3d mouthMin{1e9, 1e9, 1e9}, mouthMax{-1e9, -1e9, -1e9};
+        for (std::uint32_t v = mouth.firstVertex; v < mouth.firstVertex + mouth.vertexCount; ++v) {
+            const Vec3d p = toDouble(mesh.positions[v]);
+            mouthMin = {std::min(mouthMin.x, p.x - 0.002), std::min(mouthMin.y, p.y), std::min(mouthMin.z, p.z)};
+            mouthMax = {std::max(mouthMax.x, p.x + 0.002), std::max(mouthMax.y, p.y), std::max(mouthMax.z, p.z + 0.012)};
+        }
+        const auto mayBeOpen = [&](std::uint32_t a, std::uint32_t b) {
+            if (shells.count(mesh.segments[segmentOf[a]].name) || shells.count(mesh.segments[segmentOf[b]].name))
+                return true;
+            const Vec3d m = (toDouble(mesh.positions[a]) + toDouble(mesh.positions[b])) * 0.5;
+            return m.x > mouthMin.x && m.x < mouthMax.x && m.y > mouthMin.y && m.y < mouthMax.y && m.z > mouthMin.z &&
+                   m.z < mouthMax.z;
+        };
         std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
         for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
             for (int e = 0; e < 3; ++e) {
@@ -309,13 +352,19 @@ TEST(DefaultHumanoid, SurfacesAreClosedWithSeamsThatMatchAndFaceOutward)
                 ASSERT_NE(a, b) << "degenerate triangle " << t;
                 ++edges[{a, b}];
             }
-        std::size_t open = 0, repeated = 0;
+        std::size_t open = 0, repeated = 0, openOnTheFace = 0;
         for (const auto& [edge, count] : edges) {
+            const bool edgeOpen = count != 1 || edges.count({edge.second, edge.first}) == 0;
+            if (edgeOpen && mayBeOpen(edge.first, edge.second)) {
+                ++openOnTheFace;
+                continue;
+            }
             repeated += count != 1;
             open += edges.count({edge.second, edge.first}) == 0;
         }
         EXPECT_EQ(open, 0u);
         EXPECT_EQ(repeated, 0u);
+        EXPECT_GT(openOnTheFace, 100u); // the lids' margins and the lips' edges are there
 
         // Counter-clockwise seen from outside: the winding agrees with the smooth normals …
         std::size_t disagreeing = 0;
@@ -336,7 +385,9 @@ TEST(DefaultHumanoid, SurfacesAreClosedWithSeamsThatMatchAndFaceOutward)
             std::size_t outward = 0;
             for (std::uint32_t v = s.firstVertex; v < s.firstVertex + s.vertexCount; ++v)
                 outward += dot(toDouble(mesh.normals[v]), toDouble(mesh.positions[v]) - centroid) > 0;
-            if (s.name != "hair") {
+            // The hair, the lids and lashes (shells round the eye) and the inside of the mouth
+            // (seen from within) face their middle in part or in whole.
+            if (s.name != "hair" && s.name != "mouth" && !shells.count(s.name)) {
                 EXPECT_GT(double(outward) / s.vertexCount, 0.7) << s.name;
             }
         }

@@ -210,8 +210,9 @@ TEST_F(HighlightPicture, TintsTheSelectedSegmentInEveryShading)
         const PixelRect at = projectToPixels(std::span(&p, 1), view, kWidth, kHeight);
         return std::array<int, 2>{int(at.left), int(at.top)};
     };
-    // The face (in front of the skull's centre) and the chest, seen from the front.
-    const auto face = pixelAt(posedCentre(*node, "skull"));
+    // The forehead (above the skull's vertices' centre, which the face's fine mesh pulls down
+    // to the nose, where the rim light of the highlight adds more) and the chest, from the front.
+    const auto face = pixelAt(posedCentre(*node, "skull") + Vec3d{0, 0.045, 0});
     const auto chest = pixelAt(posedCentre(*node, "t1"));
     const std::size_t skull = segmentIndex(node->character(), "skull");
     for (Shading shading : {Shading::Prt, Shading::Phong, Shading::Unlit}) {
