@@ -252,7 +252,7 @@ void addSkin(int joint, double spacing, const FaceMaterials& materials, std::vec
                 const Vec3d p = skin.positions[edge];
                 const double t = double(k) / kLipRollRows, taper = std::sqrt(std::max(0.0, 1 - std::pow(p.x / kMouthCorner, 2)));
                 const Vec3d inward = normalized(Vec3d{0, 0, kMouthCentre.z} - Vec3d{0, 0, p.z});
-                const Vec3d q = p + inward * (kLipRollDepth * t * taper) + Vec3d{0, side * 0.0022 * t * t * taper, 0};
+                const Vec3d q = p + inward * (kLipRollDepth * t * taper) + Vec3d{0, (side > 0 ? 0.0030 : -0.0045) * t * t * taper, 0};
                 roll[std::size_t(k)][std::size_t(c)] =
                     addVertex(skin, q, FaceTag{FacePart::LipRoll, std::int8_t(side), 0, -1});
             }
@@ -366,7 +366,7 @@ void addLid(int joint, int eye, int side, double spacing, const FaceMaterials& m
 void addTeeth(int joint, bool upper, double spacing, const FaceMaterials& materials, std::vector<Piece>& pieces)
 {
     Piece teeth = startPiece(joint, upper ? "upper_teeth" : "lower_teeth", materials.teeth);
-    const double y0 = upper ? kMouthY + 0.0004 : kLowerTeethBottom, y1 = upper ? kUpperTeethTop : kMouthY - 0.0006;
+    const double y0 = upper ? kMouthY - 0.0018 : kLowerTeethBottom, y1 = upper ? kUpperTeethTop : kMouthY - 0.0002;
     const double halfWidth = upper ? 0.0235 : 0.0215, depth = upper ? 0.030 : 0.029, front = upper ? kTeethFront : kTeethFront - 0.0025;
     constexpr double Thickness = 0.0055;
     const auto archPoint = [&](double s) { return Vec3d{s * halfWidth, 0, front - depth * s * s}; };

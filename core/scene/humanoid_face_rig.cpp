@@ -288,8 +288,8 @@ FaceRig makeFaceRig(const CharacterMesh& mesh, std::span<const FaceTag> tags, co
             weight = jawWeight(p);
         else if ((t.part == FacePart::LipRoll && t.side < 0) || t.part == FacePart::LowerTeeth || t.part == FacePart::Tongue)
             weight = 1;
-        else if (t.part == FacePart::Mouth)
-            weight = smoothstep((kMouthY + 0.002 - p.y) / 0.007);
+        else if (t.part == FacePart::Mouth) // its floor at the front; its back wall stays before the throat
+            weight = smoothstep((kMouthY + 0.002 - p.y) / 0.007) * smoothstep((p.z - kMouthCentre.z + 0.012) / 0.02);
         if (weight > 0)
             jaw.vertices.push_back(v), jaw.weights.push_back(float(weight));
     }
