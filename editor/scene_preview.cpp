@@ -3,8 +3,6 @@
 #include <QColor>
 #include <QVector3D>
 
-#include <algorithm>
-
 #include "editor/document.h"
 #include "editor/job_runner.h"
 #include "editor/qt_conversions.h"
@@ -89,6 +87,23 @@ void ScenePreview::build(bool frameCamera)
             bounds, kHomeAzimuthDegrees, kHomeElevationDegrees, aspect, m_viewport->fieldOfView());
         m_viewport->setHomeView(toQt(view.eye), toQt(view.centre), toQt(view.up));
     }
+}
+
+bool ScenePreview::closeUp(int character)
+{
+    if (!m_scene || !m_viewport || !m_session || !m_session->document())
+        return false;
+    const auto& characters = m_session->document()->scenario().characters;
+    if (character < 0 || std::size_t(character) >= characters.size())
+        return false;
+    const auto head = m_scene->head(characters[std::size_t(character)].name);
+    if (!head)
+        return false;
+    const double aspect = m_viewport->height() > 0 ? double(m_viewport->width()) / m_viewport->height() : 16.0 / 9.0;
+    const core::render::CameraView view =
+        core::render::ScenarioScene::closeUpView(*head, 15, 5, aspect, m_viewport->fieldOfView());
+    m_viewport->lookAt(toQt(view.eye), toQt(view.centre), toQt(view.up));
+    return true;
 }
 
 void ScenePreview::onEdited(bool stageReplaced)

@@ -58,6 +58,10 @@ public:
     void setGroundVisible(bool visible);
     bool groundVisible() const { return m_groundVisible; }
 
+    /// Turns the camera to a close-up of the character's face as it is posed now (its home view
+    /// stays); false when no scene is shown or the character has no head.
+    bool closeUp(int character);
+
     /// The first segment the world-space ray meets on the posed bodies shown; nullopt when it
     /// meets none or no scene is shown.
     std::optional<SegmentHit> pickSegment(const QVector3D& origin, const QVector3D& direction) const;

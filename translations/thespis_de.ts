@@ -3713,6 +3713,18 @@ Führen Sie die Skripte des Szenarios nur aus, wenn Sie der Herkunft dieser Date
         <source>&amp;Export</source>
         <translation>E&amp;xportieren</translation>
     </message>
+    <message>
+        <source>&amp;Close-up</source>
+        <translation>&amp;Nahaufnahme</translation>
+    </message>
+    <message>
+        <source>This character has no head to frame.</source>
+        <translation>Diese Figur hat keinen Kopf, der sich ins Bild setzen lässt.</translation>
+    </message>
+    <message>
+        <source>No characters</source>
+        <translation>Keine Figuren</translation>
+    </message>
 </context>
 <context>
     <name>thespis::studio::PreferencesDialog</name>

@@ -3713,6 +3713,18 @@ N’exécutez les scripts du scénario que si vous faites confiance à la proven
         <source>&amp;Export</source>
         <translation>E&amp;xporter</translation>
     </message>
+    <message>
+        <source>&amp;Close-up</source>
+        <translation>&amp;Gros plan</translation>
+    </message>
+    <message>
+        <source>This character has no head to frame.</source>
+        <translation>Ce personnage n’a pas de tête à cadrer.</translation>
+    </message>
+    <message>
+        <source>No characters</source>
+        <translation>Aucun personnage</translation>
+    </message>
 </context>
 <context>
     <name>thespis::studio::PreferencesDialog</name>

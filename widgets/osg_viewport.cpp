@@ -145,12 +145,30 @@ void OsgViewport::setHomeView(const QVector3D& eye, const QVector3D& centre, con
 
 void OsgViewport::home()
 {
-    const osg::Vec3d eye(m_homeEye.x(), m_homeEye.y(), m_homeEye.z());
-    const osg::Vec3d centre(m_homeCentre.x(), m_homeCentre.y(), m_homeCentre.z());
+    lookAt(m_homeEye, m_homeCentre, m_homeUp);
+}
+
+void OsgViewport::lookAt(const QVector3D& eyeAt, const QVector3D& centreAt, const QVector3D& up)
+{
+    const osg::Vec3d eye(eyeAt.x(), eyeAt.y(), eyeAt.z());
+    const osg::Vec3d centre(centreAt.x(), centreAt.y(), centreAt.z());
     m_manipulator->setCenter(centre);
     m_manipulator->setDistance((centre - eye).length());
-    m_manipulator->setRotation(lookRotation(eye, centre, osg::Vec3d(m_homeUp.x(), m_homeUp.y(), m_homeUp.z())));
+    m_manipulator->setRotation(lookRotation(eye, centre, osg::Vec3d(up.x(), up.y(), up.z())));
     update();
+}
+
+QVector3D OsgViewport::eye() const
+{
+    osg::Vec3d eye, centre, up;
+    m_manipulator->getInverseMatrix().getLookAt(eye, centre, up);
+    return QVector3D(float(eye.x()), float(eye.y()), float(eye.z()));
+}
+
+QVector3D OsgViewport::centre() const
+{
+    const osg::Vec3d centre = m_manipulator->getCenter();
+    return QVector3D(float(centre.x()), float(centre.y()), float(centre.z()));
 }
 
 void OsgViewport::setClearColor(const QColor& color)

@@ -46,6 +46,11 @@ public:
     void setHomeView(const QVector3D& eye, const QVector3D& centre, const QVector3D& up);
     /// Returns the camera to the home view.
     void home();
+    /// Moves the camera to look from `eye` at `centre` now (the home view stays as it was).
+    void lookAt(const QVector3D& eye, const QVector3D& centre, const QVector3D& up);
+    /// Where the camera looks from and at now.
+    QVector3D eye() const;
+    QVector3D centre() const;
     void setClearColor(const QColor& color);
     /// Vertical field of view in degrees (default 30).
     void setFieldOfView(double degrees);

@@ -385,6 +385,24 @@ void MainWindow::createMenus()
     view->addAction(m_groundAction);
     view->addAction(m_content->lightingAction());
     view->addAction(m_homeViewAction);
+    // A close-up of each character's face, as it is posed now (listed when the menu opens).
+    QMenu* closeUp = view->addMenu(tr("&Close-up"));
+    closeUp->setObjectName(QStringLiteral("closeUpMenu"));
+    connect(closeUp, &QMenu::aboutToShow, this, [this, closeUp] {
+        closeUp->clear();
+        const editor::Document* document = m_session->document();
+        const int count = document ? int(document->scenario().characters.size()) : 0;
+        for (int c = 0; c < count; ++c) {
+            QAction* action = closeUp->addAction(QString::fromStdString(document->scenario().characters[std::size_t(c)].name));
+            action->setEnabled(m_preview != nullptr);
+            connect(action, &QAction::triggered, this, [this, c] {
+                if (m_preview && !m_preview->closeUp(c))
+                    statusBar()->showMessage(tr("This character has no head to frame."), 4000);
+            });
+        }
+        if (count == 0)
+            closeUp->addAction(tr("No characters"))->setEnabled(false);
+    });
     view->addSection(tr("Stick figures"));
     view->addActions(m_projectionGroup->actions());
     view->addSeparator();

@@ -1,9 +1,6 @@
 #include "render/scenario_picture.h"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <numbers>
 
 namespace thespis::core::render {
 
@@ -43,11 +40,8 @@ Result<const RgbaImage*> ScenarioPicture::draw()
         auto head = m_scene->head(m_settings.closeUp);
         if (!head)
             return head.error();
-        constexpr double Degrees = 180 / std::numbers::pi;
-        const double heading = std::atan2(head->facing.x, head->facing.z) * Degrees;
-        const double pitch = -std::asin(std::clamp(head->facing.y, -1.0, 1.0)) * Degrees; // a bowed head: from below
-        m_view = frameBounds(head->bounds, heading + m_settings.azimuth, m_settings.elevation - pitch,
-                             double(m_settings.width) / m_settings.height, 25);
+        m_view = ScenarioScene::closeUpView(*head, m_settings.azimuth, m_settings.elevation,
+                                            double(m_settings.width) / m_settings.height);
     }
     if (auto drawn = m_renderer->render(m_scene->scene(), m_view, m_image); !drawn)
         return drawn.error();

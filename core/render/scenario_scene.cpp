@@ -1,6 +1,8 @@
 #include "render/scenario_scene.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "lighting/probe.h"
 #include "lighting/probe_preview.h"
@@ -207,6 +209,16 @@ Result<ScenarioScene::Head> ScenarioScene::head(std::string_view character) cons
     }
     return makeError(ErrorCode::InvalidArgument,
                      "There is no character \"" + std::string(character) + "\" (the scenario has: " + names + ").");
+}
+
+CameraView ScenarioScene::closeUpView(const Head& head, double azimuthDegrees, double elevationDegrees, double aspect,
+                                      double fovYDegrees)
+{
+    constexpr double Degrees = 180 / std::numbers::pi;
+    const double heading = std::atan2(head.facing.x, head.facing.z) * Degrees;
+    const double pitch = std::asin(std::clamp(head.facing.y, -1.0, 1.0)) * Degrees;
+    return frameBounds(head.bounds, heading + azimuthDegrees, std::max(-5.0, elevationDegrees + pitch), aspect,
+                       fovYDegrees);
 }
 
 Bounds ScenarioScene::boundsOver(std::span<const runtime::PoseSet> samples)

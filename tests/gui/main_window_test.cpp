@@ -6,6 +6,7 @@
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QLabel>
+#include <QMenu>
 #include <QMessageBox>
 #include <QSlider>
 #include <QStyle>
@@ -60,6 +61,7 @@ private slots:
     void malformedScenarioReportsAnError();
     void missingScenarioReportsAnError();
     void viewportShowsTheCharactersLit();
+    void viewMenuClosesUpOnAFace();
     void savesAScreenshot();
     void cleanupTestCase();
 
@@ -305,6 +307,40 @@ void MainWindowTest::viewportShowsTheCharactersLit()
     // Playing moves the characters in the viewport too.
     m_window->clock()->seek(thespis::core::secondsToTicks(3.0));
     QVERIFY(viewport->grabFramebuffer() != prt);
+}
+
+// View ▸ Close-up ▸ a character turns the 3D view to that character's face as it is now; Home
+// goes back. Saved as studio_close_up.png, mid-blink (the demo's Creon blinks at 0.43 s).
+void MainWindowTest::viewMenuClosesUpOnAFace()
+{
+    QVERIFY(m_window->openScenario(m_scenarioPath));
+    thespis::widgets::OsgViewport* viewport = m_window->viewport();
+    m_window->clock()->seek(thespis::core::secondsToTicks(0.4333));
+    auto* menu = m_window->findChild<QMenu*>(QStringLiteral("closeUpMenu"));
+    QVERIFY(menu);
+    emit menu->aboutToShow();
+    const auto& characters = m_window->document()->scenario().characters;
+    QCOMPARE(menu->actions().size(), qsizetype(characters.size()));
+    const QVector3D homeCentre = viewport->centre();
+    QAction* creon = nullptr;
+    for (QAction* action : menu->actions())
+        if (action->text() == QStringLiteral("Creon"))
+            creon = action;
+    QVERIFY(creon && creon->isEnabled());
+    creon->trigger();
+    const auto head = m_window->scenePreview()->scene()->head("Creon");
+    QVERIFY(head.ok());
+    const auto centre = head->bounds.centre();
+    const QVector3D headCentre(float(centre.x), float(centre.y), float(centre.z));
+    QVERIFY2((viewport->centre() - headCentre).length() < 0.01f, "the camera looks at Creon's head");
+    QVERIFY2((viewport->eye() - headCentre).length() < 1.0f, "from close by");
+    QVERIFY((homeCentre - headCentre).length() > 0.2f);
+    QTest::qWait(100);
+    const QString dir = QStringLiteral(THESPIS_SCREENSHOT_DIR);
+    QVERIFY(QDir().mkpath(dir));
+    QVERIFY(viewport->grabFramebuffer().save(QDir(dir).filePath(QStringLiteral("studio_close_up.png"))));
+    m_window->viewport()->home();
+    QVERIFY((viewport->centre() - homeCentre).length() < 1e-4f);
 }
 
 void MainWindowTest::savesAScreenshot()
