@@ -74,7 +74,7 @@ def clip(name, rate, joints, sample, duration, root_translation=False, scalars=(
     for k in range(count):
         values = sample(k / rate)
         frames.append([number(v) for v in values])
-    out = {"schema": "Clip.3", "name": name, "frameRate": float(rate), "joints": list(joints),
+    out = {"schema": "Clip.4", "name": name, "frameRate": float(rate), "joints": list(joints),
            "rootTranslation": root_translation}
     if scalars:
         out["scalars"] = list(scalars)
@@ -87,7 +87,7 @@ def idle_synthesizer(name, seed, amplitude=1.0):
     (resources/motion/cmu_standing.idle, made by scripts/make_motion_data.sh from CMU standing
     recordings): balance shifts and small posture variations, open-ended, each character its own
     seed."""
-    return {"schema": "Clip.3", "name": name,
+    return {"schema": "Clip.4", "name": name,
             "idle": {"database": "motion/cmu_standing.idle", "seed": seed, "amplitude": float(amplitude)}}
 
 
@@ -136,6 +136,20 @@ def blink_clip(name, period, at):
         return [800.0 * closed, 800.0 * closed, 200.0 * closed, 200.0 * closed]
 
     return clip(name, 30, [], sample, period, scalars=["fap19", "fap20", "fap21", "fap22"])
+
+
+def blink_generator(name, seed, rate=17.0):
+    """Blinks at seeded moments, `rate` a minute (a person at rest: 17), open-ended."""
+    return {"schema": "Clip.4", "name": name,
+            "blinks": {"rate": float(rate), "seed": seed, "closeSeconds": 0.1, "shutSeconds": 0.03,
+                       "openSeconds": 0.25}}
+
+
+def expression_clip(name, expression, intensity, duration):
+    """An MPEG-4 expression (1 joy … 6 surprise) held at `intensity` (the weight of its channel)
+    for `duration` seconds, from a neutral first frame: played additively (relative to the first
+    frame) it adds the expression to whatever the face does, blinks included."""
+    return clip(name, 30, [], lambda t: [intensity if t > 0 else 0.0], duration, scalars=[f"expression{expression}"])
 
 
 # --- curves, modifiers, actions ---------------------------------------------------------------
@@ -210,6 +224,7 @@ def scenario():
             wave_clip("wave", waves=3, wave_period=0.6),
             nod_clip("nod", nods=2, nod_period=0.8, degrees=12.0),
             blink_clip("blink", period=3.2, at=0.4),
+            expression_clip("stern", 3, 0.6, 3.0),
         ],
         "layers": [
             layer("body", "body", [
@@ -226,6 +241,8 @@ def scenario():
             ]),
             layer("face", "face", [
                 action("creon_blinks", "blink", 0.0, constant(1.0), modifiers=[modifier("loop", count=0)]),
+                # Stern (anger at 0.6) while Antigone nods, added over the blinks.
+                action("creon_stern", "stern", 2.5, fade("cubicFade", 0.4, 0.6), mode="additive"),
             ]),
         ],
         # The gestures a speech script (or the studio's gesticon panel) can trigger.
@@ -243,6 +260,8 @@ def scenario():
             idle_synthesizer("antigone_idle", seed=2),
             wave_clip("wave", waves=2, wave_period=0.8),
             nod_clip("nod", nods=2, nod_period=1.2, degrees=10.0),
+            blink_generator("antigone_blinks", seed=2),
+            expression_clip("smile", 1, 0.7, 2.0),
         ],
         "layers": [
             layer("body", "body", [
@@ -253,6 +272,11 @@ def scenario():
                 action("antigone_wave", "wave", 6.0, adsr("linearAdsr", 0.5, 0.3, 0.9, 0.6),
                        mask="leftArm", mode="override", modifiers=[modifier("mirror", axis=0)]),
             ]),
+            layer("face", "face", [
+                # Her own blinks, synthesized, and a smile while she waves.
+                action("antigone_blinks", "antigone_blinks", 0.0, constant(1.0)),
+                action("antigone_smile", "smile", 5.8, fade("cubicFade", 0.4, 0.5), mode="additive"),
+            ]),
         ],
         "gestures": [
             gesture("agree", "nod", "head", 0.2, 0.3),
@@ -260,8 +284,8 @@ def scenario():
     }
     return {
         "format": "thespis-scenario",
-        "version": 6,
-        "schema": "Scenario.6",
+        "version": 7,
+        "schema": "Scenario.7",
         "name": "Antigone, act 1 (demo)",
         "duration": ticks(12.0),
         "masks": [

@@ -35,6 +35,16 @@ struct IdleSynthesizer {
     bool operator==(const IdleSynthesizer&) const = default;
 };
 
+/// Blinks (format 7): a face clip that shuts and opens the eyelids at seeded moments, open-ended
+/// (core/motion/blink_synthesizer.h). 17 a minute is a person at rest, 26 one talking.
+struct BlinkClip {
+    double rate = 17;          ///< blinks a minute
+    std::uint64_t seed = 1;
+    double closeSeconds = 0.10, shutSeconds = 0.03, openSeconds = 0.25;
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const BlinkClip&) const = default;
+};
+
 /// A clip a character can play: motion capture in a file beside the scenario (BVH, or an
 /// animation of a glTF file), keyframes stored inline, or an idle motion synthesizer. A file's motion is retargeted onto the
 /// character's skeleton (anim/clip_retarget.h): resized by the bodies' legs and stood on the
@@ -62,6 +72,8 @@ struct ClipAsset {
     std::vector<float> frames;
     /// Set: the clip is synthesized (format 5); neither a file nor inline keyframes then.
     std::optional<IdleSynthesizer> idle;
+    /// Set: the clip is blinks, for a face layer (format 7); neither a file nor keyframes then.
+    std::optional<BlinkClip> blinks;
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const ClipAsset&) const = default;
 

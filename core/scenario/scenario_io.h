@@ -28,7 +28,8 @@ enum Version : int {
     Scripts = 4,             ///< Python scripts kept in the scenario
     IdleMotion = 5,          ///< clips that are idle motion synthesizers
     NoPostureTags = 6,       ///< segment tags lost "posture" (PI / PD), which changed nothing
-    Current = NoPostureTags,
+    Blinks = 7,              ///< clips that are blink generators (face layers)
+    Current = Blinks,
 };
 } // namespace format
 

@@ -189,10 +189,28 @@ Layer readLayer(const json& value, const std::string& path)
 
 ClipAsset readClip(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Clip.3");
+    ObjectReader r(value, path, "Clip.4");
     ClipAsset clip;
     clip.name = r.name();
-    if (const json* idle = r.find("idle")) {
+    if (const json* blinks = r.find("blinks")) {
+        for (const char* other : {"idle", "file", "frameRate", "animation", "unit", "fitGround", "keepCalibrationFrame",
+                                  "mapping", "joints", "rootTranslation", "scalars", "frames"})
+            if (r.find(other))
+                fail(r.fieldPath(other), "a blink clip is synthesized: it has no file and no keyframes");
+        ObjectReader s(*blinks, r.fieldPath("blinks"), "");
+        BlinkClip b;
+        b.rate = s.number("rate", false, 17, Range::Positive);
+        if (b.rate < 1 || b.rate > 120)
+            fail(s.fieldPath("rate"), "must be 1 to 120 blinks a minute, found " + std::to_string(b.rate));
+        b.seed = std::uint64_t(s.integer("seed", false, 1, 0, std::int64_t(1) << 53));
+        b.closeSeconds = s.number("closeSeconds", false, 0.10, Range::Positive);
+        b.shutSeconds = s.number("shutSeconds", false, 0.03, Range::NonNegative);
+        b.openSeconds = s.number("openSeconds", false, 0.25, Range::Positive);
+        if (b.closeSeconds + b.shutSeconds + b.openSeconds >= 0.4)
+            fail(s.fieldPath("openSeconds"), "a whole blink must take less than 0.4 s (closing, shut and opening)");
+        b.extra = s.extra();
+        clip.blinks = std::move(b);
+    } else if (const json* idle = r.find("idle")) {
         for (const char* other : {"file", "frameRate", "animation", "unit", "fitGround", "keepCalibrationFrame", "mapping",
                                   "joints", "rootTranslation", "scalars", "frames"})
             if (r.find(other))
@@ -428,7 +446,7 @@ NamedMask readMask(const json& value, const std::string& path)
 
 Scenario readScenario(const json& document)
 {
-    ObjectReader r(document, "", "Scenario.6");
+    ObjectReader r(document, "", "Scenario.7");
     r.find("format");  // checked before
     r.find("version");
     Scenario scenario;

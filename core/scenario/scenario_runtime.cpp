@@ -339,6 +339,8 @@ private:
             } else if (clip->second.idle) {
                 problem(ErrorCode::InvalidSchedule, where + ", clip " + inQuotes(spec.clip)
                                                         + ": idle motion moves a body; it cannot play on a face layer.");
+            } else if (clip->second.blinks) {
+                source = clip->second.blinks;
             } else {
                 auto& face = ctx.faceClips[spec.clip];
                 if (!face) {
@@ -349,7 +351,9 @@ private:
                     source = face;
                 else
                     problem(ErrorCode::InvalidSchedule, where + ", clip " + inQuotes(spec.clip)
-                                                            + ": a face layer needs MPEG-4 FAP values (fap1 … fap68), and the clip has none.");
+                                                            + ": a face layer needs MPEG-4 FAP values (fap1 … fap68) or the weights of visemes or "
+                                                              "expressions (viseme1 … viseme14, expression1 … expression6), "
+                                                              "and the clip has none.");
             }
         }
 
@@ -440,6 +444,10 @@ private:
     {
         const auto layout = anim::FrameLayout::mpeg4Face();
         for (const auto& [name, source] : ctx.sources) {
+            if (source.blinks) {
+                runtime.faceClips.emplace(name, source.blinks);
+                continue;
+            }
             if (source.idle || !hasFaceValues(*source.clip->layout()))
                 continue;
             if (auto face = onLayout(source, layout, anim::neutralFrame(*layout), who + ", clip " + inQuotes(name), nullptr)) {
@@ -451,8 +459,9 @@ private:
 
     static bool hasFaceValues(const anim::FrameLayout& layout)
     {
+        const auto face = anim::FrameLayout::mpeg4Face();
         for (int e = layout.rotationCount() + layout.translationCount(); e < layout.elementCount(); ++e)
-            if (layout.name(e).starts_with("fap"))
+            if (face->find(layout.name(e), anim::ElementKind::Scalar) >= 0)
                 return true;
         return false;
     }
@@ -522,6 +531,8 @@ private:
         runtime.placement.translation = character.position;
         const std::vector<float> rest = runtime.skeleton.restFrame();
         for (const auto& [name, source] : sources) {
+            if (source.blinks)
+                continue; // a face clip: an error if a body layer plays it
             if (source.idle) {
                 motion::IdleOptions options;
                 options.seed = source.asset->idle->seed;

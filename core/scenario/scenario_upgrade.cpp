@@ -103,6 +103,16 @@ static Result<void> upgradeV5toV6(nlohmann::json& document)
     return {};
 }
 
+// 6 → 7: clips may be blink generators; nothing else changed, so the schemas are renamed.
+static Result<void> upgradeV6toV7(nlohmann::json& document)
+{
+    renameSchema(document, "Scenario.6", "Scenario.7");
+    forEachIn(document, "characters", [](nlohmann::json& character) {
+        forEachIn(character, "clips", [](nlohmann::json& clip) { renameSchema(clip, "Clip.3", "Clip.4"); });
+    });
+    return {};
+}
+
 std::span<const UpgradeStep> upgradeSteps()
 {
     static constexpr UpgradeStep steps[] = {
@@ -111,6 +121,7 @@ std::span<const UpgradeStep> upgradeSteps()
         {format::ImportAndPlacement, "scripts", &upgradeV3toV4},
         {format::Scripts, "idle motion clips", &upgradeV4toV5},
         {format::IdleMotion, "segment tags without posture", &upgradeV5toV6},
+        {format::NoPostureTags, "blink clips", &upgradeV6toV7},
     };
     return steps;
 }

@@ -190,9 +190,18 @@ ojson writeLayer(const Layer& layer)
 ojson writeClip(const ClipAsset& clip)
 {
     ojson out = ojson::object();
-    out["schema"] = "Clip.3";
+    out["schema"] = "Clip.4";
     out["name"] = clip.name;
-    if (clip.idle) {
+    if (clip.blinks) {
+        ojson blinks = ojson::object();
+        blinks["rate"] = clip.blinks->rate;
+        blinks["seed"] = clip.blinks->seed;
+        blinks["closeSeconds"] = clip.blinks->closeSeconds;
+        blinks["shutSeconds"] = clip.blinks->shutSeconds;
+        blinks["openSeconds"] = clip.blinks->openSeconds;
+        appendExtra(blinks, clip.blinks->extra);
+        out["blinks"] = std::move(blinks);
+    } else if (clip.idle) {
         ojson idle = ojson::object();
         idle["database"] = clip.idle->database;
         idle["seed"] = clip.idle->seed;
@@ -380,7 +389,7 @@ ojson writeScenario(const Scenario& scenario)
     ojson out = ojson::object();
     out["format"] = FormatName;
     out["version"] = int(format::Current);
-    out["schema"] = "Scenario.6";
+    out["schema"] = "Scenario.7";
     out["name"] = scenario.name;
     out["duration"] = scenario.duration;
     ojson masks = ojson::array();

@@ -14,6 +14,21 @@ Result<SourceClip> readSourceClip(const ClipAsset& asset, const std::string& whe
 {
     SourceClip source;
     source.asset = &asset;
+    if (asset.blinks) {
+        if (!asset.file.empty() || !asset.frames.empty() || !asset.joints.empty() || !asset.scalars.empty())
+            return makeError(ErrorCode::InvalidSchedule, where + ": a blink clip has no file and no keyframes.");
+        motion::BlinkOptions options;
+        options.ratePerMinute = asset.blinks->rate;
+        options.seed = asset.blinks->seed;
+        options.closeSeconds = asset.blinks->closeSeconds;
+        options.shutSeconds = asset.blinks->shutSeconds;
+        options.openSeconds = asset.blinks->openSeconds;
+        auto blinks = motion::BlinkSynthesizer::create(options);
+        if (!blinks)
+            return makeError(blinks.error().code, where + ": " + blinks.error().message);
+        source.blinks = std::move(blinks).value();
+        return source;
+    }
     if (asset.idle) {
         if (!asset.file.empty() || !asset.frames.empty() || !asset.joints.empty() || !asset.scalars.empty())
             return makeError(ErrorCode::InvalidSchedule, where + ": an idle motion clip has no file and no keyframes.");

@@ -101,6 +101,27 @@ void bindDocument(py::module_& m)
         });
     defExtra(idle);
 
+    py::class_<BlinkClip> blinks(m, "BlinkClip",
+                                 "Blinks as a face clip: the eyelids shut and open at seeded moments, `rate` a minute "
+                                 "(17 a person at rest, 26 one talking), open-ended.");
+    blinks.def(py::init([](double rate, std::uint64_t seed) {
+                   BlinkClip b;
+                   b.rate = rate;
+                   b.seed = seed;
+                   return b;
+               }),
+               "rate"_a = 17.0, "seed"_a = 1)
+        .def_readwrite("rate", &BlinkClip::rate, "Blinks a minute (1 to 120).")
+        .def_readwrite("seed", &BlinkClip::seed, "Which moments (at most 2**53): the same seed, the same blinks.")
+        .def_readwrite("close_seconds", &BlinkClip::closeSeconds, "From open to shut.")
+        .def_readwrite("shut_seconds", &BlinkClip::shutSeconds, "Held shut.")
+        .def_readwrite("open_seconds", &BlinkClip::openSeconds, "From shut to open (a whole blink under 0.4 s).")
+        .def("__eq__", [](const BlinkClip& a, const BlinkClip& b) { return a == b; })
+        .def("__repr__", [](const BlinkClip& b) {
+            return "<thespis.BlinkClip " + std::to_string(b.rate) + " a minute, seed " + std::to_string(b.seed) + ">";
+        });
+    defExtra(blinks);
+
     py::class_<ClipAsset> clip(m, "ClipAsset",
                                "A clip a character can play: a motion file beside the scenario (BVH, or an animation "
                                "of a glTF file), retargeted onto the character, inline keyframes, or idle motion.");
@@ -133,9 +154,14 @@ void bindDocument(py::module_& m)
             "Inline clips: per frame the joints' rotations (x y z w), the root translation, the scalars; flat (a copy).")
         .def_readwrite("idle", &ClipAsset::idle,
                        "An IdleSynthesizer when the clip is synthesized idle motion (then no file, no keyframes); None else.")
+        .def_readwrite("blinks", &ClipAsset::blinks,
+                       "A BlinkClip when the clip is blinks for a face layer (then no file, no keyframes); None else.")
         .def("__eq__", [](const ClipAsset& a, const ClipAsset& b) { return a == b; })
         .def("__repr__", [](const ClipAsset& a) {
-            const std::string kind = a.idle ? "idle " + a.idle->database : a.file.empty() ? std::string("inline") : a.file;
+            const std::string kind = a.blinks ? std::string("blinks")
+                                     : a.idle ? "idle " + a.idle->database
+                                     : a.file.empty() ? std::string("inline")
+                                                      : a.file;
             return "<thespis.ClipAsset '" + a.name + "' " + kind + ">";
         });
     defExtra(clip);

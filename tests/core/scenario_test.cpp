@@ -602,7 +602,7 @@ TEST(ScenarioIo, UnknownFieldWithAnEmptyNameSurvives)
 TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 {
     const std::string text = serializeScenario(Scenario{});
-    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 6,\n  \"schema\": \"Scenario.6\"", 0), 0u)
+    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 7,\n  \"schema\": \"Scenario.7\"", 0), 0u)
         << text;
     auto back = parseScenario(text);
     ASSERT_TRUE(back.ok());
@@ -615,12 +615,12 @@ TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 TEST(ScenarioIo, RefusesNewerVersion)
 {
     json doc = minimalDocument();
-    doc["version"] = 7;
+    doc["version"] = 8;
     auto result = parseJson(doc);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error().code, ErrorCode::NewerVersion);
     EXPECT_EQ(result.error().message,
-              "This scenario was saved by a newer Thespis (format 7). Update Thespis to open it.");
+              "This scenario was saved by a newer Thespis (format 8). Update Thespis to open it.");
 
     doc["version"] = 18446744073709551615ull;
     result = parseJson(doc);
@@ -1439,4 +1439,65 @@ TEST(ScenarioRuntime, FaceLayersNeedFapClipsAndBodyLayersJoints)
     faceSchedule.evaluate(0.1, frame);
     EXPECT_FLOAT_EQ(frame[faceSchedule.layout()->floatOffset(faceSchedule.layout()->find("fap12", anim::ElementKind::Scalar))],
                     100.0f);
+}
+
+// Format 7: a clip may be blinks (core/motion/blink_synthesizer.h) for a face layer. The demo's
+// Antigone blinks so, open-ended, and smiles while she waves.
+TEST(ScenarioBlinks, TheDemosAntigoneBlinksByHerOwnGeneratorAndSmiles)
+{
+    const Scenario demo = loadOrFail(demoPath());
+    const ClipAsset* blinks = demo.findCharacter("Antigone")->findClip("antigone_blinks");
+    ASSERT_TRUE(blinks && blinks->blinks);
+    EXPECT_EQ(blinks->blinks->rate, 17.0);
+    auto built = buildRuntime(demo, demoPath().parent_path());
+    ASSERT_TRUE(built.ok()) << describe(built.error());
+    const CharacterRuntime* antigone = built->findCharacter("Antigone");
+    ASSERT_TRUE(antigone && antigone->face);
+    ASSERT_TRUE(antigone->faceClips.count("antigone_blinks"));
+    std::vector<float> face(antigone->face->layout()->floatCount());
+    int shut = 0, smiling = 0;
+    for (double t = 0; t < 12; t += 0.01) {
+        antigone->face->evaluate(t, face);
+        shut += face[18] > 800; // fap19, her upper left lid
+        smiling += face[68 + 14] > 0.5; // expression1, joy
+    }
+    EXPECT_GT(shut, 2) << "she blinks within the demo's 12 s";
+    EXPECT_GT(smiling, 50) << "and smiles while she waves";
+}
+
+TEST(ScenarioBlinks, ABlinkClipIsWrittenReadAndCheckedWhereItPlays)
+{
+    Scenario s;
+    Character c;
+    c.name = "A";
+    ClipAsset blinks;
+    blinks.name = "blinks";
+    blinks.blinks = BlinkClip{26, 7, 0.08, 0.02, 0.2};
+    c.clips.push_back(blinks);
+    s.characters.push_back(c);
+    auto back = parseScenario(serializeScenario(s));
+    ASSERT_TRUE(back.ok()) << describe(back.error());
+    EXPECT_EQ(*back, s);
+
+    json doc = json::parse(serializeScenario(s));
+    doc["characters"][0]["clips"][0]["frames"] = json::array();
+    auto both = parseScenario(doc.dump());
+    ASSERT_FALSE(both.ok());
+    EXPECT_NE(both.error().message.find("characters[0].clips[0].frames"), std::string::npos) << both.error().message;
+    doc = json::parse(serializeScenario(s));
+    doc["characters"][0]["clips"][0]["blinks"]["rate"] = 500;
+    auto fast = parseScenario(doc.dump());
+    ASSERT_FALSE(fast.ok());
+    EXPECT_NE(fast.error().message.find("characters[0].clips[0].blinks.rate"), std::string::npos) << fast.error().message;
+
+    // On a body layer it moves nothing and says so.
+    Layer body;
+    body.name = "body";
+    body.actions.push_back(ActionSpec{});
+    body.actions.back().name = "b";
+    body.actions.back().clip = "blinks";
+    s.characters[0].layers.push_back(body);
+    auto built = buildRuntime(s, fs::temp_directory_path());
+    ASSERT_FALSE(built.ok());
+    EXPECT_NE(built.error().message.find("blinks"), std::string::npos) << built.error().message;
 }

@@ -147,7 +147,7 @@ void GesticonPanelTest::listsEachCharactersGestures()
              Qt::Unchecked);
     QVERIFY(model.flags(model.index(1, GesticonModel::FilterColumn)) & Qt::ItemIsUserCheckable);
     QVERIFY(model.flags(model.index(1, GesticonModel::NameColumn)) & Qt::ItemIsEditable);
-    QCOMPARE(model.clipNames(), QStringList({"creon_idle", "wave", "nod", "blink"}));
+    QCOMPARE(model.clipNames(), QStringList({"creon_idle", "wave", "nod", "blink", "stern"}));
     QCOMPARE(model.maskNames(), QStringList({"head", "leftArm", "rightArm"}));
     // The first gesture is selected, so Preview / Rename / Remove have something to act on.
     QCOMPARE(panel.selectedRows(), QList<int>{0});
