@@ -159,7 +159,7 @@ void GesticonPanelTest::listsEachCharactersGestures()
     QCOMPARE(cell(model, 0, GesticonModel::NameColumn), QStringLiteral("agree"));
     QCOMPARE(cell(model, 0, GesticonModel::FadeInColumn), QStringLiteral("0.20"));
     QCOMPARE(cell(model, 0, GesticonModel::FadeOutColumn), QStringLiteral("0.30"));
-    QCOMPARE(model.clipNames(), QStringList({"antigone_idle", "wave", "nod"}));
+    QCOMPARE(model.clipNames(), QStringList({"antigone_idle", "wave", "nod", "antigone_blinks", "smile"}));
 }
 
 void GesticonPanelTest::everyEditIsOneUndoStepAndUndoAllRestores()
