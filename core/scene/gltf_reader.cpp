@@ -409,6 +409,25 @@ std::string nodeName(const tinygltf::Model& model, int index)
     return "node" + std::to_string(index);
 }
 
+std::vector<std::string> morphTargetNames(const tinygltf::Mesh& mesh, int meshIndex)
+{
+    std::size_t count = 0;
+    for (const tinygltf::Primitive& primitive : mesh.primitives)
+        count = std::max(count, primitive.targets.size());
+    const tinygltf::Value& names = mesh.extras.Get("targetNames");
+    const bool named = names.IsArray() && std::size_t(names.ArrayLen()) == count;
+    std::vector<std::string> result;
+    for (std::size_t t = 0; t < count; ++t) {
+        const tinygltf::Value& name = named ? names.Get(int(t)) : tinygltf::Value();
+        if (name.IsString() && !name.Get<std::string>().empty())
+            result.push_back(name.Get<std::string>());
+        else
+            result.push_back((mesh.name.empty() ? "mesh" + std::to_string(meshIndex) : mesh.name) + ":" +
+                             std::to_string(t));
+    }
+    return result;
+}
+
 Mat4 parentWorld(const NodeTree& tree, int node)
 {
     const int parent = tree.parent[std::size_t(node)];
