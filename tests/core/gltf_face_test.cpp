@@ -2,7 +2,8 @@
 // targets, recognised with no table written (a small model made here with ARKit and Oculus names,
 // eye bones and a second mesh sharing target names), RobotExpressive's expressions played through
 // the face deformer and through skinning, checked against offsets computed here from tinygltf's
-// own reading of the file, and a table naming targets the model lacks.
+// own reading of the file, a table naming targets the model lacks, and files the reader cannot
+// decode.
 
 #include <gtest/gtest.h>
 
@@ -505,6 +506,69 @@ TEST(GltfFace, ATableNamingMissingTargetsWarnsWithTheirNames)
     ASSERT_EQ(robot->face.drives.size(), 1u);
     EXPECT_EQ(robot->face.targets[std::size_t(robot->face.drives[0].target)].name, "Angry");
     EXPECT_TRUE(robot->face.joints.empty());
+}
+
+// ---- files the reader cannot decode -------------------------------------------------------------------
+
+fs::path writeText(const std::string& name, const std::string& text)
+{
+    const fs::path path = scratch(name);
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+// One triangle, its positions in a buffer of 36 bytes given inline, read through `view`.
+struct Triangle {
+    std::string extensions;          ///< top-level "extensionsUsed" … with a trailing comma
+    std::string primitiveExtensions; ///< ", \"extensions\": {…}" of the primitive
+    bool positionView = true;        ///< false: the positions accessor has no buffer view
+    std::string otherBuffers;        ///< ", {…}" after the inline buffer
+    std::string view = R"({"buffer": 0, "byteLength": 36})";
+
+    std::string text() const
+    {
+        return R"({"asset": {"version": "2.0"}, )" + extensions +
+               R"("buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"})" +
+               otherBuffers + R"(], "bufferViews": [)" + view + R"(], "accessors": [{)" +
+               (positionView ? R"("bufferView": 0, )" : "") +
+               R"("componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}],
+"meshes": [{"primitives": [{"attributes": {"POSITION": 0})" + primitiveExtensions + R"(}]}],
+"nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
+    }
+};
+
+TEST(GltfFace, AFileThatCannotBeDecodedSaysWhichExtension)
+{
+    // A plain triangle loads: the files below differ from it only by their extensions.
+    ASSERT_TRUE(loadGltfCharacter(writeText("plain.gltf", Triangle{}.text())));
+    const auto refusedNaming = [](const Result<Character>& result, const char* extension) -> ::testing::AssertionResult {
+        if (result)
+            return ::testing::AssertionFailure() << "loaded";
+        if (result.error().code != ErrorCode::NotOurFormat || result.error().message.find(extension) == std::string::npos)
+            return ::testing::AssertionFailure() << describe(result.error());
+        return ::testing::AssertionSuccess();
+    };
+    for (const char* extension : {"EXT_meshopt_compression", "KHR_draco_mesh_compression", "KHR_meshopt_compression"}) {
+        const std::string list = std::string(R"(")") + extension + R"(")";
+        Triangle required;
+        required.extensions = R"("extensionsUsed": [)" + list + R"(], "extensionsRequired": [)" + list + "], ";
+        EXPECT_TRUE(refusedNaming(loadGltfCharacter(writeText("required.gltf", required.text())), extension));
+    }
+    // Draco used but not required, and a primitive whose positions are only in the compressed
+    // stream (no fallback data): not a blank triangle at the origin, a refusal naming Draco.
+    Triangle draco;
+    draco.extensions = R"("extensionsUsed": ["KHR_draco_mesh_compression"], )";
+    draco.primitiveExtensions =
+        R"(, "extensions": {"KHR_draco_mesh_compression": {"bufferView": 0, "attributes": {"POSITION": 0}}})";
+    draco.positionView = false;
+    EXPECT_TRUE(refusedNaming(loadGltfCharacter(writeText("draco.gltf", draco.text())), "KHR_draco_mesh_compression"));
+    // Meshopt used but not required, the view's own buffer a placeholder without data.
+    Triangle meshopt;
+    meshopt.extensions = R"("extensionsUsed": ["EXT_meshopt_compression"], )";
+    meshopt.otherBuffers = R"(, {"byteLength": 36, "extensions": {"EXT_meshopt_compression": {"fallback": true}}})";
+    meshopt.view = R"({"buffer": 1, "byteLength": 36, "extensions": {"EXT_meshopt_compression": )"
+                   R"({"buffer": 0, "byteLength": 36, "byteStride": 12, "count": 3, "mode": "ATTRIBUTES"}}})";
+    EXPECT_TRUE(refusedNaming(loadGltfCharacter(writeText("meshopt.gltf", meshopt.text())), "EXT_meshopt_compression"));
 }
 
 } // namespace
