@@ -162,7 +162,8 @@ FaceMappingJoint readJoint(const json& value, const std::string& path)
     const double length = std::sqrt(anim::dot(v, v));
     if (!(length > 1e-9) || !std::isfinite(length))
         fail(reader.at("axis"), "the axis has no direction (its length is " + std::to_string(length) + ")");
-    joint.axis = v * (1 / length);
+    // A unit axis stays as written, so that what the writer wrote reads back bit for bit.
+    joint.axis = std::abs(length - 1) <= 1e-12 ? v : v * (1 / length);
     joint.radiansPerUnit = reader.finite("radiansPerUnit");
     reader.finish();
     return joint;

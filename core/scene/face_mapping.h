@@ -20,7 +20,7 @@
 // "fap3", "viseme1", "anger", "expression3"), or a FAP's number (1 … 68). "side" is "both" (the
 // default), "positive" or "negative". "axis" is in the joint's rest frame, which the import makes
 // world-aligned (+Y up, facing +Z: +X turns the face down, +Y to its left, +Z rolls it to its
-// right); it is normalized on reading. "name", "drives" and "joints" may be left out; any other
+// right); it is normalized on reading (one of length 1 within 1e-12 is kept as written). "name", "drives" and "joints" may be left out; any other
 // field is refused, so that a misspelt one is not silently ignored. Errors name the file and the
 // field ("drives[3].target: must not be empty").
 
