@@ -227,6 +227,7 @@ TEST(GltfFace, ArkitAndOculusNamesAreMappedWithNoTableWritten)
     const MorphTarget* jawOpen = findTarget(character, "jawOpen");
     ASSERT_NE(jawOpen, nullptr);
     EXPECT_EQ(jawOpen->vertices.size(), 6u + 4u); // grid vertices 2, 6, 10 … 22 and the 4 teeth
+    ASSERT_NE(findTarget(character, "viseme_sil"), nullptr);
     EXPECT_TRUE(findTarget(character, "viseme_sil")->vertices.empty());
 
     const FaceMapping mapping = recogniseFaceMapping(character);
@@ -254,9 +255,11 @@ TEST(GltfFace, ArkitAndOculusNamesAreMappedWithNoTableWritten)
 
     // Viseme A: (aa) at weight 1 moves exactly viseme_aa's vertices by its offsets, on both meshes.
     const MorphTarget* aa = findTarget(character, "viseme_aa");
+    ASSERT_NE(aa, nullptr);
     EXPECT_TRUE(movedBy(character, deformed(character, faceFrame({{visemeChannel(10), 1.0f}})), {{aa, 1.0f}}));
     // A top lid lowered by the whole eye opening blinks fully; a raised one does not open it wider.
     const MorphTarget* blink = findTarget(character, "eyeBlinkLeft");
+    ASSERT_NE(blink, nullptr);
     EXPECT_TRUE(movedBy(character, deformed(character, faceFrame({{fapChannel(19), 1024.0f}})), {{blink, 1.0f}}));
     EXPECT_TRUE(movedBy(character, deformed(character, faceFrame({{fapChannel(19), -300.0f}})), {}));
     // open_jaw of 768 (half of jawOpen's 1536) opens it halfway, teeth included.
@@ -265,7 +268,7 @@ TEST(GltfFace, ArkitAndOculusNamesAreMappedWithNoTableWritten)
     // browInnerUp rests at its default weight 0.5: the rest shape has half its offset, and its
     // target keeps the whole offset.
     const MorphTarget* brow = findTarget(character, "browInnerUp");
-    ASSERT_FALSE(brow->vertices.empty());
+    ASSERT_TRUE(brow && !brow->vertices.empty());
     const std::uint32_t v = brow->vertices.front();
     const Vec3 file = ArkitModel::delta(7, v); // the face grid comes first, in file order
     EXPECT_NEAR(brow->offsets.front().y, file.y, 1e-7);
@@ -406,7 +409,7 @@ TEST(GltfFace, RobotExpressivesExpressionsPlay)
     Result<Character> loaded = loadGltfCharacter(test::sharedData(kRobot), {.loadTextures = false});
     ASSERT_TRUE(loaded) << loaded.error().message;
     const Character& robot = *loaded;
-    EXPECT_EQ(morphTargetNames(robot), (std::vector<std::string>{"Angry", "Surprised", "Sad"}));
+    ASSERT_EQ(morphTargetNames(robot), (std::vector<std::string>{"Angry", "Surprised", "Sad"}));
     EXPECT_NE(findDrive(robot, "Angry", expressionChannel(3)), nullptr);     // anger
     EXPECT_NE(findDrive(robot, "Surprised", expressionChannel(6)), nullptr); // surprise
     EXPECT_NE(findDrive(robot, "Sad", expressionChannel(2)), nullptr);       // sadness
