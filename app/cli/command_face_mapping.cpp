@@ -80,7 +80,8 @@ int runFaceMapping(const CommandSpec& spec, const ParsedArguments& arguments)
     std::printf("Model %s (%s): %zu morph target%s\n", character->name.c_str(), path.string().c_str(), names.size(),
                 names.size() == 1 ? "" : "s");
     for (const scene::MorphTarget& target : character->face.targets)
-        std::printf("  %s: moves %zu vertices\n", target.name.c_str(), target.vertices.size());
+        std::printf("  %s: moves %zu %s\n", target.name.c_str(), target.vertices.size(),
+                    target.vertices.size() == 1 ? "vertex" : "vertices");
 
     const scene::FaceMapping mapping =
         options.faceMapping ? *options.faceMapping : scene::recogniseFaceMapping(*character);
