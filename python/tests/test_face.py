@@ -1,6 +1,7 @@
 """thespis.face: face mapping tables from Python — RobotExpressive's recognised expressions played
-onto its mesh, a table made, saved, loaded and applied with warnings for what the model lacks, a
-table given when the model is loaded, and reader errors that name the field."""
+onto its mesh and in a headless render of a scenario's face layer, a table made, saved, loaded and
+applied with warnings for what the model lacks, a table given when the model is loaded, and reader
+errors that name the field."""
 
 import json
 
@@ -8,7 +9,7 @@ import numpy as np
 import pytest
 
 import thespis
-from thespis import face, scene
+from thespis import face, render, scene
 
 from conftest import SHARED_DATA
 
@@ -82,3 +83,36 @@ def test_reader_errors_name_the_file_and_the_field(tmp_path):
         face.Drive("a", "open_mouth", 1.0)
     with pytest.raises(FileNotFoundError):
         face.load_mapping(tmp_path / "none.json")
+
+
+def test_a_face_layer_plays_robot_expressives_anger_in_a_render(tmp_path):
+    document = thespis.Scenario()
+    document.name = "Angry robot"
+    robot = thespis.Character("Robot", "model")
+    robot.model = str(ROBOT)
+    anger = thespis.ClipAsset("anger", "")
+    anger.frame_rate = 1.0
+    anger.scalars = ["expression3"]
+    anger.frames = np.array([1.0, 1.0], np.float32)
+    robot.clips = [anger]
+    layer = thespis.Layer("face", thespis.LayerKind.face)
+    layer.actions = [thespis.ActionSpec("anger", "anger")]
+    robot.layers = [layer]
+    document.characters = [robot]
+    angry = tmp_path / "angry.thespis"
+    thespis.save_scenario(angry, document)
+    layer.mute = True
+    robot.layers = [layer]
+    document.characters = [robot]
+    calm = tmp_path / "calm.thespis"
+    thespis.save_scenario(calm, document)
+
+    pictures = [render.render_scenario(path, time=0.5, width=240, height=320, shading="unlit", ground=False)
+                for path in (calm, angry)]
+    render.write_png(tmp_path / "angry.png", pictures[1])
+    changed = np.any(pictures[0] != pictures[1], axis=2)
+    rows = np.flatnonzero(changed.any(axis=1))
+    assert changed.sum() > 20, "anger changed no pixel"
+    # Only the head changes: the rows that differ are all in the picture's upper half.
+    figure = np.flatnonzero(np.any(pictures[0][:, :, :3] != pictures[0][0, 0, :3], axis=2).any(axis=1))
+    assert rows.max() < (figure.min() + figure.max()) / 2
