@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <optional>
 #include <set>
@@ -371,10 +372,13 @@ Result<PrimitiveGeometry> MeshBuilder::readPrimitive(const tinygltf::Primitive& 
                     const double joint = (*joints)(v, k);
                     const float weight = float((*weights)(v, k));
                     const bool known = joint >= 0 && joint < double(skin->jointNodes.size());
-                    if (!known && weight != 0)
-                        return m_reader.broken(use + " weights joint " + std::to_string(std::int64_t(joint)) +
-                                               " of a skin with " + std::to_string(skin->jointNodes.size()) +
-                                               " joints");
+                    if (!known && weight != 0) {
+                        // Any number: a float accessor (which the spec forbids here) may hold 1e20.
+                        char number[32];
+                        std::snprintf(number, sizeof number, "%.15g", joint);
+                        return m_reader.broken(use + " weights joint " + number + " of a skin with " +
+                                               std::to_string(skin->jointNodes.size()) + " joints");
+                    }
                     geometry.joints[v][std::size_t(set * 4 + k)] = known ? int(joint) : 0;
                     geometry.weights[v][std::size_t(set * 4 + k)] = known ? weight : 0.0f;
                 }
