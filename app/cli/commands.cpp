@@ -26,6 +26,7 @@ const std::vector<Command>& commands()
         {runSpec(), &runRun},
 #endif
         {infoSpec(), &runInfo},
+        {faceMappingSpec(), &runFaceMapping},
     };
     return all;
 }

@@ -48,6 +48,8 @@ CommandSpec playSpec();
 int runPlay(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec infoSpec();
 int runInfo(const CommandSpec& spec, const ParsedArguments& arguments);
+CommandSpec faceMappingSpec();
+int runFaceMapping(const CommandSpec& spec, const ParsedArguments& arguments);
 #ifdef THESPIS_WITH_PYTHON
 CommandSpec runSpec();
 int runRun(const CommandSpec& spec, const ParsedArguments& arguments);

@@ -2,6 +2,7 @@
 //   thespis-cli validate SCENARIO
 //   thespis-cli bake-motion SCENARIO --character NAME --out FILE.bvh [--fps N --start S --end S]
 //   thespis-cli info SCENARIO
+//   thespis-cli face-mapping MODEL.glb [--mapping FILE] [--save-mapping FILE]
 // Every subcommand answers --help. Exit codes: exit_codes.h.
 
 #include <cstdio>

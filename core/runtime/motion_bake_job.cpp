@@ -160,6 +160,7 @@ Result<void> MotionBakeJob::writeGltf(const CharacterRuntime& body, std::span<co
     if (body.face) {
         motion.faceLayout = body.face->layout();
         motion.faceFrames = face;
+        motion.face = &model->face;
     }
     const std::string& modelFile = scenario.findCharacter(character)->model;
     if (modelFile.empty()) {

@@ -4,8 +4,8 @@
 // at a fixed frame rate over the scenario (or part of it) and written as a BVH clip on the character's
 // skeleton, or as a glTF 2.0 animation (.glb) on the rig of its model (scene/gltf_motion_export.h)
 // or, for the built-in humanoid, with the humanoid itself (scene/gltf_character_export.h) —
-// the frames retargeted onto the body as the renderer poses it, the face layers as morph-target
-// weights where the model has targets named after them. `thespis-cli bake-motion` and Python's
+// the frames retargeted onto the body as the renderer poses it, the face layers as the weights
+// of the model's own morph targets, as its face mapping table drives them (face_mapping.h). `thespis-cli bake-motion` and Python's
 // thespis.scenario.bake_motion run it. Frames are baked into memory first and written atomically
 // at the end, so a stopped or failed bake leaves no file.
 
@@ -41,7 +41,7 @@ struct MotionBakeJob final : Job {
 
     long frameCount = 0;   ///< after run(): frames written
     double lastTime = 0;   ///< after run(): the last frame's time
-    /// After run() of a .glb: the morph targets that got face weights ("mesh Head: fap19").
+    /// After run() of a .glb: the morph targets that got face weights ("mesh Head: Angry").
     std::vector<std::string> morphTargets;
     /// After run(): what the file leaves out, one sentence each.
     std::vector<std::string> warnings;

@@ -76,22 +76,41 @@ FaceDeformer::FaceDeformer(const Character& character) : m_character(&character)
     m_joints = rig.joints;
 }
 
-void FaceDeformer::expandChannels(std::span<const float> face)
+void expandFaceChannels(const FaceRig& rig, std::span<const float> face, std::span<float> channels)
 {
-    const FaceRig& rig = m_character->face;
-    std::fill(m_channels.begin(), m_channels.end(), 0.0f);
-    if (face.size() != m_channels.size())
+    assert(channels.size() == std::size_t(kFaceChannelCount));
+    std::fill(channels.begin(), channels.end(), 0.0f);
+    if (face.size() != channels.size())
         return; // no face frame: neutral
-    std::copy(face.begin(), face.end(), m_channels.begin());
+    std::copy(face.begin(), face.end(), channels.begin());
     const auto expand = [&](const std::vector<FapValue>& values, float weight) {
         if (weight != 0)
             for (const FapValue& v : values)
-                m_channels[std::size_t(fapChannel(v.fap))] += weight * v.value;
+                channels[std::size_t(fapChannel(v.fap))] += weight * v.value;
     };
     for (int v = 1; v <= kVisemeCount; ++v)
         expand(rig.visemes[std::size_t(v - 1)], face[std::size_t(visemeChannel(v))]);
     for (int e = 1; e <= kExpressionCount; ++e)
         expand(rig.expressions[std::size_t(e - 1)], face[std::size_t(expressionChannel(e))]);
+}
+
+void morphTargetWeights(const FaceRig& rig, std::span<const float> channels, std::span<float> weights)
+{
+    assert(weights.size() == rig.targets.size());
+    std::fill(weights.begin(), weights.end(), 0.0f);
+    for (const MorphDrive& drive : rig.drives) {
+        float value = channels[std::size_t(drive.channel)];
+        if (drive.side == MorphDrive::Side::Positive)
+            value = std::max(value, 0.0f);
+        else if (drive.side == MorphDrive::Side::Negative)
+            value = std::min(value, 0.0f);
+        weights[std::size_t(drive.target)] += drive.coefficient * value;
+    }
+}
+
+void FaceDeformer::expandChannels(std::span<const float> face)
+{
+    expandFaceChannels(m_character->face, face, m_channels);
 }
 
 void FaceDeformer::deform(std::span<const float> face, std::span<Vec3> positions, std::span<Vec3> normals)
@@ -109,9 +128,7 @@ void FaceDeformer::deform(std::span<const float> face, std::span<Vec3> positions
     if (std::all_of(m_channels.begin(), m_channels.end(), [](float c) { return c == 0; }))
         return; // the neutral face, exactly
 
-    std::fill(m_weights.begin(), m_weights.end(), 0.0f);
-    for (const MorphDrive& drive : rig.drives)
-        m_weights[std::size_t(drive.target)] += drive.coefficient * m_channels[std::size_t(drive.channel)];
+    morphTargetWeights(rig, m_channels, m_weights);
     for (std::size_t t = 0; t < rig.targets.size(); ++t) {
         const float weight = m_weights[t];
         if (weight == 0)

@@ -35,11 +35,15 @@ struct MorphTarget {
     std::vector<anim::Vec3> offsets;     ///< one per vertex
 };
 
-/// A target's weight gets `coefficient` × the value of face channel `channel` (fap.h).
+/// A target's weight gets `coefficient` × the value of face channel `channel` (fap.h), or × only
+/// the value's positive or negative part: a bidirectional FAP often drives two targets, one per
+/// direction (yaw_l_eyeball → ARKit's eyeLookOutLeft and eyeLookInLeft), and neither may go below 0.
 struct MorphDrive {
+    enum class Side : unsigned char { Both, Positive, Negative };
     int target = 0;
     int channel = 0;
     float coefficient = 0;
+    Side side = Side::Both;
 };
 
 /// A part of the face turned rigidly (each vertex by its weight) about `pivot`.
@@ -112,6 +116,14 @@ struct FaceRig {
     bool empty() const { return targets.empty() && parts.empty() && joints.empty(); }
     const FeaturePoint* findFeaturePoint(std::string_view name) const;
 };
+
+/// The face channels with the rig's visemes and expressions expanded into their low-level FAPs
+/// (added to the FAP channels): what the drives, parts and joints read. `face` is a face frame
+/// (kFaceChannelCount floats) or empty (neutral: every channel 0); `channels` has
+/// kFaceChannelCount floats.
+void expandFaceChannels(const FaceRig& rig, std::span<const float> face, std::span<float> channels);
+/// Each target's weight (one per rig.targets) for expanded `channels`: the drives summed.
+void morphTargetWeights(const FaceRig& rig, std::span<const float> channels, std::span<float> weights);
 
 /// Applies a character's face rig frame after frame. Built once per character (it lists the
 /// vertices and triangles the rig reaches); deform() allocates nothing.

@@ -12,6 +12,7 @@
 #include <set>
 #include <vector>
 
+#include "scene/face_naming.h"
 #include "scene/gltf_animation.h"
 #include "scene/gltf_reader.h"
 #include "scene/rig_naming.h"
@@ -383,6 +384,7 @@ Result<Character> loadGltfCharacter(const std::filesystem::path& path, const Glt
     if (!data)
         return data.error();
     character.mesh = std::move(data->mesh);
+    character.face.targets = std::move(data->targets);
     const std::vector<int> segmentJoint = followJoints(import, data->sources, character);
     character.skin = buildSkin(import, *data, segmentJoint, character.mesh);
     if (data->hasTexcoords)
@@ -403,6 +405,10 @@ Result<Character> loadGltfCharacter(const std::filesystem::path& path, const Glt
         if (const std::string was = turnToFaceForward(character); !was.empty())
             character.warnings.push_back("The model stood " + was + "; it is turned to stand +Y up facing +Z, as H-Anim does.");
     }
+    // The face's joints are found by their final names, on the rig as it finally stands.
+    const FaceMapping mapping = options.faceMapping ? *options.faceMapping : recogniseFaceMapping(character);
+    for (std::string& warning : applyFaceMapping(mapping, character))
+        character.warnings.push_back(std::move(warning));
 
     if (Result<void> valid = character.validate(); !valid)
         return makeError(ErrorCode::Internal, "The character read from " + file->name + " is inconsistent.",

@@ -54,13 +54,23 @@
 // wins, then the first in joint order. Joints without an H-Anim name keep their source name;
 // Character::warnings lists them (and the dropped and duplicate names).
 //
+// Face: the meshes' morph targets become the face's targets (FaceRig::targets, rest-space offsets
+// of the vertices they move; gltf_mesh.h), named after mesh.extras.targetNames or "<mesh>:<index>",
+// one target per name across meshes and primitives. A mesh's default weights stay in the rest
+// shape, so a face frame moves the model from the shape the file shows. The face mapping table
+// (face_mapping.h) then drives the targets and the face joints: `faceMapping` when given, else the
+// one the naming schemes of face_naming.h recognise (ARKit, Oculus visemes, expression names, eye
+// and jaw bones). A table naming targets or joints the model lacks adds a warning for each.
+//
 // Unsupported files (Draco, meshopt …) are refused by loadGltfMesh's rules with the feature named.
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "scene/character.h"
+#include "scene/face_mapping.h"
 #include "scene/gltf_mesh.h"
 #include "util/error.h"
 
@@ -77,6 +87,8 @@ struct GltfCharacterOptions {
     /// Stand the rig as H-Anim does (+Y up, facing +Z) and hang IK-control feet from their
     /// knees (rig_repair.h), so that any H-Anim motion plays on it. Off: the file's rig as it is.
     bool standardRig = true;
+    /// The table driving the face (see above); none: the recognised schemes'.
+    std::optional<FaceMapping> faceMapping;
 };
 
 /// The H-Anim name the automatic mapping gives a source joint name on its own, or "" when it

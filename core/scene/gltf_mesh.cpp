@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <optional>
 #include <set>
@@ -30,6 +31,13 @@ struct PrimitiveGeometry {
     std::vector<std::uint32_t> indices;
     std::vector<std::array<int, 8>> joints; ///< skin joint slots per vertex (skinned meshes only)
     std::vector<std::array<float, 8>> weights;
+    /// Its morph targets' offsets in world space, where they are not zero.
+    struct Target {
+        int index = 0; ///< into MeshData::targets
+        std::vector<std::uint32_t> vertices;
+        std::vector<Vec3> offsets;
+    };
+    std::vector<Target> targets;
 };
 
 constexpr std::uint32_t kUnmapped = 0xffffffffu;
@@ -43,6 +51,13 @@ struct SegmentBuilder {
     std::vector<std::array<int, 8>> jointNodes;
     std::vector<std::array<float, 8>> weights;
     std::vector<std::uint32_t> indices; ///< local to the builder
+    /// Morph target offsets of its vertices: (MeshData::targets index, local vertex, offset).
+    struct TargetOffset {
+        int target;
+        std::uint32_t vertex;
+        Vec3 offset;
+    };
+    std::vector<TargetOffset> targetOffsets;
 };
 
 struct SkinBind {
@@ -80,8 +95,9 @@ private:
 
     Result<SkinBind> skinBind(int skinIndex) const;
     Result<PrimitiveGeometry> readPrimitive(const tinygltf::Primitive& primitive, const std::string& use,
-                                            const std::vector<double>& morphWeights, const SkinBind* skin,
-                                            const Mat4& nodeWorld) const;
+                                            const std::vector<double>& morphWeights, std::span<const int> targets,
+                                            const SkinBind* skin, const Mat4& nodeWorld) const;
+    std::vector<int> targetsOf(const tinygltf::Mesh& mesh, int meshIndex);
     Result<std::vector<std::uint32_t>> readTriangles(const tinygltf::Primitive& primitive, std::size_t vertexCount,
                                                      const std::string& use) const;
     std::string materialName(int material) const;
@@ -97,6 +113,8 @@ private:
     std::span<const std::string> m_names;
     std::vector<SegmentBuilder> m_builders;
     std::map<Key, std::size_t> m_builderByKey;
+    std::vector<std::string> m_targetNames;
+    std::map<std::string, int> m_targetByName;
     bool m_hasTexcoords = false;
 };
 
@@ -236,7 +254,8 @@ Result<std::vector<std::uint32_t>> MeshBuilder::readTriangles(const tinygltf::Pr
 }
 
 Result<PrimitiveGeometry> MeshBuilder::readPrimitive(const tinygltf::Primitive& primitive, const std::string& use,
-                                                     const std::vector<double>& morphWeights, const SkinBind* skin,
+                                                     const std::vector<double>& morphWeights,
+                                                     std::span<const int> targets, const SkinBind* skin,
                                                      const Mat4& nodeWorld) const
 {
     const auto attribute = [&](const std::string& name) {
@@ -263,14 +282,22 @@ Result<PrimitiveGeometry> MeshBuilder::readPrimitive(const tinygltf::Primitive& 
         normals = std::move(*read);
     }
 
-    // Morph targets at the default weights are part of the rest shape.
-    for (std::size_t t = 0; t < primitive.targets.size() && t < morphWeights.size(); ++t) {
-        if (morphWeights[t] == 0)
-            continue;
+    // Morph targets: at their default weights they are part of the rest shape (as the file shows
+    // the model); their POSITION offsets are kept, where not zero, as targets a face moves on top
+    // of it. NORMAL offsets are not kept: the face deformer turns normals with the triangles.
+    struct FileOffsets {
+        int target;
+        std::vector<std::uint32_t> vertices;
+        std::vector<Vec3d> deltas;
+    };
+    std::vector<FileOffsets> fileOffsets;
+    for (std::size_t t = 0; t < primitive.targets.size(); ++t) {
+        const double weight = t < morphWeights.size() ? morphWeights[t] : 0.0;
         for (const char* name : {"POSITION", "NORMAL"}) {
+            const bool isPosition = std::string_view(name) == "POSITION";
             const auto found = primitive.targets[t].find(name);
-            AccessorData* base = std::string_view(name) == "POSITION" ? &*positions : (normals ? &*normals : nullptr);
-            if (found == primitive.targets[t].end() || !base)
+            AccessorData* base = isPosition ? &*positions : (normals ? &*normals : nullptr);
+            if (found == primitive.targets[t].end() || !base || (!isPosition && weight == 0))
                 continue;
             const std::string targetUse = use + " morph target " + std::to_string(t) + " " + name;
             Result<AccessorData> delta = m_reader.read(found->second, targetUse);
@@ -278,8 +305,19 @@ Result<PrimitiveGeometry> MeshBuilder::readPrimitive(const tinygltf::Primitive& 
                 return delta.error();
             if (delta->components != 3 || delta->count != vertexCount)
                 return m_reader.broken(targetUse + " does not hold one 3D vector per vertex");
-            for (std::size_t i = 0; i < base->values.size(); ++i)
-                base->values[i] += morphWeights[t] * delta->values[i];
+            if (weight != 0)
+                for (std::size_t i = 0; i < base->values.size(); ++i)
+                    base->values[i] += weight * delta->values[i];
+            if (!isPosition)
+                continue;
+            FileOffsets& offsets = fileOffsets.emplace_back(FileOffsets{targets[t], {}, {}});
+            for (std::size_t v = 0; v < vertexCount; ++v) {
+                const Vec3d d{(*delta)(v, 0), (*delta)(v, 1), (*delta)(v, 2)};
+                if (d.x != 0 || d.y != 0 || d.z != 0) {
+                    offsets.vertices.push_back(std::uint32_t(v));
+                    offsets.deltas.push_back(d);
+                }
+            }
         }
     }
 
@@ -334,10 +372,13 @@ Result<PrimitiveGeometry> MeshBuilder::readPrimitive(const tinygltf::Primitive& 
                     const double joint = (*joints)(v, k);
                     const float weight = float((*weights)(v, k));
                     const bool known = joint >= 0 && joint < double(skin->jointNodes.size());
-                    if (!known && weight != 0)
-                        return m_reader.broken(use + " weights joint " + std::to_string(std::int64_t(joint)) +
-                                               " of a skin with " + std::to_string(skin->jointNodes.size()) +
-                                               " joints");
+                    if (!known && weight != 0) {
+                        // Any number: a float accessor (which the spec forbids here) may hold 1e20.
+                        char number[32];
+                        std::snprintf(number, sizeof number, "%.15g", joint);
+                        return m_reader.broken(use + " weights joint " + number + " of a skin with " +
+                                               std::to_string(skin->jointNodes.size()) + " joints");
+                    }
                     geometry.joints[v][std::size_t(set * 4 + k)] = known ? int(joint) : 0;
                     geometry.weights[v][std::size_t(set * 4 + k)] = known ? weight : 0.0f;
                 }
@@ -387,6 +428,22 @@ Result<PrimitiveGeometry> MeshBuilder::readPrimitive(const tinygltf::Primitive& 
             fileNormals[v] = Vec3d{m[0] * n[0] + m[1] * n[1] + m[2] * n[2], m[3] * n[0] + m[4] * n[1] + m[5] * n[2],
                                    m[6] * n[0] + m[7] * n[1] + m[8] * n[2]} *
                              sign;
+        }
+    }
+
+    // A target's offset moves with its vertex: p + d goes to T(p) + L(d), L the linear part of T.
+    for (const FileOffsets& file : fileOffsets) {
+        PrimitiveGeometry::Target& target = geometry.targets.emplace_back();
+        target.index = file.target;
+        for (std::size_t i = 0; i < file.vertices.size(); ++i) {
+            const Vec3d d = transformVector(vertexTransform(file.vertices[i]), file.deltas[i]);
+            const Vec3 offset{float(d.x), float(d.y), float(d.z)};
+            if (!std::isfinite(offset.x) || !std::isfinite(offset.y) || !std::isfinite(offset.z))
+                return m_reader.broken(use + " has a morph target offset that is not finite");
+            if (offset.x == 0 && offset.y == 0 && offset.z == 0)
+                continue;
+            target.vertices.push_back(file.vertices[i]);
+            target.offsets.push_back(offset);
         }
     }
 
@@ -485,6 +542,22 @@ void MeshBuilder::append(std::size_t builderIndex, const PrimitiveGeometry& geom
             take(v);
     for (std::uint32_t v : triangles)
         builder.indices.push_back(take(v));
+    for (const PrimitiveGeometry::Target& target : geometry.targets)
+        for (std::size_t i = 0; i < target.vertices.size(); ++i)
+            if (const std::uint32_t v = target.vertices[i]; remap[v] != kUnmapped)
+                builder.targetOffsets.push_back({target.index, base + remap[v], target.offsets[i]});
+}
+
+std::vector<int> MeshBuilder::targetsOf(const tinygltf::Mesh& mesh, int meshIndex)
+{
+    std::vector<int> targets;
+    for (std::string& name : morphTargetNames(mesh, meshIndex)) {
+        const auto [found, added] = m_targetByName.emplace(name, int(m_targetNames.size()));
+        if (added)
+            m_targetNames.push_back(std::move(name));
+        targets.push_back(found->second);
+    }
+    return targets;
 }
 
 Result<void> MeshBuilder::addMeshNode(int nodeIndex)
@@ -495,6 +568,7 @@ Result<void> MeshBuilder::addMeshNode(int nodeIndex)
                                ", which does not exist");
     const tinygltf::Mesh& mesh = m_model.meshes[std::size_t(node.mesh)];
     const std::vector<double>& morphWeights = node.weights.empty() ? mesh.weights : node.weights;
+    const std::vector<int> targets = targetsOf(mesh, node.mesh);
 
     std::optional<SkinBind> skin;
     if (node.skin >= 0) {
@@ -521,8 +595,8 @@ Result<void> MeshBuilder::addMeshNode(int nodeIndex)
         const tinygltf::Primitive& primitive = mesh.primitives[p];
         const std::string use = "mesh \"" + (mesh.name.empty() ? nodeName(m_model, nodeIndex) : mesh.name) +
                                 "\" primitive " + std::to_string(p);
-        Result<PrimitiveGeometry> geometry = readPrimitive(primitive, use, morphWeights, skin ? &*skin : nullptr,
-                                                           m_tree.world[std::size_t(nodeIndex)]);
+        Result<PrimitiveGeometry> geometry = readPrimitive(primitive, use, morphWeights, targets,
+                                                           skin ? &*skin : nullptr, m_tree.world[std::size_t(nodeIndex)]);
         if (!geometry)
             return geometry.error();
         if (!split) {
@@ -588,6 +662,21 @@ MeshData MeshBuilder::finish()
             mesh.indices.push_back(segment.firstVertex + index);
         mesh.segments.push_back(std::move(segment));
         data.sources.push_back(builder.source);
+    }
+    // Each target's vertices, ascending (a split primitive's vertices come in triangle order).
+    std::vector<std::vector<std::pair<std::uint32_t, Vec3>>> offsets(m_targetNames.size());
+    for (std::size_t b = 0; b < m_builders.size(); ++b)
+        for (const SegmentBuilder::TargetOffset& entry : m_builders[b].targetOffsets)
+            offsets[std::size_t(entry.target)].emplace_back(mesh.segments[b].firstVertex + entry.vertex, entry.offset);
+    for (std::size_t t = 0; t < m_targetNames.size(); ++t) {
+        std::sort(offsets[t].begin(), offsets[t].end(),
+                  [](const auto& a, const auto& b) { return a.first < b.first; });
+        MorphTarget& target = data.targets.emplace_back();
+        target.name = m_targetNames[t];
+        for (const auto& [vertex, offset] : offsets[t]) {
+            target.vertices.push_back(vertex);
+            target.offsets.push_back(offset);
+        }
     }
     return data;
 }

@@ -9,8 +9,10 @@
 // when the rest pose is the bind pose (the usual case) every such matrix is the same transform B
 // and the mesh comes out as modelled, placed where the skeleton stands; when a file rests in
 // another pose (RobotExpressive's hands are bound in a T-pose, its arms rest down) the skinned
-// parts follow the skeleton like the unskinned mesh nodes do. Morph targets apply at their default
-// weights. Missing (or zero) normals are computed, area-weighted.
+// parts follow the skeleton like the unskinned mesh nodes do. Morph targets at their default
+// weights (mesh.weights, or the node's) are part of the rest shape, as the file shows the model;
+// the character import also keeps their POSITION offsets as the face's targets, which a face frame
+// adds on top of that shape (gltf_character.h). Missing (or zero) normals are computed, area-weighted.
 //
 // Segments: every mesh node (each primitive of a mesh becomes part of that node's segment) is a
 // segment named after the node (or its mesh, or "node<index>"). When `splitSkinnedByJoint` is

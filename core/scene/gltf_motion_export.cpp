@@ -116,6 +116,42 @@ tinygltf::Model nodesOnly(const tinygltf::Model& model)
     return nodes;
 }
 
+/// The weight the face gives each of its targets, frame after frame, and which targets any drive reaches.
+struct FaceWeights {
+    std::size_t targets = 0;
+    std::vector<float> weights; ///< frames × targets
+    std::vector<bool> driven;
+};
+
+FaceWeights faceWeights(const GltfMotion& motion, std::size_t frameCount)
+{
+    const FaceRig& rig = *motion.face;
+    FaceWeights result;
+    result.targets = rig.targets.size();
+    result.driven.assign(rig.targets.size(), false);
+    for (const MorphDrive& drive : rig.drives)
+        result.driven[std::size_t(drive.target)] = true;
+    // Each face channel's place in the motion's face frames (by its mpeg4Face name), or none.
+    const anim::FrameLayout& layout = *motion.faceLayout;
+    const std::vector<std::string>& channelNames = anim::FrameLayout::mpeg4Face()->scalarNames();
+    std::vector<std::ptrdiff_t> placeOf(channelNames.size(), -1);
+    for (std::size_t c = 0; c < channelNames.size(); ++c)
+        for (std::size_t s = 0; s < layout.scalarNames().size(); ++s)
+            if (layout.scalarNames()[s] == channelNames[c])
+                placeOf[c] = std::ptrdiff_t(layout.scalarOffset() + s);
+    const std::size_t floats = layout.floatCount();
+    std::vector<float> face(kFaceChannelCount), channels(kFaceChannelCount), weights(rig.targets.size());
+    result.weights.reserve(frameCount * rig.targets.size());
+    for (std::size_t f = 0; f < frameCount; ++f) {
+        for (std::size_t c = 0; c < face.size(); ++c)
+            face[c] = placeOf[c] < 0 ? 0.0f : motion.faceFrames[f * floats + std::size_t(placeOf[c])];
+        expandFaceChannels(rig, face, channels);
+        morphTargetWeights(rig, channels, weights);
+        result.weights.insert(result.weights.end(), weights.begin(), weights.end());
+    }
+    return result;
+}
+
 /// An animated node's transform must be TRS (glTF forbids animating a matrix).
 void toTrs(tinygltf::Node& node)
 {
@@ -269,39 +305,39 @@ Result<GltfMotionResult> writeGltfMotion(const std::filesystem::path& output, co
         ++result.animatedNodes;
     }
 
-    // Face tracks onto the morph targets named after them (with the meshes only).
-    if (!animationOnly && !motion.faceFrames.empty()) {
-        std::map<std::string, std::size_t> scalarByName;
-        for (std::size_t s = 0; s < motion.faceLayout->scalarNames().size(); ++s)
-            scalarByName.emplace(lowercase(motion.faceLayout->scalarNames()[s]), motion.faceLayout->scalarOffset() + s);
+    // Face tracks onto the model's morph targets, as its face mapping drives them (with the meshes only).
+    if (!animationOnly && !motion.faceFrames.empty() && motion.face) {
+        const FaceWeights face = faceWeights(motion, frameCount);
+        std::map<std::string, std::size_t> targetByName;
+        for (std::size_t t = 0; t < motion.face->targets.size(); ++t)
+            if (face.driven[t])
+                targetByName.emplace(motion.face->targets[t].name, t);
         for (std::size_t n = 0; n < out.nodes.size(); ++n) {
-            const int meshIndex = out.nodes[n].mesh;
-            if (meshIndex < 0)
+            const int meshIndex = source.nodes[n].mesh;
+            if (meshIndex < 0 || std::size_t(meshIndex) >= source.meshes.size())
                 continue;
-            const tinygltf::Mesh& mesh = out.meshes[std::size_t(meshIndex)];
-            const tinygltf::Value& names = mesh.extras.Get("targetNames");
-            const std::size_t targets = mesh.primitives.empty() ? 0 : mesh.primitives[0].targets.size();
-            if (!names.IsArray() || targets == 0 || std::size_t(names.ArrayLen()) != targets)
-                continue;
-            std::vector<std::ptrdiff_t> scalarOf(targets, -1);
-            bool any = false;
-            for (std::size_t k = 0; k < targets; ++k) {
-                const tinygltf::Value& name = names.Get(int(k));
-                const auto found = name.IsString() ? scalarByName.find(lowercase(name.Get<std::string>())) : scalarByName.end();
-                if (found == scalarByName.end())
-                    continue;
-                scalarOf[k] = std::ptrdiff_t(found->second);
-                result.morphTargets.push_back("mesh " + mesh.name + ": " + name.Get<std::string>());
-                any = true;
-            }
-            if (!any)
-                continue;
+            const tinygltf::Mesh& mesh = source.meshes[std::size_t(meshIndex)];
+            const std::vector<std::string> names = gltf::morphTargetNames(mesh, meshIndex);
+            const std::vector<double>& defaults = source.nodes[n].weights.empty() ? mesh.weights : source.nodes[n].weights;
+            std::vector<std::ptrdiff_t> targetOf(names.size(), -1);
+            for (std::size_t k = 0; k < names.size(); ++k)
+                if (const auto found = targetByName.find(names[k]); found != targetByName.end())
+                    targetOf[k] = std::ptrdiff_t(found->second);
             std::vector<float> weights;
-            weights.reserve(frameCount * targets);
+            weights.reserve(frameCount * names.size());
+            bool changes = false; // a face at rest all along needs no channel
             for (std::size_t f = 0; f < frameCount; ++f)
-                for (std::size_t k = 0; k < targets; ++k)
-                    weights.push_back(scalarOf[k] >= 0 ? motion.faceFrames[f * faceFloats + std::size_t(scalarOf[k])]
-                                                       : k < mesh.weights.size() ? float(mesh.weights[k]) : 0.0f);
+                for (std::size_t k = 0; k < names.size(); ++k) {
+                    const float base = k < defaults.size() ? float(defaults[k]) : 0.0f;
+                    const float driven = targetOf[k] < 0 ? 0.0f : face.weights[f * face.targets + std::size_t(targetOf[k])];
+                    weights.push_back(base + driven);
+                    changes = changes || driven != 0;
+                }
+            if (!changes)
+                continue;
+            for (std::size_t k = 0; k < names.size(); ++k)
+                if (targetOf[k] >= 0)
+                    result.morphTargets.push_back("mesh " + mesh.name + ": " + names[k]);
             gltf::addChannel(out, animation, timeAccessor, int(n), "weights", weights, TINYGLTF_TYPE_SCALAR, 1);
         }
     }

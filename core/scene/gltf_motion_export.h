@@ -15,9 +15,14 @@
 // world rotation, and made local to the node's glTF parent. Importing the file again gives the
 // baked frames back (to float precision).
 //
-// Face tracks: a mesh morph target named after a face scalar (glTF's mesh.extras.targetNames, as
-// Blender and three.js write them, "fap19" …, case ignored) gets that scalar as its weight, on a
-// weights channel of each node showing the mesh. Targets without a scalar keep their weight.
+// Face tracks: the model's own morph targets get the weights its face mapping table gives them
+// (GltfMotion::face: the character's FaceRig as imported, face_mapping.h), frame by frame: the
+// face frame's visemes and expressions expanded as the rig expands them, then the drives summed —
+// what the studio shows. A mesh's targets are matched by the names the import gives them
+// (mesh.extras.targetNames, else "<mesh>:<index>"); each driven target's weight is its default
+// weight (kept in the rest shape on import) plus the driven weight, on a weights channel of each
+// node showing the mesh whose driven targets move in some frame. Targets nothing drives keep
+// their default weight.
 
 #include <filesystem>
 #include <span>
@@ -26,6 +31,7 @@
 
 #include "anim/frame.h"
 #include "anim/skeleton.h"
+#include "scene/face_rig.h"
 #include "util/error.h"
 
 namespace thespis::core::scene {
@@ -35,14 +41,17 @@ struct GltfMotion {
     double fps = 30;
     /// Whole frames of `skeleton`'s layout, one after another (frame i at i / fps seconds).
     std::span<const float> bodyFrames;
-    /// Face frames (same count) of `faceLayout`, or empty.
+    /// Face frames (same count) of `faceLayout`, or empty; its scalars are read by their names
+    /// in anim::FrameLayout::mpeg4Face ("fap1" … "expression6").
     std::span<const float> faceFrames;
     anim::FrameLayoutPtr faceLayout;
+    /// The face the frames drive: the character's, read from the same model. None: no weights.
+    const FaceRig* face = nullptr;
 };
 
 struct GltfMotionResult {
     std::size_t animatedNodes = 0;     ///< nodes with rotation channels
-    std::vector<std::string> morphTargets; ///< targets given weights ("mesh Head: fap19")
+    std::vector<std::string> morphTargets; ///< targets given weights ("mesh Head: Angry")
 };
 
 /// Writes `motion` of `skeleton` (read from the glTF file `model`) as `output` (.glb),

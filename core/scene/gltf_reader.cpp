@@ -15,6 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "util/file_io.h"
+#include "util/text.h"
+
 namespace thespis::core::scene::gltf {
 
 // ---- 4×4 affine matrices ---------------------------------------------------------------------
@@ -147,6 +150,55 @@ bool extensionKeepsGeometry(const std::string& name)
            name == "KHR_texture_basisu" || name == "EXT_texture_webp" || name.starts_with("KHR_materials_");
 }
 
+/// Extensions that compress geometry, which Thespis cannot decode. A file may use one without
+/// requiring it when it also holds the geometry uncompressed, which is what is read then.
+constexpr const char* kCompressions[] = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
+                                         "KHR_meshopt_compression"};
+
+Error cannotDecode(const std::string& file, const std::string& what, const std::string& extension,
+                   const std::string& detail = {})
+{
+    return makeError(ErrorCode::NotOurFormat,
+                     "The glTF file " + file + " " + what + " " + extension +
+                         ", which Thespis cannot decode; export it without " + extension + ".",
+                     detail);
+}
+
+/// A compressed part the file holds no uncompressed copy of: a Draco primitive whose attributes
+/// or indices have no data of their own, a meshopt buffer view whose own buffer is a placeholder.
+std::optional<Error> compressedOnly(const File& file)
+{
+    const tinygltf::Model& model = file.model;
+    const auto hasData = [&](int accessor) {
+        if (accessor < 0 || std::size_t(accessor) >= model.accessors.size())
+            return true; // not this check's to refuse: the reader names it
+        const tinygltf::Accessor& a = model.accessors[std::size_t(accessor)];
+        return a.bufferView >= 0 || a.sparse.isSparse;
+    };
+    for (std::size_t m = 0; m < model.meshes.size(); ++m)
+        for (const tinygltf::Primitive& primitive : model.meshes[m].primitives) {
+            const char* draco = kCompressions[0];
+            if (!primitive.extensions.contains(draco))
+                continue;
+            bool whole = hasData(primitive.indices) || primitive.indices < 0;
+            for (const auto& [name, accessor] : primitive.attributes)
+                whole = whole && hasData(accessor);
+            if (!whole)
+                return cannotDecode(file.name,
+                                    "holds mesh " + (model.meshes[m].name.empty() ? std::to_string(m)
+                                                                                  : inQuotes(model.meshes[m].name)) +
+                                        " only compressed with",
+                                    draco);
+        }
+    for (const tinygltf::BufferView& view : model.bufferViews)
+        for (const char* meshopt : {kCompressions[1], kCompressions[2]})
+            if (view.extensions.contains(meshopt) &&
+                (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size() ||
+                 model.buffers[std::size_t(view.buffer)].data.size() < view.byteOffset + view.byteLength))
+                return cannotDecode(file.name, "holds buffer views only compressed with", meshopt);
+    return std::nullopt;
+}
+
 bool startsWithGlbMagic(const std::filesystem::path& path)
 {
     std::ifstream in(path, std::ios::binary);
@@ -199,14 +251,23 @@ Result<File> readFile(const std::filesystem::path& path, bool decodeImages)
     } catch (const std::exception& e) {
         error = e.what();
     }
-    if (!loaded)
+    if (!loaded) {
+        // tinygltf stops at what it cannot take (a meshopt placeholder buffer has no "uri"): when
+        // the file names a compression, that is the likelier cause, and the one to tell.
+        if (Result<std::string> text = readTextFile(path))
+            for (const char* extension : kCompressions)
+                if (text->find("\"" + std::string(extension) + "\"") != std::string::npos)
+                    return cannotDecode(file.name, "cannot be read: it uses", extension, error);
         return makeError(ErrorCode::CorruptData, "The glTF file " + file.name + " cannot be read.", error);
+    }
 
     for (const std::string& extension : file.model.extensionsRequired)
         if (!extensionKeepsGeometry(extension))
             return makeError(ErrorCode::NotOurFormat,
                              "The glTF file " + file.name + " requires the extension " + extension +
                                  ", which Thespis does not support; export it without " + extension + ".");
+    if (std::optional<Error> compressed = compressedOnly(file))
+        return *compressed;
     return file;
 }
 
@@ -407,6 +468,25 @@ std::string nodeName(const tinygltf::Model& model, int index)
         !model.meshes[std::size_t(node.mesh)].name.empty())
         return model.meshes[std::size_t(node.mesh)].name;
     return "node" + std::to_string(index);
+}
+
+std::vector<std::string> morphTargetNames(const tinygltf::Mesh& mesh, int meshIndex)
+{
+    std::size_t count = 0;
+    for (const tinygltf::Primitive& primitive : mesh.primitives)
+        count = std::max(count, primitive.targets.size());
+    const tinygltf::Value& names = mesh.extras.Get("targetNames");
+    const bool named = names.IsArray() && std::size_t(names.ArrayLen()) == count;
+    std::vector<std::string> result;
+    for (std::size_t t = 0; t < count; ++t) {
+        const tinygltf::Value& name = named ? names.Get(int(t)) : tinygltf::Value();
+        if (name.IsString() && !name.Get<std::string>().empty())
+            result.push_back(name.Get<std::string>());
+        else
+            result.push_back((mesh.name.empty() ? "mesh" + std::to_string(meshIndex) : mesh.name) + ":" +
+                             std::to_string(t));
+    }
+    return result;
 }
 
 Mat4 parentWorld(const NodeTree& tree, int node)

@@ -17,6 +17,7 @@
 #include <tiny_gltf.h>
 
 #include "scene/character_mesh.h"
+#include "scene/face_rig.h"
 #include "scene/gltf_mesh.h"
 #include "util/error.h"
 
@@ -102,6 +103,11 @@ Result<NodeTree> nodeTree(const tinygltf::Model& model, const AccessorReader& re
 /// A node's name, else its mesh's name, else "node<index>".
 std::string nodeName(const tinygltf::Model& model, int node);
 
+/// The names of a mesh's morph targets (as many as its primitives with the most have): Blender,
+/// three.js and FBX2glTF name them in the mesh's extras ("targetNames"); without names, or with
+/// names that do not fit, they are "<mesh name>:<index>" ("mesh<index>:<index>" when unnamed).
+std::vector<std::string> morphTargetNames(const tinygltf::Mesh& mesh, int meshIndex);
+
 /// The rest world transform of a node's parent (identity for a scene root).
 Mat4 parentWorld(const NodeTree& tree, int node);
 
@@ -129,6 +135,9 @@ struct MeshData {
     /// unweighted gets weight 1 on the skin's root joint). Rigid vertices have no influence.
     std::vector<std::array<int, 8>> jointNodes;
     std::vector<std::array<float, 8>> weights;
+    /// The meshes' morph targets as rest-space offsets of the vertices they move (see gltf_mesh.h),
+    /// one per name: targets of several meshes and primitives that share a name are one target.
+    std::vector<MorphTarget> targets;
 };
 
 /// Builds the rest-pose mesh of the default scene (the rules of gltf_mesh.h). `names` gives the

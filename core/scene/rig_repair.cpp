@@ -81,6 +81,9 @@ std::string turnToFaceForward(Character& character)
         p = toFloat(turn.apply(toDouble(p)));
     for (Vec3& n : mesh.normals)
         n = toFloat(turn.apply(toDouble(n)));
+    for (MorphTarget& target : character.face.targets)
+        for (Vec3& offset : target.offsets)
+            offset = toFloat(turn.apply(toDouble(offset)));
     const Quatd rotation = anim::turnRotation(turn);
     for (Segment& segment : mesh.segments) {
         segment.bindRotation = normalize(rotation * segment.bindRotation);

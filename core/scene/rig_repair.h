@@ -4,7 +4,8 @@
 //
 // - Facing: H-Anim stands up along +Y and faces +Z. A rig that faces elsewhere (CesiumMan's
 //   root node turns it to face +X) is turned by quarter turns about its rest pose: skeleton,
-//   mesh, segment frames and clips together (anim/rig_orientation.h).
+//   mesh, the face's morph target offsets, segment frames and clips together
+//   (anim/rig_orientation.h).
 // - IK feet: game rigs often drive the feet by inverse kinematics, with the foot bone an IK
 //   control under the armature root instead of under the shin (RobotExpressive's Foot.L). Motion
 //   from another body moves the shins and would leave such feet on the floor where they rest. A

@@ -131,6 +131,7 @@ void bindSkeleton(py::module_& m);
 void bindBvh(py::module_& m);
 void bindScenario(py::module_& m);
 void bindScene(py::module_& m);    // thespis.scene: character meshes, segments, tags, glTF
+void bindFace(py::module_& m);     // thespis.face: face mapping tables, morph targets, face frames
 void bindLighting(py::module_& m); // thespis.lighting: SH, probes, the transfer bake
 void bindRender(py::module_& m);   // thespis.render: headless pictures of scenarios
 void bindEdit(py::module_& m);     // thespis.edit: the studio's undoable scenario edits

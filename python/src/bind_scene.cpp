@@ -191,17 +191,19 @@ void bindScene(py::module_& m)
     s.def(
         "load_gltf_character",
         [](const std::filesystem::path& path, const std::map<std::string, std::string>& jointMapping,
-           bool automaticMapping, double clipFrameRate) {
+           bool automaticMapping, double clipFrameRate, const std::optional<FaceMapping>& faceMapping) {
             GltfCharacterOptions options;
             options.jointMapping = jointMapping;
             options.automaticMapping = automaticMapping;
             options.clipFrameRate = clipFrameRate;
+            options.faceMapping = faceMapping;
             return unwrap(withoutGil([&] { return loadGltfCharacter(path, options); }));
         },
         "path"_a, "joint_mapping"_a = std::map<std::string, std::string>{}, "automatic_mapping"_a = true,
-        "clip_frame_rate"_a = 30.0,
+        "clip_frame_rate"_a = 30.0, "face_mapping"_a = py::none(),
         "Reads a .gltf/.glb character: skeleton (joints mapped onto H-Anim names where known, or by joint_mapping "
-        "{source name: H-Anim name}), skin, segments, materials and animations as clips.");
+        "{source name: H-Anim name}), skin, segments, materials and animations as clips, and its morph targets "
+        "driven by face_mapping (a thespis.face.Mapping), or by the table thespis.face.recognise_mapping gives.");
     s.def("automatic_hanim_name", &automaticHAnimName, "source_name"_a,
           "The H-Anim name the automatic mapping gives a joint name ('' when it knows none).");
 }

@@ -17,6 +17,7 @@ void defineModule(py::module_& m)
     bindAnim(m);
     bindBvh(m);
     bindScene(m);
+    bindFace(m);
     bindScenario(m);
     bindLighting(m);
     bindRender(m);

@@ -9,6 +9,8 @@ floats in the engine, integer ticks in documents. Frames are NumPy float32 array
 
 ``thespis.scene`` loads characters (glTF meshes and whole characters with skeleton, skin and
 clips, or the built-in humanoid; segments with receiver / occluder tags; skinning);
+``thespis.face`` has face mapping tables (face channels → a model's own morph targets and face
+joints: recognised, loaded, saved, applied) and evaluates face frames onto a character's mesh;
 ``thespis.lighting`` has spherical harmonics, HDR probes and the transfer bake;
 ``thespis.render`` draws scenarios headless into NumPy images; ``thespis.edit`` makes the studio's
 undoable scenario edits (each returns an ``Edit``: ``apply(scenario)``, ``inverse()``);
@@ -30,7 +32,7 @@ if "_thespis" in _sys.builtin_module_names:
 else:
     from . import _thespis
 from ._thespis import *  # noqa: F401,F403  (the public API is the compiled module's)
-from ._thespis import __version__, ar, bvh, edit, hanim, lighting, motion, render, runtime, scene  # noqa: F401
+from ._thespis import __version__, ar, bvh, edit, face, hanim, lighting, motion, render, runtime, scene  # noqa: F401
 from ._thespis import Cancelled, FormatError  # noqa: F401
 
 AnimationService, Stage = runtime.AnimationService, runtime.Stage
@@ -38,7 +40,7 @@ ExternalClock, ManualClock, RealTimeClock = runtime.ExternalClock, runtime.Manua
 
 # The compiled submodules are attributes of _thespis; registering them also makes
 # `import thespis.edit` (and `from thespis.scene import ...`) work.
-for _name in ("ar", "bvh", "edit", "hanim", "lighting", "motion", "render", "runtime", "scene"):
+for _name in ("ar", "bvh", "edit", "face", "hanim", "lighting", "motion", "render", "runtime", "scene"):
     _sys.modules[f"{__name__}.{_name}"] = getattr(_thespis, _name)
 del _name
 

@@ -1,7 +1,8 @@
 // bake-motion to glTF 2.0 (scene/gltf_motion_export.h through MotionBakeJob) on real characters
 // from ../shared/data: CesiumMan, whose rig the import turns to face +Z, walking a CMU clip on its
 // own rig; RobotExpressive, whose IK feet the import hangs from the knees, on the H-Anim LOA1
-// skeleton (the motion retargeted onto its rig), with its Head's morph targets named after FAPs.
+// skeleton (the motion retargeted onto its rig), with its Head's morph targets driven by face
+// layers through the model's face mapping table.
 // The .glb read back by the character import gives the baked frames within 1e-4 rad.
 
 #include <gtest/gtest.h>
@@ -221,43 +222,55 @@ TEST(GltfMotionExport, RobotExpressiveTakesAnHAnimSkeletonsMotionRetargeted)
     EXPECT_LT(fs::file_size(folder / "walk_only.glb"), fs::file_size(folder / "walk.glb") / 2);
 }
 
+/// A copy of RobotExpressive whose Head's three targets (Angry, Surprised, Sad) are renamed.
+void writeRenamedRobot(const fs::path& file, const std::vector<std::string>& targetNames, int& head)
+{
+    tinygltf::Model robot = readModel(thespis::test::sharedData("characters/RobotExpressive/RobotExpressive.glb"));
+    head = -1;
+    for (std::size_t m = 0; m < robot.meshes.size(); ++m)
+        if (robot.meshes[m].name == "Head")
+            head = int(m);
+    ASSERT_GE(head, 0);
+    tinygltf::Value::Array names;
+    for (const std::string& name : targetNames)
+        names.emplace_back(name);
+    tinygltf::Value::Object extras{{"targetNames", tinygltf::Value(names)}};
+    robot.meshes[std::size_t(head)].extras = tinygltf::Value(extras);
+    std::ostringstream bytes;
+    ASSERT_TRUE(tinygltf::TinyGLTF().WriteGltfSceneToStream(&robot, bytes, false, true));
+    std::ofstream(file, std::ios::binary) << bytes.str();
+}
+
+/// The walk with a face layer playing `scalars` keyed at 2 fps.
+Scenario walkingWithFace(const std::string& model, std::vector<std::string> scalars, std::vector<float> frames)
+{
+    Scenario s = walking(model, "model", thespis::test::sharedData("mocap/cmu/02_01.bvh").string());
+    ClipAsset face;
+    face.name = "face";
+    face.frameRate = 2;
+    face.scalars = std::move(scalars);
+    face.frames = std::move(frames);
+    s.characters[0].clips.push_back(face);
+    Layer faceLayer;
+    faceLayer.name = "face";
+    faceLayer.kind = LayerKind::Face;
+    ActionSpec action;
+    action.name = "face";
+    action.clip = "face";
+    faceLayer.actions.push_back(action);
+    s.characters[0].layers.push_back(faceLayer);
+    return s;
+}
+
 TEST(GltfMotionExport, FaceLayersDriveMorphTargetsNamedAfterTheirFaps)
 {
     // RobotExpressive's Head has the targets Angry, Surprised and Sad; a copy names two of them
     // after FAPs, as an artist would name a face rig's targets for Thespis.
     const fs::path folder = freshFolder("face");
-    tinygltf::Model robot = readModel(thespis::test::sharedData("characters/RobotExpressive/RobotExpressive.glb"));
     int head = -1;
-    for (std::size_t m = 0; m < robot.meshes.size(); ++m)
-        if (robot.meshes[m].name == "Head")
-            head = int(m);
-    ASSERT_GE(head, 0);
-    tinygltf::Value::Array names{tinygltf::Value(std::string("fap19")), tinygltf::Value(std::string("Surprised")),
-                                 tinygltf::Value(std::string("FAP21"))};
-    tinygltf::Value::Object extras{{"targetNames", tinygltf::Value(names)}};
-    robot.meshes[std::size_t(head)].extras = tinygltf::Value(extras);
-    std::ostringstream bytes;
-    ASSERT_TRUE(tinygltf::TinyGLTF().WriteGltfSceneToStream(&robot, bytes, false, true));
-    {
-        std::ofstream file(folder / "robot_faps.glb", std::ios::binary);
-        file << bytes.str();
-    }
-
-    Scenario s = walking("robot_faps.glb", "model", thespis::test::sharedData("mocap/cmu/02_01.bvh").string());
-    ClipAsset face;
-    face.name = "blink";
-    face.frameRate = 2;
-    face.scalars = {"fap19", "fap21"};
-    face.frames = {0.0f, 0.0f, 1.0f, 0.25f, 0.5f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f};
-    s.characters[0].clips.push_back(face);
-    Layer faceLayer;
-    faceLayer.name = "face";
-    faceLayer.kind = LayerKind::Face;
-    ActionSpec blink;
-    blink.name = "blink";
-    blink.clip = "blink";
-    faceLayer.actions.push_back(blink);
-    s.characters[0].layers.push_back(faceLayer);
+    writeRenamedRobot(folder / "robot_faps.glb", {"fap19", "Surprised", "FAP21"}, head);
+    const Scenario s = walkingWithFace("robot_faps.glb", {"fap19", "fap21"},
+                                       {0.0f, 0.0f, 1.0f, 0.25f, 0.5f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f});
 
     MotionBakeJob job;
     job.scenario = s;
@@ -268,7 +281,9 @@ TEST(GltfMotionExport, FaceLayersDriveMorphTargetsNamedAfterTheirFaps)
     JobContext context;
     auto baked = job.run(context);
     ASSERT_TRUE(baked) << baked.error().message;
-    EXPECT_EQ(job.morphTargets, (std::vector<std::string>{"mesh Head: fap19", "mesh Head: FAP21"}));
+    // Surprised is the model's own surprise (its name is recognised): driven, though at 0 here.
+    EXPECT_EQ(job.morphTargets,
+              (std::vector<std::string>{"mesh Head: fap19", "mesh Head: Surprised", "mesh Head: FAP21"}));
 
     const tinygltf::Model out = readModel(folder / "face.glb");
     auto runtime = buildRuntime(s, Assets(folder));
@@ -286,12 +301,56 @@ TEST(GltfMotionExport, FaceLayersDriveMorphTargetsNamedAfterTheirFaps)
         for (std::size_t f = 0; f < 61; ++f) {
             runtime->characters[0].face->evaluate(double(f) / kFps, frame);
             EXPECT_FLOAT_EQ(weights[3 * f], frame[faceLayout.scalarOffset() + 18]);     // fap19
-            EXPECT_FLOAT_EQ(weights[3 * f + 1], 0.0f);                                  // Surprised: as the mesh has it
+            EXPECT_FLOAT_EQ(weights[3 * f + 1], 0.0f);                                  // Surprised: no surprise plays
             EXPECT_FLOAT_EQ(weights[3 * f + 2], frame[faceLayout.scalarOffset() + 20]); // fap21
         }
         EXPECT_FLOAT_EQ(weights[3 * 15], 1.0f); // 0.5 s: the clip's second key
     }
     EXPECT_EQ(weightChannels, 1);
+}
+
+TEST(GltfMotionExport, FaceLayersBecomeTheModelsOwnTargetWeightsThroughItsMappingTable)
+{
+    // The Head's targets renamed as ARKit and expression names: open_jaw reaches jawOpen through
+    // the ARKit table (weight 1 at 1536 MNS units, none below 0), anger plays Angry.
+    const fs::path folder = freshFolder("face_mapping");
+    int head = -1;
+    writeRenamedRobot(folder / "robot_arkit.glb", {"Angry", "jawOpen", "Sad"}, head);
+    const Scenario s = walkingWithFace("robot_arkit.glb", {"fap3", "expression3"},
+                                       {0.0f, 0.0f, 768.0f, 1.0f, 1536.0f, 0.5f, -400.0f, 0.0f, 0.0f, 0.0f});
+    MotionBakeJob job;
+    job.scenario = s;
+    job.assets = Assets(folder);
+    job.character = "Walker";
+    job.output = folder / "face.glb";
+    job.fps = kFps;
+    JobContext context;
+    auto baked = job.run(context);
+    ASSERT_TRUE(baked) << baked.error().message;
+    EXPECT_EQ(job.morphTargets,
+              (std::vector<std::string>{"mesh Head: Angry", "mesh Head: jawOpen", "mesh Head: Sad"}));
+
+    const tinygltf::Model out = readModel(folder / "face.glb");
+    auto runtime = buildRuntime(s, Assets(folder));
+    ASSERT_TRUE(runtime);
+    const anim::FrameLayout& faceLayout = *runtime->characters[0].face->layout();
+    std::vector<float> frame(faceLayout.floatCount());
+    const std::size_t openJaw = faceLayout.scalarOffset() + 2, anger = faceLayout.scalarOffset() + 68 + 14 + 2;
+    ASSERT_EQ(faceLayout.scalarNames()[openJaw - faceLayout.scalarOffset()], "fap3");
+    ASSERT_EQ(faceLayout.scalarNames()[anger - faceLayout.scalarOffset()], "expression3");
+    const std::map<std::string, std::vector<float>> all = channels(out);
+    ASSERT_TRUE(all.contains("Head/weights"));
+    const std::vector<float>& weights = all.at("Head/weights");
+    ASSERT_EQ(weights.size(), 61u * 3u);
+    for (std::size_t f = 0; f < 61; ++f) {
+        runtime->characters[0].face->evaluate(double(f) / kFps, frame);
+        EXPECT_FLOAT_EQ(weights[3 * f], frame[anger]) << f;
+        EXPECT_FLOAT_EQ(weights[3 * f + 1], float(1.0 / 1536) * std::max(frame[openJaw], 0.0f)) << f;
+        EXPECT_FLOAT_EQ(weights[3 * f + 2], 0.0f) << f;
+    }
+    EXPECT_FLOAT_EQ(weights[3 * 15 + 1], 0.5f); // 0.5 s: open_jaw 768
+    EXPECT_FLOAT_EQ(weights[3 * 30 + 1], 1.0f); // 1 s: open_jaw 1536
+    EXPECT_FLOAT_EQ(weights[3 * 45 + 1], 0.0f); // 1.5 s: a closed jaw (−400) does not push jawOpen below 0
 }
 
 TEST(GltfMotionExport, RefusesWhatItCannotWrite)

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Writes the synthetic seed inputs of the lighting fuzz targets (nothing from ../shared/data):
-corpus/gltf/  a two-segment skinned glTF made here (.glb, and .gltf with an embedded buffer),
+corpus/gltf/  a two-segment skinned glTF made here (.glb, and .gltf with an embedded buffer), and
+              the same with two named morph targets (one sparse),
 corpus/hdr/   a small Radiance .hdr (RLE and flat scanlines),
 corpus/bake_file/ a bake of the glTF without its trailing CRC (the fuzz target appends it).
 Needs the built `thespis` package and thespis-cli: PYTHONPATH=build/python THESPIS_CLI=... ."""
@@ -56,6 +57,35 @@ def skinned_quad_gltf():
     return document, buffer
 
 
+def morphed_quads_gltf():
+    # The two quads with two morph targets on their mesh, named as ARKit and an expression
+    # ("jawOpen" moves the head quad's lower edge, "Angry", a sparse accessor, one corner of it),
+    # "Angry" resting at weight 0.25: the face targets the character import keeps.
+    document, buffer = skinned_quad_gltf()
+    jaw = np.zeros((8, 3), np.float32)
+    jaw[4:6] = [0, -0.05, 0.01]
+    sparse_indices = np.array([6], np.uint16).tobytes() + b"\0\0"
+    sparse_values = np.array([[0.02, 0.01, 0]], np.float32).tobytes()
+    views = document["bufferViews"]
+    for blob in (jaw.tobytes(), sparse_indices, sparse_values):
+        views.append({"buffer": 0, "byteOffset": len(buffer), "byteLength": len(blob)})
+        buffer += blob
+    document["accessors"] += [
+        {"bufferView": len(views) - 3, "componentType": 5126, "count": 8, "type": "VEC3",
+         "min": jaw.min(0).tolist(), "max": jaw.max(0).tolist()},
+        {"componentType": 5126, "count": 8, "type": "VEC3", "min": [0, 0, 0], "max": [0.02, 0.01, 0],
+         "sparse": {"count": 1, "indices": {"bufferView": len(views) - 2, "componentType": 5123},
+                    "values": {"bufferView": len(views) - 1}}},
+    ]
+    count = len(document["accessors"])
+    mesh = document["meshes"][0]
+    mesh["primitives"][0]["targets"] = [{"POSITION": count - 2}, {"POSITION": count - 1}]
+    mesh["weights"] = [0, 0.25]
+    mesh["extras"] = {"targetNames": ["jawOpen", "Angry"]}
+    document["buffers"][0]["byteLength"] = len(buffer)
+    return document, buffer
+
+
 def glb(document, buffer):
     text = json.dumps(document).encode()
     text += b" " * (-len(text) % 4)
@@ -70,6 +100,7 @@ def main():
     embedded = json.loads(json.dumps(document))
     embedded["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(buffer).decode()
     (HERE / "corpus/gltf/two_quads.gltf").write_text(json.dumps(embedded))
+    (HERE / "corpus/gltf/morphed_quads.glb").write_bytes(glb(*morphed_quads_gltf()))
 
     (HERE / "corpus/hdr").mkdir(parents=True, exist_ok=True)
     rng = np.random.default_rng(1)

@@ -1,0 +1,118 @@
+"""thespis.face: face mapping tables from Python — RobotExpressive's recognised expressions played
+onto its mesh and in a headless render of a scenario's face layer, a table made, saved, loaded and
+applied with warnings for what the model lacks, a table given when the model is loaded, and reader
+errors that name the field."""
+
+import json
+
+import numpy as np
+import pytest
+
+import thespis
+from thespis import face, render, scene
+
+from conftest import SHARED_DATA
+
+ROBOT = SHARED_DATA / "characters" / "RobotExpressive" / "RobotExpressive.glb"
+
+
+def frame(**channels):
+    values = np.zeros(face.CHANNEL_COUNT, np.float32)
+    for name, value in channels.items():
+        values[face.find_channel(name)] = value
+    return values
+
+
+def test_robot_expressives_targets_are_recognised_and_anger_moves_exactly_the_angry_target():
+    robot = scene.load_gltf_character(ROBOT)
+    assert face.morph_target_names(robot) == ["Angry", "Surprised", "Sad"]
+    mapping = face.recognise_mapping(robot)
+    assert "expression targets" in mapping.name
+    by_target = {drive.target: face.channel_name(drive.channel) for drive in mapping.drives}
+    assert by_target == {"Angry": "anger", "Surprised": "surprise", "Sad": "sadness"}
+
+    rest, _ = face.deform(robot, np.zeros(face.CHANNEL_COUNT, np.float32))
+    np.testing.assert_array_equal(rest, robot.mesh.positions)
+    angry, _ = face.deform(robot, frame(anger=1.0))
+    moved = np.flatnonzero(np.any(angry != rest, axis=1))
+    assert len(moved) > 100
+    half, _ = face.deform(robot, frame(anger=0.5))
+    np.testing.assert_allclose(half[moved] - rest[moved], 0.5 * (angry[moved] - rest[moved]), atol=1e-6)
+    with pytest.raises(ValueError, match="88"):
+        face.deform(robot, np.zeros(3, np.float32))
+
+
+def test_a_table_is_made_saved_loaded_and_applied_with_a_warning_per_missing_name(tmp_path):
+    mapping = face.Mapping(
+        "studio rig",
+        [face.Drive("Sad", "sadness", 1.0), face.Drive("Blink_L", "close_t_l_eyelid", 1 / 1024, face.Side.POSITIVE)],
+        [face.JointDrive("EyeBone_L", "yaw_l_eyeball", (0, 1, 0), 1e-5)],
+    )
+    path = tmp_path / "rig.json"
+    face.save_mapping(path, mapping)
+    document = json.loads(path.read_text())
+    assert document["format"] == "thespis-face-mapping" and document["version"] == 1
+    assert document["drives"][1] == {"target": "Blink_L", "channel": "close_t_l_eyelid",
+                                     "coefficient": 1 / 1024, "side": "positive"}
+    loaded = face.load_mapping(path)
+    assert loaded == mapping
+    assert face.Mapping.from_json(mapping.to_json()) == mapping
+
+    robot = scene.load_gltf_character(ROBOT)
+    warnings = face.apply_mapping(robot, loaded)
+    assert warnings == [
+        'The face mapping "studio rig" drives the morph target "Blink_L", which RobotExpressive does not have.',
+        'The face mapping "studio rig" turns the joint "EyeBone_L", which RobotExpressive does not have.',
+    ]
+    # Only Sad plays now: anger moves nothing, sadness moves the Sad target.
+    rest, _ = face.deform(robot, np.zeros(face.CHANNEL_COUNT, np.float32))
+    np.testing.assert_array_equal(face.deform(robot, frame(anger=1.0))[0], rest)
+    assert np.any(face.deform(robot, frame(sadness=1.0))[0] != rest)
+
+    given = scene.load_gltf_character(ROBOT, face_mapping=loaded)
+    assert any("Blink_L" in warning for warning in given.warnings)
+
+
+def test_reader_errors_name_the_file_and_the_field(tmp_path):
+    path = tmp_path / "bad.json"
+    path.write_text(json.dumps({"format": "thespis-face-mapping", "version": 1,
+                                "drives": [{"target": "a", "channel": "open_mouth", "coefficient": 1}]}))
+    with pytest.raises(thespis.FormatError, match=r"bad\.json.*drives\[0\]\.channel"):
+        face.load_mapping(path)
+    with pytest.raises(ValueError, match="not a face channel"):
+        face.Drive("a", "open_mouth", 1.0)
+    with pytest.raises(FileNotFoundError):
+        face.load_mapping(tmp_path / "none.json")
+
+
+def test_a_face_layer_plays_robot_expressives_anger_in_a_render(tmp_path):
+    document = thespis.Scenario()
+    document.name = "Angry robot"
+    robot = thespis.Character("Robot", "model")
+    robot.model = str(ROBOT)
+    anger = thespis.ClipAsset("anger", "")
+    anger.frame_rate = 1.0
+    anger.scalars = ["expression3"]
+    anger.frames = np.array([1.0, 1.0], np.float32)
+    robot.clips = [anger]
+    layer = thespis.Layer("face", thespis.LayerKind.face)
+    layer.actions = [thespis.ActionSpec("anger", "anger")]
+    robot.layers = [layer]
+    document.characters = [robot]
+    angry = tmp_path / "angry.thespis"
+    thespis.save_scenario(angry, document)
+    layer.mute = True
+    robot.layers = [layer]
+    document.characters = [robot]
+    calm = tmp_path / "calm.thespis"
+    thespis.save_scenario(calm, document)
+
+    pictures = [render.render_scenario(path, time=0.5, width=240, height=320, shading="unlit", ground=False)
+                for path in (calm, angry)]
+    render.write_png(tmp_path / "angry.png", pictures[1])
+    changed = np.any(pictures[0] != pictures[1], axis=2)
+    rows = np.flatnonzero(changed.any(axis=1))
+    assert changed.sum() > 20, "anger changed no pixel"
+    # Only the head changes: the rows that differ are all in the picture's upper half.
+    figure = np.flatnonzero(np.any(pictures[0][:, :, :3] != pictures[0][0, 0, :3], axis=2).any(axis=1))
+    assert rows.max() < (figure.min() + figure.max()) / 2
