@@ -104,6 +104,12 @@ std::optional<int> numberAfter(std::string_view name, std::string_view prefix)
 
 } // namespace
 
+std::string_view fapUnitName(FapUnit unit)
+{
+    constexpr std::string_view names[] = {"", "IRISD", "ES", "ENS", "MNS", "MW", "AU"};
+    return names[std::size_t(unit)];
+}
+
 double FapUnits::of(FapUnit unit) const
 {
     switch (unit) {

@@ -37,6 +37,9 @@ enum class FapUnit : unsigned char {
     AU     ///< angle unit, 1e-5 rad
 };
 
+/// "IRISD", "ES", "ENS", "MNS", "MW", "AU", or "" for None.
+std::string_view fapUnitName(FapUnit unit);
+
 /// A face's FAP units, in metres per FAP unit (the distances over 1024); AU is fixed.
 struct FapUnits {
     double irisd = 0, es = 0, ens = 0, mns = 0, mw = 0;

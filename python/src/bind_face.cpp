@@ -12,6 +12,7 @@
 #include "scene/face_mapping.h"
 #include "scene/face_naming.h"
 #include "scene/face_rig.h"
+#include "scene/fap.h"
 #include "util/text.h"
 
 namespace thespis::python {
@@ -126,6 +127,38 @@ void bindFace(py::module_& m)
         "character"_a, "mapping"_a,
           "Makes the table the character's face; returns a warning for each target or joint it lacks.");
     f.def("morph_target_names", &morphTargetNames, "character"_a, "The names of the character's morph targets.");
+    f.def(
+        "fap_units",
+        [](const Character& character) {
+            const FapUnits& u = character.face.units;
+            return py::dict("IRISD"_a = u.irisd, "ES"_a = u.es, "ENS"_a = u.ens, "MNS"_a = u.mns, "MW"_a = u.mw,
+                            "AU"_a = FapUnits::au);
+        },
+        "character"_a,
+        "The character's FAP units, metres per unit (each face distance over 1024; AU is 1e-5 rad), measured on its "
+        "neutral face between the MPEG-4 feature points (zero for a model that drives its targets by name).");
+    f.def(
+        "feature_points",
+        [](const Character& character) {
+            py::dict points;
+            for (const FeaturePoint& point : character.face.featurePoints) {
+                const Vec3& p = character.mesh.positions[point.vertex];
+                points[py::str(point.name)] = py::make_tuple(p.x, p.y, p.z);
+            }
+            return points;
+        },
+        "character"_a, "The MPEG-4 feature points of the neutral face ('2.1' the chin …) → rest position (metres).");
+    f.def(
+        "fap",
+        [](int number) {
+            if (number < 1 || number > kFapCount)
+                throw py::value_error("FAPs are numbered 1 to 68.");
+            const FapInfo& fap = fapInfo(number);
+            return py::dict("number"_a = fap.number, "name"_a = std::string(fap.name),
+                            "unit"_a = std::string(fapUnitName(fap.unit)), "bidirectional"_a = fap.bidirectional,
+                            "direction"_a = std::string(fap.direction), "feature_point"_a = std::string(fap.featurePoint));
+        },
+        "number"_a, "MPEG-4's definition of FAP `number` (1 … 68): its name, unit, direction and feature point.");
     f.def(
         "deform",
         [](const Character& character, const py::array_t<float, py::array::c_style | py::array::forcecast>& frame) {

@@ -116,3 +116,22 @@ def test_a_face_layer_plays_robot_expressives_anger_in_a_render(tmp_path):
     # Only the head changes: the rows that differ are all in the picture's upper half.
     figure = np.flatnonzero(np.any(pictures[0][:, :, :3] != pictures[0][0, 0, :3], axis=2).any(axis=1))
     assert rows.max() < (figure.min() + figure.max()) / 2
+
+
+def test_the_humanoids_face_has_mpeg4_feature_points_and_units():
+    from thespis import scene
+    body = scene.default_humanoid()
+    units = face.fap_units(body)
+    assert abs(units["ES"] * 1024 - 0.064) < 0.004  # pupils 64 mm apart
+    assert units["AU"] == 1e-5
+    points = face.feature_points(body)
+    assert {"2.1", "2.2", "3.5", "9.15"} <= set(points)
+    assert points["3.5"][0] > 0 > points["3.6"][0]  # the left pupil is on the face's left (+x)
+    assert face.fap(3) == {"number": 3, "name": "open_jaw", "unit": "MNS", "bidirectional": False,
+                           "direction": "down", "feature_point": "2.1"}
+    # open_jaw of 400 lowers the chin by 400 MNS units.
+    frame = np.zeros(face.CHANNEL_COUNT, dtype=np.float32)
+    frame[face.find_channel("open_jaw")] = 400
+    positions, _ = face.deform(body, frame)
+    chin = [i for i, p in enumerate(body.mesh.positions) if tuple(p) == points["2.1"]][0]
+    assert abs((points["2.1"][1] - positions[chin][1]) - 400 * units["MNS"]) < 0.01 * 400 * units["MNS"]

@@ -262,6 +262,22 @@ Scenario walkingWithFace(const std::string& model, std::vector<std::string> scal
     return s;
 }
 
+namespace {
+
+// The face bake of "Walker" in `folder` into face.glb.
+MotionBakeJob walkerBake(const Scenario& s, const fs::path& folder)
+{
+    MotionBakeJob job;
+    job.scenario = s;
+    job.assets = Assets(folder);
+    job.character = "Walker";
+    job.output = folder / "face.glb";
+    job.fps = kFps;
+    return job;
+}
+
+} // namespace
+
 TEST(GltfMotionExport, FaceLayersDriveMorphTargetsNamedAfterTheirFaps)
 {
     // RobotExpressive's Head has the targets Angry, Surprised and Sad; a copy names two of them
@@ -272,12 +288,7 @@ TEST(GltfMotionExport, FaceLayersDriveMorphTargetsNamedAfterTheirFaps)
     const Scenario s = walkingWithFace("robot_faps.glb", {"fap19", "fap21"},
                                        {0.0f, 0.0f, 1.0f, 0.25f, 0.5f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f});
 
-    MotionBakeJob job;
-    job.scenario = s;
-    job.assets = Assets(folder);
-    job.character = "Walker";
-    job.output = folder / "face.glb";
-    job.fps = kFps;
+    MotionBakeJob job = walkerBake(s, folder);
     JobContext context;
     auto baked = job.run(context);
     ASSERT_TRUE(baked) << baked.error().message;
@@ -318,12 +329,7 @@ TEST(GltfMotionExport, FaceLayersBecomeTheModelsOwnTargetWeightsThroughItsMappin
     writeRenamedRobot(folder / "robot_arkit.glb", {"Angry", "jawOpen", "Sad"}, head);
     const Scenario s = walkingWithFace("robot_arkit.glb", {"fap3", "expression3"},
                                        {0.0f, 0.0f, 768.0f, 1.0f, 1536.0f, 0.5f, -400.0f, 0.0f, 0.0f, 0.0f});
-    MotionBakeJob job;
-    job.scenario = s;
-    job.assets = Assets(folder);
-    job.character = "Walker";
-    job.output = folder / "face.glb";
-    job.fps = kFps;
+    MotionBakeJob job = walkerBake(s, folder);
     JobContext context;
     auto baked = job.run(context);
     ASSERT_TRUE(baked) << baked.error().message;
