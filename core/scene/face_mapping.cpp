@@ -4,11 +4,11 @@
 
 #include <array>
 #include <cmath>
-#include <set>
 
 #include "scene/character.h"
 #include "util/file_io.h"
 #include "util/json_document.h"
+#include "util/json_object_reader.h"
 #include "util/text.h"
 
 namespace thespis::core::scene {
@@ -35,50 +35,12 @@ const char* sideName(MorphDrive::Side side)
     return "both";
 }
 
-// Reads one JSON object field by field; every field read is marked, and finish() refuses the
-// others by name.
-class FieldReader {
+// A table's objects: the document reader's, with face channels.
+class FieldReader : public json_document::ObjectReader {
 public:
-    FieldReader(const json& value, std::string path) : m_value(value), m_path(std::move(path))
-    {
-        if (!value.is_object())
-            fail(m_path, "expected an object, found " + describeValue(value));
-    }
+    FieldReader(const json& value, std::string path) : ObjectReader(value, std::move(path), "") {}
 
-    std::string at(std::string_view key) const { return json_document::join(m_path, key); }
-
-    const json* find(std::string_view key)
-    {
-        m_known.emplace(key);
-        const auto it = m_value.find(key);
-        return it == m_value.end() ? nullptr : &*it;
-    }
-
-    const json& require(std::string_view key)
-    {
-        const json* value = find(key);
-        if (!value)
-            fail(at(key), "this field is required but missing");
-        return *value;
-    }
-
-    std::string name(std::string_view key)
-    {
-        const json& value = require(key);
-        if (!value.is_string())
-            fail(at(key), "expected a text, found " + describeValue(value));
-        if (value.get_ref<const std::string&>().empty())
-            fail(at(key), "must not be empty");
-        return value.get<std::string>();
-    }
-
-    double finite(std::string_view key)
-    {
-        const json& value = require(key);
-        if (!value.is_number() || !std::isfinite(value.get<double>()))
-            fail(at(key), "expected a finite number, found " + describeValue(value));
-        return value.get<double>();
-    }
+    double finite(std::string_view key) { return number(key, true, 0, json_document::Range::Any); }
 
     int channel(std::string_view key)
     {
@@ -86,42 +48,21 @@ public:
         if (value.is_number_integer()) {
             const double fap = value.get<double>(); // exact for every FAP number
             if (fap < 1 || fap > kFapCount)
-                fail(at(key), "FAP numbers go from 1 to " + std::to_string(kFapCount) + ", found " + value.dump());
+                fail(fieldPath(key), "FAP numbers go from 1 to " + std::to_string(kFapCount) + ", found " + value.dump());
             return fapChannel(int(fap));
         }
         if (!value.is_string())
-            fail(at(key), "expected a face channel's name or a FAP number, found " + describeValue(value));
+            fail(fieldPath(key), "expected a face channel's name or a FAP number, found " + describeValue(value));
         const std::string text = value.get<std::string>();
         const std::optional<int> channel = findFaceChannel(lowercase(text));
         if (!channel)
-            fail(at(key), quote(text) + " is not a face channel (a FAP such as \"open_jaw\" or \"fap3\", \"viseme1\" "
-                                        "… \"viseme14\", or an expression such as \"anger\")");
+            fail(fieldPath(key), quote(text) + " is not a face channel (a FAP such as \"open_jaw\" or \"fap3\", \"viseme1\" "
+                                               "… \"viseme14\", or an expression such as \"anger\")");
         return *channel;
     }
 
-    void finish() const
-    {
-        for (const auto& [key, value] : m_value.items())
-            if (!m_known.contains(key))
-                fail(at(key), "is not a field of a face mapping here");
-    }
-
-private:
-    const json& m_value;
-    std::string m_path;
-    std::set<std::string, std::less<>> m_known;
+    void finish() const { refuseUnknown("a face mapping"); }
 };
-
-const json& arrayOf(FieldReader& reader, std::string_view key)
-{
-    static const json empty = json::array();
-    const json* value = reader.find(key);
-    if (!value)
-        return empty;
-    if (!value->is_array())
-        fail(reader.at(key), "expected a list, found " + describeValue(*value));
-    return *value;
-}
 
 FaceMappingDrive readDrive(const json& value, const std::string& path)
 {
@@ -137,7 +78,7 @@ FaceMappingDrive readDrive(const json& value, const std::string& path)
         else if (text == "negative")
             drive.side = MorphDrive::Side::Negative;
         else if (text != "both")
-            fail(reader.at("side"), "expected \"both\", \"positive\" or \"negative\", found " + describeValue(*side));
+            fail(reader.fieldPath("side"), "expected \"both\", \"positive\" or \"negative\", found " + describeValue(*side));
     }
     reader.finish();
     return drive;
@@ -153,15 +94,15 @@ FaceMappingJoint readJoint(const json& value, const std::string& path)
     const auto component = [&](std::size_t i) {
         const json& c = axis[i];
         if (!c.is_number() || !std::isfinite(c.get<double>()))
-            fail(json_document::indexed(reader.at("axis"), i), "expected a finite number, found " + describeValue(c));
+            fail(json_document::indexed(reader.fieldPath("axis"), i), "expected a finite number, found " + describeValue(c));
         return c.get<double>();
     };
     if (!axis.is_array() || axis.size() != 3)
-        fail(reader.at("axis"), "expected a list of 3 numbers, found " + describeValue(axis));
+        fail(reader.fieldPath("axis"), "expected a list of 3 numbers, found " + describeValue(axis));
     const anim::Vec3d v{component(0), component(1), component(2)};
     const double length = std::sqrt(anim::dot(v, v));
     if (!(length > 1e-9) || !std::isfinite(length))
-        fail(reader.at("axis"), "the axis has no direction (its length is " + std::to_string(length) + ")");
+        fail(reader.fieldPath("axis"), "the axis has no direction (its length is " + std::to_string(length) + ")");
     // A unit axis stays as written, so that what the writer wrote reads back bit for bit.
     joint.axis = std::abs(length - 1) <= 1e-12 ? v : v * (1 / length);
     joint.radiansPerUnit = reader.finite("radiansPerUnit");
@@ -187,15 +128,11 @@ Result<FaceMapping> readDocument(std::string_view text, const std::string& what)
         (void)reader.find("format");
         (void)reader.find("version");
         FaceMapping mapping;
-        if (const json* name = reader.find("name")) {
-            if (!name->is_string())
-                fail("name", "expected a text, found " + describeValue(*name));
-            mapping.name = name->get<std::string>();
-        }
-        const json& drives = arrayOf(reader, "drives");
+        mapping.name = reader.string("name", false);
+        const json& drives = reader.array("drives", false);
         for (std::size_t i = 0; i < drives.size(); ++i)
             mapping.drives.push_back(readDrive(drives[i], json_document::indexed("drives", i)));
-        const json& joints = arrayOf(reader, "joints");
+        const json& joints = reader.array("joints", false);
         for (std::size_t i = 0; i < joints.size(); ++i)
             mapping.joints.push_back(readJoint(joints[i], json_document::indexed("joints", i)));
         reader.finish();
