@@ -54,7 +54,8 @@ bool isHeadJoint(const QString& lowerName)
     return lowerName == QLatin1String("skullbase") || lowerName == QLatin1String("head");
 }
 
-void JointMaskLayout::fitInto(const QVector<MaskJoint>& joints, const QVector<qreal>& metresWidth, const QRectF& fit)
+void JointMaskLayout::fitInto(const QVector<MaskJoint>& joints, const QVector<qreal>& metresWidth, const QRectF& fit,
+                              const QRectF& faceOutline)
 {
     const int count = int(joints.size());
     screen.resize(count);
@@ -104,7 +105,7 @@ void JointMaskLayout::fitInto(const QVector<MaskJoint>& joints, const QVector<qr
             minY = std::min(minY, q.y() - half);
             maxY = std::max(maxY, q.y() + half);
         }
-        if (headJoint < 0 && isHeadJoint(joints[i].name.toLower()))
+        if (headJoint < 0 && faceOutline.isEmpty() && isHeadJoint(joints[i].name.toLower()))
             headJoint = i;
         tip[i] = p;
         if (leaf[i]) {
@@ -153,6 +154,13 @@ void JointMaskLayout::fitInto(const QVector<MaskJoint>& joints, const QVector<qr
         maxY = std::max(maxY, headCentre.y() + headRy);
     }
 
+    if (!faceOutline.isEmpty()) {
+        minX = std::min(minX, faceOutline.left());
+        maxX = std::max(maxX, faceOutline.right());
+        minY = std::min(minY, faceOutline.top());
+        maxY = std::max(maxY, faceOutline.bottom());
+    }
+
     // Fit, keeping the aspect ratio.
     const qreal spanX = std::max(maxX - minX, 1e-9), spanY = std::max(maxY - minY, 1e-9);
     const qreal scale = std::max(1e-9, std::min(fit.width() / spanX, fit.height() / spanY));
@@ -169,6 +177,9 @@ void JointMaskLayout::fitInto(const QVector<MaskJoint>& joints, const QVector<qr
         const QPointF c = toScreen(headCentre);
         head = QRectF(c.x() - headRx * scale, c.y() - headRy * scale, 2 * headRx * scale, 2 * headRy * scale);
     }
+    if (!faceOutline.isEmpty())
+        head = QRectF(toScreen(QPointF(faceOutline.left(), faceOutline.bottom())),
+                      toScreen(QPointF(faceOutline.right(), faceOutline.top())));
     figure = QRectF(toScreen(QPointF(minX, maxY)), toScreen(QPointF(maxX, minY)));
     // Dots grow with the picture, within limits that keep them clickable and apart.
     dotRadius = std::clamp(0.022 * size * scale, 3.5, 6.5);

@@ -34,7 +34,9 @@ struct JointMaskLayout {
 
     /// Lays `joints` (with their body widths in metres, from jointBodyWidth()) out to fit `fit`,
     /// keeping the aspect ratio. Reuses this layout's buffers.
-    void fitInto(const QVector<MaskJoint>& joints, const QVector<qreal>& metresWidth, const QRectF& fit);
+    /// A non-empty `faceOutline` (metres) is drawn as the head instead: an oval around a face.
+    void fitInto(const QVector<MaskJoint>& joints, const QVector<qreal>& metresWidth, const QRectF& fit,
+                 const QRectF& faceOutline = {});
     /// The joint whose dot is nearest `pos` within `radius` (the later one on a tie: it is drawn on
     /// top), else -1.
     int jointAt(QPointF pos, qreal radius) const;

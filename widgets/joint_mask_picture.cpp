@@ -26,7 +26,7 @@ void JointMaskPicture::jointsChanged(bool structure, bool positions)
         m_found.reserve(count);
         m_metresWidth.resize(count);
         for (int i = 0; i < count; ++i)
-            m_metresWidth[i] = jointBodyWidth(m_view->m_joints[i].name.toLower());
+            m_metresWidth[i] = m_view->m_faceOutline.isEmpty() ? jointBodyWidth(m_view->m_joints[i].name.toLower()) : 0.0;
     }
     if (structure || positions)
         m_layoutDirty = true;
@@ -58,7 +58,7 @@ void JointMaskPicture::ensureLayout() const
     const QFontMetrics metrics = fontMetrics();
     const qreal side = metrics.horizontalAdvance(QLatin1Char('M')) + 18;
     const QRectF fit = QRectF(rect()).adjusted(side, 14, -side, -(metrics.height() + 18));
-    m_layout.fitInto(m_view->m_joints, m_metresWidth, fit);
+    m_layout.fitInto(m_view->m_joints, m_metresWidth, fit, m_view->m_faceOutline);
 }
 
 QPointF JointMaskPicture::screen(int joint) const

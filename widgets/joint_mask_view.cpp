@@ -274,6 +274,14 @@ void JointMaskView::setJoints(QVector<MaskJoint> joints)
     m_picture->jointsChanged(!sameStructure, !samePositions);
 }
 
+void JointMaskView::setFaceOutline(QRectF outline)
+{
+    if (outline == m_faceOutline)
+        return;
+    m_faceOutline = outline;
+    m_picture->jointsChanged(true, true);
+}
+
 void JointMaskView::buildTree()
 {
     const QTreeWidgetItem* current = m_tree->currentItem();

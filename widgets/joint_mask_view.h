@@ -11,6 +11,7 @@
 
 #include <QColor>
 #include <QPointF>
+#include <QRectF>
 #include <QString>
 #include <QVector>
 #include <QWidget>
@@ -41,6 +42,12 @@ public:
     /// Joints whose parent is not an earlier joint are shown as roots.
     void setJoints(QVector<MaskJoint> joints);
     const QVector<MaskJoint>& joints() const { return m_joints; }
+
+    /// Draws a face instead of a body: no limbs around the "joints" (a face mask's regions and
+    /// channels), an oval `outline` (metres, the joints' front-view frame) behind them. An empty
+    /// rectangle draws the body again. Emits nothing.
+    void setFaceOutline(QRectF outline);
+    QRectF faceOutline() const { return m_faceOutline; }
 
     /// The value a left-button paint stroke writes (default 1), clamped to [0, 1]. Also shown and
     /// edited in the view's brush bar. Emits nothing.
@@ -101,6 +108,7 @@ private:
     QDoubleSpinBox* m_brushSpin = nullptr;
     QSpinBox* m_radiusSpin = nullptr;
     QVector<MaskJoint> m_joints;
+    QRectF m_faceOutline;
     QVector<QTreeWidgetItem*> m_items; // one per joint
     float m_brushWeight = 1.0f;
     int m_brushRadius = 18;

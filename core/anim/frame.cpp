@@ -27,7 +27,20 @@ std::shared_ptr<const FrameLayout> FrameLayout::mpeg4Face()
             names.push_back("viseme" + std::to_string(i));
         for (int i = 1; i <= 6; ++i)
             names.push_back("expression" + std::to_string(i));
-        return create({}, {}, std::move(names));
+        auto layout = std::const_pointer_cast<FrameLayout>(create({}, {}, std::move(names)));
+        // MPEG-4's FAP groups 2 … 10 (FAP 1 selects a viseme, FAP 2 an expression).
+        const std::pair<int, const char*> regions[] = {
+            {1, "mouth"},  {2, "expressions"}, {18, "mouth"}, {30, "eyes"},  {38, "brows"},
+            {42, "cheeks"}, {47, "tongue"},     {50, "head"},  {60, "mouth"}, {64, "nose"}, {68, "ears"}};
+        for (int fap = 1; fap <= 68; ++fap)
+            for (const auto& [last, region] : regions)
+                if (fap <= last) {
+                    layout->m_scalarGroups.emplace_back(region);
+                    break;
+                }
+        layout->m_scalarGroups.insert(layout->m_scalarGroups.end(), 14, "mouth");
+        layout->m_scalarGroups.insert(layout->m_scalarGroups.end(), 6, "expressions");
+        return std::shared_ptr<const FrameLayout>(std::move(layout));
     }();
     return face;
 }
@@ -76,6 +89,13 @@ int FrameLayout::find(std::string_view name, ElementKind kind) const
         if (names[i] == name)
             return base + int(i);
     return -1;
+}
+
+const std::string& FrameLayout::group(int element) const
+{
+    static const std::string none;
+    const int scalar = element - rotationCount() - translationCount();
+    return scalar >= 0 && std::size_t(scalar) < m_scalarGroups.size() ? m_scalarGroups[std::size_t(scalar)] : none;
 }
 
 bool FrameLayout::operator==(const FrameLayout& other) const

@@ -34,7 +34,9 @@ public:
                                                      std::vector<std::string> scalars = {});
     /// The 68 MPEG-4 facial animation parameters as scalars named fap1 … fap68, then the weights
     /// of the 14 visemes (viseme1 … viseme14) and the 6 expressions (expression1 … expression6)
-    /// that FAPs 1 and 2 select (scene/fap.h).
+    /// that FAPs 1 and 2 select (scene/fap.h). Each scalar is in its face region (MPEG-4's FAP
+    /// groups): "mouth" (jaw, chin, lips and the visemes), "eyes", "brows", "cheeks", "tongue",
+    /// "head", "nose", "ears", and "expressions" (the expression weights).
     static std::shared_ptr<const FrameLayout> mpeg4Face();
 
     int rotationCount() const { return int(m_rotations.size()); }
@@ -56,6 +58,10 @@ public:
     const std::vector<std::string>& translationNames() const { return m_translations; }
     const std::vector<std::string>& scalarNames() const { return m_scalars; }
 
+    /// The group a scalar element belongs to ("" for none): the face layout's FAP regions
+    /// ("mouth", "eyes", "brows" …), which a mask weighs when it does not name the element.
+    const std::string& group(int element) const;
+
     /// Element index of `name` among elements of `kind`, or -1.
     int find(std::string_view name, ElementKind kind) const;
 
@@ -63,6 +69,7 @@ public:
 
 private:
     std::vector<std::string> m_rotations, m_translations, m_scalars;
+    std::vector<std::string> m_scalarGroups; ///< empty, or one per scalar
     std::size_t m_floatCount = 0;
 };
 

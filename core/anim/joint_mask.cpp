@@ -127,7 +127,9 @@ std::vector<float> JointMask::resolve(const FrameLayout& layout, std::span<const
     }
     for (int e = rotations; e < layout.elementCount(); ++e) {
         const int joint = layout.kind(e) == ElementKind::Translation ? layout.find(layout.name(e), ElementKind::Rotation) : -1;
-        const float named = weight(layout.name(e));
+        float named = weight(layout.name(e));
+        if (named < 0.0f && !layout.group(e).empty())
+            named = weight(layout.group(e));
         weights[std::size_t(e)] = joint >= 0 ? weights[std::size_t(joint)] : named >= 0.0f ? named : m_default;
     }
     return weights;

@@ -3,7 +3,8 @@
 // shared by actions. Multiplexed with a weight curve it gives one weight curve per joint.
 // Joints the mask does not name inherit the weight of their nearest named ancestor when the
 // skeleton hierarchy is known, else take the default weight. A root translation element takes
-// its joint's weight.
+// its joint's weight. A scalar the mask does not name takes its group's weight (a face mask names
+// the face's regions, "mouth", "eyes" …: FrameLayout::group), else the default.
 
 #include <map>
 #include <span>

@@ -10,6 +10,7 @@
 #include "errors.h"
 #include "scene/character.h"
 #include "scene/face_mapping.h"
+#include "scene/face_mask.h"
 #include "scene/face_naming.h"
 #include "scene/face_rig.h"
 #include "scene/fap.h"
@@ -172,6 +173,28 @@ void bindFace(py::module_& m)
         },
         "character"_a, "frame"_a,
         "(positions, normals) of the rest mesh moved by a face frame (CHANNEL_COUNT values), vertices × 3.");
+
+    // Face-region masks: the face's counterpart of a joint mask (paper §5.2).
+    py::enum_<FaceMaskPreset>(f, "MaskPreset", "Face masks over the face's regions.")
+        .value("whole_face", FaceMaskPreset::WholeFace)
+        .value("speech", FaceMaskPreset::Speech)
+        .value("expression", FaceMaskPreset::Expression)
+        .value("eyes", FaceMaskPreset::Eyes);
+    f.attr("REGIONS") = [] {
+        py::list regions;
+        for (std::string_view region : kFaceRegions)
+            regions.append(std::string(region));
+        return regions;
+    }();
+    f.def("mask_preset", &faceMaskPreset, "preset"_a,
+          "A face mask (a JointMask naming the face's regions): speech high on the mouth, expressions on the eyes and brows.");
+    f.def("is_face_mask", &isFaceMask, "mask"_a, "True when the mask names a face region or face channel.");
+    f.def("mirrored_mask", &mirroredFaceMask, "mask"_a, "The face mask with left and right FAPs swapped.");
+    f.def("channel_region", [](const py::object& channel) {
+            const int c = channelOf(channel);
+            const auto layout = anim::FrameLayout::mpeg4Face();
+            return layout->group(layout->rotationCount() + layout->translationCount() + c);
+        }, "channel"_a, "The face region a channel is in ('mouth', 'eyes', …); a channel by name or index.");
 }
 
 } // namespace thespis::python

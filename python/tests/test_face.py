@@ -135,3 +135,21 @@ def test_the_humanoids_face_has_mpeg4_feature_points_and_units():
     positions, _ = face.deform(body, frame)
     chin = [i for i, p in enumerate(body.mesh.positions) if tuple(p) == points["2.1"]][0]
     assert abs((points["2.1"][1] - positions[chin][1]) - 400 * units["MNS"]) < 0.01 * 400 * units["MNS"]
+
+
+def test_face_masks_weigh_the_face_by_region():
+    speech = face.mask_preset(face.MaskPreset.speech)
+    assert face.is_face_mask(speech)
+    assert not face.is_face_mask(thespis.JointMask.preset(thespis.MaskPreset.upper_body))
+    assert set(face.REGIONS) >= {"mouth", "eyes", "brows", "tongue", "expressions"}
+    assert face.channel_region("open_jaw") == "mouth"
+    assert face.channel_region("raise_l_i_eyebrow") == "brows"
+    assert face.channel_region("viseme3") == "mouth"
+    assert face.channel_region("joy") == "expressions"
+    weights = speech.resolve(thespis.FrameLayout.mpeg4_face())
+    assert weights[face.find_channel("open_jaw")] == 1.0
+    assert weights[face.find_channel("raise_l_i_eyebrow")] == 0.0
+    speech.set_weight("fap31", 0.5)
+    mirrored = face.mirrored_mask(speech).resolve(thespis.FrameLayout.mpeg4_face())
+    assert mirrored[face.find_channel("raise_r_i_eyebrow")] == 0.5
+    assert mirrored[face.find_channel("raise_l_i_eyebrow")] == 0.0

@@ -145,3 +145,58 @@ def test_close_ups_of_the_humanoids_face(tmp_path):
         for b in EXPRESSIONS:
             if a < b:
                 assert len(differing(pictures[a], pictures[b])) > 100, (a, b)
+
+
+def layered_face_scenario(path, layers, masks):
+    """A scenario of the built-in humanoid with face layers, bottom first: (name, {channel: value},
+    mask name or ""), and the named face masks (name → {region or channel: weight})."""
+    character = {"schema": "Character.4", "name": "Face", "skeleton": "hanim-25", "position": [0, 0, 0],
+                 "heading": 0.0, "clips": [], "layers": []}
+    constant = lambda v: {"schema": "Curve.1", "kind": "constant", "value": v}  # noqa: E731
+    for name, channels, mask in layers:
+        values = [float(v) for v in channels.values()]
+        character["clips"].append({"schema": "Clip.3", "name": name, "frameRate": 30.0, "joints": [],
+                                   "rootTranslation": False, "scalars": list(channels), "frames": [values, values]})
+        character["layers"].append({
+            "schema": "Layer.2", "name": name, "kind": "face", "mode": "normalized",
+            "actions": [{"schema": "Action.2", "name": name, "clip": name, "start": 0, "mask": mask,
+                         "modifiers": [{"schema": "Modifier.2", "kind": "loop", "count": 0}],
+                         "weight": constant(1.0), "scale": constant(1.0), "mode": "normalized",
+                         "renderOutsideDomain": False}]})
+    document = {"format": "thespis-scenario", "version": 6, "schema": "Scenario.6", "name": "face",
+                "duration": 705600000, "characters": [character],
+                "masks": [{"name": name, "weights": weights, "defaultWeight": 0.0} for name, weights in masks.items()]}
+    path.write_text(json.dumps(document))
+    return path
+
+
+def test_face_masks_give_speech_the_mouth_and_the_expression_the_brows(tmp_path):
+    """The paper's face layering (§5.2): a speech layer over an expression, each weighted per FAP
+    region — the speech mask keeps the expression's raised brows, which the speech layer would
+    otherwise cover with its neutral ones."""
+    out = ARTIFACTS / "masks"
+    out.mkdir(parents=True, exist_ok=True)
+    brows = {f"fap{n}": 300 for n in range(31, 37)}
+    expression = ("surprised", {**brows, "fap3": 450}, "expression")
+    masks = {"speech": {"mouth": 1.0, "tongue": 1.0, "cheeks": 0.5},
+             "expression": {"eyes": 1.0, "brows": 1.0, "cheeks": 1.0, "nose": 1.0, "expressions": 1.0, "mouth": 1 / 3}}
+    both = close_up(layered_face_scenario(tmp_path / "both.thespis",
+                                          [expression, ("speech", {"fap3": 60}, "speech")], masks),
+                    out / "speech_over_expression.png", "unlit")
+    unmasked = close_up(layered_face_scenario(tmp_path / "unmasked.thespis",
+                                              [expression, ("speech", {"fap3": 60}, "")], masks),
+                        out / "speech_unmasked.png", "unlit")
+    alone = close_up(layered_face_scenario(tmp_path / "alone.thespis", [expression], masks),
+                     out / "expression_alone.png", "unlit")
+    neutral = close_up(face_scenario(tmp_path / "neutral.thespis", {}), out / "neutral.png", "unlit")
+
+    def mean_row(pixels):
+        return sum(y for _, y in pixels) / len(pixels)
+
+    brows_lost = differing(both, unmasked)   # the unmasked speech layer lowers the brows again
+    speech_moved = differing(both, alone)    # the speech layer moves the mouth only
+    raised = differing(alone, neutral)       # the expression moves brows and mouth
+    assert len(brows_lost) > 50 and len(speech_moved) > 20 and len(raised) > 50
+    assert mean_row(brows_lost) < mean_row(speech_moved) - 40, "brows above, mouth below"
+    height = both[1]
+    assert mean_row(brows_lost) < height / 2 < mean_row(speech_moved)

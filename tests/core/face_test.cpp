@@ -2,13 +2,15 @@
 // semantics on the modelled face — open_jaw of N lowers the chin by N MNS units, closing an upper
 // lid by 1024 IRISD units meets the lower lid, each low-level FAP moves its feature point by its
 // value in its unit along its direction — the lips never pass through each other, zero FAPs give
-// the neutral mesh bit for bit, and visemes and expressions expand into their FAPs.
+// the neutral mesh bit for bit, and visemes and expressions expand into their FAPs. Face layers are
+// weighted per FAP region by face masks (scene/face_mask.h).
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -16,7 +18,9 @@
 #include "scene/default_humanoid.h"
 #include "scene/face_rig.h"
 #include "scene/face_tables.h"
+#include "scene/face_mask.h"
 #include "scene/fap.h"
+#include "scenario/scenario_runtime.h"
 
 namespace thespis::core::scene {
 namespace {
@@ -251,6 +255,129 @@ TEST(HumanoidFace, HeadFapsTurnTheSkull)
     const anim::Quat& q = anim::rotationAt(std::span<const float>(body), skull);
     EXPECT_NEAR(2 * std::asin(q.y), 0.3, 1e-5) << "head_yaw turns the head left";
     EXPECT_NEAR(q.x, 0, 1e-7);
+}
+
+// A face layer's clip: one frame of the given face channels, held for a second.
+scenario::ClipAsset faceClip(std::string name, std::vector<std::pair<std::string, float>> values)
+{
+    scenario::ClipAsset clip;
+    clip.name = std::move(name);
+    clip.frameRate = 1;
+    for (int frame = 0; frame < 2; ++frame)
+        for (const auto& [channel, value] : values) {
+            if (frame == 0)
+                clip.scalars.push_back(channel);
+            clip.frames.push_back(value);
+        }
+    return clip;
+}
+
+scenario::Layer faceLayer(std::string name, std::string clip, std::string mask)
+{
+    scenario::Layer layer;
+    layer.name = std::move(name);
+    layer.kind = scenario::LayerKind::Face;
+    scenario::ActionSpec action;
+    action.name = layer.name;
+    action.clip = std::move(clip);
+    action.mask = std::move(mask);
+    layer.actions.push_back(std::move(action));
+    return layer;
+}
+
+TEST(FaceMask, ARegionWeighsItsChannelsAndANamedChannelOverridesIt)
+{
+    const auto layout = anim::FrameLayout::mpeg4Face();
+    const auto channel = [&](std::string_view name) { return std::size_t(*findFaceChannel(name)); };
+    anim::JointMask speech = faceMaskPreset(FaceMaskPreset::Speech);
+    ASSERT_TRUE(isFaceMask(speech));
+    EXPECT_FALSE(isFaceMask(anim::JointMask::preset(anim::MaskPreset::UpperBody)));
+    std::vector<float> w = speech.resolve(*layout);
+    EXPECT_EQ(w[channel("open_jaw")], 1.0f);
+    EXPECT_EQ(w[channel("raise_b_midlip_o")], 1.0f); // outer lips: the mouth too
+    EXPECT_EQ(w[channel("viseme1")], 1.0f);          // the visemes' weights are on the mouth
+    EXPECT_EQ(w[channel("raise_tongue_tip")], 1.0f);
+    EXPECT_EQ(w[channel("lift_l_cheek")], 0.5f);
+    EXPECT_EQ(w[channel("raise_l_i_eyebrow")], 0.0f);
+    EXPECT_EQ(w[channel("close_t_l_eyelid")], 0.0f);
+    EXPECT_EQ(w[channel("joy")], 0.0f);
+
+    speech.setWeight("fap31", 0.7f); // raise_l_i_eyebrow alone
+    w = speech.resolve(*layout);
+    EXPECT_EQ(w[channel("raise_l_i_eyebrow")], 0.7f);
+    EXPECT_EQ(w[channel("raise_r_i_eyebrow")], 0.0f);
+    const std::vector<float> mirrored = mirroredFaceMask(speech).resolve(*layout);
+    EXPECT_EQ(mirrored[channel("raise_r_i_eyebrow")], 0.7f);
+    EXPECT_EQ(mirrored[channel("raise_l_i_eyebrow")], 0.0f);
+    EXPECT_EQ(mirroredFap(12), 13);  // raise_l_cornerlip ↔ raise_r_cornerlip
+    EXPECT_EQ(mirroredFap(9), 8);    // lower_t_lip_rm ↔ lower_t_lip_lm
+    EXPECT_EQ(mirroredFap(3), 3);    // open_jaw: the middle
+}
+
+// The paper's case (§5.2): a speech layer over an expression layer — the mouth speaks, the brows
+// keep the expression. Layers blend normalized by weight: on the mouth the speech's 1 against the
+// expression's ⅓ gives speech ¾ of it; on the brows the speech's 0 leaves them the expression's.
+// Without the speech mask its neutral brows would take half of them away.
+TEST(FaceMask, SpeechOnTheMouthOverAnExpressionOnTheBrows)
+{
+    scenario::Scenario s;
+    s.masks.push_back({"speech", faceMaskPreset(FaceMaskPreset::Speech), {}});
+    s.masks.push_back({"expression", faceMaskPreset(FaceMaskPreset::Expression), {}});
+    scenario::Character c;
+    c.name = "A";
+    c.clips.push_back(faceClip("frown", {{"fap3", 300}, {"fap31", -200}}));
+    c.clips.push_back(faceClip("speak", {{"fap3", 100}, {"viseme1", 1}}));
+    c.layers.push_back(faceLayer("expression", "frown", "expression"));
+    c.layers.push_back(faceLayer("speech", "speak", "speech"));
+    s.characters.push_back(c);
+
+    const auto evaluate = [](const scenario::Scenario& scenario) {
+        auto built = scenario::buildRuntime(scenario, std::filesystem::temp_directory_path());
+        EXPECT_TRUE(built.ok()) << describe(built.error());
+        std::vector<float> face(std::size_t{kFaceChannelCount}, 0.0f);
+        if (built.ok())
+            built->characters[0].face->evaluate(0.5, face);
+        return face;
+    };
+    std::vector<float> face = evaluate(s);
+    EXPECT_FLOAT_EQ(face[std::size_t(fapChannel(3))], 0.75f * 100.0f + 0.25f * 300.0f) << "speech has ¾ of the mouth";
+    EXPECT_FLOAT_EQ(face[std::size_t(fapChannel(31))], -200.0f) << "the expression keeps the brows";
+    EXPECT_FLOAT_EQ(face[std::size_t(visemeChannel(1))], 0.75f);
+
+    s.characters[0].layers[1].mute = true; // the expression alone: a third of it on the mouth
+    face = evaluate(s);
+    EXPECT_NEAR(face[std::size_t(fapChannel(3))], 100.0f, 1e-3);
+    EXPECT_FLOAT_EQ(face[std::size_t(fapChannel(31))], -200.0f);
+
+    s.characters[0].layers[1].mute = false; // unmasked, the speech layer's brows halve them
+    s.characters[0].layers[1].actions[0].mask.clear();
+    face = evaluate(s);
+    EXPECT_FLOAT_EQ(face[std::size_t(fapChannel(31))], -100.0f);
+}
+
+TEST(FaceMask, EveryChannelIsShownOnceUnderItsRegionOnTheFace)
+{
+    const std::vector<FaceMaskElement>& elements = faceMaskElements();
+    ASSERT_EQ(elements.size(), kFaceRegions.size() + std::size_t(kFaceChannelCount));
+    const auto layout = anim::FrameLayout::mpeg4Face();
+    std::set<std::string> keys;
+    for (const FaceMaskElement& element : elements) {
+        EXPECT_TRUE(keys.insert(element.key).second) << element.key;
+        if (element.parent < 0)
+            continue;
+        const int e = layout->find(element.key, anim::ElementKind::Scalar);
+        ASSERT_GE(e, 0) << element.key;
+        EXPECT_EQ(layout->group(e), elements[std::size_t(element.parent)].key);
+        // On the head: within 15 cm of the face's middle, the face's size.
+        EXPECT_NEAR(element.position.y, 1.66, 0.15) << element.label;
+        EXPECT_NEAR(element.position.x, 0.0, 0.15) << element.label;
+    }
+    const auto find = [&](std::string_view key) {
+        return *std::find_if(elements.begin(), elements.end(), [&](const FaceMaskElement& e) { return e.key == key; });
+    };
+    EXPECT_EQ(find("fap3").label, "open_jaw");
+    EXPECT_GT(find("fap31").position.y, find("fap3").position.y + 0.05) << "the brows above the jaw";
+    EXPECT_GT(find("fap31").position.x, 0.0f) << "the left brow on the character's left (+x)";
 }
 
 } // namespace
