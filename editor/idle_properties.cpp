@@ -12,13 +12,12 @@
 
 #include <limits>
 
-#include "edit/content_edits.h"
 #include "editor/document.h"
 #include "editor/qt_conversions.h"
 
 namespace thespis::editor {
 
-IdleProperties::IdleProperties(QWidget* parent) : QGroupBox(tr("Idle motion"), parent)
+IdleProperties::IdleProperties(QWidget* parent) : ClipSettingsBox(tr("Idle motion"), parent)
 {
     setObjectName(QStringLiteral("idleProperties"));
     auto* form = new QFormLayout(this);
@@ -50,15 +49,15 @@ IdleProperties::IdleProperties(QWidget* parent) : QGroupBox(tr("Idle motion"), p
     form->addRow(tr("Variations:"), m_amplitude);
 
     connect(m_seed, &QSpinBox::valueChanged, this, [this](int seed) {
-        editClip(tr("Change Idle Seed"), [&](core::scenario::IdleSynthesizer& idle) { idle.seed = std::uint64_t(seed); });
+        editClip(tr("Change Idle Seed"), [&](core::scenario::ClipAsset& clip) { clip.idle->seed = std::uint64_t(seed); });
     });
     connect(m_amplitude, &QDoubleSpinBox::valueChanged, this, [this](double amplitude) {
-        editClip(tr("Change Idle Variations"), [&](core::scenario::IdleSynthesizer& idle) { idle.amplitude = amplitude; });
+        editClip(tr("Change Idle Variations"), [&](core::scenario::ClipAsset& clip) { clip.idle->amplitude = amplitude; });
     });
     connect(m_choose, &QPushButton::clicked, this, [this] {
-        if (!m_document)
+        if (!document())
             return;
-        const QString path = QFileDialog::getOpenFileName(this, tr("Choose an Idle Motion Database"), m_document->baseDir(),
+        const QString path = QFileDialog::getOpenFileName(this, tr("Choose an Idle Motion Database"), document()->baseDir(),
                                                           tr("Idle motion databases (*.idle)"));
         if (!path.isEmpty())
             setDatabase(path);
@@ -69,20 +68,7 @@ IdleProperties::IdleProperties(QWidget* parent) : QGroupBox(tr("Idle motion"), p
 void IdleProperties::show(Document* document, int character, const std::string& clip, bool editable)
 {
     m_refreshing = true;
-    m_document = document;
-    m_character = -1;
-    m_clip = -1;
-    const core::scenario::ClipAsset* asset = nullptr;
-    if (document && character >= 0 && std::size_t(character) < document->scenario().characters.size()) {
-        const auto& clips = document->scenario().characters[std::size_t(character)].clips;
-        for (std::size_t i = 0; i < clips.size(); ++i)
-            if (clips[i].name == clip && clips[i].idle) {
-                asset = &clips[i];
-                m_character = character;
-                m_clip = int(i);
-            }
-    }
-    setVisible(asset != nullptr);
+    const auto* asset = find(document, character, clip, [](const core::scenario::ClipAsset& c) { return c.idle.has_value(); });
     if (asset) {
         const auto& idle = *asset->idle;
         m_database->setText(QFileInfo(fromUtf8(idle.database)).fileName());
@@ -99,22 +85,11 @@ void IdleProperties::show(Document* document, int character, const std::string& 
 
 void IdleProperties::setDatabase(const QString& path)
 {
-    if (!m_document)
+    if (!document())
         return;
     // Named as the scenario names its files: relative to its folder.
-    const std::string database = QDir::fromNativeSeparators(QDir(m_document->baseDir()).relativeFilePath(path)).toStdString();
-    editClip(tr("Change Idle Database"), [&](core::scenario::IdleSynthesizer& idle) { idle.database = database; });
-}
-
-template <typename Change> void IdleProperties::editClip(const QString& text, Change change)
-{
-    if (m_refreshing || !m_document || m_clip < 0)
-        return;
-    core::scenario::ClipAsset clip = m_document->scenario().characters[std::size_t(m_character)].clips[std::size_t(m_clip)];
-    change(*clip.idle);
-    const auto done = m_document->edit(core::edit::replaceClip(m_document->scenario(), {m_character, m_clip}, std::move(clip)), text);
-    if (!done)
-        emit problem(tr("%1: %2").arg(text, fromUtf8(done.error().message)));
+    const std::string database = QDir::fromNativeSeparators(QDir(document()->baseDir()).relativeFilePath(path)).toStdString();
+    editClip(tr("Change Idle Database"), [&](core::scenario::ClipAsset& clip) { clip.idle->database = database; });
 }
 
 } // namespace thespis::editor

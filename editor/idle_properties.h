@@ -1,10 +1,10 @@
 #pragma once
 // IdleProperties: on the Properties page of an action that plays idle motion (paper §4.3), the
 // idle clip's own settings — the motion database it plays, the seed of the character's motion
-// program, the amplitude of the small posture variations. The clip is the character's, so every
-// action playing it changes with it; each change is one undoable command (edit::replaceClip).
+// program, the amplitude of the small posture variations (ClipSettingsBox: shared by the actions
+// playing the clip, one undoable command per change).
 
-#include <QGroupBox>
+#include "editor/clip_settings_box.h"
 
 class QDoubleSpinBox;
 class QLabel;
@@ -15,7 +15,7 @@ namespace thespis::editor {
 
 class Document;
 
-class IdleProperties : public QGroupBox {
+class IdleProperties : public ClipSettingsBox {
     Q_OBJECT
 public:
     explicit IdleProperties(QWidget* parent = nullptr);
@@ -29,17 +29,7 @@ public:
     QSpinBox* seedEdit() const { return m_seed; }
     QDoubleSpinBox* amplitudeEdit() const { return m_amplitude; }
 
-signals:
-    void problem(const QString& message);
-
 private:
-    // Replaces the clip with `change` applied, as one command named `text`.
-    template <typename Change> void editClip(const QString& text, Change change);
-
-    Document* m_document = nullptr;
-    int m_character = -1;
-    int m_clip = -1;
-    bool m_refreshing = false;
     QLabel* m_database = nullptr;
     QPushButton* m_choose = nullptr;
     QSpinBox* m_seed = nullptr;

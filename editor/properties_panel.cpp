@@ -15,10 +15,12 @@
 #include <cmath>
 
 #include "edit/document_edits.h"
+#include "editor/blink_properties.h"
 #include "editor/character_properties.h"
 #include "editor/document.h"
 #include "editor/idle_properties.h"
 #include "editor/qt_conversions.h"
+#include "scene/face_mask.h"
 
 namespace thespis::editor {
 
@@ -144,12 +146,16 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent)
     form->addRow(tr("Plays:"), m_repeat);
     form->addRow(QString(), m_rootMotion);
     form->addRow(tr("Blend mode:"), m_mode);
-    form->addRow(tr("Body part:"), m_mask);
+    m_maskLabel = new QLabel(tr("Body part:"), actionPage);
+    form->addRow(m_maskLabel, m_mask);
     form->addRow(QString(), m_outsideDomain);
     form->addRow(tr("Modifiers:"), m_modifiers);
     m_idle = new IdleProperties(actionPage);
     form->addRow(m_idle);
     connect(m_idle, &IdleProperties::problem, this, &PropertiesPanel::problem);
+    m_blinks = new BlinkProperties(actionPage);
+    form->addRow(m_blinks);
+    connect(m_blinks, &BlinkProperties::problem, this, &PropertiesPanel::problem);
     m_pages->addWidget(actionPage);
     m_characterPage = new CharacterProperties(m_pages);
     m_pages->addWidget(m_characterPage);
@@ -323,10 +329,14 @@ void PropertiesPanel::showAction()
     m_start->setValue(core::ticksToSeconds(spec.start));
     m_mode->setCurrentIndex(m_mode->findData(int(spec.mode)));
 
+    // A face layer's actions take face masks (its regions), a body layer's the others.
+    const bool face = layer.kind == core::scenario::LayerKind::Face;
+    m_maskLabel->setText(face ? tr("Face regions:") : tr("Body part:"));
     m_mask->clear();
-    m_mask->addItem(tr("Whole body"), QString());
+    m_mask->addItem(face ? tr("Whole face") : tr("Whole body"), QString());
     for (const auto& mask : scenario.masks)
-        m_mask->addItem(fromUtf8(mask.name), fromUtf8(mask.name));
+        if (core::scene::isFaceMask(mask.mask) == face || mask.name == spec.mask)
+            m_mask->addItem(fromUtf8(mask.name), fromUtf8(mask.name));
     m_mask->setCurrentIndex(std::max(0, m_mask->findData(fromUtf8(spec.mask))));
     m_outsideDomain->setChecked(spec.renderOutsideDomain);
     m_placement->setCurrentIndex(std::max(0, m_placement->findData(int(spec.placement))));
@@ -358,6 +368,7 @@ void PropertiesPanel::showAction()
         modifiers << describeModifier(modifier);
     m_modifiers->setText(modifiers.isEmpty() ? tr("none") : modifiers.join(QStringLiteral(", ")));
     m_idle->show(m_document, m_action->character, spec.clip, editable);
+    m_blinks->show(m_document, m_action->character, spec.clip, editable);
 
     for (QWidget* field : {static_cast<QWidget*>(m_name), static_cast<QWidget*>(m_clip), static_cast<QWidget*>(m_start),
                            static_cast<QWidget*>(m_mode), static_cast<QWidget*>(m_mask), static_cast<QWidget*>(m_outsideDomain),

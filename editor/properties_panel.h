@@ -24,6 +24,7 @@ namespace thespis::editor {
 
 class CharacterProperties;
 class Document;
+class BlinkProperties;
 class IdleProperties;
 
 class PropertiesPanel : public QWidget {
@@ -40,6 +41,8 @@ public:
     CharacterProperties* characterPage() const { return m_characterPage; }
     /// The idle clip's settings, shown for an action playing idle motion.
     IdleProperties* idleProperties() const { return m_idle; }
+    /// The blink clip's settings, shown for an action playing blinks.
+    BlinkProperties* blinkProperties() const { return m_blinks; }
 
     QLineEdit* nameEdit() const { return m_name; }
     QComboBox* clipChoice() const { return m_clip; }
@@ -86,6 +89,8 @@ private:
     QLabel* m_fades = nullptr;
     QLabel* m_modifiers = nullptr;
     IdleProperties* m_idle = nullptr;
+    BlinkProperties* m_blinks = nullptr;
+    QLabel* m_maskLabel = nullptr;
 };
 
 } // namespace thespis::editor

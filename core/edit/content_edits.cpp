@@ -292,6 +292,8 @@ Result<Edit> replaceClip(const Scenario& scenario, const CharacterItemPath& path
     const ClipAsset& before = c.clips[std::size_t(path.index)];
     if (value.name.empty())
         return invalid("A clip needs a name.");
+    if (const auto wrong = value.blinks ? value.blinks->problem() : std::nullopt)
+        return invalid("Clip " + inQuotes(value.name) + ", blinks, " + wrong->field + ": " + wrong->message + ".");
     for (std::size_t i = 0; i < c.clips.size(); ++i)
         if (int(i) != path.index && c.clips[i].name == value.name)
             return invalid(inQuotes(c.name) + " already has a clip named " + inQuotes(value.name) + ".");

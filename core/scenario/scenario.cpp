@@ -56,6 +56,21 @@ const NamedMask* Scenario::findMask(const std::string& maskName) const
     return nullptr;
 }
 
+std::optional<BlinkClip::Problem> BlinkClip::problem() const
+{
+    if (!(rate >= 1 && rate <= 120))
+        return Problem{"rate", "must be 1 to 120 blinks a minute, found " + std::to_string(rate)};
+    if (!(closeSeconds > 0))
+        return Problem{"closeSeconds", "must be positive, found " + std::to_string(closeSeconds)};
+    if (!(shutSeconds >= 0))
+        return Problem{"shutSeconds", "must not be negative, found " + std::to_string(shutSeconds)};
+    if (!(openSeconds > 0))
+        return Problem{"openSeconds", "must be positive, found " + std::to_string(openSeconds)};
+    if (closeSeconds + shutSeconds + openSeconds >= 0.4)
+        return Problem{"openSeconds", "a whole blink must take less than 0.4 s (closing, shut and opening)"};
+    return std::nullopt;
+}
+
 const Gesture* Character::findGesture(const std::string& gestureName) const
 {
     for (const Gesture& gesture : gestures)

@@ -43,6 +43,14 @@ struct BlinkClip {
     double closeSeconds = 0.10, shutSeconds = 0.03, openSeconds = 0.25;
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const BlinkClip&) const = default;
+
+    struct Problem {
+        std::string field; ///< "rate", "openSeconds" …
+        std::string message;
+    };
+    /// What makes these blinks unplayable: a rate outside 1 … 120 a minute, times not positive
+    /// (shut may be 0), a blink of 0.4 s or more.
+    std::optional<Problem> problem() const;
 };
 
 /// A clip a character can play: motion capture in a file beside the scenario (BVH, or an

@@ -200,14 +200,12 @@ ClipAsset readClip(const json& value, const std::string& path)
         ObjectReader s(*blinks, r.fieldPath("blinks"), "");
         BlinkClip b;
         b.rate = s.number("rate", false, 17, Range::Positive);
-        if (b.rate < 1 || b.rate > 120)
-            fail(s.fieldPath("rate"), "must be 1 to 120 blinks a minute, found " + std::to_string(b.rate));
         b.seed = std::uint64_t(s.integer("seed", false, 1, 0, std::int64_t(1) << 53));
         b.closeSeconds = s.number("closeSeconds", false, 0.10, Range::Positive);
         b.shutSeconds = s.number("shutSeconds", false, 0.03, Range::NonNegative);
         b.openSeconds = s.number("openSeconds", false, 0.25, Range::Positive);
-        if (b.closeSeconds + b.shutSeconds + b.openSeconds >= 0.4)
-            fail(s.fieldPath("openSeconds"), "a whole blink must take less than 0.4 s (closing, shut and opening)");
+        if (const auto wrong = b.problem())
+            fail(s.fieldPath(wrong->field), wrong->message);
         b.extra = s.extra();
         clip.blinks = std::move(b);
     } else if (const json* idle = r.find("idle")) {
