@@ -30,6 +30,7 @@
 #include "editor/bake_panel.h"
 #include "editor/clip_library_panel.h"
 #include "editor/curve_panel.h"
+#include "editor/face_pose_panel.h"
 #include "editor/gesticon_panel.h"
 #include "editor/joint_mask_panel.h"
 #include "editor/messages_panel.h"
@@ -152,6 +153,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     m_session->addPanel(m_library);
     m_session->addPanel(m_properties);
     m_session->addPanel(m_gesticon);
+    m_session->addPanel(m_facePose);
     m_session->addPanel(m_segments);
     m_session->addPanel(m_bake);
     m_session->addPanel(m_postureChart);

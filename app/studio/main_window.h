@@ -40,6 +40,7 @@ class ClipLibraryPanel;
 class CurvePanel;
 class BakePanel;
 class PostureChartPanel;
+class FacePosePanel;
 class GesticonPanel;
 class SegmentPanel;
 class JointMaskPanel;
@@ -88,6 +89,7 @@ public:
     editor::ClipLibraryPanel* clipLibrary() const { return m_library; }
     editor::PropertiesPanel* properties() const { return m_properties; }
     editor::GesticonPanel* gesticon() const { return m_gesticon; }
+    editor::FacePosePanel* facePose() const { return m_facePose; }
     editor::SegmentPanel* segments() const { return m_segments; }
     editor::BakePanel* bakePanel() const { return m_bake; }
     editor::PostureChartPanel* postureChart() const { return m_postureChart; }
@@ -170,6 +172,7 @@ private:
     editor::ClipLibraryPanel* m_library = nullptr;
     editor::PropertiesPanel* m_properties = nullptr;
     editor::GesticonPanel* m_gesticon = nullptr;
+    editor::FacePosePanel* m_facePose = nullptr;
     editor::SegmentPanel* m_segments = nullptr;
     editor::BakePanel* m_bake = nullptr;
     editor::PostureChartPanel* m_postureChart = nullptr;

@@ -22,6 +22,7 @@
 #include "editor/bake_panel.h"
 #include "editor/clip_library_panel.h"
 #include "editor/curve_panel.h"
+#include "editor/face_pose_panel.h"
 #include "editor/gesticon_panel.h"
 #include "editor/joint_mask_panel.h"
 #include "editor/messages_panel.h"
@@ -216,6 +217,12 @@ void MainWindow::createEditorDocks()
     m_properties = new editor::PropertiesPanel(this);
     m_gesticon = new editor::GesticonPanel(this);
     m_gesticon->setSession(m_session);
+    m_facePose = new editor::FacePosePanel(this);
+    m_facePose->setSession(m_session);
+    connect(m_facePose, &editor::FacePosePanel::closeUpRequested, this, [this](int character) {
+        if (m_preview && character >= 0)
+            m_preview->closeUp(character);
+    });
     m_segments = new editor::SegmentPanel(this);
     m_bake = new editor::BakePanel(this);
     m_postureChart = new editor::PostureChartPanel(this);
@@ -240,12 +247,14 @@ void MainWindow::createEditorDocks()
     tabifyDockWidget(postureDock, arDock);
     timelineDock->raise();
     QDockWidget* propertiesDock = dock(tr("Properties"), QStringLiteral("propertiesDock"), m_properties, Qt::RightDockWidgetArea);
-    QDockWidget* maskDock = dock(tr("Joint Mask"), QStringLiteral("maskDock"), m_masks, Qt::RightDockWidgetArea);
+    QDockWidget* maskDock = dock(tr("Masks"), QStringLiteral("maskDock"), m_masks, Qt::RightDockWidgetArea);
     tabifyDockWidget(propertiesDock, maskDock);
     QDockWidget* segmentsDock = dock(tr("Segments"), QStringLiteral("segmentsDock"), m_segments, Qt::RightDockWidgetArea);
     tabifyDockWidget(maskDock, segmentsDock);
     QDockWidget* bakeDock = dock(tr("Bake"), QStringLiteral("bakeDock"), m_bake, Qt::RightDockWidgetArea);
     tabifyDockWidget(segmentsDock, bakeDock);
+    QDockWidget* faceDock = dock(tr("Face Pose"), QStringLiteral("facePoseDock"), m_facePose, Qt::RightDockWidgetArea);
+    tabifyDockWidget(bakeDock, faceDock);
     propertiesDock->raise();
     QDockWidget* libraryDock = dock(tr("Clip Library"), QStringLiteral("clipLibraryDock"), m_library, Qt::LeftDockWidgetArea);
     tabifyDockWidget(m_outlineDock, libraryDock);

@@ -217,7 +217,7 @@ CameraView ScenarioScene::closeUpView(const Head& head, double azimuthDegrees, d
     constexpr double Degrees = 180 / std::numbers::pi;
     const double heading = std::atan2(head.facing.x, head.facing.z) * Degrees;
     const double pitch = std::asin(std::clamp(head.facing.y, -1.0, 1.0)) * Degrees;
-    return frameBounds(head.bounds, heading + azimuthDegrees, std::max(-5.0, elevationDegrees + pitch), aspect,
+    return frameBounds(head.bounds, heading + azimuthDegrees, std::max(-20.0, elevationDegrees + pitch), aspect,
                        fovYDegrees);
 }
 

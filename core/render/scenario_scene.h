@@ -111,8 +111,8 @@ public:
     /// Errors: no character of that name (the names there are listed), or one without a head.
     Result<Head> head(std::string_view character) const;
     /// A close-up of a head: `azimuthDegrees` and `elevationDegrees` count from where the face
-    /// looks, the camera kept from going more than a little below the horizon (a bowed head is
-    /// seen from the front, not from under the shoulders).
+    /// looks, the camera kept from going more than 20° below the horizon (a bowed head is seen
+    /// from the front, not from under the shoulders).
     static CameraView closeUpView(const Head& head, double azimuthDegrees, double elevationDegrees, double aspect,
                                   double fovYDegrees = 25);
 

@@ -1,8 +1,8 @@
 // The virtual human over tracked video (issue 16 §4): the world registered on the target (a point
 // of the world lands on the pixel the real camera sees it at), the character standing on the
 // target at the size the scenario says, phantom occluders hiding what is behind them, the shadow
-// catcher darkening the real ground at the feet, and the real ChArUco photos with a character
-// standing on the board. Pictures are left in test-artifacts/ar/ for people to look at.
+// catcher darkening the real ground at the feet, the real ChArUco photos with a character
+// standing on the board, and the character's face moving over the video. Pictures are left in test-artifacts/ar/ for people to look at.
 
 #include <gtest/gtest.h>
 
@@ -266,4 +266,59 @@ TEST(ArComposition, ACharacterStandsOnTheRealChArUcoBoard)
     EXPECT_LE(centre[0], body.right + 2);
     EXPECT_GE(centre[1], body.top - 2);
     EXPECT_LE(centre[1], body.bottom + 2);
+}
+
+// Faces move in AR too (issue 31 §4): a face layer opening the jaw in surprise changes the
+// composed picture on the head, and nowhere else, against the same frame with the layer muted.
+TEST(ArComposition, TheFaceMovesOverTheVideo)
+{
+    const CameraIntrinsics camera = camera640();
+    scenario::Scenario s = oneCharacter(0.3);
+    scenario::ClipAsset surprise;
+    surprise.name = "surprise";
+    surprise.frameRate = 1;
+    surprise.scalars = {"open_jaw", "expression6"};
+    surprise.frames = {600, 1, 600, 1};
+    scenario::Layer face;
+    face.name = "face";
+    face.kind = scenario::LayerKind::Face;
+    face.actions.push_back({});
+    face.actions.back().name = "surprise";
+    face.actions.back().clip = "surprise";
+    s.characters[0].clips.push_back(surprise);
+    s.characters[0].layers.push_back(face);
+    // The camera 0.5 m above the board and 1 m in front of the character (which faces the
+    // board's −y), looking along +y a little down: the body about 290 pixels tall.
+    const TargetPose front{{std::numbers::pi / 2 + 0.15, 0, 0}, {-0.095, 0.355, 0.994}};
+    VideoFrame frames[2] = {greyFrame(camera), greyFrame(camera)};
+    RgbaImage layers[2];
+    for (int muted = 0; muted < 2; ++muted) {
+        s.characters[0].layers[0].mute = muted == 1;
+        auto ar = compositor(s, camera, gridGeometry());
+        if (!ar)
+            FAIL() << "no compositor (the failure above says why)";
+        ar->scene().playAt(secondsToTicks(0.5));
+        ASSERT_TRUE(ar->compose(frames[muted], front));
+        layers[muted] = ar->layer();
+    }
+    (void)writePicture(picture("face_surprised.png"), frames[0]);
+    (void)writePicture(picture("face_muted.png"), frames[1]);
+    const Coverage body = coverage(layers[1]);
+    ASSERT_GT(body.pixels, 2000) << "the character is in view";
+    int changed = 0, belowHead = 0;
+    const int neck = body.top + (body.bottom - body.top) / 7; // a head is about a seventh of a body
+    for (int y = 0; y < camera.height; ++y)
+        for (int x = 0; x < camera.width; ++x) {
+            const std::size_t i = 3 * (std::size_t(y) * std::size_t(camera.width) + std::size_t(x));
+            int d = 0;
+            for (int c = 0; c < 3; ++c)
+                d = std::max(d, std::abs(int(frames[0].bgr[i + std::size_t(c)]) - int(frames[1].bgr[i + std::size_t(c)])));
+            if (d > 24) {
+                ++changed;
+                belowHead += y > neck;
+            }
+        }
+    std::cout << changed << " pixels changed, " << belowHead << " below the head (rows " << body.top << "–" << neck << ")\n";
+    EXPECT_GT(changed, 30) << "the open jaw shows";
+    EXPECT_EQ(belowHead, 0) << "only the face changes";
 }
