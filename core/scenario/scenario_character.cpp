@@ -54,7 +54,8 @@ Result<std::optional<scene::FaceMapping>> readCharacterFaceMapping(const Scenari
         return makeError(text.error().code, field + ": " + text.error().message, text.error().detail);
     auto mapping = scene::parseFaceMapping(*text);
     if (!mapping)
-        return makeError(mapping.error().code, field + ": " + assets.where(spec.faceMapping) + ": " + lowerFirst(mapping.error().message),
+        return makeError(mapping.error().code,
+                         field + ": " + assets.where(spec.faceMapping) + ": " + lowerFirst(mapping.error().message),
                          mapping.error().detail);
     return std::optional<scene::FaceMapping>(std::move(mapping).value());
 }

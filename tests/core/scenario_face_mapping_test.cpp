@@ -46,16 +46,6 @@ fs::path freshFolder()
     return folder;
 }
 
-Scenario loadOrFail(const fs::path& path)
-{
-    auto scenario = loadScenario(path);
-    if (!scenario) {
-        ADD_FAILURE() << describe(scenario.error());
-        return {};
-    }
-    return std::move(scenario).value();
-}
-
 // RobotExpressive (by its absolute path: it lives in ../shared/data) with a face layer.
 Scenario robotScenario(const std::string& faceMapping)
 {
@@ -126,15 +116,16 @@ TEST(ScenarioFaceMapping, Version7UpgradesToVersion8WithoutATable)
 {
     // The version 8 golden file is the version 7 one with a model and its table on "Inline":
     // taking them away gives exactly what the upgraded version 7 file reads as.
-    Scenario v8 = loadOrFail(thespis::test::testData("formats/v8/scenario.thespis"));
-    ASSERT_EQ(v8.characters.size(), 2u);
-    EXPECT_EQ(v8.characters[1].faceMapping, "models/robot_face.json");
-    v8.characters[1].model.clear();
-    v8.characters[1].faceMapping.clear();
-    Scenario v7 = loadOrFail(thespis::test::testData("formats/v7/scenario.thespis"));
-    v7.name = v8.name;
-    EXPECT_EQ(v7, v8);
-    json upgraded = json::parse(serializeScenario(v7));
+    auto v8 = loadScenario(thespis::test::testData("formats/v8/scenario.thespis"));
+    auto v7 = loadScenario(thespis::test::testData("formats/v7/scenario.thespis"));
+    ASSERT_TRUE(v8 && v7) << describe(v8 ? v7.error() : v8.error());
+    ASSERT_EQ(v8->characters.size(), 2u);
+    EXPECT_EQ(v8->characters[1].faceMapping, "models/robot_face.json");
+    v8->characters[1].model.clear();
+    v8->characters[1].faceMapping.clear();
+    v7->name = v8->name;
+    EXPECT_EQ(*v7, *v8);
+    json upgraded = json::parse(serializeScenario(*v7));
     EXPECT_EQ(upgraded["version"], 8);
     EXPECT_EQ(upgraded["schema"], "Scenario.8");
     EXPECT_EQ(upgraded["characters"][0]["schema"], "Character.5");
