@@ -198,7 +198,10 @@ void CharacterProperties::editFaceMapping()
     }
     if (!dialog.saveFile(file))
         return;
-    setFaceMapping(file, tr("Edit Face Mapping"));
+    if (!c.faceMapping.empty() && file == fromFsPath(assets.path(c.faceMapping)))
+        m_document->fileRewritten(); // the same file, new contents: the views load it again
+    else
+        setFaceMapping(file, tr("Edit Face Mapping"));
 }
 
 void CharacterProperties::push(const QString& text, const auto& made)

@@ -3,7 +3,8 @@
 // opens the Face Mapping dialog on the table recognised from the model's names, a coefficient
 // edited and a target the model lacks named under the table; OK asks where to save (the character
 // has no table yet), writes the file and sets the character's table in one undo step, which
-// undoes back to the recognised table. Choose… picks a file, Automatic clears it, each one step.
+// undoes back to the recognised table; edited again, OK saves over the same file and tells the
+// views without an undo step. Choose… picks a file, Automatic clears it, each one step.
 // The dialog's screenshot is left in <build>/screenshots/face_mapping_dialog.png.
 
 #include <QApplication>
@@ -13,6 +14,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -170,7 +172,11 @@ void FaceMappingDialogTest::editedTableIsSavedAndSetInOneUndoStep()
         QVERIFY(dialog->missingLabel()->text().contains(QStringLiteral("Every morph target")));
         dialog->accept();
     });
+    QSignalSpy edited(m_document.get(), &editor::Document::edited);
+    const int before = m_document->undoStack()->count();
     m_page->editFaceMappingButton()->click();
+    QCOMPARE(edited.count(), 1); // the views read the table anew
+    QCOMPARE(m_document->undoStack()->count(), before); // nothing in the document to undo
     table = core::scene::loadFaceMapping(saved.toStdString());
     QVERIFY(table);
     QVERIFY(std::none_of(table->drives.begin(), table->drives.end(),
