@@ -190,7 +190,7 @@ void ArPreviewPanel::onStudioEdited(bool stageReplaced)
 {
     // New schedules play on the same stage at once; other bodies, light or cast need a new scene:
     // the preview starts again over its source — unless it records, which a restart would end.
-    if (!m_session || !m_document || (!stageReplaced && SceneSources::of(m_document->scenario()) == m_sources))
+    if (!m_session || !m_document || (!stageReplaced && SceneSources::of(m_document->scenario(), m_document->assets()) == m_sources))
         return;
     if (isRecording()) {
         stop();
@@ -280,7 +280,7 @@ bool ArPreviewPanel::start()
     if (playing) {
         settings.stage = m_studio->stage();
         settings.poses = m_studio->mailbox();
-        m_sources = SceneSources::of(m_document->scenario());
+        m_sources = SceneSources::of(m_document->scenario(), m_document->assets());
     }
     auto session = core::render::ArSession::start(std::move(source).value(), playing ? m_document->scenario() : nothing,
                                                   assets, settings);

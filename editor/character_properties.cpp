@@ -13,7 +13,11 @@
 
 #include "edit/content_edits.h"
 #include "editor/document.h"
+#include "editor/face_mapping_dialog.h"
 #include "editor/qt_conversions.h"
+#include "scenario/scenario_character.h"
+#include "scene/face_naming.h"
+#include "scene/gltf_character.h"
 
 namespace thespis::editor {
 
@@ -53,16 +57,37 @@ CharacterProperties::CharacterProperties(QWidget* parent) : QWidget(parent)
     m_heading->setToolTip(tr("Which way the character faces: 0° looks along +Z, 90° along +X"));
     m_contents = new QLabel(this);
     m_contents->setWordWrap(true);
+    m_faceMapping = new QLabel(this);
+    m_faceMapping->setObjectName(QStringLiteral("characterFaceMapping"));
+    m_faceMapping->setWordWrap(true);
+    m_chooseFaceMapping = new QPushButton(tr("Choose…"), this);
+    m_chooseFaceMapping->setObjectName(QStringLiteral("chooseFaceMapping"));
+    m_chooseFaceMapping->setToolTip(tr("Use a face mapping table file (thespis-cli face-mapping --save-mapping writes one)"));
+    m_automaticFace = new QPushButton(tr("Automatic"), this);
+    m_automaticFace->setObjectName(QStringLiteral("automaticFaceMapping"));
+    m_automaticFace->setToolTip(tr("Drive the face by the table recognised from the model's names"));
+    m_editFaceMapping = new QPushButton(tr("Edit…"), this);
+    m_editFaceMapping->setObjectName(QStringLiteral("editFaceMapping"));
 
     auto* bodyButtons = new QHBoxLayout;
     bodyButtons->addWidget(m_chooseModel);
     bodyButtons->addWidget(m_humanoid);
     bodyButtons->addStretch(1);
+    m_faceButtons = new QWidget(this);
+    auto* faceButtons = new QHBoxLayout(m_faceButtons);
+    faceButtons->setContentsMargins(0, 0, 0, 0);
+    faceButtons->addWidget(m_chooseFaceMapping);
+    faceButtons->addWidget(m_automaticFace);
+    faceButtons->addWidget(m_editFaceMapping);
+    faceButtons->addStretch(1);
     auto* form = new QFormLayout(this);
+    m_form = form;
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     form->addRow(tr("Character:"), m_name);
     form->addRow(tr("Body:"), m_body);
     form->addRow(QString(), bodyButtons);
+    form->addRow(tr("Face mapping:"), m_faceMapping);
+    form->addRow(QString(), m_faceButtons);
     form->addRow(tr("Motion plays on:"), m_skeleton);
     form->addRow(tr("Stands at:"), position);
     form->addRow(tr("Faces:"), m_heading);
@@ -95,6 +120,15 @@ CharacterProperties::CharacterProperties(QWidget* parent) : QWidget(parent)
         if (!path.isEmpty())
             setModel(path);
     });
+    connect(m_chooseFaceMapping, &QPushButton::clicked, this, [this] {
+        if (!m_document)
+            return;
+        const QString path = chooseFaceMappingFile(this, tr("Choose a Face Mapping Table"), m_document->baseDir(), false);
+        if (!path.isEmpty())
+            setFaceMappingFile(path);
+    });
+    connect(m_automaticFace, &QPushButton::clicked, this, [this] { setFaceMappingFile(QString()); });
+    connect(m_editFaceMapping, &QPushButton::clicked, this, &CharacterProperties::editFaceMapping);
     for (QDoubleSpinBox* box : {m_position[0], m_position[1], m_position[2], m_heading})
         connect(box, &QDoubleSpinBox::valueChanged, this, &CharacterProperties::onPlacementEdited);
 }
@@ -112,6 +146,62 @@ void CharacterProperties::setModel(const QString& path)
         return;
     const QString relative = QDir::fromNativeSeparators(QDir(m_document->baseDir()).relativeFilePath(path));
     push(tr("Change Model"), core::edit::setCharacterBody(m_document->scenario(), m_character, relative.toStdString(), "model"));
+}
+
+void CharacterProperties::setFaceMappingFile(const QString& path)
+{
+    setFaceMapping(path, path.isEmpty() ? tr("Use the Recognised Face Mapping") : tr("Choose Face Mapping"));
+}
+
+void CharacterProperties::setFaceMapping(const QString& path, const QString& text)
+{
+    if (!m_document || m_character < 0)
+        return;
+    const QString relative =
+        path.isEmpty() ? QString() : QDir::fromNativeSeparators(QDir(m_document->baseDir()).relativeFilePath(path));
+    push(text, core::edit::setCharacterFaceMapping(m_document->scenario(), m_character, relative.toStdString()));
+}
+
+void CharacterProperties::editFaceMapping()
+{
+    if (!m_document || m_character < 0)
+        return;
+    const auto& c = m_document->scenario().characters[std::size_t(m_character)];
+    if (c.model.empty())
+        return;
+    const core::scenario::Assets& assets = m_document->assets();
+    // The model's own names (its targets and joints) and its recognised table, without textures.
+    auto model = core::scene::loadGltfCharacter(assets.path(c.model), {.loadTextures = false});
+    if (!model) {
+        emit problem(tr("Edit Face Mapping: %1").arg(fromUtf8(model.error().message)));
+        return;
+    }
+    model->name = c.name;
+    core::scene::FaceMapping table = core::scene::recogniseFaceMapping(*model);
+    if (!c.faceMapping.empty()) {
+        auto own = core::scenario::readCharacterFaceMapping(m_document->scenario(), std::size_t(m_character), assets);
+        if (own && *own)
+            table = std::move(**own);
+        else if (!own) // edited from the recognised table, as the character plays now
+            emit problem(tr("Edit Face Mapping: %1").arg(fromUtf8(own.error().message)));
+    }
+    FaceMappingDialog dialog(*model, table, m_document->baseDir(), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    QString file = c.faceMapping.empty() ? QString() : fromFsPath(assets.path(c.faceMapping));
+    if (file.isEmpty()) {
+        const QString suggested = QDir(m_document->baseDir())
+                                      .filePath(QFileInfo(fromUtf8(c.model)).completeBaseName() + QStringLiteral("_face.json"));
+        file = chooseFaceMappingFile(this, tr("Save the Face Mapping Table"), suggested, true);
+        if (file.isEmpty())
+            return;
+    }
+    if (!dialog.saveFile(file))
+        return;
+    if (!c.faceMapping.empty() && file == fromFsPath(assets.path(c.faceMapping)))
+        m_document->fileRewritten(); // the same file, new contents: the views load it again
+    else
+        setFaceMapping(file, tr("Edit Face Mapping"));
 }
 
 void CharacterProperties::push(const QString& text, const auto& made)
@@ -143,6 +233,12 @@ void CharacterProperties::refresh()
     m_name->setText(fromUtf8(c.name));
     m_body->setText(c.model.empty() ? tr("The built-in humanoid") : QDir::toNativeSeparators(fromUtf8(c.model)));
     m_humanoid->setEnabled(!c.model.empty());
+    // The built-in humanoid has its own face: only a glTF model follows a table.
+    m_form->setRowVisible(m_faceMapping, !c.model.empty());
+    m_form->setRowVisible(m_faceButtons, !c.model.empty());
+    m_faceMapping->setText(c.faceMapping.empty() ? tr("Recognised from the model's names")
+                                                 : QDir::toNativeSeparators(fromUtf8(c.faceMapping)));
+    m_automaticFace->setEnabled(!c.faceMapping.empty());
     m_skeleton->clear();
     m_skeleton->addItem(tr("H-Anim LOA 1 (18 joints)"), QStringLiteral("hanim-loa1"));
     m_skeleton->addItem(tr("H-Anim, the paper's 25 joints"), QStringLiteral("hanim-25"));

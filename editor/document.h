@@ -101,6 +101,10 @@ public:
     /// files) and is clean. Errors name the file.
     core::Result<void> saveAs(const QString& path);
     core::Result<void> save() { return saveAs(m_filePath); }
+    /// A file the scenario names was written again under the same name (a face mapping table
+    /// saved from the studio): emits edited() with an empty edit, so that views read it anew.
+    /// Nothing to undo: the document itself is unchanged.
+    void fileRewritten() { emit edited(core::edit::Edit()); }
     /// Marks the current state as saved (or, false, as changed: a recovered document).
     void setClean(bool clean);
     /// The path a recovered document came from (it keeps its original file path).

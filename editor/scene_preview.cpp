@@ -67,7 +67,7 @@ void ScenePreview::build(bool frameCamera)
         return;
     }
     m_scene = std::move(scene).value();
-    m_sources = SceneSources::of(document->scenario());
+    m_sources = SceneSources::of(document->scenario(), document->assets());
     projectLight(*document);
     m_scene->scene().setShading(m_shading);
     m_scene->scene().setGroundVisible(m_groundVisible);
@@ -111,7 +111,7 @@ void ScenePreview::onEdited(bool stageReplaced)
     // Same bodies and stage: only the schedules changed, and the scene draws the stage as it is
     // (the session's next tick shows the edit).
     const Document* document = m_session->document();
-    const SceneSources next = SceneSources::of(document->scenario());
+    const SceneSources next = SceneSources::of(document->scenario(), document->assets());
     if (m_scene && !stageReplaced && next == m_sources && m_scene->followStage())
         return;
     // Other bodies (a bake, tags, a model): rebuilt where the user is looking; characters come

@@ -1105,6 +1105,58 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
             <numerusform>%n Aktionen</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Wählen…</translation>
+    </message>
+    <message>
+        <source>Use a face mapping table file (thespis-cli face-mapping --save-mapping writes one)</source>
+        <translation>Eine Gesichtszuordnungstabelle aus einer Datei verwenden (thespis-cli face-mapping --save-mapping schreibt eine)</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatisch</translation>
+    </message>
+    <message>
+        <source>Drive the face by the table recognised from the model&apos;s names</source>
+        <translation>Das Gesicht mit der Tabelle steuern, die aus den Namen des Modells erkannt wird</translation>
+    </message>
+    <message>
+        <source>Edit…</source>
+        <translation>Bearbeiten…</translation>
+    </message>
+    <message>
+        <source>Face mapping:</source>
+        <translation>Gesichtszuordnung:</translation>
+    </message>
+    <message>
+        <source>Choose a Face Mapping Table</source>
+        <translation>Gesichtszuordnungstabelle wählen</translation>
+    </message>
+    <message>
+        <source>Use the Recognised Face Mapping</source>
+        <translation>Erkannte Gesichtszuordnung verwenden</translation>
+    </message>
+    <message>
+        <source>Choose Face Mapping</source>
+        <translation>Gesichtszuordnung wählen</translation>
+    </message>
+    <message>
+        <source>Edit Face Mapping: %1</source>
+        <translation>Gesichtszuordnung bearbeiten: %1</translation>
+    </message>
+    <message>
+        <source>Save the Face Mapping Table</source>
+        <translation>Gesichtszuordnungstabelle speichern</translation>
+    </message>
+    <message>
+        <source>Edit Face Mapping</source>
+        <translation>Gesichtszuordnung bearbeiten</translation>
+    </message>
+    <message>
+        <source>Recognised from the model&apos;s names</source>
+        <translation>Aus den Namen des Modells erkannt</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::ClipLibraryPanel</name>
@@ -1617,6 +1669,129 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source>Baked the lighting of %1.</source>
         <translation>Beleuchtung von %1 gebacken.</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::FaceMappingDialog</name>
+    <message>
+        <source>Face mapping tables (*.json);;All files (*)</source>
+        <translation>Gesichtszuordnungstabellen (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Face Mapping of %1</source>
+        <translation>Gesichtszuordnung von %1</translation>
+    </message>
+    <message>
+        <source>Each row drives one of the model&apos;s morph targets by a face channel: the target&apos;s weight is the channel&apos;s value times the coefficient (of its positive or negative part only, when one side is chosen).</source>
+        <translation>Jede Zeile steuert eines der Morph-Ziele des Modells über einen Gesichtskanal: Das Gewicht des Ziels ist der Wert des Kanals mal dem Koeffizienten (nur sein positiver oder negativer Anteil, wenn eine Seite gewählt ist).</translation>
+    </message>
+    <message>
+        <source>Morph target</source>
+        <translation>Morph-Ziel</translation>
+    </message>
+    <message>
+        <source>Channel</source>
+        <translation>Kanal</translation>
+    </message>
+    <message>
+        <source>Coefficient</source>
+        <translation>Koeffizient</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Seite</translation>
+    </message>
+    <message>
+        <source>Joint</source>
+        <translation>Gelenk</translation>
+    </message>
+    <message>
+        <source>Axis (x, y, z)</source>
+        <translation>Achse (x, y, z)</translation>
+    </message>
+    <message>
+        <source>Radians per unit</source>
+        <translation>Radiant pro Einheit</translation>
+    </message>
+    <message>
+        <source>Add Drive</source>
+        <translation>Ansteuerung hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove Drive</source>
+        <translation>Ansteuerung entfernen</translation>
+    </message>
+    <message>
+        <source>Add Joint Drive</source>
+        <translation>Gelenkansteuerung hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove Joint Drive</source>
+        <translation>Gelenkansteuerung entfernen</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Laden…</translation>
+    </message>
+    <message>
+        <source>Save As…</source>
+        <translation>Speichern unter…</translation>
+    </message>
+    <message>
+        <source>Recognise from Model</source>
+        <translation>Aus dem Modell erkennen</translation>
+    </message>
+    <message>
+        <source>The table the model&apos;s names give: ARKit blendshapes, Oculus visemes, expression targets, eye and jaw bones</source>
+        <translation>Die Tabelle, die sich aus den Namen des Modells ergibt: ARKit-Blendshapes, Oculus-Viseme, Ausdrucksziele, Augen- und Kieferknochen</translation>
+    </message>
+    <message>
+        <source>Morph targets:</source>
+        <translation>Morph-Ziele:</translation>
+    </message>
+    <message>
+        <source>Joints:</source>
+        <translation>Gelenke:</translation>
+    </message>
+    <message>
+        <source>Load a Face Mapping Table</source>
+        <translation>Gesichtszuordnungstabelle laden</translation>
+    </message>
+    <message>
+        <source>Save the Face Mapping Table</source>
+        <translation>Gesichtszuordnungstabelle speichern</translation>
+    </message>
+    <message>
+        <source>Both</source>
+        <translation>Beide</translation>
+    </message>
+    <message>
+        <source>Positive values only</source>
+        <translation>Nur positive Werte</translation>
+    </message>
+    <message>
+        <source>Negative values only</source>
+        <translation>Nur negative Werte</translation>
+    </message>
+    <message>
+        <source>%1 has no morph target %2: those rows move nothing.</source>
+        <translation>%1 hat kein Morph-Ziel %2: Diese Zeilen bewegen nichts.</translation>
+    </message>
+    <message>
+        <source>%1 has no joint %2: those rows turn nothing.</source>
+        <translation>%1 hat kein Gelenk %2: Diese Zeilen drehen nichts.</translation>
+    </message>
+    <message>
+        <source>Every morph target and joint the table names is in %1.</source>
+        <translation>Jedes Morph-Ziel und Gelenk, das die Tabelle nennt, ist in %1 vorhanden.</translation>
+    </message>
+    <message>
+        <source>Could not load the face mapping table.</source>
+        <translation>Die Gesichtszuordnungstabelle konnte nicht geladen werden.</translation>
+    </message>
+    <message>
+        <source>Could not save the face mapping table.</source>
+        <translation>Die Gesichtszuordnungstabelle konnte nicht gespeichert werden.</translation>
     </message>
 </context>
 <context>

@@ -1105,6 +1105,58 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
             <numerusform>%n actions</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Choisir…</translation>
+    </message>
+    <message>
+        <source>Use a face mapping table file (thespis-cli face-mapping --save-mapping writes one)</source>
+        <translation>Utiliser un fichier de table de correspondance du visage (thespis-cli face-mapping --save-mapping en écrit une)</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatique</translation>
+    </message>
+    <message>
+        <source>Drive the face by the table recognised from the model&apos;s names</source>
+        <translation>Animer le visage par la table reconnue d&apos;après les noms du modèle</translation>
+    </message>
+    <message>
+        <source>Edit…</source>
+        <translation>Modifier…</translation>
+    </message>
+    <message>
+        <source>Face mapping:</source>
+        <translation>Correspondance du visage :</translation>
+    </message>
+    <message>
+        <source>Choose a Face Mapping Table</source>
+        <translation>Choisir une table de correspondance du visage</translation>
+    </message>
+    <message>
+        <source>Use the Recognised Face Mapping</source>
+        <translation>Utiliser la correspondance du visage reconnue</translation>
+    </message>
+    <message>
+        <source>Choose Face Mapping</source>
+        <translation>Choisir la correspondance du visage</translation>
+    </message>
+    <message>
+        <source>Edit Face Mapping: %1</source>
+        <translation>Modifier la correspondance du visage : %1</translation>
+    </message>
+    <message>
+        <source>Save the Face Mapping Table</source>
+        <translation>Enregistrer la table de correspondance du visage</translation>
+    </message>
+    <message>
+        <source>Edit Face Mapping</source>
+        <translation>Modifier la correspondance du visage</translation>
+    </message>
+    <message>
+        <source>Recognised from the model&apos;s names</source>
+        <translation>Reconnue d&apos;après les noms du modèle</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::ClipLibraryPanel</name>
@@ -1617,6 +1669,129 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source>Baked the lighting of %1.</source>
         <translation>Éclairage de %1 précalculé.</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::FaceMappingDialog</name>
+    <message>
+        <source>Face mapping tables (*.json);;All files (*)</source>
+        <translation>Tables de correspondance du visage (*.json);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Face Mapping of %1</source>
+        <translation>Correspondance du visage de %1</translation>
+    </message>
+    <message>
+        <source>Each row drives one of the model&apos;s morph targets by a face channel: the target&apos;s weight is the channel&apos;s value times the coefficient (of its positive or negative part only, when one side is chosen).</source>
+        <translation>Chaque ligne anime une des cibles de morphing du modèle par un canal du visage : le poids de la cible est la valeur du canal multipliée par le coefficient (de sa seule partie positive ou négative, quand un côté est choisi).</translation>
+    </message>
+    <message>
+        <source>Morph target</source>
+        <translation>Cible de morphing</translation>
+    </message>
+    <message>
+        <source>Channel</source>
+        <translation>Canal</translation>
+    </message>
+    <message>
+        <source>Coefficient</source>
+        <translation>Coefficient</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Côté</translation>
+    </message>
+    <message>
+        <source>Joint</source>
+        <translation>Articulation</translation>
+    </message>
+    <message>
+        <source>Axis (x, y, z)</source>
+        <translation>Axe (x, y, z)</translation>
+    </message>
+    <message>
+        <source>Radians per unit</source>
+        <translation>Radians par unité</translation>
+    </message>
+    <message>
+        <source>Add Drive</source>
+        <translation>Ajouter une commande</translation>
+    </message>
+    <message>
+        <source>Remove Drive</source>
+        <translation>Retirer la commande</translation>
+    </message>
+    <message>
+        <source>Add Joint Drive</source>
+        <translation>Ajouter une commande d&apos;articulation</translation>
+    </message>
+    <message>
+        <source>Remove Joint Drive</source>
+        <translation>Retirer la commande d&apos;articulation</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Charger…</translation>
+    </message>
+    <message>
+        <source>Save As…</source>
+        <translation>Enregistrer sous…</translation>
+    </message>
+    <message>
+        <source>Recognise from Model</source>
+        <translation>Reconnaître d&apos;après le modèle</translation>
+    </message>
+    <message>
+        <source>The table the model&apos;s names give: ARKit blendshapes, Oculus visemes, expression targets, eye and jaw bones</source>
+        <translation>La table que donnent les noms du modèle : blendshapes ARKit, visèmes Oculus, cibles d&apos;expression, os des yeux et de la mâchoire</translation>
+    </message>
+    <message>
+        <source>Morph targets:</source>
+        <translation>Cibles de morphing :</translation>
+    </message>
+    <message>
+        <source>Joints:</source>
+        <translation>Articulations :</translation>
+    </message>
+    <message>
+        <source>Load a Face Mapping Table</source>
+        <translation>Charger une table de correspondance du visage</translation>
+    </message>
+    <message>
+        <source>Save the Face Mapping Table</source>
+        <translation>Enregistrer la table de correspondance du visage</translation>
+    </message>
+    <message>
+        <source>Both</source>
+        <translation>Les deux</translation>
+    </message>
+    <message>
+        <source>Positive values only</source>
+        <translation>Valeurs positives seulement</translation>
+    </message>
+    <message>
+        <source>Negative values only</source>
+        <translation>Valeurs négatives seulement</translation>
+    </message>
+    <message>
+        <source>%1 has no morph target %2: those rows move nothing.</source>
+        <translation>%1 n&apos;a pas de cible de morphing %2 : ces lignes ne déplacent rien.</translation>
+    </message>
+    <message>
+        <source>%1 has no joint %2: those rows turn nothing.</source>
+        <translation>%1 n&apos;a pas d&apos;articulation %2 : ces lignes ne tournent rien.</translation>
+    </message>
+    <message>
+        <source>Every morph target and joint the table names is in %1.</source>
+        <translation>Chaque cible de morphing et articulation que nomme la table existe dans %1.</translation>
+    </message>
+    <message>
+        <source>Could not load the face mapping table.</source>
+        <translation>Impossible de charger la table de correspondance du visage.</translation>
+    </message>
+    <message>
+        <source>Could not save the face mapping table.</source>
+        <translation>Impossible d&apos;enregistrer la table de correspondance du visage.</translation>
     </message>
 </context>
 <context>

@@ -104,6 +104,8 @@ int runInfo(const CommandSpec& spec, const ParsedArguments& arguments)
                     double(character.position.z), character.heading);
         if (!character.bake.empty())
             std::printf("  lighting bake: %s\n", character.bake.c_str());
+        if (!character.faceMapping.empty())
+            std::printf("  face mapping table: %s\n", character.faceMapping.c_str());
         for (const scenario::ClipAsset& clip : character.clips)
             std::printf("  clip '%s': %s\n", clip.name.c_str(), clipSummary(clip).c_str());
         for (const scenario::Layer& layer : character.layers) {

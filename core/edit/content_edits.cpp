@@ -146,8 +146,22 @@ Result<Edit> setCharacterBody(const Scenario& scenario, int index, const std::st
         changed.segmentTags.clear(); // they name the old body's segments
         changed.bake.clear();
     }
+    if (model.empty())
+        changed.faceMapping.clear(); // the humanoid's face follows no table
     changed.model = model;
     changed.skeleton = skeleton;
+    return replaceCharacter(index, **character, std::move(changed));
+}
+
+Result<Edit> setCharacterFaceMapping(const Scenario& scenario, int index, const std::string& path)
+{
+    auto character = characterAt(scenario, index);
+    if (!character)
+        return character.error();
+    if ((*character)->model.empty() && !path.empty())
+        return invalid("The built-in humanoid has its own face: only a glTF model follows a face mapping table.");
+    Character changed = **character;
+    changed.faceMapping = path;
     return replaceCharacter(index, **character, std::move(changed));
 }
 

@@ -27,9 +27,13 @@ Result<Edit> renameCharacter(const scenario::Scenario& scenario, int character, 
 Result<Edit> duplicateCharacter(const scenario::Scenario& scenario, int character);
 /// Another body: a glTF model (empty: the built-in humanoid) and the skeleton its motion plays on
 /// ("hanim-loa1", "hanim-loa2", "hanim-25", "model"). A new model drops the old one's segment tags
-/// and bake, which name its segments.
+/// and bake, which name its segments; the built-in humanoid drops the face mapping table too.
 Result<Edit> setCharacterBody(const scenario::Scenario& scenario, int character, const std::string& model,
                               const std::string& skeleton);
+/// The face mapping table the character's glTF model follows: a `thespis-face-mapping` file, path
+/// relative to the scenario's folder; empty: the table recognised from the model's names. Refused
+/// for the built-in humanoid, which has its own face.
+Result<Edit> setCharacterFaceMapping(const scenario::Scenario& scenario, int character, const std::string& path);
 /// Where the character stands (metres) and which way it faces (degrees about +Y).
 Result<Edit> setCharacterPlacement(const scenario::Scenario& scenario, int character, anim::Vec3 position,
                                    double heading);

@@ -10,6 +10,7 @@
 #include "render/shaders.h"
 #include "runtime/timeline_samples.h"
 #include "scenario/scenario_character.h"
+#include "util/text.h"
 
 namespace thespis::core::render {
 
@@ -31,13 +32,6 @@ Result<std::shared_ptr<const lighting::TransferBake>> readCharacterBake(const st
     if (auto matches = lighting::checkBakeMatchesMesh(*bake, body); !matches)
         return matches.error();
     return std::make_shared<const lighting::TransferBake>(std::move(bake).value());
-}
-
-std::string lowerFirst(std::string sentence)
-{
-    if (!sentence.empty() && sentence[0] >= 'A' && sentence[0] <= 'Z')
-        sentence[0] = char(sentence[0] - 'A' + 'a');
-    return sentence;
 }
 
 } // namespace

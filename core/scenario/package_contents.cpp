@@ -177,6 +177,8 @@ Result<PackagePlan> planPackage(const Scenario& scenario, const Assets& assets, 
             return added.error();
         if (auto added = add(character.bake, at + ".bake"); !added)
             return added.error();
+        if (auto added = add(character.faceMapping, at + ".faceMapping"); !added)
+            return added.error();
         for (ClipAsset& clip : character.clips) {
             if (auto added = add(clip.file, at + ".clips[" + clip.name + "].file"); !added)
                 return added.error();

@@ -23,6 +23,7 @@ void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const st
     for (Character& character : scenario.characters) {
         character.model = rebasedPath(character.model, from, to, keep);
         character.bake = rebasedPath(character.bake, from, to, keep);
+        character.faceMapping = rebasedPath(character.faceMapping, from, to, keep);
         for (ClipAsset& clip : character.clips)
             rebaseClip(clip, from, to, keep);
     }

@@ -191,6 +191,11 @@ struct Character {
     /// `thespis-cli bake`; path relative to the scenario); empty = unshadowed (DU) transfer. A bake
     /// that is missing or no longer fits the body (its tags changed since) is left out with a warning.
     std::string bake;
+    /// The face mapping table its glTF model's face follows (a `thespis-face-mapping` file,
+    /// scene/face_mapping.h; path relative to the scenario); empty = the table recognised from the
+    /// model's names (format 8). The built-in humanoid has its own face and ignores it (a warning
+    /// says so). A table that is missing or cannot be read is left out with a warning.
+    std::string faceMapping;
     std::vector<ClipAsset> clips;
     std::vector<Layer> layers;
     std::vector<Gesture> gestures;     ///< format 2

@@ -29,7 +29,8 @@ enum Version : int {
     IdleMotion = 5,          ///< clips that are idle motion synthesizers
     NoPostureTags = 6,       ///< segment tags lost "posture" (PI / PD), which changed nothing
     Blinks = 7,              ///< clips that are blink generators (face layers)
-    Current = Blinks,
+    FaceMappingTable = 8,    ///< a character's own face mapping table file ("faceMapping")
+    Current = FaceMappingTable,
 };
 } // namespace format
 

@@ -362,7 +362,7 @@ ScriptSpec readScript(const json& value, const std::string& path)
 
 Character readCharacter(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Character.4");
+    ObjectReader r(value, path, "Character.5");
     Character character;
     character.name = r.name();
     character.skeleton = r.string("skeleton", false, "hanim-loa1");
@@ -382,6 +382,7 @@ Character readCharacter(const json& value, const std::string& path)
     }
     character.heading = r.number("heading", false, 0, Range::Any);
     character.bake = r.string("bake", false);
+    character.faceMapping = r.string("faceMapping", false);
     std::set<std::string> names;
     const json& segments = r.array("segments", false);
     for (std::size_t i = 0; i < segments.size(); ++i) {
@@ -444,7 +445,7 @@ NamedMask readMask(const json& value, const std::string& path)
 
 Scenario readScenario(const json& document)
 {
-    ObjectReader r(document, "", "Scenario.7");
+    ObjectReader r(document, "", "Scenario.8");
     r.find("format");  // checked before
     r.find("version");
     Scenario scenario;

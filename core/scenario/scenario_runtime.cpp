@@ -18,6 +18,7 @@
 #include "motion/idle_motion.h"
 #include "scenario/action_modifier.h"
 #include "scenario/runtime_gestures.h"
+#include "scenario/scenario_character.h"
 #include "scenario/source_clip.h"
 #include "lighting/probe.h"
 #include "scene/gltf_mesh.h"
@@ -757,6 +758,10 @@ std::vector<Error> validateScenario(const Scenario& scenario, const Assets& asse
     RuntimeBuilder builder(scenario, assets);
     (void)builder.build();
     validateLightingFiles(scenario, assets, builder.errors);
+    // A table that cannot be used: playing leaves it out with a warning, checking names it.
+    for (std::size_t i = 0; i < scenario.characters.size(); ++i)
+        if (auto table = readCharacterFaceMapping(scenario, i, assets); !table)
+            builder.errors.push_back(table.error());
     return std::move(builder.errors);
 }
 

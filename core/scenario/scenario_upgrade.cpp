@@ -113,6 +113,15 @@ static Result<void> upgradeV6toV7(nlohmann::json& document)
     return {};
 }
 
+// 7 → 8: a character may name its own face mapping table ("faceMapping", optional); nothing else
+// changed, so only the scenario's and the characters' schemas are new.
+static Result<void> upgradeV7toV8(nlohmann::json& document)
+{
+    renameSchema(document, "Scenario.7", "Scenario.8");
+    forEachIn(document, "characters", [](nlohmann::json& character) { renameSchema(character, "Character.4", "Character.5"); });
+    return {};
+}
+
 std::span<const UpgradeStep> upgradeSteps()
 {
     static constexpr UpgradeStep steps[] = {
@@ -122,6 +131,7 @@ std::span<const UpgradeStep> upgradeSteps()
         {format::Scripts, "idle motion clips", &upgradeV4toV5},
         {format::IdleMotion, "segment tags without posture", &upgradeV5toV6},
         {format::NoPostureTags, "blink clips", &upgradeV6toV7},
+        {format::Blinks, "face mapping tables", &upgradeV7toV8},
     };
     return steps;
 }

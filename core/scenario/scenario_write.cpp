@@ -252,7 +252,7 @@ ojson writeClip(const ClipAsset& clip)
 ojson writeCharacter(const Character& character)
 {
     ojson out = ojson::object();
-    out["schema"] = "Character.4";
+    out["schema"] = "Character.5";
     out["name"] = character.name;
     out["skeleton"] = character.skeleton;
     // Written only when set, so that scenarios without models stay as they were.
@@ -275,6 +275,8 @@ ojson writeCharacter(const Character& character)
     }
     if (!character.bake.empty())
         out["bake"] = character.bake;
+    if (!character.faceMapping.empty())
+        out["faceMapping"] = character.faceMapping;
     ojson clips = ojson::array();
     for (const ClipAsset& clip : character.clips)
         clips.push_back(writeClip(clip));
@@ -389,7 +391,7 @@ ojson writeScenario(const Scenario& scenario)
     ojson out = ojson::object();
     out["format"] = FormatName;
     out["version"] = int(format::Current);
-    out["schema"] = "Scenario.7";
+    out["schema"] = "Scenario.8";
     out["name"] = scenario.name;
     out["duration"] = scenario.duration;
     ojson masks = ojson::array();

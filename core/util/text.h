@@ -27,4 +27,12 @@ inline std::string lowercase(std::string_view text)
     return out;
 }
 
+/// A sentence to go after a colon: its first letter in lower case ("The file …" → "the file …").
+inline std::string lowerFirst(std::string sentence)
+{
+    if (!sentence.empty() && sentence[0] >= 'A' && sentence[0] <= 'Z')
+        sentence[0] = char(sentence[0] - 'A' + 'a');
+    return sentence;
+}
+
 } // namespace thespis::core

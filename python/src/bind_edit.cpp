@@ -406,6 +406,14 @@ void bindEdit(py::module_& m)
         "scenario"_a, "character"_a, "position"_a, "heading"_a,
         "Where the character stands (metres) and which way it faces (degrees about +Y).");
     e.def(
+        "set_character_face_mapping",
+        [](const Scenario& scenario, int character, const std::string& path) {
+            return unwrap(edit::setCharacterFaceMapping(scenario, character, path));
+        },
+        "scenario"_a, "character"_a, "path"_a,
+        "Sets the face mapping table file a glTF character's face follows (relative to the scenario's folder; '' = "
+        "the table recognised from the model's names). Refused for the built-in humanoid.");
+    e.def(
         "add_layer",
         [](const Scenario& scenario, int character, const std::string& name, core::scenario::LayerKind kind) {
             return unwrap(edit::addLayer(scenario, character, name, kind));

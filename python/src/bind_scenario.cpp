@@ -302,6 +302,10 @@ void bindDocument(py::module_& m)
                             "glTF file of the body, relative to the scenario; '' = the built-in humanoid.");
     character.def_readwrite("bake", &Character::bake,
                             "PRT transfer bake file, relative to the scenario; '' = unshadowed (DU) transfer.");
+    character.def_readwrite("face_mapping", &Character::faceMapping,
+                            "Face mapping table file (thespis.face.FaceMapping saved as JSON) its glTF model's face "
+                            "follows, relative to the scenario; '' = the table recognised from the model's names "
+                            "(format 8).");
     defList(character, "segment_tags", &Character::segmentTags,
             "Receiver / occluder and PI / PD tags of the model's segments (thespis.scene.SegmentTag, a copy).");
     defList(character, "clips", &Character::clips, "The character's clips (a copy).");

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import thespis
-from thespis import face, render, scene
+from thespis import edit, face, render, scene
 
 from conftest import SHARED_DATA
 
@@ -153,3 +153,31 @@ def test_face_masks_weigh_the_face_by_region():
     mirrored = face.mirrored_mask(speech).resolve(thespis.FrameLayout.mpeg4_face())
     assert mirrored[face.find_channel("raise_r_i_eyebrow")] == 0.5
     assert mirrored[face.find_channel("raise_l_i_eyebrow")] == 0.0
+
+
+def test_a_scenario_character_names_its_own_table(tmp_path):
+    """Character.face_mapping (format 8): saved and read back, set by an undoable edit, checked by
+    validate_scenario (a missing file and the built-in humanoid are named by their field)."""
+    face.save_mapping(tmp_path / "joy.json", face.Mapping("joy", [face.Drive("Surprised", "joy", 1.0)], []))
+    scenario = thespis.Scenario("robot")
+    scenario.characters = [edit.new_character("Robot", str(ROBOT), "model"),
+                           edit.new_character("Ann")]
+    assert scenario.characters[0].face_mapping == ""
+    change = edit.set_character_face_mapping(scenario, 0, "joy.json")
+    change.apply(scenario)
+    assert scenario.characters[0].face_mapping == "joy.json"
+    assert thespis.validate_scenario(scenario, tmp_path) == []
+    back = thespis.parse_scenario(thespis.serialize_scenario(scenario))
+    assert back.characters[0].face_mapping == "joy.json"
+    change.inverse().apply(scenario)
+    assert scenario.characters[0].face_mapping == ""
+    with pytest.raises(ValueError, match="built-in humanoid"):
+        edit.set_character_face_mapping(scenario, 1, "joy.json")
+
+    characters = scenario.characters
+    characters[0].face_mapping = "gone.json"
+    characters[1].face_mapping = "joy.json"
+    scenario.characters = characters
+    problems = [problem.message for problem in thespis.validate_scenario(scenario, tmp_path)]
+    assert any(p.startswith("characters[0].faceMapping (Robot)") and "gone.json" in p for p in problems), problems
+    assert any(p.startswith("characters[1].faceMapping (Ann)") for p in problems), problems

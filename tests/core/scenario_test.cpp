@@ -338,7 +338,7 @@ TEST(ScenarioGolden, LoadsVersion5IdleClips)
     EXPECT_EQ(idle->idle->amplitude, 0.5);
     EXPECT_EQ(idle->idle->extra["style"], "calm");
     EXPECT_TRUE(idle->file.empty());
-    // The writer's bytes are checked on the current version's golden file (v6).
+    // The writer's bytes are checked on the current version's golden file (v8).
 }
 
 TEST(ScenarioGolden, Version4UpgradesToVersion5WithoutIdleClips)
@@ -602,7 +602,7 @@ TEST(ScenarioIo, UnknownFieldWithAnEmptyNameSurvives)
 TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 {
     const std::string text = serializeScenario(Scenario{});
-    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 7,\n  \"schema\": \"Scenario.7\"", 0), 0u)
+    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 8,\n  \"schema\": \"Scenario.8\"", 0), 0u)
         << text;
     auto back = parseScenario(text);
     ASSERT_TRUE(back.ok());
@@ -615,12 +615,12 @@ TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 TEST(ScenarioIo, RefusesNewerVersion)
 {
     json doc = minimalDocument();
-    doc["version"] = 8;
+    doc["version"] = 9;
     auto result = parseJson(doc);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error().code, ErrorCode::NewerVersion);
     EXPECT_EQ(result.error().message,
-              "This scenario was saved by a newer Thespis (format 8). Update Thespis to open it.");
+              "This scenario was saved by a newer Thespis (format 9). Update Thespis to open it.");
 
     doc["version"] = 18446744073709551615ull;
     result = parseJson(doc);
