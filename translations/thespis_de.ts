@@ -921,6 +921,93 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     </message>
 </context>
 <context>
+    <name>thespis::editor::BlinkProperties</name>
+    <message>
+        <source>Blinks</source>
+        <translation>Lidschläge</translation>
+    </message>
+    <message>
+        <source> a minute</source>
+        <translation> pro Minute</translation>
+    </message>
+    <message>
+        <source>How often the eyes blink on average: about 17 a minute at rest, 26 in conversation</source>
+        <translation>Wie oft die Augen im Mittel blinzeln: etwa 17-mal pro Minute in Ruhe, 26-mal im Gespräch</translation>
+    </message>
+    <message>
+        <source>At rest</source>
+        <translation>In Ruhe</translation>
+    </message>
+    <message>
+        <source>17 blinks a minute, as measured at rest</source>
+        <translation>17 Lidschläge pro Minute, wie in Ruhe gemessen</translation>
+    </message>
+    <message>
+        <source>Talking</source>
+        <translation>Im Gespräch</translation>
+    </message>
+    <message>
+        <source>26 blinks a minute, as measured in conversation</source>
+        <translation>26 Lidschläge pro Minute, wie im Gespräch gemessen</translation>
+    </message>
+    <message>
+        <source>Which random intervals the blinks follow: two characters with different seeds do not blink together</source>
+        <translation>Welchen zufälligen Abständen die Lidschläge folgen: zwei Figuren mit verschiedenem Startwert blinzeln nicht gleichzeitig</translation>
+    </message>
+    <message>
+        <source>A whole blink takes less than 400 ms.</source>
+        <translation>Ein ganzer Lidschlag dauert weniger als 400 ms.</translation>
+    </message>
+    <message>
+        <source>How long the lids take to close (about 100 ms). %1</source>
+        <translation>Wie lange sich die Lider schließen (etwa 100 ms). %1</translation>
+    </message>
+    <message>
+        <source>How long the eyes stay shut. %1</source>
+        <translation>Wie lange die Augen geschlossen bleiben. %1</translation>
+    </message>
+    <message>
+        <source>How long the lids take to open again (slower than closing). %1</source>
+        <translation>Wie lange sich die Lider wieder öffnen (langsamer als das Schließen). %1</translation>
+    </message>
+    <message>
+        <source>Rate:</source>
+        <translation>Rate:</translation>
+    </message>
+    <message>
+        <source>Seed:</source>
+        <translation>Startwert:</translation>
+    </message>
+    <message>
+        <source>Closing:</source>
+        <translation>Schließen:</translation>
+    </message>
+    <message>
+        <source>Shut:</source>
+        <translation>Geschlossen:</translation>
+    </message>
+    <message>
+        <source>Opening:</source>
+        <translation>Öffnen:</translation>
+    </message>
+    <message>
+        <source>Change Blink Rate</source>
+        <translation>Lidschlagrate ändern</translation>
+    </message>
+    <message>
+        <source>Change Blink Seed</source>
+        <translation>Startwert der Lidschläge ändern</translation>
+    </message>
+    <message>
+        <source>Change Blink Timing</source>
+        <translation>Zeiten der Lidschläge ändern</translation>
+    </message>
+    <message>
+        <source>Blinks (clip &quot;%1&quot;, shared by its actions)</source>
+        <translation>Lidschläge (Clip „%1“, von seinen Aktionen geteilt)</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::CharacterDialog</name>
     <message>
         <source>Add Character</source>
@@ -1203,6 +1290,13 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source>Drag onto a body track: the character stands, shifting its weight and moving a little, for as long as the scenario plays</source>
         <translation>Auf eine Körperspur ziehen: Die Figur steht, verlagert ihr Gewicht und bewegt sich ein wenig, solange das Szenario läuft</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::ClipSettingsBox</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -1795,6 +1889,149 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     </message>
 </context>
 <context>
+    <name>thespis::editor::FacePosePanel</name>
+    <message>
+        <source>Whose face to pose</source>
+        <translation>Wessen Gesicht gestellt wird</translation>
+    </message>
+    <message>
+        <source>Pose</source>
+        <translation>Stellen</translation>
+    </message>
+    <message>
+        <source>Show the pose on the character&apos;s face in the 3D view (close up), over what the face plays; the document does not change</source>
+        <translation>Die Pose im Gesicht der Figur in der 3D-Ansicht zeigen (Nahaufnahme), über dem, was das Gesicht spielt; das Dokument ändert sich nicht</translation>
+    </message>
+    <message>
+        <source>From Playhead</source>
+        <translation>Vom Abspielkopf</translation>
+    </message>
+    <message>
+        <source>Start from the character&apos;s face as it is at the playhead</source>
+        <translation>Vom Gesicht der Figur ausgehen, wie es am Abspielkopf ist</translation>
+    </message>
+    <message>
+        <source>Neutral</source>
+        <translation>Neutral</translation>
+    </message>
+    <message>
+        <source>Every slider back to 0: the neutral face</source>
+        <translation>Alle Regler zurück auf 0: das neutrale Gesicht</translation>
+    </message>
+    <message>
+        <source>Expressions</source>
+        <translation>Ausdrücke</translation>
+    </message>
+    <message>
+        <source>Mouth and jaw</source>
+        <translation>Mund und Kiefer</translation>
+    </message>
+    <message>
+        <source>Eyes and lids</source>
+        <translation>Augen und Lider</translation>
+    </message>
+    <message>
+        <source>Brows</source>
+        <translation>Brauen</translation>
+    </message>
+    <message>
+        <source>Cheeks</source>
+        <translation>Wangen</translation>
+    </message>
+    <message>
+        <source>Tongue</source>
+        <translation>Zunge</translation>
+    </message>
+    <message>
+        <source>Head</source>
+        <translation>Kopf</translation>
+    </message>
+    <message>
+        <source>Nose and ears</source>
+        <translation>Nase und Ohren</translation>
+    </message>
+    <message>
+        <source>Visemes</source>
+        <translation>Viseme</translation>
+    </message>
+    <message>
+        <source>face pose</source>
+        <translation>Gesichtspose</translation>
+    </message>
+    <message>
+        <source>The name of the face clip (and gesture) to save</source>
+        <translation>Der Name des zu speichernden Gesichtsclips (und der Geste)</translation>
+    </message>
+    <message>
+        <source>Gesture too</source>
+        <translation>Auch als Geste</translation>
+    </message>
+    <message>
+        <source>Also add a gesture of that name to the character&apos;s gesticon, for scripts and speech to play</source>
+        <translation>Auch eine Geste dieses Namens zum Gestikon der Figur hinzufügen, die Skripte und Sprache abspielen können</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>Add the pose to the character as a face clip (one undoable step)</source>
+        <translation>Die Pose der Figur als Gesichtsclip hinzufügen (ein rückgängig machbarer Schritt)</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Name:</translation>
+    </message>
+    <message>
+        <source>FAP %1, in %2 units; positive: %3</source>
+        <translation>FAP %1, in %2-Einheiten; positiv: %3</translation>
+    </message>
+    <message>
+        <source>viseme %1</source>
+        <translation>Visem %1</translation>
+    </message>
+    <message>
+        <source>Weight of MPEG-4 viseme %1, in percent</source>
+        <translation>Gewicht des MPEG-4-Visems %1, in Prozent</translation>
+    </message>
+    <message>
+        <source>Intensity of the expression, in percent</source>
+        <translation>Stärke des Ausdrucks, in Prozent</translation>
+    </message>
+    <message>
+        <source>Cannot show the pose: %1</source>
+        <translation>Die Pose kann nicht gezeigt werden: %1</translation>
+    </message>
+    <message>
+        <source>Give the face clip a name.</source>
+        <translation>Geben Sie dem Gesichtsclip einen Namen.</translation>
+    </message>
+    <message>
+        <source>Open a scenario with a character first.</source>
+        <translation>Öffnen Sie zuerst ein Szenario mit einer Figur.</translation>
+    </message>
+    <message>
+        <source>The face is neutral: move a slider first.</source>
+        <translation>Das Gesicht ist neutral: bewegen Sie zuerst einen Regler.</translation>
+    </message>
+    <message>
+        <source>Save Face Pose as Clip and Gesture</source>
+        <translation>Gesichtspose als Clip und Geste speichern</translation>
+    </message>
+    <message>
+        <source>Save Face Pose</source>
+        <translation>Gesichtspose speichern</translation>
+    </message>
+    <message>
+        <source>Saved face clip &quot;%1&quot;%2.</source>
+        <translation>Gesichtsclip „%1“%2 gespeichert.</translation>
+    </message>
+    <message>
+        <source> and gesture</source>
+        <translation> und Geste</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::GesticonModel</name>
     <message>
         <source>The dependent-joint filter runs over this gesture: spine and neck follow it</source>
@@ -2081,10 +2318,6 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>Change Idle Database</source>
         <translation>Ruhebewegungs-Datenbank ändern</translation>
     </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
 </context>
 <context>
     <name>thespis::editor::ImportMotionDialog</name>
@@ -2307,14 +2540,6 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <translation>Die zu bearbeitende Maske; alle Aktionen, die sie verwenden, ändern sich mit</translation>
     </message>
     <message>
-        <source>New…</source>
-        <translation>Neu…</translation>
-    </message>
-    <message>
-        <source>Add a mask</source>
-        <translation>Eine Maske hinzufügen</translation>
-    </message>
-    <message>
         <source>Rename…</source>
         <translation>Umbenennen…</translation>
     </message>
@@ -2429,6 +2654,58 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source>Delete Mask %1</source>
         <translation>Maske %1 löschen</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Neu</translation>
+    </message>
+    <message>
+        <source>Add a mask of the body&apos;s joints or of the face&apos;s regions</source>
+        <translation>Eine Maske über die Gelenke des Körpers oder die Regionen des Gesichts hinzufügen</translation>
+    </message>
+    <message>
+        <source>Body Mask…</source>
+        <translation>Körpermaske…</translation>
+    </message>
+    <message>
+        <source>Face Mask…</source>
+        <translation>Gesichtsmaske…</translation>
+    </message>
+    <message>
+        <source>Body</source>
+        <translation>Körper</translation>
+    </message>
+    <message>
+        <source>Whole Face</source>
+        <translation>Ganzes Gesicht</translation>
+    </message>
+    <message>
+        <source>Speech (mouth, tongue)</source>
+        <translation>Sprache (Mund, Zunge)</translation>
+    </message>
+    <message>
+        <source>Expression (eyes, brows, cheeks)</source>
+        <translation>Ausdruck (Augen, Brauen, Wangen)</translation>
+    </message>
+    <message>
+        <source>Eyes</source>
+        <translation>Augen</translation>
+    </message>
+    <message>
+        <source>Face</source>
+        <translation>Gesicht</translation>
+    </message>
+    <message>
+        <source>Set Face Weight</source>
+        <translation>Gesichtsgewicht setzen</translation>
+    </message>
+    <message>
+        <source>New Face Mask</source>
+        <translation>Neue Gesichtsmaske</translation>
+    </message>
+    <message>
+        <source>face mask</source>
+        <translation>Gesichtsmaske</translation>
     </message>
 </context>
 <context>
@@ -2830,6 +3107,14 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source>dependent joints follow (PCs kept to %1, muted above %2)</source>
         <translation>abhängige Gelenke folgen (HKs bis %1 erhalten, über %2 stumm)</translation>
+    </message>
+    <message>
+        <source>Face regions:</source>
+        <translation>Gesichtsregionen:</translation>
+    </message>
+    <message>
+        <source>Whole face</source>
+        <translation>Ganzes Gesicht</translation>
     </message>
 </context>
 <context>
@@ -3702,10 +3987,6 @@ Der Reiter Skelette zeigt die Animation; thespis-cli render zeichnet die Szene o
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <source>Joint Mask</source>
-        <translation>Gelenkmaske</translation>
-    </message>
-    <message>
         <source>Segments</source>
         <translation>Segmente</translation>
     </message>
@@ -3899,6 +4180,14 @@ Führen Sie die Skripte des Szenarios nur aus, wenn Sie der Herkunft dieser Date
     <message>
         <source>No characters</source>
         <translation>Keine Figuren</translation>
+    </message>
+    <message>
+        <source>Masks</source>
+        <translation>Masken</translation>
+    </message>
+    <message>
+        <source>Face Pose</source>
+        <translation>Gesichtspose</translation>
     </message>
 </context>
 <context>

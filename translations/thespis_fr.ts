@@ -921,6 +921,93 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     </message>
 </context>
 <context>
+    <name>thespis::editor::BlinkProperties</name>
+    <message>
+        <source>Blinks</source>
+        <translation>Clignements</translation>
+    </message>
+    <message>
+        <source> a minute</source>
+        <translation> par minute</translation>
+    </message>
+    <message>
+        <source>How often the eyes blink on average: about 17 a minute at rest, 26 in conversation</source>
+        <translation>Fréquence moyenne des clignements : environ 17 par minute au repos, 26 en conversation</translation>
+    </message>
+    <message>
+        <source>At rest</source>
+        <translation>Au repos</translation>
+    </message>
+    <message>
+        <source>17 blinks a minute, as measured at rest</source>
+        <translation>17 clignements par minute, comme mesuré au repos</translation>
+    </message>
+    <message>
+        <source>Talking</source>
+        <translation>En conversation</translation>
+    </message>
+    <message>
+        <source>26 blinks a minute, as measured in conversation</source>
+        <translation>26 clignements par minute, comme mesuré en conversation</translation>
+    </message>
+    <message>
+        <source>Which random intervals the blinks follow: two characters with different seeds do not blink together</source>
+        <translation>Quels intervalles aléatoires suivent les clignements : deux personnages de graines différentes ne clignent pas ensemble</translation>
+    </message>
+    <message>
+        <source>A whole blink takes less than 400 ms.</source>
+        <translation>Un clignement entier dure moins de 400 ms.</translation>
+    </message>
+    <message>
+        <source>How long the lids take to close (about 100 ms). %1</source>
+        <translation>Durée de fermeture des paupières (environ 100 ms). %1</translation>
+    </message>
+    <message>
+        <source>How long the eyes stay shut. %1</source>
+        <translation>Durée pendant laquelle les yeux restent fermés. %1</translation>
+    </message>
+    <message>
+        <source>How long the lids take to open again (slower than closing). %1</source>
+        <translation>Durée de réouverture des paupières (plus lente que la fermeture). %1</translation>
+    </message>
+    <message>
+        <source>Rate:</source>
+        <translation>Fréquence :</translation>
+    </message>
+    <message>
+        <source>Seed:</source>
+        <translation>Graine :</translation>
+    </message>
+    <message>
+        <source>Closing:</source>
+        <translation>Fermeture :</translation>
+    </message>
+    <message>
+        <source>Shut:</source>
+        <translation>Fermés :</translation>
+    </message>
+    <message>
+        <source>Opening:</source>
+        <translation>Ouverture :</translation>
+    </message>
+    <message>
+        <source>Change Blink Rate</source>
+        <translation>Modifier la fréquence des clignements</translation>
+    </message>
+    <message>
+        <source>Change Blink Seed</source>
+        <translation>Modifier la graine des clignements</translation>
+    </message>
+    <message>
+        <source>Change Blink Timing</source>
+        <translation>Modifier la durée des clignements</translation>
+    </message>
+    <message>
+        <source>Blinks (clip &quot;%1&quot;, shared by its actions)</source>
+        <translation>Clignements (clip « %1 », partagé par ses actions)</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::CharacterDialog</name>
     <message>
         <source>Add Character</source>
@@ -1203,6 +1290,13 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source>Drag onto a body track: the character stands, shifting its weight and moving a little, for as long as the scenario plays</source>
         <translation>Glisser sur une piste de corps : le personnage se tient debout, déplace son poids et bouge un peu, tant que le scénario joue</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::ClipSettingsBox</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
     </message>
 </context>
 <context>
@@ -1795,6 +1889,149 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     </message>
 </context>
 <context>
+    <name>thespis::editor::FacePosePanel</name>
+    <message>
+        <source>Whose face to pose</source>
+        <translation>Le visage à poser</translation>
+    </message>
+    <message>
+        <source>Pose</source>
+        <translation>Poser</translation>
+    </message>
+    <message>
+        <source>Show the pose on the character&apos;s face in the 3D view (close up), over what the face plays; the document does not change</source>
+        <translation>Montrer la pose sur le visage du personnage dans la vue 3D (en gros plan), par-dessus ce que joue le visage ; le document ne change pas</translation>
+    </message>
+    <message>
+        <source>From Playhead</source>
+        <translation>Depuis la tête de lecture</translation>
+    </message>
+    <message>
+        <source>Start from the character&apos;s face as it is at the playhead</source>
+        <translation>Partir du visage du personnage tel qu’il est à la tête de lecture</translation>
+    </message>
+    <message>
+        <source>Neutral</source>
+        <translation>Neutre</translation>
+    </message>
+    <message>
+        <source>Every slider back to 0: the neutral face</source>
+        <translation>Tous les curseurs à 0 : le visage neutre</translation>
+    </message>
+    <message>
+        <source>Expressions</source>
+        <translation>Expressions</translation>
+    </message>
+    <message>
+        <source>Mouth and jaw</source>
+        <translation>Bouche et mâchoire</translation>
+    </message>
+    <message>
+        <source>Eyes and lids</source>
+        <translation>Yeux et paupières</translation>
+    </message>
+    <message>
+        <source>Brows</source>
+        <translation>Sourcils</translation>
+    </message>
+    <message>
+        <source>Cheeks</source>
+        <translation>Joues</translation>
+    </message>
+    <message>
+        <source>Tongue</source>
+        <translation>Langue</translation>
+    </message>
+    <message>
+        <source>Head</source>
+        <translation>Tête</translation>
+    </message>
+    <message>
+        <source>Nose and ears</source>
+        <translation>Nez et oreilles</translation>
+    </message>
+    <message>
+        <source>Visemes</source>
+        <translation>Visèmes</translation>
+    </message>
+    <message>
+        <source>face pose</source>
+        <translation>pose du visage</translation>
+    </message>
+    <message>
+        <source>The name of the face clip (and gesture) to save</source>
+        <translation>Le nom du clip de visage (et du geste) à enregistrer</translation>
+    </message>
+    <message>
+        <source>Gesture too</source>
+        <translation>Aussi en geste</translation>
+    </message>
+    <message>
+        <source>Also add a gesture of that name to the character&apos;s gesticon, for scripts and speech to play</source>
+        <translation>Ajouter aussi un geste de ce nom au gesticon du personnage, que scripts et parole peuvent jouer</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Enregistrer</translation>
+    </message>
+    <message>
+        <source>Add the pose to the character as a face clip (one undoable step)</source>
+        <translation>Ajouter la pose au personnage comme clip de visage (une étape annulable)</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Nom :</translation>
+    </message>
+    <message>
+        <source>FAP %1, in %2 units; positive: %3</source>
+        <translation>FAP %1, en unités %2 ; positif : %3</translation>
+    </message>
+    <message>
+        <source>viseme %1</source>
+        <translation>visème %1</translation>
+    </message>
+    <message>
+        <source>Weight of MPEG-4 viseme %1, in percent</source>
+        <translation>Poids du visème MPEG-4 %1, en pour cent</translation>
+    </message>
+    <message>
+        <source>Intensity of the expression, in percent</source>
+        <translation>Intensité de l’expression, en pour cent</translation>
+    </message>
+    <message>
+        <source>Cannot show the pose: %1</source>
+        <translation>Impossible de montrer la pose : %1</translation>
+    </message>
+    <message>
+        <source>Give the face clip a name.</source>
+        <translation>Donnez un nom au clip de visage.</translation>
+    </message>
+    <message>
+        <source>Open a scenario with a character first.</source>
+        <translation>Ouvrez d’abord un scénario avec un personnage.</translation>
+    </message>
+    <message>
+        <source>The face is neutral: move a slider first.</source>
+        <translation>Le visage est neutre : déplacez d’abord un curseur.</translation>
+    </message>
+    <message>
+        <source>Save Face Pose as Clip and Gesture</source>
+        <translation>Enregistrer la pose du visage comme clip et geste</translation>
+    </message>
+    <message>
+        <source>Save Face Pose</source>
+        <translation>Enregistrer la pose du visage</translation>
+    </message>
+    <message>
+        <source>Saved face clip &quot;%1&quot;%2.</source>
+        <translation>Clip de visage « %1 »%2 enregistré.</translation>
+    </message>
+    <message>
+        <source> and gesture</source>
+        <translation> et geste</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::GesticonModel</name>
     <message>
         <source>The dependent-joint filter runs over this gesture: spine and neck follow it</source>
@@ -2081,10 +2318,6 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>Change Idle Database</source>
         <translation>Changer la base de mouvement d’attente</translation>
     </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1 : %2</translation>
-    </message>
 </context>
 <context>
     <name>thespis::editor::ImportMotionDialog</name>
@@ -2307,14 +2540,6 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <translation>Le masque à modifier ; toutes les actions qui le désignent changent avec lui</translation>
     </message>
     <message>
-        <source>New…</source>
-        <translation>Nouveau…</translation>
-    </message>
-    <message>
-        <source>Add a mask</source>
-        <translation>Ajouter un masque</translation>
-    </message>
-    <message>
         <source>Rename…</source>
         <translation>Renommer…</translation>
     </message>
@@ -2429,6 +2654,58 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source>Delete Mask %1</source>
         <translation>Supprimer le masque %1</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Nouveau</translation>
+    </message>
+    <message>
+        <source>Add a mask of the body&apos;s joints or of the face&apos;s regions</source>
+        <translation>Ajouter un masque des articulations du corps ou des régions du visage</translation>
+    </message>
+    <message>
+        <source>Body Mask…</source>
+        <translation>Masque du corps…</translation>
+    </message>
+    <message>
+        <source>Face Mask…</source>
+        <translation>Masque du visage…</translation>
+    </message>
+    <message>
+        <source>Body</source>
+        <translation>Corps</translation>
+    </message>
+    <message>
+        <source>Whole Face</source>
+        <translation>Visage entier</translation>
+    </message>
+    <message>
+        <source>Speech (mouth, tongue)</source>
+        <translation>Parole (bouche, langue)</translation>
+    </message>
+    <message>
+        <source>Expression (eyes, brows, cheeks)</source>
+        <translation>Expression (yeux, sourcils, joues)</translation>
+    </message>
+    <message>
+        <source>Eyes</source>
+        <translation>Yeux</translation>
+    </message>
+    <message>
+        <source>Face</source>
+        <translation>Visage</translation>
+    </message>
+    <message>
+        <source>Set Face Weight</source>
+        <translation>Définir le poids du visage</translation>
+    </message>
+    <message>
+        <source>New Face Mask</source>
+        <translation>Nouveau masque du visage</translation>
+    </message>
+    <message>
+        <source>face mask</source>
+        <translation>masque du visage</translation>
     </message>
 </context>
 <context>
@@ -2830,6 +3107,14 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source>dependent joints follow (PCs kept to %1, muted above %2)</source>
         <translation>les articulations dépendantes suivent (CP gardées jusqu’à %1, muettes au-delà de %2)</translation>
+    </message>
+    <message>
+        <source>Face regions:</source>
+        <translation>Régions du visage :</translation>
+    </message>
+    <message>
+        <source>Whole face</source>
+        <translation>Visage entier</translation>
     </message>
 </context>
 <context>
@@ -3702,10 +3987,6 @@ L’onglet Squelettes montre l’animation ; thespis-cli render dessine la scèn
         <translation>Propriétés</translation>
     </message>
     <message>
-        <source>Joint Mask</source>
-        <translation>Masque d’articulations</translation>
-    </message>
-    <message>
         <source>Segments</source>
         <translation>Segments</translation>
     </message>
@@ -3899,6 +4180,14 @@ N’exécutez les scripts du scénario que si vous faites confiance à la proven
     <message>
         <source>No characters</source>
         <translation>Aucun personnage</translation>
+    </message>
+    <message>
+        <source>Masks</source>
+        <translation>Masques</translation>
+    </message>
+    <message>
+        <source>Face Pose</source>
+        <translation>Pose du visage</translation>
     </message>
 </context>
 <context>

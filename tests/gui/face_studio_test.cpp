@@ -33,20 +33,12 @@
 #include "widgets/osg_viewport.h"
 
 using namespace thespis;
+using test::raiseDock;
 using test::saveScreenshot;
 
 namespace {
 
 QString demoPath() { return QStringLiteral(THESPIS_RESOURCES "/demo.thespis"); }
-
-void raiseDock(QWidget* content)
-{
-    auto* dock = qobject_cast<QDockWidget*>(content->parentWidget());
-    QVERIFY(dock);
-    dock->show();
-    dock->raise();
-    QApplication::processEvents();
-}
 
 int characterIndex(const editor::Document& document, const std::string& name)
 {

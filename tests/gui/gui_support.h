@@ -4,6 +4,7 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QDockWidget>
 #include <QTest>
 #include <QTimer>
 #include <QWidget>
@@ -12,6 +13,16 @@
 #include <memory>
 
 namespace thespis::test {
+
+// Shows the dock holding `content` and brings it to the front of its tab group.
+inline void raiseDock(QWidget* content)
+{
+    auto* dock = qobject_cast<QDockWidget*>(content->parentWidget());
+    QVERIFY(dock);
+    dock->show();
+    dock->raise();
+    QApplication::processEvents();
+}
 
 inline void saveScreenshot(QWidget* widget, const QString& name)
 {

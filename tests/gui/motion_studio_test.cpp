@@ -28,6 +28,7 @@
 #include "editor/posture_chart_panel.h"
 #include "editor/properties_panel.h"
 #include "editor/timeline_panel.h"
+#include "gui_support.h"
 #include "main_window.h"
 #include "motion/posture.h"
 #include "motion/posture_bases.h"
@@ -35,25 +36,12 @@
 #include "widgets/timeline_view.h"
 
 using namespace thespis;
+using test::raiseDock;
+using test::saveScreenshot;
 
 namespace {
 
 QString demoPath() { return QStringLiteral(THESPIS_RESOURCES "/demo.thespis"); }
-
-void saveScreenshot(QWidget* widget, const QString& name)
-{
-    QDir().mkpath(QStringLiteral(THESPIS_SCREENSHOT_DIR));
-    QVERIFY(widget->grab().save(QStringLiteral(THESPIS_SCREENSHOT_DIR "/") + name));
-}
-
-void raiseDock(QWidget* content)
-{
-    auto* dock = qobject_cast<QDockWidget*>(content->parentWidget());
-    QVERIFY(dock);
-    dock->show();
-    dock->raise();
-    QApplication::processEvents();
-}
 
 // The share of the squared components from index `from` (0-based) on.
 double energyFrom(const std::vector<float>& pcs, std::size_t from)
