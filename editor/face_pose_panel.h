@@ -7,6 +7,7 @@
 // pose may start from the face at the playhead. "Save" adds it to the character as a face clip,
 // and to its gesticon as a face gesture when asked: one undoable step.
 
+#include <QPointer>
 #include <QWidget>
 
 #include <array>
@@ -73,7 +74,7 @@ private:
     void updateActions();
 
     Document* m_document = nullptr;
-    Session* m_session = nullptr;
+    QPointer<Session> m_session; // the session may go first when the window closes
     std::array<float, core::scene::kFaceChannelCount> m_pose{};
     std::array<QSlider*, core::scene::kFaceChannelCount> m_sliders{};
     std::array<QSpinBox*, core::scene::kFaceChannelCount> m_spins{};
