@@ -55,6 +55,23 @@ Curve Curve::cubicAdsr(double attack, double decay, double sustain, double relea
     return curve;
 }
 
+Curve Curve::dominance(double alpha, double peak)
+{
+    Curve curve;
+    curve.m_kind = CurveKind::Dominance;
+    curve.m_envelope.peak = peak;
+    curve.m_envelope.alpha = alpha;
+    return curve;
+}
+
+double dominance(double alpha, double x)
+{
+    if (!(x >= 0 && x <= 1))
+        return 0;
+    const double distance = 2 * std::abs(x - 0.5);
+    return std::exp(-alpha * distance) - distance * std::exp(-alpha);
+}
+
 Result<Curve> Curve::keyframed(std::vector<CurveKey> keys)
 {
     if (keys.empty())
@@ -81,13 +98,15 @@ Result<Curve> Curve::keyframed(std::vector<CurveKey> keys)
 Result<void> Curve::validate() const
 {
     const EnvelopeParams& e = m_envelope;
-    for (double v : {e.attack, e.decay, e.sustain, e.release, e.peak})
+    for (double v : {e.attack, e.decay, e.sustain, e.release, e.peak, e.alpha})
         if (!std::isfinite(v))
             return makeError(ErrorCode::InvalidArgument, "A curve parameter is not a finite number.");
     if (e.attack < 0 || e.decay < 0 || e.release < 0)
         return makeError(ErrorCode::InvalidArgument, "Curve times (attack, decay, release) must not be negative.");
     if (e.sustain < 0 || e.sustain > 1)
         return makeError(ErrorCode::InvalidArgument, "An ADSR sustain level must be between 0 and 1.");
+    if (m_kind == CurveKind::Dominance && !(e.alpha > 0))
+        return makeError(ErrorCode::InvalidArgument, "A dominance curve's alpha must be greater than 0.");
     if (m_kind == CurveKind::Keyframed && m_keys.empty())
         return makeError(ErrorCode::InvalidArgument, "A keyframed curve needs at least one key.");
     return {};
@@ -101,6 +120,9 @@ double Curve::evaluate(double t, double duration) const
         return e.peak;
     case CurveKind::Keyframed:
         return evaluateKeys(t);
+    case CurveKind::Dominance:
+        // Open-ended, it has no middle: it holds its peak, as a fade with no ends would.
+        return e.peak * (std::isfinite(duration) ? (duration > 0 ? dominance(e.alpha, t / duration) : 0.0) : 1.0);
     case CurveKind::LinearFade:
     case CurveKind::CubicFade: {
         const bool cubic = m_kind == CurveKind::CubicFade;

@@ -10,6 +10,9 @@
 // "Linear" ramps are straight; "cubic" ramps use 3u² − 2u³, so the curve is C1 everywhere.
 // An open-ended action (d = ∞) never releases. Keyframed curves are cubic Hermite splines with a
 // tangent mode per key, in the local time of the action (d is ignored).
+// The dominance curve is the paper's coarticulation weight (§5.2, eq. 3) over the action's
+// duration: with x = t/d, C_α(x) = e^(−α·2|x−0.5|) − 2|x−0.5|·e^(−α), times the peak. It is 0 at
+// both ends, 1·peak in the middle, and α sets how sharply it peaks (a viseme's dominance).
 
 #include <limits>
 #include <vector>
@@ -18,7 +21,7 @@
 
 namespace thespis::core::anim {
 
-enum class CurveKind { Constant, LinearFade, CubicFade, LinearAdsr, CubicAdsr, Keyframed };
+enum class CurveKind { Constant, LinearFade, CubicFade, LinearAdsr, CubicAdsr, Keyframed, Dominance };
 
 enum class TangentMode {
     AutoClamped, ///< smooth (Catmull-Rom slope), flattened at extrema so it never overshoots
@@ -42,7 +45,8 @@ struct EnvelopeParams {
     double decay = 0;   ///< ADSR only
     double sustain = 1; ///< ADSR only: level after decay, fraction of peak
     double release = 0; ///< fade-out time for fades, release time for ADSR
-    double peak = 1;    ///< level reached after the attack
+    double peak = 1;    ///< level reached after the attack (the dominance curve's maximum)
+    double alpha = 0;   ///< dominance only: its α (> 0; larger peaks more sharply)
     bool operator==(const EnvelopeParams&) const = default;
 };
 
@@ -56,10 +60,12 @@ public:
     static Curve cubicFade(double fadeIn, double fadeOut, double peak = 1);
     static Curve linearAdsr(double attack, double decay, double sustain, double release, double peak = 1);
     static Curve cubicAdsr(double attack, double decay, double sustain, double release, double peak = 1);
+    /// The coarticulation dominance C_α over the action's duration (α > 0), scaled by `peak`.
+    static Curve dominance(double alpha, double peak = 1);
     /// Keys are sorted by time; two keys at the same time are an error.
     static Result<Curve> keyframed(std::vector<CurveKey> keys);
 
-    /// Checks parameters: finite, non-negative times, sustain in [0, 1].
+    /// Checks parameters: finite, non-negative times, sustain in [0, 1], a dominance's α > 0.
     Result<void> validate() const;
 
     CurveKind kind() const { return m_kind; }
@@ -83,6 +89,9 @@ private:
     std::vector<CurveKey> m_keys;
     std::vector<double> m_outSlopes, m_inSlopes; // resolved slopes per key
 };
+
+/// The paper's eq. 3 at x in [0, 1]: e^(−α·2|x−0.5|) − 2|x−0.5|·e^(−α); 0 outside [0, 1].
+double dominance(double alpha, double x);
 
 /// 3u² − 2u³ for u in [0, 1]: the cubic fade used by cubic curves and cut-offs.
 inline double smoothStep(double u)

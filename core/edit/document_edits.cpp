@@ -66,9 +66,11 @@ Result<anim::Curve> withFades(const anim::Curve& curve, std::optional<double> fa
     case anim::CurveKind::CubicFade: return anim::Curve::cubicFade(in, out, e.peak);
     case anim::CurveKind::LinearAdsr: return anim::Curve::linearAdsr(in, e.decay, e.sustain, out, e.peak);
     case anim::CurveKind::CubicAdsr: return anim::Curve::cubicAdsr(in, e.decay, e.sustain, out, e.peak);
-    case anim::CurveKind::Keyframed: break;
+    case anim::CurveKind::Keyframed:
+        return invalid("A keyframed weight curve has no fade handles: move its keys in the curve editor.");
+    case anim::CurveKind::Dominance: break;
     }
-    return invalid("A keyframed weight curve has no fade handles: move its keys in the curve editor.");
+    return invalid("A dominance weight curve has no fade handles: it rises and falls over the whole action.");
 }
 
 // A keyframed curve's keys moved `seconds` earlier (for the second part of a split).

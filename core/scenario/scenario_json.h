@@ -51,6 +51,7 @@ constexpr NamedValue<anim::CurveKind> kCurveKinds[] = {
     {anim::CurveKind::Constant, "constant"},     {anim::CurveKind::LinearFade, "linearFade"},
     {anim::CurveKind::CubicFade, "cubicFade"},   {anim::CurveKind::LinearAdsr, "linearAdsr"},
     {anim::CurveKind::CubicAdsr, "cubicAdsr"},   {anim::CurveKind::Keyframed, "keyframed"},
+    {anim::CurveKind::Dominance, "dominance"},
 };
 constexpr NamedValue<anim::TangentMode> kTangentModes[] = {
     {anim::TangentMode::AutoClamped, "autoClamped"}, {anim::TangentMode::Linear, "linear"},

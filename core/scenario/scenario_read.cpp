@@ -49,6 +49,11 @@ anim::Curve readCurve(const json& value, const std::string& path, CurveUse use, 
                                                     : anim::Curve::cubicAdsr(attack, decay, sustain, release, peak);
         break;
     }
+    case anim::CurveKind::Dominance: {
+        const double alpha = r.number("alpha", true, 1, Range::Positive);
+        curve = anim::Curve::dominance(alpha, r.number("peak", false, 1, level));
+        break;
+    }
     case anim::CurveKind::Keyframed: {
         const json& list = r.array("keys", true);
         if (list.empty())

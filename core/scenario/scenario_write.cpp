@@ -70,6 +70,10 @@ ojson writeCurve(const anim::Curve& curve, const json& extra)
         out["release"] = e.release;
         out["peak"] = e.peak;
         break;
+    case anim::CurveKind::Dominance:
+        out["alpha"] = e.alpha;
+        out["peak"] = e.peak;
+        break;
     case anim::CurveKind::Keyframed: {
         const json* keyExtras = nullptr;
         if (extra.is_object()) {
