@@ -128,33 +128,38 @@ void SoundService::mix(Tick from, std::span<float> out) const
         s = std::clamp(s, -1.0f, 1.0f);
 }
 
-Result<void> SoundService::writeWav(const std::filesystem::path& path, Tick from, Tick to) const
+Result<void> writeWav(const std::filesystem::path& path, int rate, std::span<const float> samples)
 {
-    const auto frames = std::size_t(std::max<Tick>(0, (to - from)) * m_rate / TicksPerSecond);
-    std::vector<float> samples(frames);
-    mix(from, samples);
     // A 16-bit PCM RIFF WAV, written whole through the project's atomic writer.
     std::string bytes;
     const auto put = [&](std::uint32_t value, int size) {
         for (int b = 0; b < size; ++b)
             bytes.push_back(char((value >> (8 * b)) & 0xff));
     };
-    const std::uint32_t dataBytes = std::uint32_t(frames * 2);
+    const std::uint32_t dataBytes = std::uint32_t(samples.size() * 2);
     bytes += "RIFF";
     put(36 + dataBytes, 4);
     bytes += "WAVEfmt ";
     put(16, 4);
     put(1, 2); // PCM
     put(1, 2); // mono
-    put(std::uint32_t(m_rate), 4);
-    put(std::uint32_t(m_rate) * 2, 4);
+    put(std::uint32_t(rate), 4);
+    put(std::uint32_t(rate) * 2, 4);
     put(2, 2);
     put(16, 2);
     bytes += "data";
     put(dataBytes, 4);
     for (const float s : samples)
-        put(std::uint32_t(std::uint16_t(std::int16_t(std::lround(s * 32767.0f)))), 2);
+        put(std::uint32_t(std::uint16_t(std::int16_t(std::lround(std::clamp(s, -1.0f, 1.0f) * 32767.0f)))), 2);
     return writeFileAtomically(path, bytes);
+}
+
+Result<void> SoundService::writeWav(const std::filesystem::path& path, Tick from, Tick to) const
+{
+    const auto frames = std::size_t(std::max<Tick>(0, (to - from)) * m_rate / TicksPerSecond);
+    std::vector<float> samples(frames);
+    mix(from, samples);
+    return runtime::writeWav(path, m_rate, samples);
 }
 
 std::size_t SoundService::activationCount() const

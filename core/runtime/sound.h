@@ -32,6 +32,9 @@ struct SoundClip {
 /// Reads a sound file (WAV, OGG Vorbis, FLAC, …). Errors name the file and what is wrong.
 Result<std::shared_ptr<const SoundClip>> loadSound(const std::filesystem::path& path);
 
+/// Writes mono samples (−1 … 1, clamped) as a 16-bit PCM WAV, atomically.
+Result<void> writeWav(const std::filesystem::path& path, int rate, std::span<const float> samples);
+
 class SoundService {
 public:
     /// Sounds are assets of `assets` (a scenario's); mix() renders at `mixRate` samples per second.

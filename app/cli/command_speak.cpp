@@ -1,0 +1,144 @@
+// thespis-cli speak: a character of a scenario says tagged text (paper §5): core's SpeakJob
+// speaks it with espeak-ng and plans its visemes and gestures; the speech is written as a WAV,
+// and with --scenario-out its face actions and gestures are inserted into the scenario as the
+// studio's Insert does (core/edit/speech_edits.h).
+
+#include <cstdio>
+
+#include "commands.h"
+#include "edit/speech_edits.h"
+#include "exit_codes.h"
+#include "job_progress.h"
+#include "scenario/scenario_io.h"
+#include "speech/speak_job.h"
+#include "util/file_io.h"
+
+namespace thespis::cli {
+
+CommandSpec speakSpec()
+{
+    CommandSpec spec;
+    spec.name = "speak";
+    spec.summary = "Make a character say tagged text: speech audio, visemes and gestures.";
+    spec.positionals = {"SCENARIO"};
+    spec.options = {
+        {"character", "NAME", "who speaks", true},
+        {"text", "TEXT", "what is said; gestures as <begin_gesture id=\"g1\" anim=\"NAME\"/> … <end_gesture id=\"g1\"/>"},
+        {"text-file", "FILE", "read what is said from a UTF-8 file instead"},
+        {"voice", "VOICE", "an espeak-ng voice (default en-us; --voices lists them)"},
+        {"rate", "WPM", "words a minute, 80 … 450 (default 175)"},
+        {"pitch", "P", "0 … 100 (default 50)"},
+        {"at", "SECONDS", "where the speech starts on the scenario's timeline (default 0)"},
+        {"out", "FILE.wav", "the speech audio (16-bit, 22 050 Hz)"},
+        {"scenario-out", "FILE.thespis", "the scenario with the speech's face actions and gestures inserted"},
+        {"quiet", "", "no progress and no summary"},
+    };
+    spec.description =
+        "The text is spoken sentence by sentence. Each phoneme becomes an MPEG-4 viseme action on the\n"
+        "character's \"Speech\" face layer, weighted by the coarticulation dominance curve; each\n"
+        "tagged gesture plays its gesticon entry over the time of its words (face gestures on the\n"
+        "Speech layer, body gestures on a \"Gestures\" layer). The summary lists the words with their\n"
+        "times. Give --out, --scenario-out or both.\n"
+        "Example: thespis-cli speak demo.thespis --character Creon --text 'Are you <begin_gesture\n"
+        "  id=\"g1\" anim=\"agree\"/>sure?<end_gesture id=\"g1\"/>' --out creon.wav --scenario-out demo2.thespis\n"
+        "Exit status: 0 done, 2 bad command line or text, 3 the scenario cannot be read or has no such\n"
+        "character or gesture, 4 a file could not be written, 130 cancelled.";
+    return spec;
+}
+
+int runSpeak(const CommandSpec& spec, const ParsedArguments& arguments)
+{
+    const auto text = arguments.value("text");
+    const auto textFile = arguments.value("text-file");
+    if (text.has_value() == textFile.has_value())
+        return usageError(spec, "give either --text or --text-file");
+    const auto out = arguments.value("out");
+    const auto scenarioOut = arguments.value("scenario-out");
+    if (!out && !scenarioOut)
+        return usageError(spec, "give --out, --scenario-out or both");
+
+    core::speech::SpeakJob job;
+    if (textFile) {
+        auto read = core::readTextFile(*textFile);
+        if (!read) {
+            printError(spec.name, read.error());
+            return ExitInvalidInput;
+        }
+        job.text = std::move(*read);
+    } else {
+        job.text = *text;
+    }
+    int exitCode = ExitOk;
+    job.voice.voice = arguments.value("voice").value_or(job.voice.voice);
+    job.voice.wordsPerMinute = int(integerOption(spec, arguments, "rate", core::speech::kMinWordsPerMinute,
+                                                 core::speech::kMaxWordsPerMinute, exitCode)
+                                       .value_or(job.voice.wordsPerMinute));
+    job.voice.pitch = int(integerOption(spec, arguments, "pitch", 0, 100, exitCode).value_or(job.voice.pitch));
+    if (exitCode != ExitOk)
+        return exitCode;
+    double at = 0;
+    if (const auto value = arguments.value("at")) {
+        const auto seconds = parseNumber(*value);
+        if (!seconds || *seconds < 0)
+            return usageError(spec, "--at must be zero or more seconds, not '" + *value + "'");
+        at = *seconds;
+    }
+    job.wavOutput = out.value_or("");
+    if (auto valid = job.validate(); !valid)
+        return usageError(spec, valid.error().message);
+
+    const std::filesystem::path scenarioPath = arguments.positionals[0];
+    auto opened = openScenarioReporting(spec.name, scenarioPath);
+    if (!opened)
+        return ExitInvalidInput;
+    const std::string character = *arguments.value("character");
+    const core::scenario::Character* speaker = opened->scenario.findCharacter(character);
+    if (!speaker) {
+        printError(spec.name, "the scenario has no character '" + character + "'");
+        return ExitInvalidInput;
+    }
+    const int index = int(speaker - opened->scenario.characters.data());
+
+    const bool quiet = arguments.has("quiet");
+    const auto spoken = runJobWithProgress(spec.name, job, {core::speech::SpeakJob::SpeakingStage, "sentences"}, quiet,
+                                           out ? *out + " was not written" : "nothing was written");
+    if (!spoken)
+        return reportJobFailure(spec.name, spoken.error());
+
+    if (scenarioOut) {
+        auto inserted = core::edit::insertSpeech(opened->scenario, index, core::secondsToTicks(at), job.visemeCues,
+                                                 job.gestureCues);
+        if (!inserted) {
+            printError(spec.name, inserted.error());
+            job.discardOutput();
+            return ExitInvalidInput;
+        }
+        core::scenario::Scenario result = opened->scenario;
+        if (auto applied = inserted->edit.apply(result); !applied) {
+            printError(spec.name, applied.error());
+            return ExitFailure;
+        }
+        const std::filesystem::path target = *scenarioOut;
+        core::scenario::rebasePaths(result, std::filesystem::absolute(scenarioPath).parent_path(),
+                                    std::filesystem::absolute(target).parent_path());
+        if (auto saved = core::scenario::saveScenario(target, result); !saved) {
+            printError(spec.name, saved.error());
+            job.discardOutput();
+            return ExitFailure;
+        }
+        if (!quiet)
+            std::printf("Inserted into %s: %d viseme actions, %d face and %d body gestures for %s from %g s.\n",
+                        target.string().c_str(), inserted->visemeActions, inserted->faceGestures,
+                        inserted->bodyGestures, character.c_str(), at);
+    }
+    if (quiet)
+        return ExitOk;
+    const auto& timing = job.utterance.timing;
+    std::printf("%s says %zu words in %.2f s%s%s.\n", character.c_str(), timing.words.size(), timing.duration,
+                out ? ", written to " : "", out ? out->c_str() : "");
+    for (const auto& word : timing.words)
+        std::printf("  %7.3f %7.3f  %s\n", at + word.start, at + word.end, word.text.c_str());
+    return ExitOk;
+}
+
+} // namespace thespis::cli

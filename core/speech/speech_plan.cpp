@@ -1,0 +1,68 @@
+#include "speech/speech_plan.h"
+
+#include <algorithm>
+
+namespace thespis::core::speech {
+
+std::vector<VisemeCue> visemeCues(const SpeechTiming& timing, const VisemeSet& set)
+{
+    std::vector<VisemeCue> cues;
+    for (std::size_t i = 0; i < timing.phonemes.size(); ++i) {
+        const PhonemeTiming& p = timing.phonemes[i];
+        if (isPause(p.phoneme) || !(p.end > p.start))
+            continue;
+        const std::vector<int> ids = set.visemesOf(p.phoneme);
+        const double part = (p.end - p.start) / double(ids.size());
+        for (std::size_t k = 0; k < ids.size(); ++k) {
+            const Viseme* viseme = set.find(ids[k]);
+            if (!viseme || viseme->id == 0)
+                continue;
+            const double from = p.start + part * double(k), to = from + part;
+            // Widened by the spread on each side; kept symmetric about the centre, so the peak of
+            // the dominance curve stays on the phoneme even when the start is clamped at 0.
+            const double reach = std::min(part * viseme->spread, from);
+            VisemeCue cue;
+            cue.viseme = viseme->id;
+            cue.name = viseme->name;
+            cue.phoneme = p.phoneme;
+            cue.phonemeIndex = int(i);
+            cue.start = from - reach;
+            cue.duration = (to - from) + 2 * reach;
+            cue.centre = (from + to) / 2;
+            cue.weight = anim::Curve::dominance(viseme->alpha, viseme->weight);
+            cues.push_back(std::move(cue));
+        }
+    }
+    std::stable_sort(cues.begin(), cues.end(), [](const VisemeCue& a, const VisemeCue& b) { return a.start < b.start; });
+    return cues;
+}
+
+std::vector<GestureCue> gestureCues(const TaggedText& text, const SpeechTiming& timing)
+{
+    std::vector<GestureCue> cues;
+    for (const TaggedGesture& g : text.gestures) {
+        GestureCue cue{g.id, g.animation, 0, 0, g.line, g.column};
+        bool any = false;
+        double before = 0, after = timing.duration;
+        for (const WordTiming& w : timing.words) {
+            const bool inside = w.textBegin < g.end && w.textEnd > g.begin;
+            if (inside) {
+                cue.start = any ? std::min(cue.start, w.start) : w.start;
+                cue.end = any ? std::max(cue.end, w.end) : w.end;
+                any = true;
+            } else if (w.textEnd <= g.begin) {
+                before = std::max(before, w.end);
+            } else if (w.textBegin >= g.end) {
+                after = std::min(after, w.start);
+            }
+        }
+        if (!any) {
+            cue.start = before;
+            cue.end = std::max(before, after);
+        }
+        cues.push_back(std::move(cue));
+    }
+    return cues;
+}
+
+} // namespace thespis::core::speech

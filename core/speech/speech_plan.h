@@ -1,0 +1,45 @@
+#pragma once
+// From speech timing to what the face does (paper §5.2): every phoneme shows its viseme, as a
+// blending action on the face track whose weight is the coarticulation dominance curve (eq. 3)
+// over the phoneme widened by the viseme's spread, so that neighbouring visemes overlap and blend
+// (Cohen and Massaro's model: where several are active, each counts by its dominance); and every
+// gesture of tagged text spans the time its words are spoken. One plan serves the studio's
+// preview and Insert, the command line and scripts.
+
+#include <string>
+#include <vector>
+
+#include "anim/curve.h"
+#include "speech/speech_timing.h"
+#include "speech/tagged_text.h"
+#include "speech/viseme_set.h"
+
+namespace thespis::core::speech {
+
+struct VisemeCue {
+    int viseme = 0;           ///< the set's id (MPEG-4's are the face's viseme channels)
+    std::string name;         ///< the viseme's name ("p_b_m")
+    std::string phoneme;      ///< the ARPAbet phoneme it shows
+    int phonemeIndex = 0;     ///< into SpeechTiming::phonemes
+    double start = 0;         ///< seconds: the phoneme widened by the spread (never below 0)
+    double duration = 0;
+    double centre = 0;        ///< where it peaks: the middle of its phoneme (or of its part of it)
+    anim::Curve weight;       ///< dominance(α) × the viseme's weight, over [start, start + duration]
+};
+
+struct GestureCue {
+    std::string id, animation;
+    double start = 0, end = 0; ///< seconds: from its first word's start to its last word's end
+    int line = 0, column = 0;  ///< of its tag
+};
+
+/// The visemes of `timing` in `set`: one cue per phoneme (two or more when the set shows a
+/// phoneme as a sequence, "ey" → 4, 6, each taking an equal part), none in pauses. Sorted by start.
+std::vector<VisemeCue> visemeCues(const SpeechTiming& timing, const VisemeSet& set = mpeg4Visemes());
+
+/// When each gesture of `text` plays, from the timing of the words it spans (the timing of
+/// `text.text`, whose words' text offsets are into it). A gesture spanning no word (tags side by
+/// side, or around punctuation) lasts from the end of the word before it to the start of the next.
+std::vector<GestureCue> gestureCues(const TaggedText& text, const SpeechTiming& timing);
+
+} // namespace thespis::core::speech

@@ -1,0 +1,237 @@
+// Speech on the face (core/speech/speech_plan.h, speak_job.h, core/edit/speech_edits.h): the
+// demo's Creon says a line through the user's path — the speak job, Insert into the scenario,
+// the runtime and the Stage — and the face is checked where a person would look: the lips shut
+// on every p, b and m, each viseme's weight peaks on its phoneme, gestures span their words.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "edit/speech_edits.h"
+#include "runtime/sound.h"
+#include "runtime/stage.h"
+#include "scenario/scenario_io.h"
+#include "scene/fap.h"
+#include "speech/speak_job.h"
+#include "test_support.h"
+
+namespace thespis::test {
+namespace {
+
+namespace speech = core::speech;
+using core::scenario::Scenario;
+
+Scenario demo()
+{
+    auto scenario = core::scenario::loadScenario(resources("demo.thespis"));
+    EXPECT_TRUE(scenario) << core::describe(scenario.error());
+    return scenario ? std::move(scenario).value() : Scenario{};
+}
+
+// Creon's gesticon gains a face gesture: his eyebrows raised (FAPs 31–36), held a second.
+void addEyebrowGesture(Scenario& scenario)
+{
+    auto& creon = scenario.characters[0];
+    core::scenario::ClipAsset clip;
+    clip.name = "eyebrows up";
+    clip.frameRate = 1;
+    clip.scalars = {"fap31", "fap32", "fap33", "fap34", "fap35", "fap36"};
+    clip.frames = {200, 200, 200, 200, 200, 200, 200, 200, 200, 200, 200, 200};
+    creon.clips.push_back(clip);
+    creon.gestures.push_back({.name = "raise_eyebrows", .clip = "eyebrows up", .fadeIn = core::secondsToTicks(0.1),
+                              .fadeOut = core::secondsToTicks(0.1)});
+}
+
+speech::SpeakJob spoken(const std::string& text)
+{
+    speech::SpeakJob job;
+    job.text = text;
+    core::JobContext context;
+    auto ran = job.run(context);
+    EXPECT_TRUE(ran.ok()) << (ran.ok() ? "" : ran.error().message);
+    return job;
+}
+
+struct Played {
+    Scenario scenario;
+    std::shared_ptr<core::runtime::Stage> stage;
+};
+
+Played insertedAndPlayed(Scenario scenario, const speech::SpeakJob& job, double at)
+{
+    auto inserted = core::edit::insertSpeech(scenario, 0, core::secondsToTicks(at), job.visemeCues, job.gestureCues);
+    EXPECT_TRUE(inserted.ok()) << (inserted.ok() ? "" : inserted.error().message);
+    if (!inserted)
+        return {};
+    EXPECT_TRUE(inserted->edit.apply(scenario).ok());
+    auto runtime = core::scenario::buildRuntime(scenario, resources());
+    EXPECT_TRUE(runtime) << core::describe(runtime.error());
+    return {scenario, std::make_shared<core::runtime::Stage>(std::move(runtime).value())};
+}
+
+std::vector<float> faceAt(core::runtime::Stage& stage, double seconds)
+{
+    core::runtime::PoseSet poses = stage.makePoseSet();
+    stage.evaluate(core::secondsToTicks(seconds), poses);
+    return poses.characters[0].face;
+}
+
+} // namespace
+
+TEST(SpeechPlan, LipsShutOnEveryPBAndM)
+{
+    const double at = 1.0;
+    const speech::SpeakJob job = spoken("Pop the bubble, Bob. Maybe mum may come by the mill.");
+    Played played = insertedAndPlayed(demo(), job, at);
+    ASSERT_TRUE(played.stage);
+    int closures = 0;
+    for (const speech::PhonemeTiming& p : job.utterance.timing.phonemes) {
+        if (p.phoneme != "P" && p.phoneme != "B" && p.phoneme != "M")
+            continue;
+        const std::vector<float> face = faceAt(*played.stage, at + (p.start + p.end) / 2);
+        const float closed = face[std::size_t(core::scene::visemeChannel(1))];
+        for (int v = 2; v <= core::scene::kVisemeCount; ++v)
+            EXPECT_GT(closed, face[std::size_t(core::scene::visemeChannel(v))])
+                << p.phoneme << " at " << p.start << " s: viseme " << v << " dominates the closed lips";
+        EXPECT_GT(closed, 0.6f) << p.phoneme << " at " << p.start << " s";
+        ++closures;
+    }
+    EXPECT_GE(closures, 12);
+    // Between sentences the mouth rests.
+    const auto pause = std::find_if(job.utterance.timing.phonemes.begin(), job.utterance.timing.phonemes.end(),
+                                    [](const auto& p) { return speech::isPause(p.phoneme) && p.end - p.start > 0.1 && p.start > 0; });
+    ASSERT_NE(pause, job.utterance.timing.phonemes.end());
+    const std::vector<float> rest = faceAt(*played.stage, at + (pause->start + pause->end) / 2);
+    for (int v = 1; v <= core::scene::kVisemeCount; ++v)
+        EXPECT_LT(rest[std::size_t(core::scene::visemeChannel(v))], 0.05f) << v;
+}
+
+TEST(SpeechPlan, EachVisemePeaksOnItsPhoneme)
+{
+    const double at = 0.5;
+    const speech::SpeakJob job = spoken("Are you really sure about that?");
+    Played played = insertedAndPlayed(demo(), job, at);
+    const auto& layers = played.scenario.characters[0].layers;
+    const auto layer = std::find_if(layers.begin(), layers.end(), [](const auto& l) { return l.name == "Speech"; });
+    ASSERT_NE(layer, layers.end());
+    ASSERT_EQ(layer->actions.size(), job.visemeCues.size());
+    for (std::size_t i = 0; i < job.visemeCues.size(); ++i) {
+        const speech::VisemeCue& cue = job.visemeCues[i];
+        const auto& action = layer->actions[i];
+        EXPECT_EQ(action.weight.kind(), core::anim::CurveKind::Dominance);
+        // The action's weight over its stretched length, sampled every millisecond.
+        const double start = core::ticksToSeconds(action.start), duration = action.modifiers.at(0).factor;
+        double best = -1, peak = 0;
+        for (double t = 0; t <= duration; t += 0.001)
+            if (const double w = action.weight.evaluate(t, duration); w > best) {
+                best = w;
+                peak = start + t;
+            }
+        const speech::PhonemeTiming& p = job.utterance.timing.phonemes[std::size_t(cue.phonemeIndex)];
+        EXPECT_NEAR(peak, at + (p.start + p.end) / 2, 0.020) << p.phoneme;
+    }
+}
+
+TEST(SpeechPlan, AGestureSpansItsWordsAndMovesTheBrows)
+{
+    Scenario scenario = demo();
+    addEyebrowGesture(scenario);
+    const speech::SpeakJob job = spoken(
+        R"(Are you <begin_gesture id="g1" anim="raise_eyebrows"/>really sure<end_gesture id="g1"/> about that?)");
+    ASSERT_EQ(job.gestureCues.size(), 1u);
+    const auto& words = job.utterance.timing.words;
+    ASSERT_EQ(words.size(), 6u);
+    EXPECT_EQ(job.gestureCues[0].start, words[2].start);
+    EXPECT_EQ(job.gestureCues[0].end, words[3].end);
+
+    Played played = insertedAndPlayed(scenario, job, 0);
+    const int brow = core::scene::fapChannel(31);
+    const double middle = (words[2].start + words[3].end) / 2;
+    EXPECT_GT(faceAt(*played.stage, middle)[std::size_t(brow)], 190.0f) << "the brows are raised on 'really sure'";
+    EXPECT_LT(std::abs(faceAt(*played.stage, words[5].end + 0.3)[std::size_t(brow)]), 1.0f) << "and down after";
+}
+
+TEST(SpeechPlan, UnknownGesturesAreNamedWithTheirPlace)
+{
+    const speech::SpeakJob job = spoken("Hello <begin_gesture id=\"g\" anim=\"juggle\"/>there<end_gesture id=\"g\"/>.");
+    Scenario scenario = demo();
+    auto inserted = core::edit::insertSpeech(scenario, 0, 0, job.visemeCues, job.gestureCues);
+    ASSERT_FALSE(inserted.ok());
+    EXPECT_EQ(inserted.error().message,
+              "line 1, column 7: the gesture \"juggle\" is not in Creon's gesticon (it has: greet, agree).");
+}
+
+TEST(SpeechPlan, InsertIsOneStepThatUndoes)
+{
+    Scenario scenario = demo();
+    const Scenario before = scenario;
+    const speech::SpeakJob job = spoken("Maybe.");
+    auto inserted = core::edit::insertSpeech(scenario, 0, core::secondsToTicks(2), job.visemeCues, job.gestureCues);
+    ASSERT_TRUE(inserted.ok()) << inserted.error().message;
+    ASSERT_TRUE(inserted->edit.apply(scenario).ok());
+    EXPECT_NE(scenario, before);
+    EXPECT_TRUE(scenario.findMask("Speech"));
+    EXPECT_TRUE(scenario.characters[0].findClip("viseme p_b_m"));
+    // The scenario reads back as written.
+    auto reread = core::scenario::parseScenario(core::scenario::serializeScenario(scenario));
+    ASSERT_TRUE(reread.ok()) << reread.error().message;
+    ASSERT_TRUE(inserted->edit.inverse().apply(scenario).ok());
+    EXPECT_EQ(scenario, before);
+}
+
+TEST(SpeakJob, SentencesAreSpokenInTurnAndTheWavHoldsThemAll)
+{
+    speech::SpeakJob job;
+    job.text = "First sentence.  Second one! And a third?";
+    job.wavOutput = artifact("speak_job.wav");
+    std::vector<double> ready;
+    job.sentenceReady = [&](const speech::Utterance& soFar) { ready.push_back(soFar.duration()); };
+    core::JobContext context;
+    ASSERT_TRUE(job.run(context).ok());
+    ASSERT_EQ(ready.size(), 3u);
+    EXPECT_LT(ready[0], ready[1]);
+    EXPECT_DOUBLE_EQ(ready[2], job.utterance.duration());
+    EXPECT_EQ(job.utterance.timing.words.size(), 7u);
+    EXPECT_EQ(job.utterance.timing.words[2].text, "Second");
+    EXPECT_GT(job.utterance.timing.words[2].start, ready[0] - 1e-9);
+    auto wav = core::runtime::loadSound(job.wavOutput);
+    ASSERT_TRUE(wav.ok()) << wav.error().message;
+    EXPECT_EQ((*wav)->rate, 22050);
+    EXPECT_EQ((*wav)->samples.size(), job.utterance.samples.size());
+    EXPECT_NEAR(job.utterance.timing.phonemes.back().end, (*wav)->duration(), 0.020);
+}
+
+TEST(SpeakJob, CancelLeavesNoFile)
+{
+    speech::SpeakJob job;
+    job.text = "One. Two. Three.";
+    job.wavOutput = artifact("speak_job_cancelled.wav");
+    std::filesystem::remove(job.wavOutput);
+    std::stop_source stop;
+    job.sentenceReady = [&](const speech::Utterance&) { stop.request_stop(); };
+    core::JobContext context(stop.get_token());
+    auto ran = job.run(context);
+    ASSERT_FALSE(ran.ok());
+    EXPECT_EQ(ran.error().code, core::ErrorCode::Cancelled);
+    EXPECT_FALSE(std::filesystem::exists(job.wavOutput));
+}
+
+TEST(SpeakJob, BadTagsAreRefusedBeforeSpeaking)
+{
+    speech::SpeakJob job;
+    job.text = "Hello\n<begin_gesture id=\"g\"/>there";
+    auto valid = job.validate();
+    ASSERT_FALSE(valid.ok());
+    EXPECT_NE(valid.error().message.find("line 2, column 1"), std::string::npos) << valid.error().message;
+}
+
+TEST(SpeakJob, SentenceRanges)
+{
+    const std::string text = "Mr. Smith said \"Hi!\" Then (he left.) 3.5 apples? Yes";
+    std::vector<std::string> sentences;
+    for (auto [b, e] : speech::sentenceRanges(text))
+        sentences.push_back(text.substr(b, e - b));
+    EXPECT_EQ(sentences, (std::vector<std::string>{"Mr.", "Smith said \"Hi!\"", "Then (he left.)", "3.5 apples?", "Yes"}));
+}
+
+} // namespace thespis::test
