@@ -29,7 +29,7 @@ CommandSpec playSpec()
         {"camera", "FILE.yml", "the calibration of the camera that filmed --video"},
         {"fps", "N", "frames per second without --video (default 30)"},
         {"script", "S.py|NAME", "a Python script that plays along (a file, or a script kept in the scenario), as `run` runs it"},
-        {"audio", "", "also write the sounds played (the script's voiceService) as a WAV beside the video: OUT.wav"},
+        {"audio", "", "also write the sounds played (the characters' speech lines, the script's voiceService) as a WAV beside the video: OUT.wav"},
     };
     addTargetOptions(spec);
     addPictureOptions(spec);
@@ -117,9 +117,9 @@ int runPlay(const CommandSpec& spec, const ParsedArguments& arguments)
                         scenarioPath.filename().string().c_str(), job.video.filename().string().c_str(),
                         static_cast<long long>(job.tracked), static_cast<long long>(job.frames),
                         job.output.string().c_str());
-        if (job.script)
-            std::printf("The script played %zu sound%s; the video lasts %.3f s.\n", job.sounds, job.sounds == 1 ? "" : "s",
-                        job.seconds);
+        if (job.script || job.sounds > 0)
+            std::printf("%zu sound%s played (speech lines and the script's); the video lasts %.3f s.\n", job.sounds,
+                        job.sounds == 1 ? "" : "s", job.seconds);
         if (!job.audio.empty())
             std::printf("Wrote the sound into %s.\n", job.audio.string().c_str());
     }

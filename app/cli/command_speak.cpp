@@ -30,13 +30,15 @@ CommandSpec speakSpec()
         {"pitch", "P", "0 … 100 (default 50)"},
         {"at", "SECONDS", "where the speech starts on the scenario's timeline (default 0)"},
         {"out", "FILE.wav", "the speech audio (16-bit, 22 050 Hz)"},
-        {"scenario-out", "FILE.thespis", "the scenario with the speech's face actions and gestures inserted"},
+        {"scenario-out", "FILE.thespis", "the scenario with the line (its text, voice, timing and --out audio), its face actions and gestures"},
         {"quiet", "", "no progress and no summary"},
     };
     spec.description =
-        "The text is spoken sentence by sentence. Each phoneme becomes an MPEG-4 viseme action on the\n"
-        "character's \"Speech\" face layer, weighted by the coarticulation dominance curve; each\n"
-        "tagged gesture plays its gesticon entry over the time of its words (face gestures on the\n"
+        "The text is spoken sentence by sentence. With --scenario-out the line is kept on the\n"
+        "character (its audio plays from --at in `play --audio` and travels in packages), each\n"
+        "phoneme becomes an MPEG-4 viseme action on the character's \"Speech\" face layer, weighted\n"
+        "by the coarticulation dominance curve, and each tagged gesture plays its gesticon entry\n"
+        "over the time of its words (face gestures on the\n"
         "Speech layer, body gestures on a \"Gestures\" layer). The summary lists the words with their\n"
         "times. Give --out, --scenario-out or both.\n"
         "Example: thespis-cli speak demo.thespis --character Creon --text 'Are you <begin_gesture\n"
@@ -106,8 +108,15 @@ int runSpeak(const CommandSpec& spec, const ParsedArguments& arguments)
         return reportJobFailure(spec.name, spoken.error());
 
     if (scenarioOut) {
-        auto inserted = core::edit::insertSpeech(opened->scenario, index, core::secondsToTicks(at), job.visemeCues,
-                                                 job.gestureCues);
+        // The line names its audio relative to the scenario it is saved in, as every file is.
+        const std::filesystem::path target = *scenarioOut;
+        const std::string audio =
+            out ? std::filesystem::absolute(*out).lexically_relative(std::filesystem::absolute(target).parent_path()).generic_string()
+                : std::string{};
+        auto inserted = core::edit::insertSpeech(
+            opened->scenario, index,
+            core::edit::speechLine(job.text, job.voice, job.utterance.timing, audio, core::secondsToTicks(at)),
+            job.visemeCues, job.gestureCues);
         if (!inserted) {
             printError(spec.name, inserted.error());
             job.discardOutput();
@@ -118,7 +127,6 @@ int runSpeak(const CommandSpec& spec, const ParsedArguments& arguments)
             printError(spec.name, applied.error());
             return ExitFailure;
         }
-        const std::filesystem::path target = *scenarioOut;
         core::scenario::rebasePaths(result, std::filesystem::absolute(scenarioPath).parent_path(),
                                     std::filesystem::absolute(target).parent_path());
         if (auto saved = core::scenario::saveScenario(target, result); !saved) {

@@ -23,22 +23,18 @@ constexpr const char* kSpeechMask = "Speech";
 
 Error invalid(std::string message) { return makeError(ErrorCode::InvalidArgument, std::move(message)); }
 
-// Applies `step` to `after` and appends it to `edit`: later steps are made for the document as
-// the earlier ones leave it.
-Result<void> take(Result<Edit> step, Scenario& after, Edit& edit)
+// Applies `step` to `after`: later steps are made for the document as the earlier ones leave it.
+Result<void> take(Result<Edit> step, Scenario& after)
 {
     if (!step)
         return step.error();
-    if (auto applied = step->apply(after); !applied)
-        return applied.error();
-    edit.append(std::move(*step));
-    return {};
+    return step->apply(after);
 }
 
 // The layer of that name and kind, added when the character has none: an Override layer, so that
 // where its actions cover the face (or the body part) they replace what the layers below do,
 // and where they fade out the layers below show again.
-Result<LayerPath> layerNamed(Scenario& after, Edit& edit, int character, const std::string& name, LayerKind kind)
+Result<LayerPath> layerNamed(Scenario& after, int character, const std::string& name, LayerKind kind)
 {
     const auto& layers = after.characters[std::size_t(character)].layers;
     const auto it = std::find_if(layers.begin(), layers.end(),
@@ -53,7 +49,7 @@ Result<LayerPath> layerNamed(Scenario& after, Edit& edit, int character, const s
     layer.kind = kind;
     layer.mode = anim::BlendMode::Override;
     const LayerPath path{character, int(layers.size())};
-    if (auto added = take(Edit(LayerChange{path, std::nullopt, std::move(layer)}), after, edit); !added)
+    if (auto added = take(Edit(LayerChange{path, std::nullopt, std::move(layer)}), after); !added)
         return added.error();
     return path;
 }
@@ -86,10 +82,29 @@ std::string gesturesOf(const scenario::Character& character)
 
 } // namespace
 
-Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, Tick at,
+scenario::SpeechLine speechLine(const std::string& text, const speech::VoiceSettings& voice,
+                                const speech::SpeechTiming& timing, std::string audio, Tick start)
+{
+    scenario::SpeechLine line;
+    line.name = "line";
+    line.start = start;
+    line.text = text;
+    line.voice = voice.voice;
+    line.rate = voice.wordsPerMinute;
+    line.pitch = voice.pitch;
+    line.audio = std::move(audio);
+    for (const speech::WordTiming& w : timing.words)
+        line.words.push_back({w.text, w.start, w.end});
+    for (const speech::PhonemeTiming& p : timing.phonemes)
+        line.phonemes.push_back({p.phoneme, p.start, p.end});
+    return line;
+}
+
+Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, scenario::SpeechLine line,
                                      const std::vector<speech::VisemeCue>& visemes,
                                      const std::vector<speech::GestureCue>& gestures)
 {
+    const Tick at = line.start;
     if (character < 0 || character >= int(scenario.characters.size()))
         return invalid("There is no character " + std::to_string(character) + " to speak.");
     if (at < 0)
@@ -106,11 +121,10 @@ Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, Ti
                                                       + "'s gesticon (it has: " + gesturesOf(speaker) + ").");
 
     SpeechInsertion result;
-    Edit& edit = result.edit;
     Scenario after = scenario;
     auto& who = after.characters[std::size_t(character)];
     if (!after.findMask(kSpeechMask))
-        if (auto added = take(addMask(after, kSpeechMask, scene::faceMaskPreset(scene::FaceMaskPreset::Speech)), after, edit);
+        if (auto added = take(addMask(after, kSpeechMask, scene::faceMaskPreset(scene::FaceMaskPreset::Speech)), after);
             !added)
             return added.error();
     std::vector<ClipAsset> missing;
@@ -119,7 +133,7 @@ Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, Ti
             && std::none_of(missing.begin(), missing.end(), [&](const ClipAsset& c) { return c.name == visemeClipName(cue.name); }))
             missing.push_back(visemeClip(cue));
     if (!missing.empty())
-        if (auto added = take(addClips(after, character, std::move(missing)), after, edit); !added)
+        if (auto added = take(addClips(after, character, std::move(missing)), after); !added)
             return added.error();
 
     std::vector<ActionSpec> face, body;
@@ -148,29 +162,36 @@ Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, Ti
             action.modifiers.insert(action.modifiers.begin(), stretchTo(cue.end - cue.start, clipSeconds));
         (isFace ? face : body).push_back(std::move(action));
     }
-    // gestureAction() may have added a widened mask to `after`: the edit must add it too.
-    for (std::size_t m = scenario.masks.size() + (scenario.findMask(kSpeechMask) ? 0 : 1); m < after.masks.size(); ++m)
-        edit.add(MaskChange{int(m), std::nullopt, after.masks[m]});
-
+    if (face.empty() && body.empty())
+        return invalid("There is nothing to insert: the speech has no phonemes.");
     if (!face.empty()) {
-        auto layer = layerNamed(after, edit, character, kSpeechLayer, LayerKind::Face);
+        auto layer = layerNamed(after, character, kSpeechLayer, LayerKind::Face);
         if (!layer)
             return layer.error();
         result.visemeActions = int(visemes.size());
         result.faceGestures = int(face.size() - visemes.size());
-        if (auto added = take(insertActions(after, *layer, std::move(face)), after, edit); !added)
+        if (auto added = take(insertActions(after, *layer, std::move(face)), after); !added)
             return added.error();
     }
     if (!body.empty()) {
-        auto layer = layerNamed(after, edit, character, kGestureLayer, LayerKind::Body);
+        auto layer = layerNamed(after, character, kGestureLayer, LayerKind::Body);
         if (!layer)
             return layer.error();
         result.bodyGestures = int(body.size());
-        if (auto added = take(insertActions(after, *layer, std::move(body)), after, edit); !added)
+        if (auto added = take(insertActions(after, *layer, std::move(body)), after); !added)
             return added.error();
     }
-    if (edit.empty())
-        return invalid("There is nothing to insert: the speech has no phonemes.");
+    // One change for the character (its clips, layers, actions and the line), after the masks it
+    // uses (the Speech mask, gestures' widened ones): the steps above only built it.
+    std::vector<std::string> taken;
+    for (const scenario::SpeechLine& other : who.speech)
+        taken.push_back(other.name);
+    line.name = uniqueName(line.name.empty() ? "line" : line.name, taken);
+    who.speech.push_back(std::move(line));
+    Edit& edit = result.edit;
+    for (std::size_t m = scenario.masks.size(); m < after.masks.size(); ++m)
+        edit.add(MaskChange{int(m), std::nullopt, after.masks[m]});
+    edit.add(CharacterChange{character, speaker, who});
     return result;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// Speech put into a scenario (paper §5.2), as one undo step: the visemes of an utterance become
+// Speech put into a scenario (paper §5.2), as one undo step: the line is kept on its character
+// (its text, voice, audio and timing; format 9), and the visemes of its utterance become
 // actions on the character's "Speech" face layer — each playing a viseme clip (one face channel
 // held at 1) stretched over its cue, weighted by the cue's dominance curve, over the Speech face
 // mask (mouth and tongue) — and the gestures of its tagged text play their gesticon entries over
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "edit/scenario_edit.h"
+#include "speech/espeak_voice.h"
 #include "speech/speech_plan.h"
 #include "util/tick.h"
 
@@ -22,11 +24,17 @@ struct SpeechInsertion {
     int faceGestures = 0, bodyGestures = 0;
 };
 
-/// Inserts the MPEG-4 viseme cues and the gesture cues of an utterance spoken by `character`
-/// from `at`. Creates what is missing: the viseme clips ("viseme p_b_m"), the "Speech" face mask,
-/// the layers. Errors: no such character; a gesture's animation not in its gesticon (naming the
-/// tag's line and column and the gestures it has); a locked layer.
-Result<SpeechInsertion> insertSpeech(const scenario::Scenario& scenario, int character, Tick at,
+/// A speech line of tagged `text` spoken by `voice` with `timing`, its audio in `audio` (relative
+/// to the scenario), from `start`; named "line".
+scenario::SpeechLine speechLine(const std::string& text, const speech::VoiceSettings& voice,
+                                const speech::SpeechTiming& timing, std::string audio, Tick start);
+
+/// Adds `line` to `character` (its name made unique among the character's lines) with the MPEG-4
+/// viseme cues and the gesture cues of its utterance from line.start. Creates what is missing: the
+/// viseme clips ("viseme p_b_m"), the "Speech" face mask, the layers. Errors: no such character;
+/// a gesture's animation not in its gesticon (naming the tag's line and column and the gestures
+/// it has); a locked layer.
+Result<SpeechInsertion> insertSpeech(const scenario::Scenario& scenario, int character, scenario::SpeechLine line,
                                      const std::vector<speech::VisemeCue>& visemes,
                                      const std::vector<speech::GestureCue>& gestures);
 

@@ -277,8 +277,12 @@ Result<void> PlayJob::play(JobContext& context, PlayFrameWriter& frameWriter, co
         return finished;
     seconds = frameWriter.seconds();
     if (!audio.empty()) {
-        if (!sound) // nothing played: a silent track as long as the video
+        if (!sound)
             sound = std::make_shared<runtime::SoundService>(assets, std::make_shared<runtime::ManualClock>());
+        // The characters' speech lines play where they are on the timeline, under the script's sounds.
+        for (std::string& problem : sound->playSpeech(scenario))
+            warnings.push_back(std::move(problem));
+        sounds = sound->activationCount();
         if (auto written = sound->writeWav(audio, 0, secondsToTicks(seconds)); !written) {
             discardOutput();
             return written;

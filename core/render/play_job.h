@@ -46,13 +46,14 @@ struct PlayJob final : Job {
     /// Plays along when set. On its own the video lasts until the scenario's end or the script's,
     /// whichever is later; over a video, the scenario is no longer looped but follows the script.
     std::optional<runtime::PlayScript> script;
-    /// A 16-bit mono WAV of what played (the script's sounds) over the video's length; empty: none.
+    /// A 16-bit mono WAV of what played (the characters' speech lines and the script's sounds) over
+    /// the video's length; empty: none.
     std::filesystem::path audio;
 
     // After run():
     std::int64_t frames = 0, tracked = 0;
     double seconds = 0;                ///< the video's length
-    std::size_t sounds = 0;            ///< sounds the script started
+    std::size_t sounds = 0;            ///< sounds that played (speech lines, the script's)
     std::vector<std::string> warnings;
 
     std::string title() const override;

@@ -58,7 +58,11 @@ Result<std::shared_ptr<const SoundClip>> SoundService::clip(const std::string& s
 
 Result<int> SoundService::play(const std::string& sound, double volume, const std::string& owner)
 {
-    const Tick now = m_clock->now();
+    return playAt(sound, m_clock->now(), volume, owner);
+}
+
+Result<int> SoundService::playAt(const std::string& sound, Tick now, double volume, const std::string& owner)
+{
     const std::lock_guard lock(m_mutex);
     auto loaded = clip(sound);
     if (!loaded)
@@ -66,6 +70,23 @@ Result<int> SoundService::play(const std::string& sound, double volume, const st
     m_activations.push_back(Activation{sound, owner, *loaded, now, now + secondsToTicks((*loaded)->duration()),
                                        float(std::max(volume, 0.0))});
     return int(m_activations.size()) - 1;
+}
+
+std::vector<std::string> SoundService::playSpeech(const scenario::Scenario& scenario)
+{
+    std::vector<std::string> problems;
+    for (std::size_t c = 0; c < scenario.characters.size(); ++c) {
+        const scenario::Character& character = scenario.characters[c];
+        for (std::size_t l = 0; l < character.speech.size(); ++l) {
+            const scenario::SpeechLine& line = character.speech[l];
+            if (line.audio.empty())
+                continue;
+            if (auto started = playAt(line.audio, line.start, 1.0, character.name); !started)
+                problems.push_back("characters[" + std::to_string(c) + "].speech[" + std::to_string(l)
+                                   + "].audio: " + started.error().message);
+        }
+    }
+    return problems;
 }
 
 bool SoundService::stop(const std::string& sound)

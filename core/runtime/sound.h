@@ -17,6 +17,7 @@
 
 #include "runtime/clock.h"
 #include "scenario/asset_resolver.h"
+#include "scenario/scenario.h"
 #include "util/error.h"
 #include "util/tick.h"
 
@@ -43,6 +44,11 @@ public:
     /// Starts the sound now at `volume` (1: as recorded), for `owner` (a character's name, or
     /// empty); returns its activation id. Errors: the file cannot be read.
     Result<int> play(const std::string& sound, double volume = 1.0, const std::string& owner = {});
+    /// Starts the sound at `start` on the clock's time instead of now.
+    Result<int> playAt(const std::string& sound, Tick start, double volume = 1.0, const std::string& owner = {});
+    /// Starts the audio of every speech line of the scenario's characters at the line's start
+    /// (format 9); returns what could not be played, one sentence naming the field each.
+    std::vector<std::string> playSpeech(const scenario::Scenario& scenario);
     /// Stops every activation of the sound now (false: none plays).
     bool stop(const std::string& sound);
     bool isPlaying(const std::string& sound) const;

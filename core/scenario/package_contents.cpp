@@ -179,6 +179,9 @@ Result<PackagePlan> planPackage(const Scenario& scenario, const Assets& assets, 
             return added.error();
         if (auto added = add(character.faceMapping, at + ".faceMapping"); !added)
             return added.error();
+        for (SpeechLine& line : character.speech)
+            if (auto added = add(line.audio, at + ".speech[" + line.name + "].audio"); !added)
+                return added.error();
         for (ClipAsset& clip : character.clips) {
             if (auto added = add(clip.file, at + ".clips[" + clip.name + "].file"); !added)
                 return added.error();

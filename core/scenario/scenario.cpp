@@ -24,6 +24,8 @@ void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const st
         character.model = rebasedPath(character.model, from, to, keep);
         character.bake = rebasedPath(character.bake, from, to, keep);
         character.faceMapping = rebasedPath(character.faceMapping, from, to, keep);
+        for (SpeechLine& line : character.speech)
+            line.audio = rebasedPath(line.audio, from, to, keep);
         for (ClipAsset& clip : character.clips)
             rebaseClip(clip, from, to, keep);
     }

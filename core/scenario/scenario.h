@@ -173,6 +173,34 @@ struct Gesture {
     bool operator==(const Gesture&) const = default;
 };
 
+/// A line the character says (format 9): its tagged text (speech/tagged_text.h) and the voice that
+/// speaks it, and the audio made from them, which plays from `start` when the scenario does. The
+/// visemes and gestures it drove were inserted as actions with it (edit/speech_edits.h); the
+/// timing is kept so that the timeline can show the words and phonemes.
+struct SpeechLine {
+    std::string name;
+    Tick start = 0;
+    std::string text;              ///< tagged text as the user wrote it
+    std::string voice = "en-us";   ///< espeak-ng voice
+    int rate = 175;                ///< words a minute
+    int pitch = 50;
+    std::string audio;             ///< the speech's sound file, relative to the scenario
+    struct Word {
+        std::string text;
+        double start = 0, end = 0; ///< seconds from the line's start
+        bool operator==(const Word&) const = default;
+    };
+    struct Phoneme {
+        std::string phoneme;       ///< ARPAbet or SIL
+        double start = 0, end = 0;
+        bool operator==(const Phoneme&) const = default;
+    };
+    std::vector<Word> words;
+    std::vector<Phoneme> phonemes;
+    nlohmann::json extra = nlohmann::json::object();
+    bool operator==(const SpeechLine&) const = default;
+};
+
 struct Character {
     std::string name;
     /// "hanim-loa1", "hanim-loa2", "hanim-25", "model" for the glTF model's own rig (format 3),
@@ -199,6 +227,7 @@ struct Character {
     std::vector<ClipAsset> clips;
     std::vector<Layer> layers;
     std::vector<Gesture> gestures;     ///< format 2
+    std::vector<SpeechLine> speech;    ///< format 9
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const Character&) const = default;
 
@@ -305,8 +334,8 @@ std::string rebasedPath(const std::string& path, const std::filesystem::path& fr
 /// rebasedPath() on the files a clip names: its motion file or its idle motion database.
 void rebaseClip(ClipAsset& clip, const std::filesystem::path& from, const std::filesystem::path& to,
                 const KeptNames& keep = {});
-/// rebasedPath() on every file path of the scenario: models, bakes, clips, the light probe, the
-/// posture bases and the phantom occluders' models.
+/// rebasedPath() on every file path of the scenario: models, bakes, clips, speech audio, the light
+/// probe, the posture bases and the phantom occluders' models.
 void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const std::filesystem::path& to,
                  const KeptNames& keep = {});
 

@@ -30,7 +30,8 @@ enum Version : int {
     NoPostureTags = 6,       ///< segment tags lost "posture" (PI / PD), which changed nothing
     Blinks = 7,              ///< clips that are blink generators (face layers)
     FaceMappingTable = 8,    ///< a character's own face mapping table file ("faceMapping")
-    Current = FaceMappingTable,
+    Speech = 9,              ///< characters' speech lines; dominance weight curves
+    Current = Speech,
 };
 } // namespace format
 

@@ -365,9 +365,38 @@ ScriptSpec readScript(const json& value, const std::string& path)
     return script;
 }
 
+SpeechLine readSpeechLine(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "SpeechLine.1");
+    SpeechLine line;
+    line.name = r.name();
+    line.start = r.ticks("start", true);
+    line.text = r.string("text", true);
+    line.voice = r.string("voice", false, line.voice);
+    line.rate = int(r.integer("rate", false, line.rate, 80, 450));
+    line.pitch = int(r.integer("pitch", false, line.pitch, 0, 100));
+    line.audio = r.string("audio", false);
+    const json& words = r.array("words", false);
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        ObjectReader w(words[i], indexed(r.fieldPath("words"), i), {});
+        line.words.push_back({w.string("text", true), w.number("start", true, 0, Range::NonNegative),
+                              w.number("end", true, 0, Range::NonNegative)});
+        w.refuseUnknown("a word");
+    }
+    const json& phonemes = r.array("phonemes", false);
+    for (std::size_t i = 0; i < phonemes.size(); ++i) {
+        ObjectReader p(phonemes[i], indexed(r.fieldPath("phonemes"), i), {});
+        line.phonemes.push_back({p.string("phoneme", true), p.number("start", true, 0, Range::NonNegative),
+                                 p.number("end", true, 0, Range::NonNegative)});
+        p.refuseUnknown("a phoneme");
+    }
+    line.extra = r.extra();
+    return line;
+}
+
 Character readCharacter(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Character.5");
+    ObjectReader r(value, path, "Character.6");
     Character character;
     character.name = r.name();
     character.skeleton = r.string("skeleton", false, "hanim-loa1");
@@ -420,6 +449,14 @@ Character readCharacter(const json& value, const std::string& path)
             fail(indexed(r.fieldPath("gestures"), i) + ".name",
                  "another gesture of this character is already named " + quote(character.gestures.back().name));
     }
+    names.clear();
+    const json& speech = r.array("speech", false);
+    for (std::size_t i = 0; i < speech.size(); ++i) {
+        character.speech.push_back(readSpeechLine(speech[i], indexed(r.fieldPath("speech"), i)));
+        if (!names.insert(character.speech.back().name).second)
+            fail(indexed(r.fieldPath("speech"), i) + ".name",
+                 "another speech line of this character is already named " + quote(character.speech.back().name));
+    }
     character.extra = r.extra();
     return character;
 }
@@ -450,7 +487,7 @@ NamedMask readMask(const json& value, const std::string& path)
 
 Scenario readScenario(const json& document)
 {
-    ObjectReader r(document, "", "Scenario.8");
+    ObjectReader r(document, "", "Scenario.9");
     r.find("format");  // checked before
     r.find("version");
     Scenario scenario;

@@ -122,6 +122,15 @@ static Result<void> upgradeV7toV8(nlohmann::json& document)
     return {};
 }
 
+// 8 → 9: characters may have speech lines ("speech", optional) and curves may be dominance
+// curves; nothing else changed, so only the scenario's and the characters' schemas are new.
+static Result<void> upgradeV8toV9(nlohmann::json& document)
+{
+    renameSchema(document, "Scenario.8", "Scenario.9");
+    forEachIn(document, "characters", [](nlohmann::json& character) { renameSchema(character, "Character.5", "Character.6"); });
+    return {};
+}
+
 std::span<const UpgradeStep> upgradeSteps()
 {
     static constexpr UpgradeStep steps[] = {
@@ -132,6 +141,7 @@ std::span<const UpgradeStep> upgradeSteps()
         {format::IdleMotion, "segment tags without posture", &upgradeV5toV6},
         {format::NoPostureTags, "blink clips", &upgradeV6toV7},
         {format::Blinks, "face mapping tables", &upgradeV7toV8},
+        {format::FaceMappingTable, "speech lines", &upgradeV8toV9},
     };
     return steps;
 }

@@ -256,7 +256,7 @@ ojson writeClip(const ClipAsset& clip)
 ojson writeCharacter(const Character& character)
 {
     ojson out = ojson::object();
-    out["schema"] = "Character.5";
+    out["schema"] = "Character.6";
     out["name"] = character.name;
     out["skeleton"] = character.skeleton;
     // Written only when set, so that scenarios without models stay as they were.
@@ -309,6 +309,32 @@ ojson writeCharacter(const Character& character)
             gestures.push_back(std::move(entry));
         }
         out["gestures"] = std::move(gestures);
+    }
+    if (!character.speech.empty()) {
+        ojson speech = ojson::array();
+        for (const SpeechLine& line : character.speech) {
+            ojson entry = ojson::object();
+            entry["schema"] = "SpeechLine.1";
+            entry["name"] = line.name;
+            entry["start"] = line.start;
+            entry["text"] = line.text;
+            entry["voice"] = line.voice;
+            entry["rate"] = line.rate;
+            entry["pitch"] = line.pitch;
+            if (!line.audio.empty())
+                entry["audio"] = line.audio;
+            ojson words = ojson::array();
+            for (const SpeechLine::Word& w : line.words)
+                words.push_back(ojson{{"text", w.text}, {"start", w.start}, {"end", w.end}});
+            entry["words"] = std::move(words);
+            ojson phonemes = ojson::array();
+            for (const SpeechLine::Phoneme& p : line.phonemes)
+                phonemes.push_back(ojson{{"phoneme", p.phoneme}, {"start", p.start}, {"end", p.end}});
+            entry["phonemes"] = std::move(phonemes);
+            appendExtra(entry, line.extra);
+            speech.push_back(std::move(entry));
+        }
+        out["speech"] = std::move(speech);
     }
     appendExtra(out, character.extra);
     return out;
@@ -395,7 +421,7 @@ ojson writeScenario(const Scenario& scenario)
     ojson out = ojson::object();
     out["format"] = FormatName;
     out["version"] = int(format::Current);
-    out["schema"] = "Scenario.8";
+    out["schema"] = "Scenario.9";
     out["name"] = scenario.name;
     out["duration"] = scenario.duration;
     ojson masks = ojson::array();

@@ -137,5 +137,6 @@ void bindRender(py::module_& m);   // thespis.render: headless pictures of scena
 void bindEdit(py::module_& m);     // thespis.edit: the studio's undoable scenario edits
 void bindRuntime(py::module_& m);  // thespis.runtime: clocks, the Stage, the animation service
 void bindMotion(py::module_& m);   // thespis.motion: postures, the posture PCA, idle motion, the filter
+void bindSpeech(py::module_& m);   // thespis.speech: tagged text, espeak-ng speech, visemes, Insert
 
 } // namespace thespis::python

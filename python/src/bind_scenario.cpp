@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include "bind_common.h"
 #include "bind_package.h"
@@ -277,6 +278,33 @@ void bindDocument(py::module_& m)
         });
     defExtra(gesture);
 
+    py::class_<SpeechLine> speechLine(m, "SpeechLine",
+                                      "A line a character says (format 9): its tagged text, voice, audio file and "
+                                      "timing (thespis.speech.insert makes one).");
+    speechLine.def(py::init<>())
+        .def_readwrite("name", &SpeechLine::name)
+        .def_readwrite("start", &SpeechLine::start, "Where it starts, in ticks.")
+        .def_readwrite("text", &SpeechLine::text, "Tagged text as written.")
+        .def_readwrite("voice", &SpeechLine::voice, "The espeak-ng voice.")
+        .def_readwrite("rate", &SpeechLine::rate, "Words a minute.")
+        .def_readwrite("pitch", &SpeechLine::pitch)
+        .def_readwrite("audio", &SpeechLine::audio, "The speech's sound file, relative to the scenario.")
+        .def_property_readonly("words", [](const SpeechLine& l) {
+            std::vector<std::tuple<std::string, double, double>> out;
+            for (const auto& w : l.words)
+                out.emplace_back(w.text, w.start, w.end);
+            return out;
+        }, "[(text, start, end)] in seconds from the line's start")
+        .def_property_readonly("phonemes", [](const SpeechLine& l) {
+            std::vector<std::tuple<std::string, double, double>> out;
+            for (const auto& p : l.phonemes)
+                out.emplace_back(p.phoneme, p.start, p.end);
+            return out;
+        }, "[(ARPAbet or 'SIL', start, end)] in seconds from the line's start")
+        .def("__eq__", [](const SpeechLine& a, const SpeechLine& b) { return a == b; })
+        .def("__repr__", [](const SpeechLine& l) { return "<thespis.SpeechLine '" + l.name + "': " + l.text + ">"; });
+    defExtra(speechLine);
+
     py::class_<Character> character(m, "Character", "A character: its skeleton, clips and layers of actions.");
     character
         .def(py::init([](std::string name, std::string skeleton) {
@@ -311,6 +339,7 @@ void bindDocument(py::module_& m)
     defList(character, "clips", &Character::clips, "The character's clips (a copy).");
     defList(character, "layers", &Character::layers, "The character's layers (a copy).");
     defList(character, "gestures", &Character::gestures, "The character's gesture database (a copy).");
+    defList(character, "speech", &Character::speech, "The lines the character says (format 9; a copy).");
     character.def(
         "find_gesture",
         [](const Character& c, const std::string& name) -> std::optional<Gesture> {

@@ -24,6 +24,7 @@ void defineModule(py::module_& m)
     bindEdit(m);
     bindRuntime(m);
     bindMotion(m);
+    bindSpeech(m);
     bindAr(m);
 }
 

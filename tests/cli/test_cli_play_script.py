@@ -62,7 +62,7 @@ def test_a_script_plays_along_with_its_voice(tmp_path):
     result = run("play", DEMO, "--script", talk, "--audio", "--out", out, "--fps", FPS, *SMALL)
     assert result.returncode == 0, result.stderr
     assert "Creon waved until" in result.stdout
-    assert "The script played 1 sound" in result.stdout and str(tmp_path / "talk.wav") in result.stdout
+    assert "1 sound played" in result.stdout and str(tmp_path / "talk.wav") in result.stdout
 
     played = frames_of(out)
     plain_out = tmp_path / "plain.avi"

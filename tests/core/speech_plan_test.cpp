@@ -52,6 +52,11 @@ speech::SpeakJob spoken(const std::string& text)
     return job;
 }
 
+core::scenario::SpeechLine lineOf(const speech::SpeakJob& job, double at)
+{
+    return core::edit::speechLine(job.text, job.voice, job.utterance.timing, "line.wav", core::secondsToTicks(at));
+}
+
 struct Played {
     Scenario scenario;
     std::shared_ptr<core::runtime::Stage> stage;
@@ -59,7 +64,7 @@ struct Played {
 
 Played insertedAndPlayed(Scenario scenario, const speech::SpeakJob& job, double at)
 {
-    auto inserted = core::edit::insertSpeech(scenario, 0, core::secondsToTicks(at), job.visemeCues, job.gestureCues);
+    auto inserted = core::edit::insertSpeech(scenario, 0, lineOf(job, at), job.visemeCues, job.gestureCues);
     EXPECT_TRUE(inserted.ok()) << (inserted.ok() ? "" : inserted.error().message);
     if (!inserted)
         return {};
@@ -155,7 +160,7 @@ TEST(SpeechPlan, UnknownGesturesAreNamedWithTheirPlace)
 {
     const speech::SpeakJob job = spoken("Hello <begin_gesture id=\"g\" anim=\"juggle\"/>there<end_gesture id=\"g\"/>.");
     Scenario scenario = demo();
-    auto inserted = core::edit::insertSpeech(scenario, 0, 0, job.visemeCues, job.gestureCues);
+    auto inserted = core::edit::insertSpeech(scenario, 0, lineOf(job, 0), job.visemeCues, job.gestureCues);
     ASSERT_FALSE(inserted.ok());
     EXPECT_EQ(inserted.error().message,
               "line 1, column 7: the gesture \"juggle\" is not in Creon's gesticon (it has: greet, agree).");
@@ -166,15 +171,20 @@ TEST(SpeechPlan, InsertIsOneStepThatUndoes)
     Scenario scenario = demo();
     const Scenario before = scenario;
     const speech::SpeakJob job = spoken("Maybe.");
-    auto inserted = core::edit::insertSpeech(scenario, 0, core::secondsToTicks(2), job.visemeCues, job.gestureCues);
+    auto inserted = core::edit::insertSpeech(scenario, 0, lineOf(job, 2), job.visemeCues, job.gestureCues);
     ASSERT_TRUE(inserted.ok()) << inserted.error().message;
     ASSERT_TRUE(inserted->edit.apply(scenario).ok());
     EXPECT_NE(scenario, before);
     EXPECT_TRUE(scenario.findMask("Speech"));
     EXPECT_TRUE(scenario.characters[0].findClip("viseme p_b_m"));
+    ASSERT_EQ(scenario.characters[0].speech.size(), 1u);
+    EXPECT_EQ(scenario.characters[0].speech[0].text, "Maybe.");
+    EXPECT_EQ(scenario.characters[0].speech[0].words.size(), 1u);
+    ASSERT_EQ(inserted->edit.changes().size(), 2u) << "the Speech mask and the character";
     // The scenario reads back as written.
     auto reread = core::scenario::parseScenario(core::scenario::serializeScenario(scenario));
     ASSERT_TRUE(reread.ok()) << reread.error().message;
+    EXPECT_EQ(*reread, scenario);
     ASSERT_TRUE(inserted->edit.inverse().apply(scenario).ok());
     EXPECT_EQ(scenario, before);
 }
