@@ -122,7 +122,7 @@ double Curve::evaluate(double t, double duration) const
         return evaluateKeys(t);
     case CurveKind::Dominance:
         // Open-ended, it has no middle: it holds its peak, as a fade with no ends would.
-        return e.peak * (std::isfinite(duration) ? (duration > 0 ? dominance(e.alpha, t / duration) : 0.0) : 1.0);
+        return e.peak * (std::isfinite(duration) ? (duration > 0 ? anim::dominance(e.alpha, t / duration) : 0.0) : 1.0);
     case CurveKind::LinearFade:
     case CurveKind::CubicFade: {
         const bool cubic = m_kind == CurveKind::CubicFade;
