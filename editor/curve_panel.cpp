@@ -95,11 +95,18 @@ CurvePanel::CurvePanel(QWidget* parent) : QWidget(parent)
         if (!m_updating)
             onPresetEdited(-1);
     });
-    for (QDoubleSpinBox* box : {m_attack, m_decay, m_sustain, m_release, m_peak})
+    for (QDoubleSpinBox* box : {m_attack, m_decay, m_sustain, m_release, m_peak}) {
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] {
             if (!m_updating)
                 onPresetEdited(CurveParameterId);
         });
+        // Enter or leaving the box ends its undo step: setting the attack and then the peak is two
+        // steps. The empty edit only closes the step; it cannot fail.
+        connect(box, &QDoubleSpinBox::editingFinished, this, [this] {
+            if (m_document)
+                (void)m_document->edit(core::edit::Edit(), QString(), Merge{CurveParameterId, true});
+        });
+    }
     for (QDoubleSpinBox* box : {m_keyTime, m_keyValue})
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] {
             if (!m_updating)
