@@ -25,6 +25,7 @@ namespace {
 
 constexpr int kSamples = 240;
 constexpr double kOpenEndedSpan = 10.0; // seconds shown of an open-ended action
+constexpr double kDefaultAlpha = 5.0;    // α offered for a new dominance curve: the paper's Fig. 9b
 
 QDoubleSpinBox* spinBox(double max, double step, const QString& suffix, const QString& objectName, QWidget* parent)
 {
@@ -64,6 +65,7 @@ CurvePanel::CurvePanel(QWidget* parent) : QWidget(parent)
     m_preset->addItem(tr("Cubic fade"), int(CurveKind::CubicFade));
     m_preset->addItem(tr("Linear ADSR"), int(CurveKind::LinearAdsr));
     m_preset->addItem(tr("Cubic ADSR"), int(CurveKind::CubicAdsr));
+    m_preset->addItem(tr("Dominance (coarticulation)"), int(CurveKind::Dominance));
     m_preset->addItem(tr("Keyframed"), int(CurveKind::Keyframed));
     const QString seconds = tr(" s");
     m_attack = spinBox(3600, 0.05, seconds, QStringLiteral("curveAttack"), this);
@@ -71,6 +73,11 @@ CurvePanel::CurvePanel(QWidget* parent) : QWidget(parent)
     m_sustain = spinBox(1, 0.05, QString(), QStringLiteral("curveSustain"), this);
     m_release = spinBox(3600, 0.05, seconds, QStringLiteral("curveRelease"), this);
     m_peak = spinBox(100, 0.05, QString(), QStringLiteral("curvePeak"), this);
+    m_alpha = spinBox(50, 0.5, QString(), QStringLiteral("curveAlpha"), this);
+    m_alpha->setMinimum(0.1);
+    m_alpha->setToolTip(tr("How sharply the dominance curve peaks (paper eq. 3): over the action, "
+                           "C_α(x) = e^(−α·2|x−0.5|) − 2|x−0.5|·e^(−α), 0 at both ends and the peak in the middle. "
+                           "A small α gives a broad hump, a large α a narrow spike."));
     form->addRow(tr("Edit"), m_edited);
     form->addRow(tr("Shape"), m_preset);
     form->addRow(tr("Attack / fade in"), m_attack);
@@ -78,6 +85,7 @@ CurvePanel::CurvePanel(QWidget* parent) : QWidget(parent)
     form->addRow(tr("Sustain"), m_sustain);
     form->addRow(tr("Release / fade out"), m_release);
     form->addRow(tr("Peak / value"), m_peak);
+    form->addRow(tr("Dominance α"), m_alpha);
     m_keyTime = spinBox(3600, 0.01, seconds, QStringLiteral("keyTime"), this);
     m_keyValue = spinBox(100, 0.05, QString(), QStringLiteral("keyValue"), this);
     m_keyValue->setMinimum(-100);
@@ -95,11 +103,18 @@ CurvePanel::CurvePanel(QWidget* parent) : QWidget(parent)
         if (!m_updating)
             onPresetEdited(-1);
     });
-    for (QDoubleSpinBox* box : {m_attack, m_decay, m_sustain, m_release, m_peak})
+    for (QDoubleSpinBox* box : {m_attack, m_decay, m_sustain, m_release, m_peak, m_alpha}) {
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] {
             if (!m_updating)
                 onPresetEdited(CurveParameterId);
         });
+        // Enter or leaving the box ends its undo step: setting the attack and then the peak is two
+        // steps. The empty edit only closes the step; it cannot fail.
+        connect(box, &QDoubleSpinBox::editingFinished, this, [this] {
+            if (m_document)
+                (void)m_document->edit(core::edit::Edit(), QString(), Merge{CurveParameterId, true});
+        });
+    }
     for (QDoubleSpinBox* box : {m_keyTime, m_keyValue})
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] {
             if (!m_updating)
@@ -254,23 +269,26 @@ void CurvePanel::refreshControls()
 {
     m_updating = true;
     const Curve* edited = curve(m_edited->currentIndex());
-    for (QWidget* w : std::initializer_list<QWidget*>{m_edited, m_preset, m_attack, m_decay, m_sustain, m_release, m_peak})
+    for (QWidget* w : std::initializer_list<QWidget*>{m_edited, m_preset, m_attack, m_decay, m_sustain, m_release, m_peak, m_alpha})
         w->setEnabled(edited != nullptr);
     if (edited) {
         m_preset->setCurrentIndex(m_preset->findData(int(edited->kind())));
         const auto& e = edited->envelope();
-        const bool fades = edited->kind() != CurveKind::Constant && edited->kind() != CurveKind::Keyframed;
+        const bool dominance = edited->kind() == CurveKind::Dominance;
+        const bool fades = edited->kind() != CurveKind::Constant && edited->kind() != CurveKind::Keyframed && !dominance;
         const bool adsr = edited->kind() == CurveKind::LinearAdsr || edited->kind() == CurveKind::CubicAdsr;
         m_attack->setEnabled(fades);
         m_release->setEnabled(fades);
         m_decay->setEnabled(adsr);
         m_sustain->setEnabled(adsr);
         m_peak->setEnabled(edited->kind() != CurveKind::Keyframed);
+        m_alpha->setEnabled(dominance);
         m_attack->setValue(e.attack);
         m_decay->setValue(e.decay);
         m_sustain->setValue(e.sustain);
         m_release->setValue(e.release);
         m_peak->setValue(e.peak);
+        m_alpha->setValue(dominance ? e.alpha : kDefaultAlpha);
     }
     // Numeric entry for one selected key.
     const QList<widgets::CurveKeyRef> selected = m_view->selectedKeys();
@@ -295,6 +313,7 @@ Curve CurvePanel::presetCurve() const
     case CurveKind::CubicFade: return Curve::cubicFade(a, r, peak);
     case CurveKind::LinearAdsr: return Curve::linearAdsr(a, d, s, r, peak);
     case CurveKind::CubicAdsr: return Curve::cubicAdsr(a, d, s, r, peak);
+    case CurveKind::Dominance: return Curve::dominance(m_alpha->value(), peak);
     case CurveKind::Keyframed: break;
     }
     // Keyframed from a preset: keys where the current curve turns, so the shape carries over.
@@ -302,7 +321,9 @@ Curve CurvePanel::presetCurve() const
     const double length = std::isfinite(m_duration) ? m_duration : kOpenEndedSpan;
     std::vector<CurveKey> keys;
     std::vector<double> times{0.0, length};
-    if (current && current->kind() != CurveKind::Constant) {
+    if (current && current->kind() == CurveKind::Dominance) {
+        times = {0.0, length / 4, length / 2, 3 * length / 4, length}; // its rise, peak and fall
+    } else if (current && current->kind() != CurveKind::Constant) {
         const auto& e = current->envelope();
         times = {0.0, e.attack, e.attack + e.decay, length - e.release, length};
     }

@@ -1,9 +1,9 @@
 #pragma once
 // CurvePanel: the curve editor of the selected action. Shows its weight and scale curves over the
 // action's local time (widgets::CurveView) with the playhead; a preset chooser with its
-// parameters (constant, linear / cubic fade, linear / cubic ADSR, keyframed) for the curve picked
-// in "Edit"; numeric entry for the selected key; key add / move / delete and tangent edits on
-// keyframed curves. Every change is one undoable edit (a drag merges into one), and the viewport
+// parameters (constant, linear / cubic fade, linear / cubic ADSR, dominance, keyframed) for the
+// curve picked in "Edit"; numeric entry for the selected key; key add / move / delete and tangent
+// edits on keyframed curves. Every change is one undoable edit (a drag merges into one), and the viewport
 // follows because the document rebuilds its schedules after each.
 
 #include <QWidget>
@@ -73,6 +73,7 @@ private:
     QDoubleSpinBox* m_sustain = nullptr;
     QDoubleSpinBox* m_release = nullptr;
     QDoubleSpinBox* m_peak = nullptr;
+    QDoubleSpinBox* m_alpha = nullptr;
     QDoubleSpinBox* m_keyTime = nullptr;
     QDoubleSpinBox* m_keyValue = nullptr;
     widgets::CurveView* m_view = nullptr;

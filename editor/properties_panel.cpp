@@ -360,6 +360,8 @@ void PropertiesPanel::showAction()
         m_fades->setText(tr("none (constant weight %1)").arg(weight.constantValue(), 0, 'g', 3));
     else if (weight.kind() == CurveKind::Keyframed)
         m_fades->setText(tr("keyframed weight curve (%n key(s))", nullptr, int(weight.keys().size())));
+    else if (weight.kind() == CurveKind::Dominance)
+        m_fades->setText(tr("none (dominance weight curve, α %1)").arg(weight.envelope().alpha, 0, 'g', 3));
     else
         m_fades->setText(tr("in %1, out %2").arg(seconds(weight.envelope().attack), seconds(weight.envelope().release)));
 

@@ -78,6 +78,7 @@ QString describeCurve(const core::anim::Curve& curve)
     case CurveKind::CubicAdsr:
         return ScenarioTreeModel::tr("cubic ADSR %1 / %2 / %3 / %4").arg(e.attack).arg(e.decay).arg(e.sustain).arg(e.release) + peak;
     case CurveKind::Keyframed: return ScenarioTreeModel::tr("keyframed, %n key(s)", nullptr, int(curve.keys().size()));
+    case CurveKind::Dominance: return ScenarioTreeModel::tr("dominance α %1").arg(e.alpha) + peak;
     }
     return {};
 }

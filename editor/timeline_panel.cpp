@@ -22,7 +22,7 @@ using core::edit::LayerPath;
 
 namespace {
 
-constexpr int kThumbnailSamples = 48;
+constexpr int kThumbnailSamples = 49; // odd, so the action's middle, where a dominance curve peaks, is sampled
 constexpr double kOpenEndedThumbnail = 10.0; // seconds of an open-ended action's weight shown
 
 // The fade lengths the timeline's handles show: the envelope's attack and release.

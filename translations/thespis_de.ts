@@ -1570,6 +1570,18 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>Set Curve Key</source>
         <translation>Kurvenschlüssel setzen</translation>
     </message>
+    <message>
+        <source>Dominance (coarticulation)</source>
+        <translation>Dominanz (Koartikulation)</translation>
+    </message>
+    <message>
+        <source>How sharply the dominance curve peaks (paper eq. 3): over the action, C_α(x) = e^(−α·2|x−0.5|) − 2|x−0.5|·e^(−α), 0 at both ends and the peak in the middle. A small α gives a broad hump, a large α a narrow spike.</source>
+        <translation>Wie spitz die Dominanzkurve zuläuft (Gleichung 3 im Paper): über die Aktion gilt C_α(x) = e^(−α·2|x−0.5|) − 2|x−0.5|·e^(−α), 0 an beiden Enden und die Spitze in der Mitte. Ein kleines α ergibt einen breiten Buckel, ein großes α eine schmale Spitze.</translation>
+    </message>
+    <message>
+        <source>Dominance α</source>
+        <translation>Dominanz α</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::Document</name>
@@ -3116,6 +3128,10 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>Whole face</source>
         <translation>Ganzes Gesicht</translation>
     </message>
+    <message>
+        <source>none (dominance weight curve, α %1)</source>
+        <translation>keine (Dominanz-Gewichtskurve, α %1)</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::ScenarioTreeModel</name>
@@ -3331,6 +3347,10 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
     <message>
         <source>dependent joints</source>
         <translation>abhängige Gelenke</translation>
+    </message>
+    <message>
+        <source>dominance α %1</source>
+        <translation>Dominanz α %1</translation>
     </message>
 </context>
 <context>

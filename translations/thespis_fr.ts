@@ -1570,6 +1570,18 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>Set Curve Key</source>
         <translation>Définir la clé de courbe</translation>
     </message>
+    <message>
+        <source>Dominance (coarticulation)</source>
+        <translation>Dominance (coarticulation)</translation>
+    </message>
+    <message>
+        <source>How sharply the dominance curve peaks (paper eq. 3): over the action, C_α(x) = e^(−α·2|x−0.5|) − 2|x−0.5|·e^(−α), 0 at both ends and the peak in the middle. A small α gives a broad hump, a large α a narrow spike.</source>
+        <translation>À quel point la courbe de dominance est pointue (équation 3 de l’article) : sur l’action, C_α(x) = e^(−α·2|x−0.5|) − 2|x−0.5|·e^(−α), 0 aux deux extrémités et le pic au milieu. Un petit α donne une bosse large, un grand α un pic étroit.</translation>
+    </message>
+    <message>
+        <source>Dominance α</source>
+        <translation>Dominance α</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::Document</name>
@@ -3116,6 +3128,10 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>Whole face</source>
         <translation>Visage entier</translation>
     </message>
+    <message>
+        <source>none (dominance weight curve, α %1)</source>
+        <translation>aucun (courbe de poids de dominance, α %1)</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::ScenarioTreeModel</name>
@@ -3331,6 +3347,10 @@ Un point vert signale une action jouée à l’instant courant.</translation>
     <message>
         <source>dependent joints</source>
         <translation>articulations dépendantes</translation>
+    </message>
+    <message>
+        <source>dominance α %1</source>
+        <translation>dominance α %1</translation>
     </message>
 </context>
 <context>

@@ -113,6 +113,8 @@ std::string curveRepr(const Curve& c)
                + formatNumber(e.release) + ", peak=" + formatNumber(e.peak) + ")";
     case CurveKind::Keyframed:
         return "Curve.keyframed(<" + std::to_string(c.keys().size()) + " keys>)";
+    case CurveKind::Dominance:
+        return "Curve.dominance(" + formatNumber(e.alpha) + ", peak=" + formatNumber(e.peak) + ")";
     }
     return "Curve()";
 }
@@ -125,7 +127,8 @@ void bindCurves(py::module_& m)
         .value("cubic_fade", CurveKind::CubicFade)
         .value("linear_adsr", CurveKind::LinearAdsr)
         .value("cubic_adsr", CurveKind::CubicAdsr)
-        .value("keyframed", CurveKind::Keyframed);
+        .value("keyframed", CurveKind::Keyframed)
+        .value("dominance", CurveKind::Dominance);
 
     py::enum_<TangentMode>(m, "TangentMode", "How a keyframed curve leaves and enters a key.")
         .value("auto_clamped", TangentMode::AutoClamped, "smooth, flattened at extrema (never overshoots)")
@@ -150,12 +153,13 @@ void bindCurves(py::module_& m)
                    + py::repr(py::cast(k.mode)).cast<std::string>() + ")";
         });
 
-    py::class_<EnvelopeParams>(m, "EnvelopeParams", "Parameters of a fade or ADSR curve (read only).")
+    py::class_<EnvelopeParams>(m, "EnvelopeParams", "Parameters of a fade, ADSR or dominance curve (read only).")
         .def_readonly("attack", &EnvelopeParams::attack)
         .def_readonly("decay", &EnvelopeParams::decay)
         .def_readonly("sustain", &EnvelopeParams::sustain)
         .def_readonly("release", &EnvelopeParams::release)
         .def_readonly("peak", &EnvelopeParams::peak)
+        .def_readonly("alpha", &EnvelopeParams::alpha, "The dominance curve's α (0 for the other kinds).")
         .def("__eq__", [](const EnvelopeParams& a, const EnvelopeParams& b) { return a == b; });
 
     py::class_<Curve>(m, "Curve",
@@ -171,12 +175,17 @@ void bindCurves(py::module_& m)
                     "peak"_a = 1.0)
         .def_static("cubic_adsr", &Curve::cubicAdsr, "attack"_a, "decay"_a, "sustain"_a, "release"_a,
                     "peak"_a = 1.0)
+        .def_static("dominance", &Curve::dominance, "alpha"_a, "peak"_a = 1.0,
+                    "The coarticulation dominance (paper eq. 3) over the action's duration, times peak: 0 "
+                    "at both ends, peak in the middle; a larger alpha (> 0) peaks more sharply. An "
+                    "open-ended action holds the peak.")
         .def_static(
             "keyframed", [](std::vector<CurveKey> keys) { return unwrap(Curve::keyframed(std::move(keys))); },
             "keys"_a, "A cubic Hermite curve through the keys (sorted by time). ValueError for no keys, "
                       "two keys at one time or a non-finite value.")
         .def("validate", [](const Curve& c) { unwrap(c.validate()); },
-             "Raises ValueError when a parameter is not finite, a time is negative or sustain is outside [0, 1].")
+             "Raises ValueError when a parameter is not finite, a time is negative, sustain is outside [0, 1] "
+             "or a dominance curve's alpha is not above 0.")
         .def_property_readonly("kind", &Curve::kind)
         .def_property_readonly("envelope", [](const Curve& c) { return c.envelope(); })
         .def_property_readonly("constant_value", &Curve::constantValue)
@@ -188,6 +197,9 @@ void bindCurves(py::module_& m)
         .def("__repr__", &curveRepr);
 
     m.def("smooth_step", &smoothStep, "u"_a, "3u² − 2u³ on [0, 1] (clamped): the cubic fade shape.");
+    m.def("dominance", py::vectorize(&dominance), "alpha"_a, "x"_a,
+          "The paper's eq. 3 at x in [0, 1] (a number or an array): e^(−α·2|x−0.5|) − 2|x−0.5|·e^(−α); "
+          "0 outside [0, 1]. Curve.dominance is this over an action's duration.");
 }
 
 void bindMasks(py::module_& m)

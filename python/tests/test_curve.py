@@ -1,4 +1,5 @@
-"""Curves (paper Fig. 3): every kind at its key points, continuity, keyframed tangent modes."""
+"""Curves (paper Fig. 3): every kind at its key points, continuity, keyframed tangent modes, the
+coarticulation dominance (paper eq. 3)."""
 
 import math
 
@@ -159,3 +160,39 @@ def test_curves_are_values():
     assert a == Curve.cubic_fade(0.5, 0.25)
     assert a != Curve.linear_fade(0.5, 0.25)
     assert "cubic_fade" in repr(a)
+
+
+def paper_dominance(alpha, x):
+    """Eq. 3 written out apart from the module: C_α(x) = e^(−α·2|x−0.5|) − 2|x−0.5|·e^(−α)."""
+    distance = abs(2 * x - 1)
+    return math.exp(-alpha * distance) - distance / math.exp(alpha)
+
+
+@pytest.mark.parametrize("alpha", [2.0, 5.0])
+def test_dominance_follows_equation_3(alpha):
+    xs = [i / 10 for i in range(11)] + list(np.random.default_rng(7).uniform(0.0, 1.0, 50))
+    d = 3.0
+    c = Curve.dominance(alpha, peak=0.7)
+    for x in xs:
+        assert thespis.dominance(alpha, x) == pytest.approx(paper_dominance(alpha, x), abs=1e-12), x
+        assert c.evaluate(x * d, d) == pytest.approx(0.7 * paper_dominance(alpha, x), abs=1e-12), x
+    assert c.evaluate(d / 2, d) == pytest.approx(0.7)
+    assert c.evaluate(0.0, d) == pytest.approx(0.0, abs=1e-15)
+    assert c.evaluate(d, d) == pytest.approx(0.0, abs=1e-15)
+    # Arrays of x as well as numbers, as Curve.evaluate takes them.
+    np.testing.assert_allclose(thespis.dominance(alpha, np.array(xs)), [paper_dominance(alpha, x) for x in xs], atol=1e-12)
+
+
+def test_dominance_curve_parameters_repr_and_validation():
+    c = Curve.dominance(5.0)
+    assert c.kind == CurveKind.dominance
+    assert c.envelope.alpha == 5.0 and c.envelope.peak == 1.0
+    assert c == Curve.dominance(5.0, peak=1.0) and c != Curve.dominance(2.0)
+    assert repr(Curve.dominance(2.5, peak=0.5)) == "Curve.dominance(2.5, peak=0.5)"
+    assert c.evaluate(100.0) == 1.0  # open-ended: holds the peak
+    c.validate()
+    for alpha in (0.0, -1.0):
+        with pytest.raises(ValueError, match="alpha"):
+            Curve.dominance(alpha).validate()
+    with pytest.raises(ValueError, match="finite"):
+        Curve.dominance(float("inf")).validate()

@@ -1,7 +1,11 @@
-// Curves at their key points, their continuity (cubic kinds are C1), keyframed tangent modes.
+// Curves at their key points, their continuity (cubic kinds are C1), keyframed tangent modes, the
+// coarticulation dominance against the paper's eq. 3.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
 
 #include "anim/curve.h"
 
@@ -24,6 +28,14 @@ double largestJump(const Curve& c, double a, double b, double h)
     for (double t = a; t < b; t += h)
         worst = std::max(worst, std::abs(c.evaluate(t + h, kDuration) - c.evaluate(t, kDuration)));
     return worst;
+}
+
+// The paper's eq. 3, written out here apart from the code under test: C_α(x) = e^(−α·2|x−0.5|) −
+// 2|x−0.5|·e^(−α).
+double paperDominance(double alpha, double x)
+{
+    const double distance = std::fabs(2 * x - 1);
+    return std::exp(-alpha * distance) - distance / std::exp(alpha);
 }
 
 } // namespace
@@ -174,4 +186,62 @@ TEST(KeyframedCurve, RefusesBadKeys)
     ASSERT_TRUE(sorted);
     EXPECT_DOUBLE_EQ(sorted->keys().front().time, 0.0);
     EXPECT_NEAR(sorted->evaluate(1.0), 0.5, 1e-12);
+}
+
+TEST(DominanceCurve, FollowsEquation3)
+{
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> anywhere(0.0, 1.0);
+    for (double alpha : {2.0, 5.0}) {
+        std::vector<double> xs;
+        for (int i = 0; i <= 10; ++i)
+            xs.push_back(i / 10.0);
+        for (int i = 0; i < 50; ++i)
+            xs.push_back(anywhere(random));
+        const Curve c = Curve::dominance(alpha, 0.7);
+        for (double x : xs) {
+            EXPECT_NEAR(dominance(alpha, x), paperDominance(alpha, x), 1e-12) << "alpha " << alpha << ", x " << x;
+            EXPECT_NEAR(c.evaluate(x * kDuration, kDuration), 0.7 * paperDominance(alpha, x), 1e-12)
+                << "alpha " << alpha << ", x " << x;
+        }
+    }
+    // α sets the sharpness: halfway to the middle, the larger α has fallen further.
+    EXPECT_LT(dominance(5, 0.25), dominance(2, 0.25));
+}
+
+TEST(DominanceCurve, PeaksInTheMiddleIsZeroAtTheEndsAndSymmetric)
+{
+    for (double alpha : {0.1, 2.0, 5.0, 50.0}) {
+        SCOPED_TRACE(alpha);
+        const Curve c = Curve::dominance(alpha, 0.8);
+        EXPECT_DOUBLE_EQ(c.evaluate(kDuration / 2, kDuration), 0.8);
+        EXPECT_NEAR(c.evaluate(0, kDuration), 0.0, 1e-15);
+        EXPECT_NEAR(c.evaluate(kDuration, kDuration), 0.0, 1e-15);
+        EXPECT_EQ(c.evaluate(-0.1, kDuration), 0.0); // nothing outside the action
+        EXPECT_EQ(c.evaluate(kDuration + 0.1, kDuration), 0.0);
+        for (double t = 0; t <= kDuration / 2; t += 0.01) {
+            EXPECT_NEAR(c.evaluate(t, kDuration), c.evaluate(kDuration - t, kDuration), 1e-12) << "t = " << t;
+            EXPECT_LE(c.evaluate(t, kDuration), 0.8);
+            EXPECT_GE(c.evaluate(t, kDuration), 0.0);
+        }
+    }
+}
+
+TEST(DominanceCurve, OpenEndedHoldsThePeak)
+{
+    const Curve c = Curve::dominance(5, 0.6);
+    for (double t : {0.0, 1.0, 1000.0})
+        EXPECT_EQ(c.evaluate(t), 0.6) << "t = " << t;
+    EXPECT_EQ(c.evaluate(0, 0), 0.0); // an action of no length has no middle to peak in
+}
+
+TEST(DominanceCurve, ValidateRefusesAlphaNotAboveZero)
+{
+    EXPECT_TRUE(Curve::dominance(0.1).validate());
+    EXPECT_TRUE(Curve::dominance(50, 2).validate());
+    for (double alpha : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
+        SCOPED_TRACE(alpha);
+        EXPECT_FALSE(Curve::dominance(alpha).validate());
+    }
+    EXPECT_NE(Curve::dominance(0).validate().error().message.find("alpha"), std::string::npos);
 }

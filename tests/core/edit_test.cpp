@@ -418,7 +418,7 @@ TEST(DocumentEdits, RippleDeleteClosesTheGap)
     EXPECT_EQ(s.characters[0].layers[0].actions[1].start, 3 * Second); // 2 s earlier
 }
 
-TEST(DocumentEdits, FadesSetEnvelopesAndRefuseKeyframedCurves)
+TEST(DocumentEdits, FadesSetEnvelopesAndRefuseKeyframedAndDominanceCurves)
 {
     Scenario s = swingScenario({0});
     applied(s, setActionFades(s, {0, 0, 0}, 0.4, std::nullopt));
@@ -436,6 +436,13 @@ TEST(DocumentEdits, FadesSetEnvelopesAndRefuseKeyframedCurves)
     auto refused = setActionFades(s, {0, 0, 0}, 0.2, std::nullopt);
     ASSERT_FALSE(refused.ok());
     EXPECT_NE(refused.error().message.find("keyframed"), std::string::npos);
+
+    // A dominance curve rises and falls over the whole action: no fades either, and its α > 0.
+    applied(s, setActionCurves(s, {0, 0, 0}, anim::Curve::dominance(5), std::nullopt));
+    refused = setActionFades(s, {0, 0, 0}, 0.2, std::nullopt);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("dominance"), std::string::npos);
+    EXPECT_FALSE(setActionCurves(s, {0, 0, 0}, anim::Curve::dominance(0), std::nullopt).ok());
 }
 
 TEST(DocumentEdits, LockedLayersRefuseEdits)

@@ -491,6 +491,20 @@ TEST(ScenarioIo, RoundTripKeepsExactTicksAndFloats)
     EXPECT_NE(serializeScenario(s).find("[0.1, 0.2, 0.3, 0.9]"), std::string::npos);
 }
 
+TEST(ScenarioIo, ADominanceWeightCurveRoundTrips)
+{
+    auto s = parseJson(minimalDocument());
+    ASSERT_TRUE(s.ok()) << describe(s.error());
+    s->characters[0].layers[0].actions[0].weight = anim::Curve::dominance(3.5, 0.75);
+    const std::string text = serializeScenario(*s);
+    EXPECT_EQ(json::parse(text)["characters"][0]["layers"][0]["actions"][0]["weight"],
+              json::parse(R"({"schema": "Curve.1", "kind": "dominance", "alpha": 3.5, "peak": 0.75})"));
+    auto again = parseScenario(text);
+    ASSERT_TRUE(again.ok()) << describe(again.error());
+    EXPECT_EQ(*again, *s);
+    EXPECT_EQ(again->characters[0].layers[0].actions[0].weight.kind(), anim::CurveKind::Dominance);
+}
+
 TEST(ScenarioIo, ModelSegmentTagsAndLightingRoundTrip)
 {
     Scenario s;
@@ -811,6 +825,10 @@ TEST(ScenarioIo, MalformedFieldsAreNamed)
         {"missing ADSR field",
          [&](json& d) { action(d)["scale"] = json::parse(R"({"kind": "cubicAdsr", "attack": 0, "decay": 0, "sustain": 1})"); },
          "characters[0].layers[0].actions[0].scale.release: this field is required but missing"},
+        {"dominance alpha zero", [&](json& d) { action(d)["weight"] = json::parse(R"({"kind": "dominance", "alpha": 0, "peak": 1})"); },
+         "characters[0].layers[0].actions[0].weight.alpha: must be greater than 0"},
+        {"dominance without alpha", [&](json& d) { action(d)["weight"] = json::parse(R"({"kind": "dominance", "peak": 1})"); },
+         "characters[0].layers[0].actions[0].weight.alpha: this field is required but missing"},
         {"no keys", [&](json& d) { action(d)["weight"] = json::parse(R"({"kind": "keyframed", "keys": []})"); },
          "characters[0].layers[0].actions[0].weight.keys: a keyframed curve needs at least one key"},
         {"keys out of order",

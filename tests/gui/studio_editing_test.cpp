@@ -1,6 +1,6 @@
 // The studio's editors driven as a user would, on the real window: drop a clip from the library
 // onto the timeline, move and trim it with the mouse, undo back to the original document and
-// redo forward; change a curve preset; paint a joint mask; save and reopen; recover autosaved
+// redo forward; change a curve preset, and make a weight curve a dominance curve; paint a joint mask; save and reopen; recover autosaved
 // work after the studio process is killed with SIGKILL. Each editor leaves a screenshot.
 
 #include <QComboBox>
@@ -31,6 +31,7 @@
 #include "editor/joint_mask_panel.h"
 #include "editor/playback_clock.h"
 #include "editor/properties_panel.h"
+#include "editor/scenario_tree_model.h"
 #include "editor/translations.h"
 #include "editor/timeline_panel.h"
 #include "main_window.h"
@@ -60,6 +61,14 @@ void drag(QWidget* target, QPoint from, QPoint to, Qt::KeyboardModifiers modifie
     for (int i = 1; i <= 8; ++i)
         QTest::mouseMove(target, from + (to - from) * i / 8);
     QTest::mouseRelease(target, Qt::LeftButton, modifiers, to);
+}
+
+// Types a value into a spin box and presses Enter, as a user would.
+void typeInto(QDoubleSpinBox* box, double value)
+{
+    QTest::keyClick(box, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(box, box->locale().toString(value));
+    QTest::keyClick(box, Qt::Key_Return);
 }
 
 const core::scenario::ActionSpec& actionAt(const editor::Document& document, ActionPath p)
@@ -96,6 +105,7 @@ private slots:
     void dropMoveTrimThenUndoAndRedo();
     void dragToAnotherLayerIsOneUndoStep();
     void curvePresetChangesTheEvaluatedWeights();
+    void dominanceCurveFromTheCurvePanel();
     void paintingAMaskSetsJointWeights();
     void saveAndReopenGiveTheSameDocument();
     void autosavedWorkSurvivesKill9();
@@ -334,6 +344,67 @@ void StudioEditingTest::curvePresetChangesTheEvaluatedWeights()
     document.undoStack()->undo();
     document.undoStack()->undo();
     QCOMPARE(actionAt(document, wave).weight.kind(), core::anim::CurveKind::CubicAdsr);
+}
+
+void StudioEditingTest::dominanceCurveFromTheCurvePanel()
+{
+    editor::Document& document = *m_window->document();
+    const core::scenario::Scenario original = document.scenario();
+    const ActionPath wave{0, 0, 1}; // creon_wave: a cubic ADSR
+    m_window->timeline()->selectActions({wave});
+    editor::CurvePanel* curves = m_window->curveEditor();
+    QVERIFY(curves->action() == wave);
+    qobject_cast<QDockWidget*>(curves->parentWidget())->raise();
+    curves->setEditedCurve(editor::CurvePanel::WeightCurve);
+    auto* alpha = curves->findChild<QDoubleSpinBox*>(QStringLiteral("curveAlpha"));
+    auto* peak = curves->findChild<QDoubleSpinBox*>(QStringLiteral("curvePeak"));
+    auto* attack = curves->findChild<QDoubleSpinBox*>(QStringLiteral("curveAttack"));
+    QVERIFY(alpha && peak && attack);
+    QVERIFY(!alpha->isEnabled()); // only a dominance curve has an α
+
+    QComboBox* preset = curves->presetCombo();
+    preset->setCurrentIndex(preset->findText(QStringLiteral("Dominance (coarticulation)")));
+    auto weight = [&] { return actionAt(document, wave).weight; };
+    QCOMPARE(weight().kind(), core::anim::CurveKind::Dominance);
+    QCOMPARE(weight().envelope().alpha, 5.0);
+    QVERIFY(alpha->isEnabled());
+    QVERIFY(!attack->isEnabled());
+
+    typeInto(alpha, 12);
+    typeInto(peak, 0.8);
+    QCOMPARE(weight(), core::anim::Curve::dominance(12, 0.8));
+    QCOMPARE(document.undoStack()->count(), 3); // the shape, α and the peak: one step each
+    const double duration = core::ticksToSeconds(core::edit::actionSpan(document.scenario(), document.runtime(), wave)->end
+                                                 - actionAt(document, wave).start);
+    QCOMPARE(weight().evaluate(duration / 2, duration), 0.8);
+    QCOMPARE(weight().evaluate(duration / 4, duration), 0.8 * core::anim::dominance(12, 0.25));
+    QCOMPARE(editor::describeCurve(weight()), QStringLiteral("dominance α 12, peak 0.8"));
+    // The timeline's thumbnail reaches the peak in the action's middle.
+    widgets::TimelineView* timeline = m_window->timeline()->view();
+    const QVector<float>& thumbnail = timeline->clip(timeline->selectedClips().front())->weight;
+    QCOMPARE(thumbnail[thumbnail.size() / 2], 0.8f);
+    saveScreenshot(curves, QStringLiteral("curve_panel_dominance.png"));
+    qobject_cast<QDockWidget*>(m_window->timeline()->parentWidget())->raise();
+    timeline->setPixelsPerSecond(200);
+    saveScreenshot(timeline, QStringLiteral("timeline_dominance.png"));
+
+    // Made keyframed, it keeps the rise, the peak and the fall.
+    qobject_cast<QDockWidget*>(curves->parentWidget())->raise();
+    preset->setCurrentIndex(preset->findText(QStringLiteral("Keyframed")));
+    QCOMPARE(weight().keys().size(), std::size_t(5));
+    QCOMPARE(weight().keys()[2].value, 0.8);
+    QCOMPARE(weight().keys()[1].value, 0.8 * core::anim::dominance(12, 0.25));
+
+    document.undoStack()->undo();
+    QCOMPARE(weight(), core::anim::Curve::dominance(12, 0.8));
+    document.undoStack()->undo();
+    QCOMPARE(weight(), core::anim::Curve::dominance(12, 1.0));
+    QCOMPARE(alpha->value(), 12.0);
+    document.undoStack()->undo();
+    QCOMPARE(weight().envelope().alpha, 5.0);
+    document.undoStack()->undo();
+    QVERIFY(document.scenario() == original);
+    QVERIFY(!alpha->isEnabled());
 }
 
 void StudioEditingTest::propertiesEditTheSelectedAction()
