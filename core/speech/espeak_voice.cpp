@@ -93,17 +93,32 @@ std::vector<VoiceInfo> listVoicesLocked()
     return out;
 }
 
-// espeak-ng quietly falls back to a default for names it does not know: check the name against
-// the installed voices first (a "+variant" suffix, "en-us+f3", picks a variant of a voice).
+// A voice's languages: a priority byte, a name, a zero byte, … up to an empty name.
+std::vector<std::string> languagesOf(const espeak_VOICE& voice)
+{
+    std::vector<std::string> out;
+    for (const char* at = voice.languages; at && at[0] && at[1]; at += 1 + std::strlen(at + 1) + 1)
+        out.emplace_back(at + 1);
+    return out;
+}
+
+// espeak-ng quietly falls back to a default for names it does not know, and finds voices by file
+// (identifier) more reliably than by language: the voice asked for is looked up among those
+// installed — by name, identifier or any of its languages ("en", "en-gb") — and selected by its
+// identifier. A "+variant" suffix ("en-us+f3") picks a variant of it.
 Result<void> selectVoice(const std::string& voice)
 {
-    const std::string base = lowercase(voice.substr(0, voice.find('+')));
-    const std::vector<VoiceInfo> voices = listVoicesLocked();
-    const bool known = std::any_of(voices.begin(), voices.end(), [&](const VoiceInfo& v) {
-        return lowercase(v.name) == base || lowercase(v.identifier) == base || v.language == base;
-    });
-    if (known && espeak_SetVoiceByName(voice.c_str()) == EE_OK)
-        return {};
+    const std::size_t plus = voice.find('+');
+    const std::string base = lowercase(voice.substr(0, plus));
+    const std::string variant = plus == std::string::npos ? std::string{} : voice.substr(plus);
+    for (const espeak_VOICE** v = espeak_ListVoices(nullptr); v && *v; ++v) {
+        const std::vector<std::string> languages = languagesOf(**v);
+        const bool match = ((*v)->name && lowercase((*v)->name) == base)
+                           || ((*v)->identifier && lowercase((*v)->identifier) == base)
+                           || std::find(languages.begin(), languages.end(), base) != languages.end();
+        if (match && (*v)->identifier && espeak_SetVoiceByName(((*v)->identifier + variant).c_str()) == EE_OK)
+            return {};
+    }
     return makeError(ErrorCode::NotFound, "There is no espeak-ng voice " + inQuotes(voice)
                                               + "; English voices installed: " + voiceNames(listVoicesLocked()) + ".");
 }
@@ -147,6 +162,37 @@ std::size_t byteOfCharacter(std::string_view text, int position)
             return i;
     }
     return text.size();
+}
+
+bool isStop(const std::string& phoneme)
+{
+    return phoneme == "P" || phoneme == "B" || phoneme == "T" || phoneme == "D" || phoneme == "K" || phoneme == "G"
+           || phoneme == "CH" || phoneme == "JH";
+}
+
+// espeak-ng reports a stop at its burst and counts the silent closure before it (up to ~50 ms of
+// zeros) to the phoneme before; but the lips shut for a p, b or m from the closure on, and that is
+// where a recording's aligner puts the stop too. The closure's silence moves to the stop.
+void includeClosures(const std::vector<float>& samples, double rate, std::vector<PhonemeTiming>& phonemes)
+{
+    constexpr double kLongestClosure = 0.08, kShortestMove = 0.005;
+    constexpr float kSilence = 1e-3f;
+    for (std::size_t i = 1; i < phonemes.size(); ++i) {
+        PhonemeTiming& stop = phonemes[i];
+        PhonemeTiming& before = phonemes[i - 1];
+        if (!isStop(stop.phoneme))
+            continue;
+        const auto burst = std::size_t(std::lround(stop.start * rate));
+        // Never more than half of the phoneme before, so that it keeps its own middle.
+        const double earliest = std::max(stop.start - kLongestClosure, (before.start + before.end) / 2);
+        const auto limit = std::size_t(std::max(0.0, std::ceil(earliest * rate)));
+        std::size_t at = std::min(burst, samples.size());
+        while (at > limit && std::abs(samples[at - 1]) < kSilence)
+            --at;
+        const double closure = double(at) / rate;
+        if (stop.start - closure >= kShortestMove)
+            before.end = stop.start = closure;
+    }
 }
 
 } // namespace
@@ -257,6 +303,7 @@ Result<Utterance> speak(std::string_view text, const VoiceSettings& settings,
     }
     if (!phonemes.empty() && phonemes.front().start > 0)
         phonemes.insert(phonemes.begin(), {"SIL", 0.0, phonemes.front().start, -1});
+    includeClosures(utterance.samples, rate, phonemes);
     // A word lasts from its first phoneme to its last.
     for (std::size_t w = 0; w < timing.words.size(); ++w) {
         bool first = true;

@@ -2,6 +2,7 @@
 // speech (the SpeakJob: audio, word and phoneme timing, viseme and gesture cues), viseme sets,
 // the coarticulation dominance function, and Insert into a scenario (one undoable Edit).
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,9 +46,8 @@ void bindSpeech(py::module_& m)
         "speech", "Speech (paper §5): tagged text, espeak-ng voices and speech with phoneme timing, visemes with the "
                   "coarticulation dominance curve, and speech inserted into a scenario.");
 
-    s.def("dominance", &core::anim::dominance, "alpha"_a, "x"_a,
-          "The paper's coarticulation dominance (eq. 3) at x in [0, 1]: e^(-alpha*2|x-0.5|) - 2|x-0.5|*e^(-alpha); "
-          "0 outside. A viseme action's weight is this over its duration (Curve kind 'dominance').");
+    // The same function as thespis.dominance, where speech users look for it.
+    s.attr("dominance") = m.attr("dominance");
 
     s.def(
         "parse_tagged_text",
@@ -137,18 +137,18 @@ void bindSpeech(py::module_& m)
     s.def(
         "speak",
         [](const std::string& text, const std::string& voice, int rate, int pitch, int volume, const speech::VisemeSet* visemes,
-           const std::filesystem::path& wav, const py::object& progress) {
+           const std::optional<std::filesystem::path>& wav, const py::object& progress) {
             auto job = std::make_shared<speech::SpeakJob>();
             job->text = text;
             job->voice = {voice, rate, pitch, volume};
             if (visemes)
                 job->visemes = *visemes;
-            job->wavOutput = wav;
+            job->wavOutput = wav.value_or(std::filesystem::path());
             runJob(*job, progress);
             return job;
         },
         "text"_a, "voice"_a = "en-us", "rate"_a = 175, "pitch"_a = 50, "volume"_a = 100, "visemes"_a = nullptr,
-        "wav"_a = std::filesystem::path(), "progress"_a = py::none(),
+        "wav"_a = py::none(), "progress"_a = py::none(),
         "Speaks tagged text with espeak-ng, sentence by sentence (a core job: progress(done, total) per sentence, "
         "Ctrl-C cancels), into a Speech; writes it as a 16-bit WAV when `wav` is given.");
 

@@ -32,7 +32,7 @@ def test_creon_speaks_a_tagged_line_and_it_goes_into_the_scenario(tmp_path):
     assert said.phonemes[-1][2] == pytest.approx(said.duration, abs=0.02)
     assert wav.stat().st_size > 44 + 2 * len(said.samples) - 4
     lips = [v for v in said.visemes if v["phoneme"] in ("P", "B")]
-    assert len(lips) == 5 and all(v["name"] == "p_b_m" for v in lips)
+    assert len(lips) == 6 and all(v["name"] == "p_b_m" for v in lips)
     (gesture,) = said.gestures
     assert (gesture["start"], gesture["end"]) == (said.words[1][1], said.words[2][2])
 

@@ -168,3 +168,23 @@ TEST(SpeechPhonemes, EspeakMnemonicsMapToArpabet)
     EXPECT_EQ(speech::normalizedPhoneme("ah0"), "AH");
     EXPECT_EQ(speech::arpabetPhonemes().size(), 39u);
 }
+
+// espeak-ng reports a stop at its burst; the silent closure before the burst belongs to the stop
+// (the lips are shut for a p from there), not to the vowel before it.
+TEST(SpeechVoice, AStopBeginsWithItsClosure)
+{
+    const speech::Utterance u = spoken("Keep a cap, Pete, pick a top pot.");
+    int stops = 0;
+    const auto& phonemes = u.timing.phonemes;
+    for (std::size_t i = 1; i < phonemes.size(); ++i) {
+        const auto& p = phonemes[i];
+        const std::string& before = phonemes[i - 1].phoneme;
+        const bool afterVowel = before == "IY" || before == "AE" || before == "AH" || before == "IH" || before == "AA";
+        if ((p.phoneme != "P" && p.phoneme != "T" && p.phoneme != "K") || !afterVowel)
+            continue;
+        EXPECT_LT(loudness(u, p.start, p.start + 0.015), 0.005) << p.phoneme << " at " << p.start << " starts quiet";
+        EXPECT_GT(loudness(u, p.start - 0.015, p.start), 0.005) << "the " << before << " before it sounds to its end";
+        ++stops;
+    }
+    EXPECT_GE(stops, 5);
+}
