@@ -2,6 +2,9 @@
 
 #include <pocketsphinx.h>
 
+#include <cassert>
+#include <type_traits>
+
 #include "util/file_io.h"
 #include "util/text.h"
 
@@ -72,6 +75,34 @@ readPronunciations(const std::filesystem::path& dictionary, const std::set<std::
             found[*wanted].push_back(splitWords(line.substr(space + 1)));
     }
     return found;
+}
+
+std::vector<std::array<float, 13>> sphinxCepstra(std::span<const std::int16_t> samples, int framesPerSecond)
+{
+    // The en-us model's filter bank (its feat.params), with the decoder's dither.
+    const std::string rate = std::to_string(framesPerSecond);
+    cmd_ln_t* config = cmd_ln_init(nullptr, fe_get_args(), TRUE, "-samprate", "16000", "-frate", rate.c_str(),
+                                   "-lowerf", "130", "-upperf", "6800", "-nfilt", "25", "-transform", "dct",
+                                   "-lifter", "22", "-dither", "yes", "-seed", "1", "-remove_silence", "no", nullptr);
+    fe_t* fe = fe_init_auto_r(config); // owns the configuration
+    assert(fe && fe_get_output_size(fe) == 13);
+    int shift = 0, size = 0;
+    fe_get_input_size(fe, &shift, &size);
+    std::vector<std::array<float, 13>> cepstra;
+    if (samples.size() >= std::size_t(size))
+        cepstra.resize((samples.size() - std::size_t(size)) / std::size_t(shift) + 1);
+    static_assert(std::is_same_v<mfcc_t, float>); // pocketsphinx built without fixed point
+    std::vector<mfcc_t*> rows(cepstra.size());
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        rows[i] = cepstra[i].data();
+    const std::int16_t* next = samples.data();
+    std::size_t left = samples.size();
+    auto frames = std::int32_t(rows.size());
+    fe_start_utt(fe);
+    fe_process_frames(fe, &next, &left, rows.data(), &frames, nullptr);
+    fe_free(fe);
+    cepstra.resize(std::size_t(frames));
+    return cepstra;
 }
 
 void SphinxDecoder::Free::operator()(ps_decoder_t* decoder) const

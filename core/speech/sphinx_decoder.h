@@ -7,6 +7,7 @@
 // starts n·10 ms after the audio does. pocketsphinx's log goes to /dev/null. A decoder is used
 // by one thread at a time.
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -39,6 +40,11 @@ struct SphinxModel {
 /// …), for the words asked for (lower case) that it has. Errors: the file cannot be read.
 Result<std::map<std::string, std::vector<std::vector<std::string>>>>
 readPronunciations(const std::filesystem::path& dictionary, const std::set<std::string, std::less<>>& words);
+
+/// pocketsphinx's cepstra (the model's 13 MFCCs: 25.6 ms windows) of `samples` (kSphinxRate),
+/// one every 1/`framesPerSecond` s: frame n's window starts at n/`framesPerSecond` s.
+std::vector<std::array<float, 13>> sphinxCepstra(std::span<const std::int16_t> samples, int framesPerSecond);
+inline constexpr double kSphinxWindow = 0.0256; ///< seconds of sound in one frame
 
 /// One word of a decoding: as the grammar or dictionary names it ("w3(2)", "<sil>", "[NOISE]").
 struct SphinxSegment {
