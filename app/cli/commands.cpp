@@ -27,6 +27,7 @@ const std::vector<Command>& commands()
 #endif
         {infoSpec(), &runInfo},
         {faceMappingSpec(), &runFaceMapping},
+        {lipsyncSpec(), &runLipsync},
     };
     return all;
 }

@@ -50,6 +50,8 @@ CommandSpec infoSpec();
 int runInfo(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec faceMappingSpec();
 int runFaceMapping(const CommandSpec& spec, const ParsedArguments& arguments);
+CommandSpec lipsyncSpec();
+int runLipsync(const CommandSpec& spec, const ParsedArguments& arguments);
 #ifdef THESPIS_WITH_PYTHON
 CommandSpec runSpec();
 int runRun(const CommandSpec& spec, const ParsedArguments& arguments);
