@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <random>
 #include <set>
 
 #include "runtime/sound.h"
@@ -329,11 +330,16 @@ std::vector<WordTiming> timedWords(const std::vector<TranscriptWord>& words, con
     return timed;
 }
 
+// 16-bit samples, dithered by one step either way (from a fixed seed, so that results repeat):
+// digital silence, as in espeak-ng's pauses, has no log energy for the recogniser.
 std::vector<std::int16_t> pcm16(std::span<const float> samples)
 {
+    std::minstd_rand random(1);
     std::vector<std::int16_t> pcm(samples.size());
-    for (std::size_t i = 0; i < samples.size(); ++i)
-        pcm[i] = std::int16_t(std::lround(std::clamp(samples[i], -1.0f, 1.0f) * 32767.0f));
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        const long value = std::lround(std::clamp(samples[i], -1.0f, 1.0f) * 32766.0f) + (random() & 1 ? 1 : -1);
+        pcm[i] = std::int16_t(value);
+    }
     return pcm;
 }
 

@@ -1,6 +1,7 @@
 #include "speech/sphinx_decoder.h"
 
 #include <pocketsphinx.h>
+#include <sphinxbase/err.h>
 
 #include <cassert>
 #include <type_traits>
@@ -34,6 +35,14 @@ std::vector<std::string> splitWords(std::string_view text)
         words.emplace_back(text.substr(at, end - at));
         at = end;
     }
+}
+
+// pocketsphinx logs through one process-wide file, which -logfn would reopen (closing the one
+// another decoder may be writing to) at every decoder made: instead it is off, once.
+void silenceLog()
+{
+    static const bool silenced = (err_set_logfp(nullptr), true);
+    (void)silenced;
 }
 
 std::string joined(const std::vector<std::string>& words)
@@ -79,11 +88,12 @@ readPronunciations(const std::filesystem::path& dictionary, const std::set<std::
 
 std::vector<std::array<float, 13>> sphinxCepstra(std::span<const std::int16_t> samples, int framesPerSecond)
 {
-    // The en-us model's filter bank (its feat.params), with the decoder's dither.
+    silenceLog();
+    // The en-us model's filter bank (its feat.params).
     const std::string rate = std::to_string(framesPerSecond);
     cmd_ln_t* config = cmd_ln_init(nullptr, fe_get_args(), TRUE, "-samprate", "16000", "-frate", rate.c_str(),
                                    "-lowerf", "130", "-upperf", "6800", "-nfilt", "25", "-transform", "dct",
-                                   "-lifter", "22", "-dither", "yes", "-seed", "1", "-remove_silence", "no", nullptr);
+                                   "-lifter", "22", "-remove_silence", "no", nullptr);
     fe_t* fe = fe_init_auto_r(config); // owns the configuration
     assert(fe && fe_get_output_size(fe) == 13);
     int shift = 0, size = 0;
@@ -122,14 +132,12 @@ Result<SphinxDecoder> SphinxDecoder::open(const SphinxModel& model, Mode mode)
         if (auto exists = checkExists(model.languageModel, "language model"); !exists)
             return exists.error();
     }
-    // Every frame is kept (-remove_silence no) so that frames are times. Dither, with a fixed
-    // seed for repeatable results, keeps the log energy of digital silence (synthesised pauses,
-    // gated recordings) finite. The pauses pocketsphinx puts between a grammar's words by itself
-    // (-fsgusefiller) sometimes leave no path to the grammar's end ("made a warm woollen"), so
-    // grammars name their pauses instead.
-    cmd_ln_t* config = cmd_ln_init(nullptr, ps_args(), TRUE, "-hmm", hmm.c_str(), "-logfn", "/dev/null",
-                                   "-remove_silence", "no", "-dither", "yes", "-seed", "1", "-fsgusefiller", "no",
-                                   nullptr);
+    // Every frame is kept (-remove_silence no) so that frames are times. The pauses pocketsphinx
+    // puts between a grammar's words by itself (-fsgusefiller) sometimes leave no path to the
+    // grammar's end ("made a warm woollen"), so grammars name their pauses instead.
+    silenceLog();
+    cmd_ln_t* config = cmd_ln_init(nullptr, ps_args(), TRUE, "-hmm", hmm.c_str(), "-remove_silence", "no",
+                                   "-fsgusefiller", "no", nullptr);
     if (config && mode == Mode::Recognise) {
         cmd_ln_set_str_r(config, "-dict", dict.c_str());
         cmd_ln_set_str_r(config, "-lm", lm.c_str());

@@ -4,8 +4,10 @@
 // sentence — or, for recognition, against the en-us language model. Owns one decoder.
 //
 // Every frame of the audio is decoded (pocketsphinx's own silence removal is off), so frame n
-// starts n·10 ms after the audio does. pocketsphinx's log goes to /dev/null. A decoder is used
-// by one thread at a time.
+// starts n·10 ms after the audio does. Digital silence (synthesised pauses) must come dithered:
+// a frame of zeros has no log energy. pocketsphinx's own dither is off, for its random
+// generator is one for the whole process, shared by decoders working at once. pocketsphinx's log is off. A decoder is used by one
+// thread at a time; several may work at once.
 
 #include <array>
 #include <cstdint>

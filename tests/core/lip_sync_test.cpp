@@ -431,6 +431,22 @@ TEST(LipSync, AStoppedJobIsCancelled)
     EXPECT_TRUE(job.result.timing.words.empty());
 }
 
+TEST(LipSync, RecordingsAlignAtOnceOnSeveralThreads)
+{
+    const auto wavs = libriVoxRecordings();
+    ASSERT_GE(wavs.size(), 2u) << kLibriVox;
+    std::vector<speech::LipSyncResult> alone, together(2);
+    for (std::size_t i = 0; i < 2; ++i)
+        alone.push_back(lipSynced(wavs[i], transcriptOf(wavs[i])));
+    std::vector<std::thread> threads;
+    for (std::size_t i = 0; i < 2; ++i)
+        threads.emplace_back([&, i] { together[i] = lipSynced(wavs[i], transcriptOf(wavs[i])); });
+    for (std::thread& thread : threads)
+        thread.join();
+    for (std::size_t i = 0; i < 2; ++i)
+        EXPECT_EQ(together[i].timing, alone[i].timing) << wavs[i];
+}
+
 TEST(LipSync, BadInputIsRefusedNamingTheFile)
 {
     speech::LipSyncJob job;
