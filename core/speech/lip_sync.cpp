@@ -157,6 +157,7 @@ Result<void> pronounce(std::vector<TranscriptWord>& words, const SphinxModel& mo
     return {};
 }
 
+// A phoneme as a word of the phonemes pass: "ph_aa".
 std::string phoneWord(const std::string& phone)
 {
     return "ph_" + lowercase(phone);
@@ -181,16 +182,16 @@ Result<void> addWords(SphinxDecoder& decoder, const std::vector<TranscriptWord>&
 {
     for (std::size_t i = 0; i < words.size(); ++i)
         for (std::size_t p = 0; p < words[i].pronunciations.size(); ++p) {
-            if (auto added = decoder.addWord(wordName(i, p), words[i].pronunciations[p]); !added)
+            if (auto added = decoder.addWord(wordName(i, p), joinPhones(words[i].pronunciations[p])); !added)
                 return added.error();
         }
     for (const auto& [filler, phones] : kFillers)
-        if (auto added = decoder.addWord(filler, phones); !added)
+        if (auto added = decoder.addWord(filler, joinPhones(phones)); !added)
             return added.error();
     for (std::string_view phone : arpabetPhonemes())
-        if (auto added = decoder.addWord(phoneWord(std::string(phone)), {std::string(phone)}); !added)
+        if (auto added = decoder.addWord(phoneWord(std::string(phone)), std::string(phone)); !added)
             return added.error();
-    return decoder.addWord(kPauseWord, {"+NSN+"});
+    return decoder.addWord(kPauseWord, "+NSN+");
 }
 
 // wordName's inverse: "w12(3)" → word 12, pronunciation 2; nothing for other words.

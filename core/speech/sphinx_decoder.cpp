@@ -45,14 +45,6 @@ void silenceLog()
     (void)silenced;
 }
 
-std::string joined(const std::vector<std::string>& words)
-{
-    std::string text;
-    for (const std::string& word : words)
-        text += (text.empty() ? "" : " ") + word;
-    return text;
-}
-
 } // namespace
 
 SphinxModel SphinxModel::installed()
@@ -152,12 +144,11 @@ Result<SphinxDecoder> SphinxDecoder::open(const SphinxModel& model, Mode mode)
     return opened;
 }
 
-Result<void> SphinxDecoder::addWord(const std::string& name, const std::vector<std::string>& phones)
+Result<void> SphinxDecoder::addWord(const std::string& name, const std::string& phones)
 {
-    const std::string pronunciation = joined(phones);
-    if (ps_add_word(m_decoder.get(), name.c_str(), pronunciation.c_str(), FALSE) < 0)
+    if (ps_add_word(m_decoder.get(), name.c_str(), phones.c_str(), FALSE) < 0)
         return makeError(ErrorCode::InvalidArgument,
-                         "pocketsphinx's model cannot say " + inQuotes(pronunciation) + " (for " + inQuotes(name) + ").");
+                         "pocketsphinx's model cannot say " + inQuotes(phones) + " (for " + inQuotes(name) + ").");
     return {};
 }
 

@@ -6,8 +6,8 @@
 // Every frame of the audio is decoded (pocketsphinx's own silence removal is off), so frame n
 // starts n·10 ms after the audio does. Digital silence (synthesised pauses) must come dithered:
 // a frame of zeros has no log energy. pocketsphinx's own dither is off, for its random
-// generator is one for the whole process, shared by decoders working at once. pocketsphinx's log is off. A decoder is used by one
-// thread at a time; several may work at once.
+// generator is one for the whole process, shared by decoders working at once. pocketsphinx's
+// log is off. A decoder is used by one thread at a time; several may work at once.
 
 #include <array>
 #include <cstdint>
@@ -62,9 +62,9 @@ public:
     /// Errors: the model's files are missing (naming them and the package) or do not load.
     static Result<SphinxDecoder> open(const SphinxModel& model, Mode mode);
 
-    /// Adds `name` pronounced `phones` (ARPAbet); "name(2)" adds a second pronunciation.
-    /// Error: a phone the model lacks.
-    Result<void> addWord(const std::string& name, const std::vector<std::string>& phones);
+    /// Adds `name` pronounced `phones` (ARPAbet, separated by spaces); "name(2)" adds a second
+    /// pronunciation. Error: a phone the model lacks.
+    Result<void> addWord(const std::string& name, const std::string& phones);
 
     /// Decodes `samples` (kSphinxRate) as the one sentence of the JSGF grammar `jsgf`, with
     /// pocketsphinx's default beams or (`wideBeams`) beams that keep far more paths, for what the
