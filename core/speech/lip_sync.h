@@ -6,7 +6,7 @@
 // How: the recording (any rate; loadSound mixes it to mono) is resampled to 16 kHz. Words
 // pass: a grammar that is the transcript word by word, with every pronunciation CMUdict has for
 // each word — espeak-ng's for a word it lacks, with a warning — and optional pauses between
-// words, where fillers ("uh", "um") may come too; on failure again with wide beams. Phonemes
+// words, with room for a filler ("uh", "um") inside a pause; on failure again with wide beams. Phonemes
 // pass, per stretch of speech between pauses of 0.3 s or more: a grammar whose words are the
 // phonemes of the pronunciations the words pass chose, with optional pauses between words; on
 // failure again with wide beams, and failing that the stretch's words are split evenly into their
