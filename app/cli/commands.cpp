@@ -28,6 +28,7 @@ const std::vector<Command>& commands()
         {infoSpec(), &runInfo},
         {faceMappingSpec(), &runFaceMapping},
         {speakSpec(), &runSpeak},
+        {lipsyncSpec(), &runLipsync},
     };
     return all;
 }

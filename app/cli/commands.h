@@ -52,6 +52,8 @@ CommandSpec faceMappingSpec();
 int runFaceMapping(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec speakSpec();
 int runSpeak(const CommandSpec& spec, const ParsedArguments& arguments);
+CommandSpec lipsyncSpec();
+int runLipsync(const CommandSpec& spec, const ParsedArguments& arguments);
 #ifdef THESPIS_WITH_PYTHON
 CommandSpec runSpec();
 int runRun(const CommandSpec& spec, const ParsedArguments& arguments);
