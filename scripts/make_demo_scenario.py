@@ -217,7 +217,7 @@ def mask(name, weights, default=0.0):
 def scenario():
     creon = {
         # Creon stands on the left, turned towards Antigone.
-        "schema": "Character.5", "name": "Creon", "skeleton": "hanim-25", "position": [-0.55, 0.0, 0.0],
+        "schema": "Character.6", "name": "Creon", "skeleton": "hanim-25", "position": [-0.55, 0.0, 0.0],
         "heading": 25.0,
         "clips": [
             idle_synthesizer("creon_idle", seed=1),
@@ -254,7 +254,7 @@ def scenario():
         ],
     }
     antigone = {
-        "schema": "Character.5", "name": "Antigone", "skeleton": "hanim-25", "position": [0.55, 0.0, 0.0],
+        "schema": "Character.6", "name": "Antigone", "skeleton": "hanim-25", "position": [0.55, 0.0, 0.0],
         "heading": -25.0,
         "clips": [
             idle_synthesizer("antigone_idle", seed=2),
@@ -284,8 +284,8 @@ def scenario():
     }
     return {
         "format": "thespis-scenario",
-        "version": 8,
-        "schema": "Scenario.8",
+        "version": 9,
+        "schema": "Scenario.9",
         "name": "Antigone, act 1 (demo)",
         "duration": ticks(12.0),
         "masks": [
