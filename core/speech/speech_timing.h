@@ -24,7 +24,7 @@ struct WordTiming {
 struct PhonemeTiming {
     std::string phoneme;          ///< ARPAbet ("P", "AA") or "SIL"
     double start = 0, end = 0;    ///< seconds
-    int word = -1;                ///< index into SpeechTiming::words; −1 in a pause
+    int word = -1;                ///< index into SpeechTiming::words; −1 in a pause or a filler ("uh")
     bool operator==(const PhonemeTiming&) const = default;
 };
 

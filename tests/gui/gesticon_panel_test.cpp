@@ -395,8 +395,7 @@ void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
     // Creon (character 0) "greet": the clip "wave" on the right arm. Before his own wave (1.5 s).
     QCOMPARE(panel->currentCharacter(), 0);
     panel->selectRow(0);
-    const core::scenario::CharacterRuntime& creon = stage.runtime().characters[0];
-    const core::anim::TimeDomain wave = creon.clips.at("wave")->domain();
+    const core::anim::TimeDomain wave = stage.runtime().characters[0].clips.at("wave")->domain();
     const double length = wave.end - wave.start;
     QVERIFY(length > 1.5 && length < 6);
     const core::Tick start = core::secondsToTicks(0.2), during = start + core::TicksPerSecond;
@@ -432,8 +431,11 @@ void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
         core::runtime::PoseSet expected = reference.makePoseSet();
         reference.evaluate(t, expected);
         const std::vector<float>& authored = expected.characters[0].body;
-        const double rightShoulder = angleBetween(rotationOf(creon, frame, "r_shoulder"), rotationOf(creon, authored, "r_shoulder"));
-        const double hip = angleBetween(rotationOf(creon, frame, "l_hip"), rotationOf(creon, authored, "l_hip"));
+        // The stage's runtime is replaced whenever the document changes: take Creon from the copy.
+        const core::scenario::CharacterRuntime& creonNow = reference.runtime().characters[0];
+        const double rightShoulder =
+            angleBetween(rotationOf(creonNow, frame, "r_shoulder"), rotationOf(creonNow, authored, "r_shoulder"));
+        const double hip = angleBetween(rotationOf(creonNow, frame, "l_hip"), rotationOf(creonNow, authored, "l_hip"));
         QVERIFY2(rightShoulder > 10, qPrintable(QString::number(rightShoulder)));
         // "greet" has the dependent-joint filter on (paper §4.4): the gesture plays over the upper
         // body, while the legs go on with the idle as the document has them.
@@ -492,8 +494,9 @@ void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
         core::runtime::Stage reference(stage.runtimeCopy());
         core::runtime::PoseSet expected = reference.makePoseSet();
         reference.evaluate(session.poses().time, expected);
-        return angleBetween(rotationOf(creon, session.poses().characters[0].body, "l_shoulder"),
-                            rotationOf(creon, expected.characters[0].body, "l_shoulder"));
+        const core::scenario::CharacterRuntime& creonNow = reference.runtime().characters[0];
+        return angleBetween(rotationOf(creonNow, session.poses().characters[0].body, "l_shoulder"),
+                            rotationOf(creonNow, expected.characters[0].body, "l_shoulder"));
     };
     clock.seek(start);
     panel->selectRow(0);
