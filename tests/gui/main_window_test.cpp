@@ -164,7 +164,8 @@ void MainWindowTest::spacePlaysAndPauses()
     // The transport shows the clock's time.
     QCOMPARE(m_window->transportBar()->time(), thespis::core::ticksToSeconds(clock->time()));
     auto* fps = m_window->findChild<QLabel*>(QStringLiteral("fpsLabel"));
-    QVERIFY2(fps->text().contains(QStringLiteral("fps")), qPrintable(fps->text()));
+    // The rate is measured over the frames of a while: on a loaded machine it shows later.
+    QTRY_VERIFY2_WITH_TIMEOUT(fps->text().contains(QStringLiteral("fps")), qPrintable(fps->text()), 10000);
 
     QTest::keyClick(m_window->outlineView(), Qt::Key_Space);
     QVERIFY(!clock->isPlaying());
