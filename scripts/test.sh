@@ -31,7 +31,10 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTHESPIS_SA
   -DTHESPIS_BUILD_GUI=OFF -DTHESPIS_BUILD_PYTHON=OFF -DTHESPIS_BUILD_BENCH=OFF -DTHESPIS_CPU_DISPATCH=OFF \
   -DPython_EXECUTABLE=/usr/bin/python3
 cmake --build build-asan -j "$jobs" --target thespis_core_tests
+# tests/lsan.supp: leaks inside third-party libraries (pocketsphinx's grammar parser) only.
+leak_suppressions="$PWD/tests/lsan.supp"
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  LSAN_OPTIONS=suppressions="$leak_suppressions" \
   ctest -j "$jobs" -L core --output-on-failure --timeout 600)
 
 echo "== all tests passed =="
