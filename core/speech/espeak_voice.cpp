@@ -304,18 +304,7 @@ Result<Utterance> speak(std::string_view text, const VoiceSettings& settings,
     if (!phonemes.empty() && phonemes.front().start > 0)
         phonemes.insert(phonemes.begin(), {"SIL", 0.0, phonemes.front().start, -1});
     includeClosures(utterance.samples, rate, phonemes);
-    // A word lasts from its first phoneme to its last.
-    for (std::size_t w = 0; w < timing.words.size(); ++w) {
-        bool first = true;
-        for (const PhonemeTiming& p : phonemes) {
-            if (p.word != int(w))
-                continue;
-            if (first)
-                timing.words[w].start = p.start;
-            timing.words[w].end = p.end;
-            first = false;
-        }
-    }
+    timing.fitWordsToPhonemes();
     return utterance;
 }
 

@@ -307,30 +307,6 @@ std::vector<PhonemeTiming> timedPhonemes(const std::vector<PlacedPhone>& phones,
     return timed;
 }
 
-// Each word from its first phoneme to its last; a word left out is empty, where the one before
-// ends.
-std::vector<WordTiming> timedWords(const std::vector<TranscriptWord>& words, const std::vector<PhonemeTiming>& phonemes)
-{
-    std::vector<WordTiming> timed;
-    for (const TranscriptWord& word : words)
-        timed.push_back({word.text, -1, 0, word.begin, word.end});
-    for (const PhonemeTiming& phoneme : phonemes) {
-        if (phoneme.word < 0)
-            continue;
-        WordTiming& word = timed[std::size_t(phoneme.word)];
-        if (word.start < 0)
-            word.start = phoneme.start;
-        word.end = phoneme.end;
-    }
-    double previousEnd = 0;
-    for (WordTiming& word : timed) {
-        if (word.start < 0)
-            word.start = word.end = previousEnd;
-        previousEnd = word.end;
-    }
-    return timed;
-}
-
 // 16-bit samples, dithered by one step either way (from a fixed seed, so that results repeat):
 // digital silence, as in espeak-ng's pauses, has no log energy for the recogniser.
 std::vector<std::int16_t> pcm16(std::span<const float> samples)
@@ -457,7 +433,9 @@ Result<LipSyncResult> lipSync(std::span<const float> samples, int rate, std::str
     result.timing.duration = duration;
     result.timing.phonemes = timedPhonemes(phones, duration);
     refineBoundaries(result.timing.phonemes, pcm);
-    result.timing.words = timedWords(words, result.timing.phonemes);
+    for (const TranscriptWord& word : words)
+        result.timing.words.push_back({word.text, 0, 0, word.begin, word.end});
+    result.timing.fitWordsToPhonemes();
     return result;
 }
 

@@ -4,6 +4,26 @@
 
 namespace thespis::core::speech {
 
+void SpeechTiming::fitWordsToPhonemes()
+{
+    for (WordTiming& word : words)
+        word.start = -1;
+    for (const PhonemeTiming& phoneme : phonemes) {
+        if (phoneme.word < 0 || phoneme.word >= int(words.size()))
+            continue;
+        WordTiming& word = words[std::size_t(phoneme.word)];
+        if (word.start < 0)
+            word.start = phoneme.start;
+        word.end = phoneme.end;
+    }
+    double previousEnd = 0;
+    for (WordTiming& word : words) {
+        if (word.start < 0)
+            word.start = word.end = previousEnd;
+        previousEnd = word.end;
+    }
+}
+
 void SpeechTiming::shift(double seconds)
 {
     for (WordTiming& word : words) {

@@ -34,6 +34,9 @@ struct SpeechTiming {
     double duration = 0;          ///< seconds: the audio's length
     bool operator==(const SpeechTiming&) const = default;
 
+    /// Sets each word's times from its phonemes: from its first to its last; a word with none is
+    /// empty, where the one before ends.
+    void fitWordsToPhonemes();
     /// The same timing `seconds` later (words and phonemes; the duration grows by it).
     void shift(double seconds);
     /// Appends `next`, which starts `offset` seconds after this one's start; its word indices
