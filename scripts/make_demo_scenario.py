@@ -205,6 +205,12 @@ def gesture(name, clip_name, mask_name, fade_in, fade_out, dependent_joint_filte
     return out
 
 
+def speech_line(name, text, voice, rate, pitch):
+    # No start: the line is said when a script says it. No audio: espeak-ng speaks the text.
+    return {"schema": "SpeechLine.1", "name": name, "text": text, "voice": voice, "rate": rate, "pitch": pitch,
+            "words": [], "phonemes": []}
+
+
 def marker(name, time):
     return {"schema": "Marker.1", "name": name, "time": ticks(time)}
 
@@ -252,6 +258,12 @@ def scenario():
             gesture("greet", "wave", "rightArm", 0.4, 0.5, dependent_joint_filter=True, filter_band=(30, 40)),
             gesture("agree", "nod", "head", 0.25, 0.25),
         ],
+        # What the paper's script has him say (voiceService.activateAction): not on the timeline.
+        "speech": [
+            speech_line("CreonSpeech.Cam01CreonP1",
+                        "Now, tell me thou, not in many words, but briefly: knewest thou that an edict had "
+                        "forbidden this?", voice="en-gb", rate=140, pitch=35),
+        ],
     }
     antigone = {
         "schema": "Character.6", "name": "Antigone", "skeleton": "hanim-25", "position": [0.55, 0.0, 0.0],
@@ -280,6 +292,11 @@ def scenario():
         ],
         "gestures": [
             gesture("agree", "nod", "head", 0.2, 0.3),
+        ],
+        "speech": [
+            speech_line("AntigoneSpeech.Cam01CreonP3",
+                        'I knew it: <begin_gesture id="g1" anim="agree"/>could I help it?<end_gesture id="g1"/> '
+                        "It was public.", voice="en-us", rate=160, pitch=70),
         ],
     }
     return {

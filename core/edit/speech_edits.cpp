@@ -104,7 +104,9 @@ Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, sc
                                      const std::vector<speech::VisemeCue>& visemes,
                                      const std::vector<speech::GestureCue>& gestures)
 {
-    const Tick at = line.start;
+    if (!line.start)
+        return invalid("A speech line inserted on the timeline needs a start.");
+    const Tick at = *line.start;
     if (character < 0 || character >= int(scenario.characters.size()))
         return invalid("There is no character " + std::to_string(character) + " to speak.");
     if (at < 0)

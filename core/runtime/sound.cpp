@@ -5,6 +5,8 @@
 
 #include <sndfile.h>
 
+#include "runtime/speech_performance.h"
+#include "speech/espeak_voice.h"
 #include "util/file_io.h"
 
 namespace thespis::core::runtime {
@@ -72,6 +74,51 @@ Result<int> SoundService::playAt(const std::string& sound, Tick now, double volu
     return int(m_activations.size()) - 1;
 }
 
+int SoundService::playClip(const std::string& sound, std::shared_ptr<const SoundClip> clip, Tick start, double volume,
+                           const std::string& owner)
+{
+    const std::lock_guard lock(m_mutex);
+    const Tick end = start + secondsToTicks(clip->duration());
+    m_activations.push_back(Activation{sound, owner, std::move(clip), start, end, float(std::max(volume, 0.0))});
+    return int(m_activations.size()) - 1;
+}
+
+Result<std::shared_ptr<const SoundClip>> SoundService::load(const std::string& sound)
+{
+    const std::lock_guard lock(m_mutex);
+    return clip(sound);
+}
+
+std::string speechSoundName(const std::string& character, const std::string& line) { return character + ": " + line; }
+
+Result<SoundService::SpokenLine> SoundService::lineAudio(const scenario::SpeechLine& line)
+{
+    auto tagged = speech::parseTaggedText(line.text);
+    if (!tagged)
+        return makeError(tagged.error().code, "text: " + tagged.error().message);
+    if (!line.audio.empty()) {
+        auto loaded = load(line.audio);
+        if (!loaded)
+            return makeError(loaded.error().code, "audio: " + loaded.error().message);
+        speech::SpeechTiming timing = timingOf(line, tagged->text);
+        return SpokenLine{std::move(loaded).value(), std::move(timing), std::move(tagged).value()};
+    }
+    const std::string key = "\x01speech\x01" + line.voice + "\x01" + std::to_string(line.rate) + "\x01"
+                            + std::to_string(line.pitch) + "\x01" + tagged->text;
+    {
+        const std::lock_guard lock(m_mutex);
+        if (auto found = m_spoken.find(key); found != m_spoken.end())
+            return SpokenLine{found->second.first, found->second.second, std::move(tagged).value()};
+    }
+    auto spoken = speech::speak(tagged->text, {.voice = line.voice, .wordsPerMinute = line.rate, .pitch = line.pitch});
+    if (!spoken)
+        return makeError(spoken.error().code, "voice: " + spoken.error().message);
+    auto clip = std::make_shared<const SoundClip>(SoundClip{spoken->rate, std::move(spoken->samples)});
+    const std::lock_guard lock(m_mutex);
+    m_spoken[key] = {clip, spoken->timing};
+    return SpokenLine{std::move(clip), std::move(spoken->timing), std::move(tagged).value()};
+}
+
 std::vector<std::string> SoundService::playSpeech(const scenario::Scenario& scenario)
 {
     std::vector<std::string> problems;
@@ -79,14 +126,24 @@ std::vector<std::string> SoundService::playSpeech(const scenario::Scenario& scen
         const scenario::Character& character = scenario.characters[c];
         for (std::size_t l = 0; l < character.speech.size(); ++l) {
             const scenario::SpeechLine& line = character.speech[l];
-            if (line.audio.empty())
+            if (!line.start)
                 continue;
-            if (auto started = playAt(line.audio, line.start, 1.0, character.name); !started)
-                problems.push_back("characters[" + std::to_string(c) + "].speech[" + std::to_string(l)
-                                   + "].audio: " + started.error().message);
+            auto audio = lineAudio(line);
+            if (!audio) {
+                problems.push_back("characters[" + std::to_string(c) + "].speech[" + std::to_string(l) + "]."
+                                   + audio.error().message);
+                continue;
+            }
+            playClip(speechSoundName(character.name, line.name), audio->clip, *line.start, 1.0, character.name);
         }
     }
     return problems;
+}
+
+void SoundService::clear()
+{
+    const std::lock_guard lock(m_mutex);
+    m_activations.clear();
 }
 
 bool SoundService::stop(const std::string& sound)

@@ -18,6 +18,8 @@
 #include "runtime/clock.h"
 #include "scenario/asset_resolver.h"
 #include "scenario/scenario.h"
+#include "speech/speech_timing.h"
+#include "speech/tagged_text.h"
 #include "util/error.h"
 #include "util/tick.h"
 
@@ -36,6 +38,9 @@ Result<std::shared_ptr<const SoundClip>> loadSound(const std::filesystem::path& 
 /// Writes mono samples (−1 … 1, clamped) as a 16-bit PCM WAV, atomically.
 Result<void> writeWav(const std::filesystem::path& path, int rate, std::span<const float> samples);
 
+/// The name a speech line's sound plays under ("Creon: line").
+std::string speechSoundName(const std::string& character, const std::string& line);
+
 class SoundService {
 public:
     /// Sounds are assets of `assets` (a scenario's); mix() renders at `mixRate` samples per second.
@@ -46,9 +51,29 @@ public:
     Result<int> play(const std::string& sound, double volume = 1.0, const std::string& owner = {});
     /// Starts the sound at `start` on the clock's time instead of now.
     Result<int> playAt(const std::string& sound, Tick start, double volume = 1.0, const std::string& owner = {});
-    /// Starts the audio of every speech line of the scenario's characters at the line's start
-    /// (format 9); returns what could not be played, one sentence naming the field each.
+    /// Starts samples made in memory (speech just synthesised) at `start`, named `sound` for
+    /// stop() and isPlaying(); returns its activation id.
+    int playClip(const std::string& sound, std::shared_ptr<const SoundClip> clip, Tick start, double volume = 1.0,
+                 const std::string& owner = {});
+    /// The sound file's samples (read once, then kept). Errors name the file.
+    Result<std::shared_ptr<const SoundClip>> load(const std::string& sound);
+    /// The clock's time: what "now" is for play().
+    Tick now() const { return m_clock->now(); }
+    /// A speech line's audio and timing: its sound file with the timing it keeps, else its text
+    /// spoken by its voice (espeak-ng says it the same way every time; kept, so that saying it
+    /// again costs nothing). Errors name the file, the tags or the voice.
+    struct SpokenLine {
+        std::shared_ptr<const SoundClip> clip;
+        speech::SpeechTiming timing; ///< words located in `text`
+        speech::TaggedText text;     ///< the line's tagged text, read
+    };
+    Result<SpokenLine> lineAudio(const scenario::SpeechLine& line);
+    /// Starts the audio of every speech line of the scenario's characters that is on the
+    /// timeline at the line's start (format 9), as speechSoundName(character, line); returns what
+    /// could not be played, one sentence naming the field each.
     std::vector<std::string> playSpeech(const scenario::Scenario& scenario);
+    /// Forgets every activation (the sounds read stay kept): a scenario's sounds start over.
+    void clear();
     /// Stops every activation of the sound now (false: none plays).
     bool stop(const std::string& sound);
     bool isPlaying(const std::string& sound) const;
@@ -80,6 +105,7 @@ private:
     int m_rate;
     std::map<std::string, std::shared_ptr<const SoundClip>> m_clips;
     std::vector<Activation> m_activations;
+    std::map<std::string, std::pair<std::shared_ptr<const SoundClip>, speech::SpeechTiming>> m_spoken; // by voice and text
 };
 
 } // namespace thespis::core::runtime

@@ -176,10 +176,11 @@ struct Gesture {
 /// A line the character says (format 9): its tagged text (speech/tagged_text.h) and the voice that
 /// speaks it, and the audio made from them, which plays from `start` when the scenario does. The
 /// visemes and gestures it drove were inserted as actions with it (edit/speech_edits.h); the
-/// timing is kept so that the timeline can show the words and phonemes.
+/// timing is kept so that the timeline can show the words and phonemes. A line without a start is
+/// not on the timeline: a script says it when it likes (`voiceService.activateAction`).
 struct SpeechLine {
     std::string name;
-    Tick start = 0;
+    std::optional<Tick> start = Tick(0);
     std::string text;              ///< tagged text as the user wrote it
     std::string voice = "en-us";   ///< espeak-ng voice
     int rate = 175;                ///< words a minute

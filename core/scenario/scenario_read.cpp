@@ -370,7 +370,10 @@ SpeechLine readSpeechLine(const json& value, const std::string& path)
     ObjectReader r(value, path, "SpeechLine.1");
     SpeechLine line;
     line.name = r.name();
-    line.start = r.ticks("start", true);
+    if (r.find("start"))
+        line.start = r.ticks("start", true);
+    else
+        line.start.reset(); // not on the timeline: said by scripts
     line.text = r.string("text", true);
     line.voice = r.string("voice", false, line.voice);
     line.rate = int(r.integer("rate", false, line.rate, 80, 450));

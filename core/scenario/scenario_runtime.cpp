@@ -497,6 +497,7 @@ private:
         const std::size_t before = errors.size();
         CharacterRuntime runtime;
         runtime.name = character.name;
+        runtime.speech = character.speech;
 
         // Clips as read from their sources.
         std::map<std::string, SourceClip> sources;

@@ -45,6 +45,8 @@ struct CharacterRuntime {
     std::map<std::string, anim::BlendablePtr> faceClips;
     /// The gesticon, by gesture name (gestures that cannot be built are left out, with a warning).
     std::map<std::string, GestureActions> gestures;
+    /// The character's speech lines: what scripts say with voiceService.activateAction.
+    std::vector<SpeechLine> speech;
     std::shared_ptr<anim::BlendingSchedule> body;       ///< every body layer, nested
     std::shared_ptr<anim::BlendingSchedule> face;       ///< every face layer (MPEG-4 FAPs), nested
     std::vector<std::shared_ptr<anim::BlendingSchedule>> layers; ///< per Layer, same order

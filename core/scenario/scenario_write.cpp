@@ -316,7 +316,8 @@ ojson writeCharacter(const Character& character)
             ojson entry = ojson::object();
             entry["schema"] = "SpeechLine.1";
             entry["name"] = line.name;
-            entry["start"] = line.start;
+            if (line.start)
+                entry["start"] = *line.start;
             entry["text"] = line.text;
             entry["voice"] = line.voice;
             entry["rate"] = line.rate;

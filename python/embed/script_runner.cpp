@@ -3,6 +3,8 @@
 
 #include "script_runner.h"
 
+#include "runtime/voice_service.h"
+
 #include "interpreter.h"
 
 namespace thespis::script {
@@ -72,8 +74,8 @@ core::Result<void> ScriptRunner::run(const std::string& source, const std::strin
         globals["animService"] = py::cast(service);
         globals["anim"] = globals["animService"];
         if (sound) {
-            globals["voiceService"] = py::cast(sound);
-            globals["sndService"] = globals["voiceService"];
+            globals["voiceService"] = py::cast(std::make_shared<core::runtime::VoiceService>(service->sharedStage(), sound));
+            globals["sndService"] = py::cast(sound);
         }
         py::object code = builtins.attr("compile")(source, fileName, "exec");
         builtins.attr("exec")(code, globals);

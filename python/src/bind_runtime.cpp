@@ -13,6 +13,7 @@
 #include "runtime/animation_service.h"
 #include "runtime/clock.h"
 #include "runtime/sound.h"
+#include "runtime/voice_service.h"
 #include "runtime/stage.h"
 
 namespace thespis::python {
@@ -302,12 +303,6 @@ void bindRuntime(py::module_& m)
             },
             "sound"_a, "volume"_a = 1.0, "character"_a = "", "Starts the sound now; returns its activation id.")
         .def(
-            "activateAction",
-            [](SoundService& s, const std::string& character, const std::string& sound, double volume) {
-                return unwrap(s.play(sound, volume, character));
-            },
-            "character"_a, "sound"_a, "volume"_a = 1.0, "The paper's voiceService.activateAction(character, speech, volume).")
-        .def(
             "sndmpPlayMedia", [](SoundService& s, const std::string& sound, double volume) { return unwrap(s.play(sound, volume)); },
             "sound"_a, "volume"_a = 1.0, "The paper's sndService.sndmpPlayMedia(sound).")
         .def("sndmpStopMedia", &SoundService::stop, "sound"_a, "The paper's sndService.sndmpStopMedia(sound).")
@@ -330,6 +325,26 @@ void bindRuntime(py::module_& m)
                 unwrap(s.writeWav(path, secondsToTicks(start), secondsToTicks(end)));
             },
             "path"_a, "start"_a, "end"_a, "Writes the mix of [start, end) as a 16-bit mono WAV.");
+
+    py::class_<VoiceService, std::shared_ptr<VoiceService>>(
+        r, "VoiceService",
+        "The voice service of the paper's scripts: a character says one of its speech lines (audio, visemes and face "
+        "gestures on the stage), or plays a sound file as its voice.")
+        .def(py::init<std::shared_ptr<Stage>, std::shared_ptr<SoundService>>(), "stage"_a, "sound"_a)
+        .def(
+            "activateAction",
+            [](VoiceService& v, const std::string& character, const std::string& speech, double volume) {
+                return unwrap(v.activateAction(character, speech, volume));
+            },
+            "character"_a, "speech"_a, "volume"_a = 1.0,
+            "The paper's voiceService.activateAction(character, speech, volume): the character's speech line of that "
+            "name from now (its audio, or its text spoken by its voice; its visemes and face gestures on the stage), "
+            "else the sound file of that name. Returns the sound's activation id.")
+        .def("stop", &VoiceService::stop, "character"_a, "speech"_a, "Stops the line now; False when it does not play.")
+        .def("is_playing", &VoiceService::isPlaying, "character"_a, "speech"_a)
+        .def_property_readonly("warnings", &VoiceService::warnings,
+                               "Problems of the last activation that did not stop it (a gesture it cannot play).")
+        .def_property_readonly("sound", &VoiceService::sound, "The sound service it plays through.");
 }
 
 } // namespace thespis::python

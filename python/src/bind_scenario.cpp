@@ -283,7 +283,7 @@ void bindDocument(py::module_& m)
                                       "timing (thespis.speech.insert makes one).");
     speechLine.def(py::init<>())
         .def_readwrite("name", &SpeechLine::name)
-        .def_readwrite("start", &SpeechLine::start, "Where it starts, in ticks.")
+        .def_readwrite("start", &SpeechLine::start, "Where it starts, in ticks; None: not on the timeline (a script says it with voiceService.activateAction).")
         .def_readwrite("text", &SpeechLine::text, "Tagged text as written.")
         .def_readwrite("voice", &SpeechLine::voice, "The espeak-ng voice.")
         .def_readwrite("rate", &SpeechLine::rate, "Words a minute.")

@@ -10,7 +10,9 @@
 #include "edit/speech_edits.h"
 #include "errors.h"
 #include "run_job.h"
+#include "runtime/speech_performance.h"
 #include "speech/espeak_voice.h"
+#include "speech/lip_sync.h"
 #include "speech/speak_job.h"
 #include "speech/tagged_text.h"
 #include "speech/viseme_set.h"
@@ -169,6 +171,61 @@ void bindSpeech(py::module_& m)
         "The Edit that puts the speech on the character from `at` seconds as the studio's Insert does: the line "
         "(text, voice, timing, `audio` file relative to the scenario), viseme actions on its 'Speech' face layer, "
         "tagged gestures over their words. One undo step: apply(scenario), inverse().");
+
+    py::class_<speech::LipSyncJob, std::shared_ptr<speech::LipSyncJob>>(
+        s, "Alignment", "A recording lip-synced by thespis.speech.align(): its words and phonemes in time.")
+        .def_property_readonly("audio", [](const speech::LipSyncJob& j) { return j.audio; })
+        .def_property_readonly("transcript", [](const speech::LipSyncJob& j) { return j.result.transcript; },
+                               "as given, or as recognised")
+        .def_property_readonly("words", [](const speech::LipSyncJob& j) { return wordsOf(j.result.timing); },
+                               "[(text, start, end)] in seconds")
+        .def_property_readonly("phonemes", [](const speech::LipSyncJob& j) { return phonemesOf(j.result.timing); },
+                               "[(ARPAbet or 'SIL', start, end, word index or -1)]")
+        .def_property_readonly("warnings", [](const speech::LipSyncJob& j) { return j.result.warnings; });
+
+    s.def(
+        "align",
+        [](const std::filesystem::path& audio, const std::string& transcript, const py::object& progress) {
+            auto job = std::make_shared<speech::LipSyncJob>();
+            job->audio = audio;
+            job->transcript = transcript;
+            runJob(*job, progress);
+            return job;
+        },
+        "audio"_a, "transcript"_a = "", "progress"_a = py::none(),
+        "Lip sync of a recording (WAV, FLAC, OGG; any rate): word and phoneme times by forced alignment of its "
+        "transcript with pocketsphinx (empty: the words are recognised first). A core job: Ctrl-C cancels.");
+
+    s.def(
+        "insert",
+        [](const core::scenario::Scenario& scenario, const std::string& character, const speech::LipSyncJob& aligned,
+           double at, const std::string& audio) {
+            const core::scenario::Character* who = scenario.findCharacter(character);
+            if (!who)
+                throw py::value_error("The scenario has no character '" + character + "'.");
+            const speech::SpeechTiming& timing = aligned.result.timing;
+            auto line = core::edit::speechLine(aligned.result.transcript, {}, timing,
+                                               audio.empty() ? aligned.audio.string() : audio, core::secondsToTicks(at));
+            return unwrap(core::edit::insertSpeech(scenario, int(who - scenario.characters.data()), std::move(line),
+                                                   speech::visemeCues(timing), {}))
+                .edit;
+        },
+        "scenario"_a, "character"_a, "alignment"_a, "at"_a = 0.0, "audio"_a = "",
+        "As insert() for speech, for a lip-synced recording: its file (or `audio`, relative to the scenario) is the "
+        "line's audio.");
+
+    s.def(
+        "perform",
+        [](core::runtime::Stage& stage, const std::string& character, const speech::SpeakJob& spoken, double at,
+           const std::string& name) {
+            auto performed = unwrap(core::runtime::performSpeech(stage, character, name, spoken.visemeCues,
+                                                                 spoken.gestureCues, core::secondsToTicks(at)));
+            return py::dict("action"_a = performed.action, "visemes"_a = performed.visemes,
+                            "gestures"_a = performed.gestures, "unknown_gestures"_a = performed.unknownGestures);
+        },
+        "stage"_a, "character"_a, "speech"_a, "at"_a = 0.0, "name"_a = "line",
+        "Plays the speech's visemes and gestures live on the stage from `at` seconds (the studio's Preview), as the "
+        "face action 'speech NAME'; the audio is the caller's (speech.samples at speech.rate).");
 }
 
 } // namespace thespis::python

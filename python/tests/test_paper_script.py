@@ -15,7 +15,7 @@ from conftest import REPO, demo_scenario
 
 SCRIPT = REPO / "resources" / "scripts" / "antigone_creon.py"
 GOLDEN = REPO / "tests" / "data" / "golden" / "antigone_creon_poses.json"
-TIMES = [0.5, 1.5, 2.5, 3.5, 5.0]
+TIMES = [0.5, 1.5, 2.5, 3.5, 5.0, 8.0, 9.0]
 NAMES = ("Creon", "Antigone")
 
 
@@ -33,22 +33,38 @@ def run_script():
                 poses.update({f"{name}@{t}": service.evaluate_body(name, t).tolist() for name in NAMES})
 
     clock.set_jump_hook(record)
-    exec(compile(SCRIPT.read_text(), str(SCRIPT), "exec"), {"animService": service, "anim": service})
+    sound = thespis.SoundService(demo_scenario().parent, clock)
+    voice = thespis.VoiceService(service.stage, sound)
+    exec(compile(SCRIPT.read_text(), str(SCRIPT), "exec"),
+         {"animService": service, "anim": service, "voiceService": voice, "sndService": sound})
     record(service.now(), float("inf"))
     service.stop_player()
-    return service, poses
+    return service, poses, sound
 
 
 def test_the_script_plays_the_recorded_poses():
-    service, poses = run_script()
-    assert service.now() > 3.0
+    service, poses, sound = run_script()
     if os.environ.get("THESPIS_UPDATE_GOLDEN"):
         GOLDEN.write_text(json.dumps(poses, indent=0) + "\n")
     golden = json.loads(GOLDEN.read_text())
     assert golden.keys() == poses.keys()
     for key, frame in poses.items():
         np.testing.assert_allclose(frame, golden[key], atol=2e-4, err_msg=key)
-    # The script's live actions show: Antigone's wave is not in the authored schedule at 3.5 s.
+    # The script's live actions show: Antigone waves when Creon has spoken (about 7 s), not when
+    # her authored schedule has her wave (6 s).
     authored = thespis.build_runtime(thespis.load_scenario(demo_scenario()), demo_scenario().parent)
     antigone = authored.find_character("Antigone")
-    assert np.abs(np.asarray(poses["Antigone@3.5"]) - antigone.evaluate_body(3.5)).max() > 0.05
+    assert 9.0 < service.now() < 10.0
+    assert np.abs(np.asarray(poses["Antigone@8.0"]) - antigone.evaluate_body(8.0)).max() > 0.05
+
+
+def test_creon_and_antigone_say_their_lines_in_two_voices():
+    service, _, sound = run_script()
+    # Creon speaks from the start, Antigone after him, until the script's end.
+    creon = sound.mix(0.5, 1.0)
+    assert np.abs(creon).max() > 0.05
+    end = service.now()
+    antigone = sound.mix(end - 1.0, 0.5)
+    assert np.abs(antigone).max() > 0.05
+    # Both are gone once she has finished.
+    assert np.abs(sound.mix(end + 1.0, 0.5)).max() == 0.0

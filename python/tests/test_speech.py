@@ -40,7 +40,7 @@ def test_creon_speaks_a_tagged_line_and_it_goes_into_the_scenario(tmp_path):
     before = thespis.serialize_scenario(scenario)
     change = speech.insert(scenario, "Creon", said, at=1.5, audio="line.wav")
     change.apply(scenario)
-    (line,) = [c for c in scenario.characters if c.name == "Creon"][0].speech
+    line = [c for c in scenario.characters if c.name == "Creon"][0].speech[-1]
     assert line.audio == "line.wav" and line.text.startswith("Pop <begin_gesture")
     change.inverse().apply(scenario)
     assert thespis.serialize_scenario(scenario) == before
@@ -69,3 +69,29 @@ def test_voices_are_listed_and_unknown_ones_named():
     assert any(v["language"] == "en-us" for v in speech.voices())
     with pytest.raises(Exception, match="vulcan"):
         speech.speak("Hello", voice="vulcan")
+
+
+def test_a_librivox_recording_is_aligned_and_inserted_with_its_file():
+    base = SHARED_DATA / "speech" / "pocketsphinx" / "librivox" / "sense_and_sensibility_01_austen_64kb-0880"
+    transcript = base.with_suffix(".txt").read_text().split()
+    aligned = speech.align(base.with_suffix(".wav"), " ".join(transcript))
+    assert [w[0].lower() for w in aligned.words] == [w.lower() for w in transcript]
+    starts = [w[1] for w in aligned.words]
+    assert starts == sorted(starts) and aligned.phonemes[-1][2] > aligned.words[-1][1]
+    scenario = thespis.load_scenario(str(demo_scenario()))
+    speech.insert(scenario, "Creon", aligned, at=1.0).apply(scenario)
+    line = scenario.find_character("Creon").speech[-1]
+    assert line.audio == str(base.with_suffix(".wav")) and line.start == thespis.seconds_to_ticks(1.0)
+
+
+def test_a_preview_plays_the_lips_live_on_the_stage():
+    scenario = thespis.load_scenario(str(demo_scenario()))
+    service = thespis.AnimationService.from_runtime(thespis.build_runtime(scenario, demo_scenario().parent),
+                                                    thespis.ManualClock())
+    said = speech.speak("Bob.", voice="en-us")
+    performed = speech.perform(service.stage, "Creon", said, at=2.0)
+    assert performed["action"] == "speech line" and performed["visemes"] >= 3
+    b = next(p for p in said.phonemes if p[0] == "B")
+    closed_lips = 68  # a face frame is FAP 1 … 68, then the weights of the 14 visemes (p_b_m first)
+    assert service.evaluate_face("Creon", 2.0 + (b[1] + b[2]) / 2)[closed_lips] > 0.6
+    assert service.evaluate_face("Creon", 1.9)[closed_lips] == 0.0

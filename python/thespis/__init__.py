@@ -39,6 +39,7 @@ from ._thespis import Cancelled, FormatError  # noqa: F401
 
 AnimationService, Stage = runtime.AnimationService, runtime.Stage
 ExternalClock, ManualClock, RealTimeClock = runtime.ExternalClock, runtime.ManualClock, runtime.RealTimeClock
+SoundService, VoiceService = runtime.SoundService, runtime.VoiceService
 
 # The compiled submodules are attributes of _thespis; registering them also makes
 # `import thespis.edit` (and `from thespis.scene import ...`) work.
@@ -48,5 +49,5 @@ del _name
 
 __all__ = sorted(
     [name for name in dir(_thespis) if not name.startswith("_")]
-    + ["AnimationService", "ExternalClock", "ManualClock", "RealTimeClock", "Stage"]
+    + ["AnimationService", "ExternalClock", "ManualClock", "RealTimeClock", "SoundService", "Stage", "VoiceService"]
 )

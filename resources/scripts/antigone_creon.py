@@ -1,14 +1,17 @@
 # The paper's §4.5 script (Egges et al. 2007), as written there, with the demo scenario's
 # action names: creon_wave for "creon_wrk", antigone_wave for "antigone_wrk" and creon_nod
-# for the motion-synthesizer idle until idle motion lands. `animService` is given to every
-# script (in the studio, `thespis-cli run` and from python3: see README.md, Scripting).
+# for the motion-synthesizer idle until idle motion lands. `animService` and `voiceService` are
+# given to every script (in the studio, `thespis-cli run` and from python3: see README.md,
+# Scripting). The speeches are the demo characters' speech lines (Sophocles' Antigone, Jebb's
+# translation), spoken by espeak-ng: unlike the paper's script, which played recorded voices with
+# no face, the face plays here, and the lips move with the words.
 
 # global variables
 Antigone = "Antigone"
 Creon = "Creon"
 
-# no facial animation
-animService.initPlayerScope_face(False)
+# facial animation: the lips follow the speech (the paper's script turned the face off)
+animService.initPlayerScope_face(True)
 
 # start the player
 animService.start_player()
@@ -16,12 +19,14 @@ animService.activateAction_body(Antigone, "antigone_idle")
 
 # creon monologue
 animService.activateAction_body(Creon, "creon_wave")
-animService.waitUntilActionFinished_body(Creon, "creon_wave", -1.0)
+voiceService.activateAction(Creon, "CreonSpeech.Cam01CreonP1", 1.0)
+animService.waitUntilActionFinished_face(Creon, "speech CreonSpeech.Cam01CreonP1", -0.3)
 animService.activateAction_body(Creon, "creon_nod")
 
 # Antigone answers to Creon
 animService.cutOffAction_body(Antigone, "antigone_idle", 3.0)
 animService.activateAction_body(Antigone, "antigone_wave")
-animService.waitUntilActionFinished_body(Antigone, "antigone_wave", -1.0)
+voiceService.activateAction(Antigone, "AntigoneSpeech.Cam01CreonP3", 1.0)
+animService.waitUntilActionFinished_face(Antigone, "speech AntigoneSpeech.Cam01CreonP3", -0.3)
 animService.activateAction_body(Antigone, "antigone_idle")
 print("Antigone answered Creon at", round(animService.now(), 2), "s")

@@ -177,9 +177,9 @@ TEST(SpeechPlan, InsertIsOneStepThatUndoes)
     EXPECT_NE(scenario, before);
     EXPECT_TRUE(scenario.findMask("Speech"));
     EXPECT_TRUE(scenario.characters[0].findClip("viseme p_b_m"));
-    ASSERT_EQ(scenario.characters[0].speech.size(), 1u);
-    EXPECT_EQ(scenario.characters[0].speech[0].text, "Maybe.");
-    EXPECT_EQ(scenario.characters[0].speech[0].words.size(), 1u);
+    ASSERT_EQ(scenario.characters[0].speech.size(), before.characters[0].speech.size() + 1);
+    EXPECT_EQ(scenario.characters[0].speech.back().text, "Maybe.");
+    EXPECT_EQ(scenario.characters[0].speech.back().words.size(), 1u);
     ASSERT_EQ(inserted->edit.changes().size(), 2u) << "the Speech mask and the character";
     // The scenario reads back as written.
     auto reread = core::scenario::parseScenario(core::scenario::serializeScenario(scenario));

@@ -1,0 +1,48 @@
+#pragma once
+// Speech played live on the Stage (paper §5.2 and §4.5's voiceService): the visemes of an
+// utterance as one live Override action on the character's face — a schedule holding, per viseme
+// cue, an action of that viseme weighted by its dominance curve over the Speech mask, exactly as
+// edit::insertSpeech puts them on the timeline's Override "Speech" layer — and the face gestures of its tagged text
+// from the gesticon, started over their words. The studio's Preview, scripts and conversation
+// all speak through here.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "anim/blending_schedule.h"
+#include "runtime/stage.h"
+#include "scenario/scenario.h"
+#include "speech/speech_plan.h"
+#include "util/error.h"
+#include "util/tick.h"
+
+namespace thespis::core::runtime {
+
+/// The face of `cues` on the MPEG-4 face layout: one action per cue, from its start (seconds from
+/// the utterance's start), over the Speech face mask; where cues overlap each counts by its
+/// dominance. Played as an Override action, it covers the face by how much the visemes do. Errors: a cue that is not one
+/// of MPEG-4's 14 visemes or that lasts no time.
+Result<std::shared_ptr<anim::BlendingSchedule>> speechFace(const std::vector<speech::VisemeCue>& cues);
+
+/// The timing a speech line keeps (seconds from its start); its words are found in order in
+/// `spoken` (the line's text without tags), so that gestures can be timed by them.
+speech::SpeechTiming timingOf(const scenario::SpeechLine& line, std::string_view spoken);
+
+/// What performSpeech() started.
+struct SpeechPerformance {
+    std::string action;          ///< the live face action's name ("speech NAME")
+    int visemes = 0;             ///< viseme cues in it
+    int gestures = 0;            ///< face and body gestures activated
+    std::vector<std::string> unknownGestures; ///< tags naming a gesture the character cannot play
+};
+
+/// Plays the viseme cues (MPEG-4's, speech::visemeCues) live on `character`'s face from `at` as
+/// the action "speech `name`" (replacing one of that name still playing), and activates each
+/// gesture of `gestures` (from the utterance's tagged text) at its first word on the track whose
+/// gesticon has it. Errors: no such character; nothing to say; a cue speechFace() refuses.
+Result<SpeechPerformance> performSpeech(Stage& stage, const std::string& character, const std::string& name,
+                                        const std::vector<speech::VisemeCue>& cues,
+                                        const std::vector<speech::GestureCue>& gestures, Tick at);
+
+} // namespace thespis::core::runtime

@@ -1,0 +1,161 @@
+// Speech played live (core/runtime/speech_performance.h, voice_service.h): the studio's Preview
+// shows the face Insert puts on the timeline, and the paper's script line
+// voiceService.activateAction(Creon, "…", 1.0) says a speech line of the scenario — its audio in
+// the mix from that moment and its lips on the Stage — on the demo through the stage the studio,
+// the command line and scripts share.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "edit/speech_edits.h"
+#include "runtime/clock.h"
+#include "runtime/sound.h"
+#include "runtime/speech_performance.h"
+#include "runtime/stage.h"
+#include "runtime/voice_service.h"
+#include "scenario/scenario_io.h"
+#include "scene/fap.h"
+#include "speech/espeak_voice.h"
+#include "speech/speak_job.h"
+#include "test_support.h"
+
+namespace thespis::test {
+namespace {
+
+namespace speech = core::speech;
+using core::scenario::Scenario;
+using core::secondsToTicks;
+
+Scenario demo()
+{
+    auto scenario = core::scenario::loadScenario(resources("demo.thespis"));
+    EXPECT_TRUE(scenario) << core::describe(scenario.error());
+    return scenario ? std::move(scenario).value() : Scenario{};
+}
+
+std::shared_ptr<core::runtime::Stage> stageOf(const Scenario& scenario)
+{
+    auto runtime = core::scenario::buildRuntime(scenario, resources());
+    EXPECT_TRUE(runtime) << core::describe(runtime.error());
+    return runtime ? std::make_shared<core::runtime::Stage>(std::move(runtime).value()) : nullptr;
+}
+
+std::vector<float> faceAt(core::runtime::Stage& stage, int character, double seconds)
+{
+    core::runtime::PoseSet poses = stage.makePoseSet();
+    stage.evaluate(secondsToTicks(seconds), poses);
+    return poses.characters[std::size_t(character)].face;
+}
+
+float visemeOf(const std::vector<float>& face, int viseme) { return face[std::size_t(core::scene::visemeChannel(viseme))]; }
+
+} // namespace
+
+TEST(SpeechLive, PreviewShowsTheFaceInsertPutsOnTheTimeline)
+{
+    speech::SpeakJob job;
+    job.text = "Pop the bubble, Bob. Maybe mum may come by the mill.";
+    core::JobContext context;
+    ASSERT_TRUE(job.run(context).ok());
+    const double at = 1.0;
+
+    Scenario inserted = demo();
+    auto insertion = core::edit::insertSpeech(
+        inserted, 0, core::edit::speechLine(job.text, job.voice, job.utterance.timing, "", secondsToTicks(at)),
+        job.visemeCues, {});
+    ASSERT_TRUE(insertion) << insertion.error().message;
+    ASSERT_TRUE(insertion->edit.apply(inserted).ok());
+    auto authored = stageOf(inserted);
+
+    auto live = stageOf(demo());
+    const std::string creon = demo().characters[0].name;
+    auto performed = core::runtime::performSpeech(*live, creon, "line", job.visemeCues, {}, secondsToTicks(at));
+    ASSERT_TRUE(performed) << performed.error().message;
+    EXPECT_EQ(performed->visemes, int(job.visemeCues.size()));
+
+    float largest = 0, worst = 0;
+    double worstAt = 0;
+    for (double t = at; t < at + job.utterance.duration(); t += 0.01) {
+        const auto a = faceAt(*authored, 0, t), l = faceAt(*live, 0, t);
+        for (int v = 1; v <= core::scene::kVisemeCount; ++v) {
+            if (std::abs(visemeOf(l, v) - visemeOf(a, v)) > worst) {
+                worst = std::abs(visemeOf(l, v) - visemeOf(a, v));
+                worstAt = t;
+            }
+            largest = std::max(largest, visemeOf(l, v));
+        }
+    }
+    EXPECT_LT(worst, 1e-4f) << "at " << worstAt << " s";
+    EXPECT_GT(largest, 0.6f); // the comparison saw a face that speaks
+}
+
+TEST(VoiceService, SaysALineOfTheScenarioWithItsAudioAndItsLips)
+{
+    Scenario scenario = demo();
+    core::scenario::SpeechLine line;
+    line.name = "bring_me_the_boy";
+    line.start.reset(); // said by the script, not on the timeline
+    line.text = "Bring me the boy.";
+    line.voice = "en-gb";
+    line.rate = 150;
+    scenario.characters[0].speech.push_back(line);
+    const std::string creon = scenario.characters[0].name;
+    auto stage = stageOf(scenario);
+    ASSERT_TRUE(stage);
+    auto clock = std::make_shared<core::runtime::ManualClock>(secondsToTicks(2.0));
+    auto sound = std::make_shared<core::runtime::SoundService>(resources(), clock);
+    core::runtime::VoiceService voice(stage, sound);
+
+    // Nothing plays before the script speaks: the line is not on the timeline.
+    EXPECT_TRUE(sound->playSpeech(scenario).empty());
+    EXPECT_EQ(sound->activationCount(), 0u);
+
+    auto said = voice.activateAction(creon, line.name, 1.0);
+    ASSERT_TRUE(said) << said.error().message;
+    const auto activations = sound->activations();
+    ASSERT_EQ(activations.size(), 1u);
+    EXPECT_EQ(activations[0].owner, creon);
+    EXPECT_EQ(activations[0].start, secondsToTicks(2.0));
+    EXPECT_TRUE(voice.isPlaying(creon, line.name));
+
+    // The same words in the same voice: where its "b" is, the mix sounds and the lips are shut.
+    auto spoken = speech::speak("Bring me the boy.", {.voice = "en-gb", .wordsPerMinute = 150});
+    ASSERT_TRUE(spoken);
+    EXPECT_NEAR(core::ticksToSeconds(activations[0].end - activations[0].start), spoken->duration(), 0.01);
+    int closures = 0;
+    for (const speech::PhonemeTiming& p : spoken->timing.phonemes) {
+        if (p.phoneme != "B" && p.phoneme != "M")
+            continue;
+        const auto face = faceAt(*stage, 0, 2.0 + (p.start + p.end) / 2);
+        EXPECT_GT(visemeOf(face, 1), 0.6f) << p.phoneme << " at " << p.start;
+        ++closures;
+    }
+    EXPECT_EQ(closures, 3);
+    std::vector<float> mix(4800);
+    sound->mix(secondsToTicks(2.0 + spoken->timing.words.at(1).start), mix);
+    const float loudest = std::abs(*std::max_element(mix.begin(), mix.end(), [](float a, float b) { return std::abs(a) < std::abs(b); }));
+    EXPECT_GT(loudest, 0.05f);
+
+    // Stopped, the lips let go.
+    clock->setTime(secondsToTicks(2.3));
+    EXPECT_TRUE(voice.stop(creon, line.name));
+    EXPECT_FALSE(voice.isPlaying(creon, line.name));
+    EXPECT_LT(visemeOf(faceAt(*stage, 0, 2.6), 1), 0.01f);
+}
+
+TEST(VoiceService, ANameThatIsNoLineIsASoundFileNamedInTheError)
+{
+    auto stage = stageOf(demo());
+    ASSERT_TRUE(stage);
+    auto sound = std::make_shared<core::runtime::SoundService>(resources(), std::make_shared<core::runtime::ManualClock>());
+    core::runtime::VoiceService voice(stage, sound);
+    auto missing = voice.activateAction(demo().characters[0].name, "no_such_line.wav");
+    ASSERT_FALSE(missing);
+    EXPECT_NE(missing.error().message.find("no_such_line.wav"), std::string::npos) << missing.error().message;
+    auto nobody = voice.activateAction("Ismene", "hello");
+    ASSERT_FALSE(nobody);
+    EXPECT_NE(nobody.error().message.find("Ismene"), std::string::npos);
+}
+
+} // namespace thespis::test
