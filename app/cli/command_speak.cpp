@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "commands.h"
+#include "speech_output.h"
 #include "edit/speech_edits.h"
 #include "exit_codes.h"
 #include "job_progress.h"
@@ -78,13 +79,9 @@ int runSpeak(const CommandSpec& spec, const ParsedArguments& arguments)
     job.voice.pitch = int(integerOption(spec, arguments, "pitch", 0, 100, exitCode).value_or(job.voice.pitch));
     if (exitCode != ExitOk)
         return exitCode;
-    double at = 0;
-    if (const auto value = arguments.value("at")) {
-        const auto seconds = parseNumber(*value);
-        if (!seconds || *seconds < 0)
-            return usageError(spec, "--at must be zero or more seconds, not '" + *value + "'");
-        at = *seconds;
-    }
+    const double at = secondsOption(spec, arguments, "at", exitCode).value_or(0.0);
+    if (exitCode != ExitOk)
+        return exitCode;
     job.wavOutput = out.value_or("");
     if (auto valid = job.validate(); !valid)
         return usageError(spec, valid.error().message);
@@ -99,7 +96,6 @@ int runSpeak(const CommandSpec& spec, const ParsedArguments& arguments)
         printError(spec.name, "the scenario has no character '" + character + "'");
         return ExitInvalidInput;
     }
-    const int index = int(speaker - opened->scenario.characters.data());
 
     const bool quiet = arguments.has("quiet");
     const auto spoken = runJobWithProgress(spec.name, job, {core::speech::SpeakJob::SpeakingStage, "sentences"}, quiet,
@@ -108,36 +104,14 @@ int runSpeak(const CommandSpec& spec, const ParsedArguments& arguments)
         return reportJobFailure(spec.name, spoken.error());
 
     if (scenarioOut) {
-        // The line names its audio relative to the scenario it is saved in, as every file is.
-        const std::filesystem::path target = *scenarioOut;
-        const std::string audio =
-            out ? std::filesystem::absolute(*out).lexically_relative(std::filesystem::absolute(target).parent_path()).generic_string()
-                : std::string{};
-        auto inserted = core::edit::insertSpeech(
-            opened->scenario, index,
-            core::edit::speechLine(job.text, job.voice, job.utterance.timing, audio, core::secondsToTicks(at)),
-            job.visemeCues, job.gestureCues);
-        if (!inserted) {
-            printError(spec.name, inserted.error());
+        const int inserted = insertSpeechAndSave(
+            spec.name, *opened, {scenarioPath, *scenarioOut, character, at},
+            core::edit::speechLine(job.text, job.voice, job.utterance.timing, out.value_or(""), 0), job.visemeCues,
+            job.gestureCues, quiet);
+        if (inserted != ExitOk) {
             job.discardOutput();
-            return ExitInvalidInput;
+            return inserted;
         }
-        core::scenario::Scenario result = opened->scenario;
-        if (auto applied = inserted->edit.apply(result); !applied) {
-            printError(spec.name, applied.error());
-            return ExitFailure;
-        }
-        core::scenario::rebasePaths(result, std::filesystem::absolute(scenarioPath).parent_path(),
-                                    std::filesystem::absolute(target).parent_path());
-        if (auto saved = core::scenario::saveScenario(target, result); !saved) {
-            printError(spec.name, saved.error());
-            job.discardOutput();
-            return ExitFailure;
-        }
-        if (!quiet)
-            std::printf("Inserted into %s: %d viseme actions, %d face and %d body gestures for %s from %g s.\n",
-                        target.string().c_str(), inserted->visemeActions, inserted->faceGestures,
-                        inserted->bodyGestures, character.c_str(), at);
     }
     if (quiet)
         return ExitOk;

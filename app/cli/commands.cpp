@@ -87,6 +87,20 @@ std::optional<long> integerOption(const CommandSpec& spec, const ParsedArguments
     return long(*value);
 }
 
+std::optional<double> secondsOption(const CommandSpec& spec, const ParsedArguments& arguments, const std::string& name,
+                                    int& exitCode)
+{
+    const auto text = arguments.value(name);
+    if (!text)
+        return std::nullopt;
+    const auto value = parseNumber(*text);
+    if (!value || *value < 0) {
+        exitCode = usageError(spec, "--" + name + " must be zero or more seconds, not '" + *text + "'");
+        return std::nullopt;
+    }
+    return *value;
+}
+
 std::string joinNames(const std::vector<std::string>& names)
 {
     if (names.empty())

@@ -73,6 +73,10 @@ std::optional<core::scenario::Scenario> loadScenarioReporting(const std::string&
 /// Prints the error and returns nothing on failure.
 std::optional<core::scenario::OpenedScenario> openScenarioReporting(const std::string& command,
                                                                     const std::filesystem::path& path);
+/// Reads an option of zero or more seconds; on a bad value prints the usage error and sets
+/// exitCode (to ExitUsage).
+std::optional<double> secondsOption(const CommandSpec& spec, const ParsedArguments& arguments, const std::string& name,
+                                    int& exitCode);
 /// Reads an integer option within [min, max]; on a bad value prints the usage error and sets
 /// exitCode (to ExitUsage).
 std::optional<long> integerOption(const CommandSpec& spec, const ParsedArguments& arguments, const std::string& name,

@@ -128,3 +128,32 @@ def test_mistakes_are_refused_naming_what_is_wrong(tmp_path):
     assert unwritable.returncode == FAILURE
     assert "timing.tsv" in unwritable.stderr
     assert not out.exists()
+
+    nowhere = run(LINE, "--text", "hello")
+    assert nowhere.returncode == USAGE and "--out, --scenario-out or both" in nowhere.stderr
+    alone = run(LINE, "--text", "hello", "--scenario-out", tmp_path / "s.thespis")
+    assert alone.returncode == USAGE and "--scenario and --character" in alone.stderr
+
+
+def test_a_recording_goes_into_the_demo_as_the_studios_lip_sync_does(tmp_path):
+    demo = Path(__file__).resolve().parents[2] / "resources" / "demo.thespis"
+    out = tmp_path / "scenes" / "demo_lipsync.thespis"
+    out.parent.mkdir()
+    result = run(LINE, "--text-file", LINE.with_suffix(".txt"), "--scenario", demo, "--character", "Antigone",
+                 "--at", "2.5", "--scenario-out", out)
+    assert result.returncode == 0, result.stderr
+    assert "Inserted into" in result.stdout and "for Antigone from 2.5 s" in result.stdout
+    import json
+    scenario = json.loads(out.read_text())
+    antigone = next(c for c in scenario["characters"] if c["name"] == "Antigone")
+    line = antigone["speech"][-1]
+    # The recording stays where it is, named from the new scenario's folder.
+    assert (out.parent / line["audio"]).resolve() == LINE.resolve()
+    assert line["start"] == int(round(2.5 * 705_600_000))
+    assert [w["text"].lower() for w in line["words"]] == LINE.with_suffix(".txt").read_text().lower().split()
+    speech = next(layer for layer in antigone["layers"] if layer["name"] == "Speech")
+    lips = [a for a in speech["actions"] if a["clip"] == "viseme p_b_m"]
+    assert len(speech["actions"]) > 50 and lips
+    # Every clip the demo names still resolves from the new folder: the scenario plays.
+    check = subprocess.run([CLI, "validate", str(out)], capture_output=True, text=True, timeout=120)
+    assert check.returncode == 0, check.stderr
