@@ -1,8 +1,6 @@
 #include "editor/script_panel.h"
 
-#include <QAudioOutput>
 #include <QComboBox>
-#include <QMediaPlayer>
 #include <QUrl>
 #include <QDir>
 #include <QFile>
@@ -22,6 +20,7 @@
 #include "edit/content_edits.h"
 #include "editor/document.h"
 #include "editor/session.h"
+#include "editor/stage_audio.h"
 #include "runtime/animation_service.h"
 #include "script_runner.h"
 #include "widgets/python_highlighter.h"
@@ -147,31 +146,11 @@ void ScriptPanel::followSession()
 
 void ScriptPanel::setAssets(const core::scenario::Assets& assets) { m_assets = assets; }
 
+void ScriptPanel::setAudio(StageAudio* audio) { m_audio = audio; }
+
 void ScriptPanel::setTime(core::Tick now)
 {
     m_clock->setTime(now);
-    // Sounds the script started since the last tick play from where they are now; ended ones go.
-    std::erase_if(m_players, [&](const auto& player) {
-        if (now < player.second)
-            return false;
-        player.first->deleteLater();
-        return true;
-    });
-    if (!m_sound || m_sound->activationCount() == m_soundsStarted)
-        return; // nothing new: no copy of the list at every tick
-    const auto activations = m_sound->activations();
-    for (; m_soundsStarted < activations.size(); ++m_soundsStarted) {
-        const auto& a = activations[m_soundsStarted];
-        const QString file = QString::fromStdString(m_assets.path(a.sound).string());
-        auto* player = new QMediaPlayer(this);
-        auto* output = new QAudioOutput(player);
-        output->setVolume(a.volume);
-        player->setAudioOutput(output);
-        player->setSource(QUrl::fromLocalFile(file));
-        player->setPosition(qint64(core::ticksToSeconds(std::max<core::Tick>(0, now - a.start)) * 1000));
-        player->play();
-        m_players.emplace_back(player, a.end);
-    }
 }
 
 QString ScriptPanel::source() const { return m_editor->toPlainText(); }
@@ -265,11 +244,11 @@ void ScriptPanel::run()
         QMetaObject::invokeMethod(this, [this, play] { play ? emit playRequested() : emit pauseRequested(); },
                                   Qt::QueuedConnection);
     });
-    for (const auto& player : m_players)
-        player.first->deleteLater();
-    m_players.clear();
+    if (m_audio)
+        m_audio->removeSource(m_sound);
     m_sound = std::make_shared<core::runtime::SoundService>(m_assets, m_clock);
-    m_soundsStarted = 0;
+    if (m_audio)
+        m_audio->addSource(m_sound);
     auto sound = m_sound;
     m_status->setText(tr("Running…"));
     append(tr("— Run at %1 s —").arg(core::ticksToSeconds(m_clock->now()), 0, 'f', 2) + QLatin1Char('\n'), false);
@@ -316,9 +295,8 @@ void ScriptPanel::onFinished(const core::Result<void>& result)
     if (result) {
         m_status->setText(tr("Finished."));
     } else if (result.error().code == core::ErrorCode::Cancelled) {
-        for (const auto& player : m_players) // a stopped script's voices stop with it
-            player.first->deleteLater();
-        m_players.clear();
+        if (m_audio) // a stopped script's voices stop with it
+            m_audio->removeSource(m_sound);
         message = tr("Stopped.");
         m_status->setText(message);
     } else {

@@ -4,7 +4,7 @@
 // script's output, its errors and tracebacks. The script runs in a worker thread against the
 // Session's Stage, on a clock that follows the playhead: a wait lasts until the playing view
 // gets there, and Run starts playback (as the script's start_player() does; stop_player()
-// pauses). Stop ends a script at once, even one stuck in
+// pauses). What it says and plays is heard through the studio's StageAudio. Stop ends a script at once, even one stuck in
 // a wait or in an endless loop; the GUI never waits for a script. Scripts kept in the scenario
 // are picked from a list and saved back to it; one read from the file (and not edited since) runs
 // only once the trust check (the window's: does the user trust that file?) says yes.
@@ -22,9 +22,7 @@
 #include "util/error.h"
 #include "util/tick.h"
 
-class QAudioOutput;
 class QComboBox;
-class QMediaPlayer;
 class QLabel;
 class QPlainTextEdit;
 class QPushButton;
@@ -36,6 +34,7 @@ class ScriptRunner;
 namespace thespis::editor {
 
 class Session;
+class StageAudio;
 
 class ScriptPanel : public QWidget {
     Q_OBJECT
@@ -50,8 +49,10 @@ public:
     /// The stage scripts play on (null: no scenario shown). A running script is stopped when
     /// the stage is replaced.
     void setStage(std::shared_ptr<core::runtime::Stage> stage);
-    /// The playhead: scripts' time. Sounds the script started play from here (Qt Multimedia).
+    /// The playhead: scripts' time.
     void setTime(core::Tick time);
+    /// What the studio plays aloud: a running script's voiceService and sndService play there.
+    void setAudio(StageAudio* audio);
     /// Where the scripts' sound files are found (the scenario's assets).
     void setAssets(const core::scenario::Assets& assets);
     /// The sound service of the script running or run last (null before the first run).
@@ -112,8 +113,7 @@ private:
     std::unique_ptr<script::ScriptRunner> m_runner; // made at the first Run (it starts Python)
     std::shared_ptr<core::runtime::SoundService> m_sound;
     core::scenario::Assets m_assets{"."};
-    std::size_t m_soundsStarted = 0; // activations of m_sound already handed to a player
-    std::vector<std::pair<QMediaPlayer*, core::Tick>> m_players; // playing, with their end
+    QPointer<StageAudio> m_audio;
     std::thread m_worker;
 };
 

@@ -215,6 +215,7 @@ void TimelinePanel::refresh()
     QVector<widgets::TimelineTrack> tracks;
     QVector<widgets::TimelineClip> clips;
     QVector<widgets::TimelineMarker> markers;
+    QVector<widgets::TimelineCaption> captions;
     if (m_document) {
         const auto& scenario = m_document->scenario();
         for (int c = 0; c < int(scenario.characters.size()); ++c) {
@@ -252,6 +253,14 @@ void TimelinePanel::refresh()
                     clips.push_back(std::move(clip));
                     m_clipPaths.push_back(path);
                 }
+                // The words of the character's speech lines, under the visemes they drive.
+                if (layer.kind == core::scenario::LayerKind::Face && layer.name == "Speech")
+                    for (const auto& line : character.speech)
+                        if (line.start)
+                            for (const auto& word : line.words)
+                                captions.push_back({int(tracks.size()) - 1, QString::fromStdString(word.text),
+                                                    *line.start + core::secondsToTicks(word.start),
+                                                    *line.start + core::secondsToTicks(word.end)});
             }
         }
         for (const auto& marker : scenario.markers)
@@ -260,6 +269,7 @@ void TimelinePanel::refresh()
     m_view->setTracks(std::move(tracks));
     m_view->setClips(std::move(clips));
     m_view->setMarkers(std::move(markers));
+    m_view->setCaptions(std::move(captions));
     m_view->setDuration(m_document ? m_document->previewDuration() : 0);
     selectActions(selected);
     const bool open = m_document != nullptr;

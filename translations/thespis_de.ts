@@ -3604,6 +3604,132 @@ Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
     </message>
 </context>
 <context>
+    <name>thespis::editor::SpeechPanel</name>
+    <message>
+        <source>The character who speaks</source>
+        <translation>Die Figur, die spricht</translation>
+    </message>
+    <message>
+        <source>The espeak-ng voices installed</source>
+        <translation>Die installierten espeak-ng-Stimmen</translation>
+    </message>
+    <message>
+        <source> words/min</source>
+        <translation> Wörter/min</translation>
+    </message>
+    <message>
+        <source>Voice:</source>
+        <translation>Stimme:</translation>
+    </message>
+    <message>
+        <source>Rate:</source>
+        <translation>Tempo:</translation>
+    </message>
+    <message>
+        <source>Pitch:</source>
+        <translation>Tonhöhe:</translation>
+    </message>
+    <message>
+        <source>What the character says. Gestures go around the words they span:
+Are you &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;really sure&lt;end_gesture id=&quot;g1&quot;/&gt;?</source>
+        <translation>Was die Figur sagt. Gesten umschließen die Wörter, über die sie reichen:
+Sind Sie &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;wirklich sicher&lt;end_gesture id=&quot;g1&quot;/&gt;?</translation>
+    </message>
+    <message>
+        <source>Visemes (MPEG-4) and their coarticulation</source>
+        <translation>Viseme (MPEG-4) und ihre Koartikulation</translation>
+    </message>
+    <message>
+        <source>Preview</source>
+        <translation>Vorschau</translation>
+    </message>
+    <message>
+        <source>Say it from the playhead, face and voice, without changing the scenario</source>
+        <translation>Ab dem Abspielkopf sprechen, mit Gesicht und Stimme, ohne das Szenario zu ändern</translation>
+    </message>
+    <message>
+        <source>Insert at Playhead</source>
+        <translation>Am Abspielkopf einfügen</translation>
+    </message>
+    <message>
+        <source>Put the line, its visemes and its gestures on the timeline at the playhead (one undo step)</source>
+        <translation>Den Text, seine Viseme und seine Gesten am Abspielkopf auf die Zeitleiste setzen (ein Rückgängig-Schritt)</translation>
+    </message>
+    <message>
+        <source>Lip Sync a Recording…</source>
+        <translation>Aufnahme lippensynchronisieren…</translation>
+    </message>
+    <message>
+        <source>Align a WAV with the text above as its transcript (empty: the words are recognised) and insert it</source>
+        <translation>Eine WAV-Datei mit dem Text oben als Transkript abgleichen (leer: die Wörter werden erkannt) und einfügen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Close-up</source>
+        <translation>Nahaufnahme</translation>
+    </message>
+    <message>
+        <source>Turn the 3D view to the speaker&apos;s face when previewing</source>
+        <translation>Die 3D-Ansicht bei der Vorschau auf das Gesicht der sprechenden Figur richten</translation>
+    </message>
+    <message>
+        <source>Nothing spoken yet</source>
+        <translation>Noch nichts gesprochen</translation>
+    </message>
+    <message>
+        <source>Lip Sync a Recording</source>
+        <translation>Aufnahme lippensynchronisieren</translation>
+    </message>
+    <message>
+        <source>Sound files (*.wav *.flac *.ogg)</source>
+        <translation>Audiodateien (*.wav *.flac *.ogg)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Previewing %1 s of speech from %2 s: %n viseme(s)</source>
+        <translation>
+            <numerusform>Vorschau von %1 s Sprache ab %2 s: %n Visem</numerusform>
+            <numerusform>Vorschau von %1 s Sprache ab %2 s: %n Viseme</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; not in the gesticon: %1</source>
+        <translation>; nicht im Gesticon: %1</translation>
+    </message>
+    <message>
+        <source>Previewing</source>
+        <translation>Vorschau läuft</translation>
+    </message>
+    <message>
+        <source>Insert Speech</source>
+        <translation>Sprechtext einfügen</translation>
+    </message>
+    <message>
+        <source>Inserted</source>
+        <translation>Eingefügt</translation>
+    </message>
+    <message numerus="yes">
+        <source>Inserted at %1 s: %n viseme(s), %2 face and %3 body gesture(s).</source>
+        <translation>
+            <numerusform>Bei %1 s eingefügt: %n Visem, %2 Gesichts- und %3 Körpergeste(n).</numerusform>
+            <numerusform>Bei %1 s eingefügt: %n Viseme, %2 Gesichts- und %3 Körpergeste(n).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Lip Sync Recording</source>
+        <translation>Aufnahme lippensynchron einfügen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Lip-synced “%1”: %n word(s), %2 viseme(s).</source>
+        <translation>
+            <numerusform>„%1“ lippensynchronisiert: %n Wort, %2 Visem(e).</numerusform>
+            <numerusform>„%1“ lippensynchronisiert: %n Wörter, %2 Visem(e).</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::TimelinePanel</name>
     <message>
         <source>&amp;Delete</source>
@@ -3739,6 +3865,65 @@ Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
     <message>
         <source>Add Idle Motion</source>
         <translation>Ruhebewegung hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::VisemeTable</name>
+    <message>
+        <source>Viseme</source>
+        <translation>Visem</translation>
+    </message>
+    <message>
+        <source>Phonemes</source>
+        <translation>Phoneme</translation>
+    </message>
+    <message>
+        <source>α</source>
+        <translation>α</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Gewicht</translation>
+    </message>
+    <message>
+        <source>Spread</source>
+        <translation>Ausdehnung</translation>
+    </message>
+    <message>
+        <source>Dominance α (paper eq. 3): larger keeps the mouth shape to its own phoneme</source>
+        <translation>Dominanz α (Gleichung 3 im Paper): Ein größerer Wert hält die Mundform bei ihrem eigenen Phonem</translation>
+    </message>
+    <message>
+        <source>How far the shape is reached at the phoneme&apos;s centre (0 … 1)</source>
+        <translation>Wie weit die Form in der Mitte des Phonems erreicht wird (0 … 1)</translation>
+    </message>
+    <message>
+        <source>How far the shape reaches past its phoneme, as a share of the phoneme&apos;s length on each side (0 … 2)</source>
+        <translation>Wie weit die Form über ihr Phonem hinausreicht, als Anteil der Phonemlänge auf jeder Seite (0 … 2)</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Laden…</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Speichern…</translation>
+    </message>
+    <message>
+        <source>Reset to MPEG-4</source>
+        <translation>Auf MPEG-4 zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Load Visemes</source>
+        <translation>Viseme laden</translation>
+    </message>
+    <message>
+        <source>Viseme sets (*.json)</source>
+        <translation>Visem-Sätze (*.json)</translation>
+    </message>
+    <message>
+        <source>Save Visemes</source>
+        <translation>Viseme speichern</translation>
     </message>
 </context>
 <context>
@@ -4208,6 +4393,10 @@ Führen Sie die Skripte des Szenarios nur aus, wenn Sie der Herkunft dieser Date
     <message>
         <source>Face Pose</source>
         <translation>Gesichtspose</translation>
+    </message>
+    <message>
+        <source>Speech</source>
+        <translation>Sprache</translation>
     </message>
 </context>
 <context>

@@ -230,6 +230,30 @@
     </message>
 </context>
 <context>
+    <name>thespis::editor::SpeechPanel</name>
+    <message numerus="yes">
+        <source>Previewing %1 s of speech from %2 s: %n viseme(s)</source>
+        <translation>
+            <numerusform>Previewing %1 s of speech from %2 s: %n viseme</numerusform>
+            <numerusform>Previewing %1 s of speech from %2 s: %n visemes</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Inserted at %1 s: %n viseme(s), %2 face and %3 body gesture(s).</source>
+        <translation>
+            <numerusform>Inserted at %1 s: %n viseme, %2 face and %3 body gesture(s).</numerusform>
+            <numerusform>Inserted at %1 s: %n visemes, %2 face and %3 body gesture(s).</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Lip-synced “%1”: %n word(s), %2 viseme(s).</source>
+        <translation>
+            <numerusform>Lip-synced “%1”: %n word, %2 viseme(s).</numerusform>
+            <numerusform>Lip-synced “%1”: %n words, %2 viseme(s).</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::TimelinePanel</name>
     <message numerus="yes">
         <source>Move %n Action(s)</source>

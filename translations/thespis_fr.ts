@@ -3604,6 +3604,132 @@ Utilisez Fichier ▸ Ouvrir… (Ctrl+O) pour ouvrir un fichier .thespis.</transl
     </message>
 </context>
 <context>
+    <name>thespis::editor::SpeechPanel</name>
+    <message>
+        <source>The character who speaks</source>
+        <translation>Le personnage qui parle</translation>
+    </message>
+    <message>
+        <source>The espeak-ng voices installed</source>
+        <translation>Les voix espeak-ng installées</translation>
+    </message>
+    <message>
+        <source> words/min</source>
+        <translation> mots/min</translation>
+    </message>
+    <message>
+        <source>Voice:</source>
+        <translation>Voix :</translation>
+    </message>
+    <message>
+        <source>Rate:</source>
+        <translation>Débit :</translation>
+    </message>
+    <message>
+        <source>Pitch:</source>
+        <translation>Hauteur :</translation>
+    </message>
+    <message>
+        <source>What the character says. Gestures go around the words they span:
+Are you &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;really sure&lt;end_gesture id=&quot;g1&quot;/&gt;?</source>
+        <translation>Ce que dit le personnage. Les gestes entourent les mots qu’ils couvrent :
+Êtes-vous &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;vraiment sûr&lt;end_gesture id=&quot;g1&quot;/&gt; ?</translation>
+    </message>
+    <message>
+        <source>Visemes (MPEG-4) and their coarticulation</source>
+        <translation>Visèmes (MPEG-4) et leur coarticulation</translation>
+    </message>
+    <message>
+        <source>Preview</source>
+        <translation>Aperçu</translation>
+    </message>
+    <message>
+        <source>Say it from the playhead, face and voice, without changing the scenario</source>
+        <translation>Le dire depuis la tête de lecture, visage et voix, sans modifier le scénario</translation>
+    </message>
+    <message>
+        <source>Insert at Playhead</source>
+        <translation>Insérer à la tête de lecture</translation>
+    </message>
+    <message>
+        <source>Put the line, its visemes and its gestures on the timeline at the playhead (one undo step)</source>
+        <translation>Placer la réplique, ses visèmes et ses gestes sur la ligne temporelle à la tête de lecture (une étape d’annulation)</translation>
+    </message>
+    <message>
+        <source>Lip Sync a Recording…</source>
+        <translation>Synchroniser les lèvres sur un enregistrement…</translation>
+    </message>
+    <message>
+        <source>Align a WAV with the text above as its transcript (empty: the words are recognised) and insert it</source>
+        <translation>Aligner un fichier WAV sur le texte ci-dessus comme transcription (vide : les mots sont reconnus) et l’insérer</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Close-up</source>
+        <translation>Gros plan</translation>
+    </message>
+    <message>
+        <source>Turn the 3D view to the speaker&apos;s face when previewing</source>
+        <translation>Tourner la vue 3D vers le visage du personnage qui parle pendant l’aperçu</translation>
+    </message>
+    <message>
+        <source>Nothing spoken yet</source>
+        <translation>Rien n’a encore été dit</translation>
+    </message>
+    <message>
+        <source>Lip Sync a Recording</source>
+        <translation>Synchroniser les lèvres sur un enregistrement</translation>
+    </message>
+    <message>
+        <source>Sound files (*.wav *.flac *.ogg)</source>
+        <translation>Fichiers audio (*.wav *.flac *.ogg)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Previewing %1 s of speech from %2 s: %n viseme(s)</source>
+        <translation>
+            <numerusform>Aperçu de %1 s de parole depuis %2 s : %n visème</numerusform>
+            <numerusform>Aperçu de %1 s de parole depuis %2 s : %n visèmes</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; not in the gesticon: %1</source>
+        <translation> ; absent du gesticon : %1</translation>
+    </message>
+    <message>
+        <source>Previewing</source>
+        <translation>Aperçu en cours</translation>
+    </message>
+    <message>
+        <source>Insert Speech</source>
+        <translation>Insérer la parole</translation>
+    </message>
+    <message>
+        <source>Inserted</source>
+        <translation>Inséré</translation>
+    </message>
+    <message numerus="yes">
+        <source>Inserted at %1 s: %n viseme(s), %2 face and %3 body gesture(s).</source>
+        <translation>
+            <numerusform>Inséré à %1 s : %n visème, %2 geste(s) du visage et %3 du corps.</numerusform>
+            <numerusform>Inséré à %1 s : %n visèmes, %2 geste(s) du visage et %3 du corps.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Lip Sync Recording</source>
+        <translation>Insérer un enregistrement synchronisé sur les lèvres</translation>
+    </message>
+    <message numerus="yes">
+        <source>Lip-synced “%1”: %n word(s), %2 viseme(s).</source>
+        <translation>
+            <numerusform>« %1 » synchronisé sur les lèvres : %n mot, %2 visème(s).</numerusform>
+            <numerusform>« %1 » synchronisé sur les lèvres : %n mots, %2 visème(s).</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::TimelinePanel</name>
     <message>
         <source>&amp;Delete</source>
@@ -3739,6 +3865,65 @@ Utilisez Fichier ▸ Ouvrir… (Ctrl+O) pour ouvrir un fichier .thespis.</transl
     <message>
         <source>Add Idle Motion</source>
         <translation>Ajouter un mouvement d’attente</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::VisemeTable</name>
+    <message>
+        <source>Viseme</source>
+        <translation>Visème</translation>
+    </message>
+    <message>
+        <source>Phonemes</source>
+        <translation>Phonèmes</translation>
+    </message>
+    <message>
+        <source>α</source>
+        <translation>α</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Poids</translation>
+    </message>
+    <message>
+        <source>Spread</source>
+        <translation>Étendue</translation>
+    </message>
+    <message>
+        <source>Dominance α (paper eq. 3): larger keeps the mouth shape to its own phoneme</source>
+        <translation>Dominance α (équation 3 de l’article) : plus elle est grande, plus la forme de la bouche reste sur son propre phonème</translation>
+    </message>
+    <message>
+        <source>How far the shape is reached at the phoneme&apos;s centre (0 … 1)</source>
+        <translation>Dans quelle mesure la forme est atteinte au centre du phonème (0 … 1)</translation>
+    </message>
+    <message>
+        <source>How far the shape reaches past its phoneme, as a share of the phoneme&apos;s length on each side (0 … 2)</source>
+        <translation>Jusqu’où la forme déborde de son phonème, en fraction de la durée du phonème de chaque côté (0 … 2)</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Charger…</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Enregistrer…</translation>
+    </message>
+    <message>
+        <source>Reset to MPEG-4</source>
+        <translation>Revenir à MPEG-4</translation>
+    </message>
+    <message>
+        <source>Load Visemes</source>
+        <translation>Charger des visèmes</translation>
+    </message>
+    <message>
+        <source>Viseme sets (*.json)</source>
+        <translation>Jeux de visèmes (*.json)</translation>
+    </message>
+    <message>
+        <source>Save Visemes</source>
+        <translation>Enregistrer les visèmes</translation>
     </message>
 </context>
 <context>
@@ -4208,6 +4393,10 @@ N’exécutez les scripts du scénario que si vous faites confiance à la proven
     <message>
         <source>Face Pose</source>
         <translation>Pose du visage</translation>
+    </message>
+    <message>
+        <source>Speech</source>
+        <translation>Parole</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,5 @@
 #pragma once
-// The values a TimelineView shows (tracks, clips, markers) and names (edges, track flags): plain
+// The values a TimelineView shows (tracks, clips, captions, markers) and names (edges, track flags): plain
 // data that the editor fills and that the timeline's geometry, snapping and painting read.
 
 #include <QMetaType>
@@ -35,6 +35,13 @@ struct TimelineClip {
     QVector<float> weight;          ///< weight samples evenly over [start, end] (thumbnail), 0..1+, may be empty
 };
 
+/// Words under a track's clips (what a speech line says while its visemes play), in ticks.
+struct TimelineCaption {
+    int track = 0;
+    QString text;
+    qint64 start = 0, end = 0;
+};
+
 struct TimelineMarker {
     QString name;
     qint64 time = 0;
@@ -47,3 +54,4 @@ Q_DECLARE_METATYPE(thespis::widgets::TimelineTrackFlag)
 Q_DECLARE_METATYPE(thespis::widgets::TimelineTrack)
 Q_DECLARE_METATYPE(thespis::widgets::TimelineClip)
 Q_DECLARE_METATYPE(thespis::widgets::TimelineMarker)
+Q_DECLARE_METATYPE(thespis::widgets::TimelineCaption)

@@ -113,6 +113,12 @@ const TimelineClip* TimelineView::clip(int id) const
     return index < 0 ? nullptr : &m_clips[index];
 }
 
+void TimelineView::setCaptions(QVector<TimelineCaption> captions)
+{
+    m_captions = std::move(captions);
+    viewport()->update();
+}
+
 void TimelineView::setMarkers(QVector<TimelineMarker> markers)
 {
     m_markers = std::move(markers);

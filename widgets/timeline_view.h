@@ -90,6 +90,10 @@ public:
     const TimelineClip* clip(int id) const;
     void setMarkers(QVector<TimelineMarker> markers);
     const QVector<TimelineMarker>& markers() const { return m_markers; }
+    /// Words shown along the bottom of their tracks, over the clips (a speech line's words under
+    /// its visemes).
+    void setCaptions(QVector<TimelineCaption> captions);
+    const QVector<TimelineCaption>& captions() const { return m_captions; }
     /// The scenario's length: drawn as the end of the active area, part of the scroll range.
     void setDuration(qint64 ticks);
     qint64 duration() const { return m_duration; }
@@ -242,6 +246,7 @@ private:
     void updateColors();
     void paintLanes(QPainter& painter, const TimelineGeometry& g);
     void paintClips(QPainter& painter, const TimelineGeometry& g);
+    void paintCaptions(QPainter& painter, const TimelineGeometry& g);
     void paintClip(QPainter& painter, const TimelineGeometry& g, int index, const QRect& rect, bool dimmed,
                    bool locked, int laneRight);
     void paintOverlays(QPainter& painter, const TimelineGeometry& g);
@@ -257,6 +262,7 @@ private:
     std::vector<ClipLabel> m_clipLabels; // per clip
     QHash<int, int> m_idToIndex;
     QVector<TimelineMarker> m_markers;
+    QVector<TimelineCaption> m_captions;
     std::vector<int> m_markerWidths; // name widths in the ruler font
     TimelineRows m_rows;
     std::vector<QString> m_rowLabels; // per row: a group's name elided to the header

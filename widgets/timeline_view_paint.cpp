@@ -136,6 +136,7 @@ void TimelineView::paintEvent(QPaintEvent*)
     painter.setClipRect(g.lanesRect());
     paintLanes(painter, g);
     paintClips(painter, g);
+    paintCaptions(painter, g);
     paintOverlays(painter, g);
     painter.setClipping(false);
     paintHeader(painter, g);
@@ -227,6 +228,28 @@ void TimelineView::paintClips(QPainter& painter, const TimelineGeometry& g)
             const QRect r(x0, y + M::ClipInset, x1 - x0, TrackHeight - 2 * M::ClipInset);
             paintClip(painter, g, i, r, trackDimmed(c.track), m_tracks[c.track].locked, laneRight);
         }
+    }
+}
+
+void TimelineView::paintCaptions(QPainter& painter, const TimelineGeometry& g)
+{
+    const QRect lanes = g.lanesRect();
+    const int height = m_smallMetrics.height() + 2;
+    painter.setFont(m_smallFont);
+    for (const TimelineCaption& caption : m_captions) {
+        if (caption.track < 0 || caption.track >= int(m_tracks.size()))
+            continue;
+        const int x0 = g.xForTime(caption.start), x1 = std::max(x0 + 1, g.xForTime(caption.end));
+        const int y = g.trackY(caption.track) + TrackHeight - height - 1;
+        if (x1 < lanes.left() || x0 > lanes.right() || y + height <= lanes.top() || y > lanes.bottom())
+            continue;
+        const QRect r(x0, y, x1 - x0, height);
+        painter.fillRect(r, withAlpha(m_colors.header, 215));
+        painter.setPen(m_colors.clipBorder);
+        painter.drawRect(r.adjusted(0, 0, -1, -1));
+        painter.setPen(m_colors.headerText);
+        painter.drawText(r.adjusted(2, 0, -1, 0), Qt::AlignLeft | Qt::AlignVCenter,
+                         m_smallMetrics.elidedText(caption.text, Qt::ElideRight, r.width() - 3));
     }
 }
 

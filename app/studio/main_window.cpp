@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include "editor/stage_audio.h"
+
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
@@ -61,6 +63,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     setObjectName(QStringLiteral("mainWindow"));
     m_clock = new editor::PlaybackClock(this);
     m_session = new editor::Session(m_clock, this);
+    m_audio = new editor::StageAudio(m_session, this);
     m_model = new editor::ScenarioTreeModel(this);
 
     auto* central = new QWidget(this);

@@ -41,6 +41,8 @@ class CurvePanel;
 class BakePanel;
 class PostureChartPanel;
 class FacePosePanel;
+class SpeechPanel;
+class StageAudio;
 class GesticonPanel;
 class SegmentPanel;
 class JointMaskPanel;
@@ -90,6 +92,8 @@ public:
     editor::PropertiesPanel* properties() const { return m_properties; }
     editor::GesticonPanel* gesticon() const { return m_gesticon; }
     editor::FacePosePanel* facePose() const { return m_facePose; }
+    editor::SpeechPanel* speech() const { return m_speech; }
+    editor::StageAudio* audio() const { return m_audio; }
     editor::SegmentPanel* segments() const { return m_segments; }
     editor::BakePanel* bakePanel() const { return m_bake; }
     editor::PostureChartPanel* postureChart() const { return m_postureChart; }
@@ -173,6 +177,8 @@ private:
     editor::PropertiesPanel* m_properties = nullptr;
     editor::GesticonPanel* m_gesticon = nullptr;
     editor::FacePosePanel* m_facePose = nullptr;
+    editor::SpeechPanel* m_speech = nullptr;
+    editor::StageAudio* m_audio = nullptr; // child: what the studio plays aloud
     editor::SegmentPanel* m_segments = nullptr;
     editor::BakePanel* m_bake = nullptr;
     editor::PostureChartPanel* m_postureChart = nullptr;

@@ -35,6 +35,7 @@
 #include "editor/scenario_tree_model.h"
 #include "editor/script_trust.h"
 #include "editor/segment_panel.h"
+#include "editor/speech_panel.h"
 #include "editor/timeline_panel.h"
 
 namespace thespis::studio {
@@ -115,6 +116,7 @@ void MainWindow::createScriptDock()
     });
     connect(m_script, &editor::ScriptPanel::pauseRequested, m_clock, &editor::PlaybackClock::pause);
     m_script->setSession(m_session);
+    m_script->setAudio(m_audio);
     m_script->setTrustCheck([this] { return confirmScriptTrust(); });
     connect(m_script, &editor::ScriptPanel::finished, this, [this](const QString& message) {
         statusBar()->showMessage(message.isEmpty() ? tr("The script ran to its end.") : tr("Script: %1").arg(message), 8000);
@@ -223,6 +225,16 @@ void MainWindow::createEditorDocks()
         if (m_preview && character >= 0)
             m_preview->closeUp(character);
     });
+    m_speech = new editor::SpeechPanel(this);
+    m_speech->setSession(m_session, m_audio);
+    connect(m_speech, &editor::SpeechPanel::closeUpRequested, this, [this](int character) {
+        if (m_preview && character >= 0)
+            m_preview->closeUp(character);
+    });
+    connect(m_speech, &editor::SpeechPanel::playRequested, this, [this] {
+        if (!m_clock->isPlaying())
+            m_clock->play();
+    });
     m_segments = new editor::SegmentPanel(this);
     m_bake = new editor::BakePanel(this);
     m_postureChart = new editor::PostureChartPanel(this);
@@ -255,6 +267,8 @@ void MainWindow::createEditorDocks()
     tabifyDockWidget(segmentsDock, bakeDock);
     QDockWidget* faceDock = dock(tr("Face Pose"), QStringLiteral("facePoseDock"), m_facePose, Qt::RightDockWidgetArea);
     tabifyDockWidget(bakeDock, faceDock);
+    QDockWidget* speechDock = dock(tr("Speech"), QStringLiteral("speechDock"), m_speech, Qt::RightDockWidgetArea);
+    tabifyDockWidget(faceDock, speechDock);
     propertiesDock->raise();
     QDockWidget* libraryDock = dock(tr("Clip Library"), QStringLiteral("clipLibraryDock"), m_library, Qt::LeftDockWidgetArea);
     tabifyDockWidget(m_outlineDock, libraryDock);

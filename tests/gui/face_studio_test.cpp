@@ -25,6 +25,7 @@
 #include "editor/properties_panel.h"
 #include "editor/session.h"
 #include "gui_support.h"
+#include "studio_support.h"
 #include "main_window.h"
 #include "render/scenario_scene.h"
 #include "scene/face_mask.h"
@@ -34,34 +35,13 @@
 
 using namespace thespis;
 using test::raiseDock;
+using test::characterIndex;
+using test::changedPixels;
 using test::saveScreenshot;
 
 namespace {
 
 QString demoPath() { return QStringLiteral(THESPIS_RESOURCES "/demo.thespis"); }
-
-int characterIndex(const editor::Document& document, const std::string& name)
-{
-    const auto& characters = document.scenario().characters;
-    for (std::size_t c = 0; c < characters.size(); ++c)
-        if (characters[c].name == name)
-            return int(c);
-    return -1;
-}
-
-// How many pixels differ by more than a few levels in any channel.
-int changedPixels(const QImage& a, const QImage& b)
-{
-    if (a.size() != b.size())
-        return a.width() * a.height();
-    int changed = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x) {
-            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
-            changed += std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q)) + std::abs(qBlue(p) - qBlue(q)) > 24;
-        }
-    return changed;
-}
 
 } // namespace
 

@@ -19,12 +19,14 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QSignalSpy>
 #include <QTest>
 
 #include "editor/document.h"
 #include "editor/playback_clock.h"
 #include "editor/scene_preview.h"
 #include "editor/script_panel.h"
+#include "editor/stage_audio.h"
 #include "main_window.h"
 #include "render/scenario_scene.h"
 
@@ -109,24 +111,31 @@ void ScriptDockTest::cleanup() { m_window.reset(); }
 void ScriptDockTest::thePapersScriptPlaysWhileTheViewPlays()
 {
     // The dock opens with the paper's script (resources/scripts/antigone_creon.py).
-    QVERIFY(panel()->source().contains(QLatin1String("animService.waitUntilActionFinished_body(Creon, \"creon_wave\", -1.0)")));
+    QVERIFY(panel()->source().contains(QLatin1String("voiceService.activateAction(Creon, \"CreonSpeech.Cam01CreonP1\", 1.0)")));
     QVERIFY(!m_window->clock()->isPlaying());
+    QSignalSpy mixed(m_window->audio(), &editor::StageAudio::mixed);
     QTest::mouseClick(button("runScript"), Qt::LeftButton);
     QVERIFY(panel()->isRunning());
     QVERIFY(m_window->clock()->isPlaying()); // Run plays the view: the script's waits need time
     QVERIFY(button("stopScript")->isEnabled());
 
-    // Antigone's wave is live (her authored wave comes later): the 3D view's stage plays it
-    // while the script waits for it.
+    // Antigone's wave is live (her authored wave comes earlier): the 3D view's stage plays it
+    // while the script waits for her words; Creon's speech line moves his lips before.
     core::render::ScenarioScene* scene = m_window->scenePreview()->scene();
     QVERIFY(scene);
-    bool sawLiveWave = false;
+    bool sawLiveWave = false, sawCreonSpeak = false;
     QTRY_VERIFY_WITH_TIMEOUT((sawLiveWave = sawLiveWave || *scene->stage().isPlaying(
                                   "Antigone", Track::Body, "antigone_wave",
                                   m_window->clock()->time()),
+                              sawCreonSpeak = sawCreonSpeak || *scene->stage().isPlaying(
+                                  "Creon", Track::Face, "speech CreonSpeech.Cam01CreonP1",
+                                  m_window->clock()->time()),
                               !panel()->isRunning()),
-                             20000);
+                             30000);
     QVERIFY(sawLiveWave);
+    QVERIFY(sawCreonSpeak);
+    // What the script's voiceService says is in what the studio plays aloud.
+    QVERIFY(std::any_of(mixed.begin(), mixed.end(), [](const QList<QVariant>& block) { return block.at(2).toFloat() > 0.05f; }));
     QVERIFY2(panel()->output().contains(QLatin1String("Antigone answered Creon at")), qPrintable(panel()->output()));
     QCOMPARE(panel()->findChild<QLabel*>(QStringLiteral("scriptStatus"))->text(), QStringLiteral("Finished."));
     saveScreenshot(m_window.get(), QStringLiteral("script_dock.png"));
@@ -246,7 +255,7 @@ void ScriptDockTest::savingAScriptToTheScenarioIsOneUndoStep()
 void ScriptDockTest::aVoiceStartsWithTheView()
 {
     // The paper's voiceService on a real recording: it starts at the playhead's time (played
-    // through Qt Multimedia; the machine may have no sound device, which is not an error).
+    // through the studio's StageAudio; the machine may have no sound device, which is not an error).
     const QString speech = QStringLiteral(THESPIS_SHARED_DATA "/speech/pocketsphinx/cards/001.wav");
     panel()->setSource(QStringLiteral("anim.wait(0.3)\nvoiceService.activateAction('Creon', %1, 1.0)\nprint('spoke')\n")
                            .arg(QLatin1Char('\'') + speech + QLatin1Char('\'')));

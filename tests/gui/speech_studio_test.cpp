@@ -1,0 +1,250 @@
+// Speech in the studio (issue 32), on the real window and the built-in demo: the Speech dock's
+// Preview says a line from the playhead — the lips shut on its m and b in the 3D view's close-up
+// and the mix the studio plays aloud follows the transport (it sounds while playing, stops on
+// pause, starts again where a seek goes) — without changing the document; Insert puts it on the
+// timeline as one undo step that the timeline's audio then plays; a LibriVox recording is
+// lip-synced from its transcript; the viseme table edits α and refuses what the set cannot hold.
+
+#include <QDockWidget>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QLabel>
+#include <QScrollBar>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTest>
+#include <QUndoStack>
+
+#include <cmath>
+
+#include "editor/document.h"
+#include "editor/playback_clock.h"
+#include "editor/session.h"
+#include "editor/speech_panel.h"
+#include "editor/stage_audio.h"
+#include "editor/viseme_table.h"
+#include "gui_support.h"
+#include "studio_support.h"
+#include "main_window.h"
+#include "scene/fap.h"
+#include "speech/espeak_voice.h"
+#include "editor/timeline_panel.h"
+#include "widgets/osg_viewport.h"
+#include "widgets/timeline_view.h"
+
+using namespace thespis;
+using test::raiseDock;
+using test::characterIndex;
+using test::changedPixels;
+using test::saveScreenshot;
+
+namespace {
+
+QString demoPath() { return QStringLiteral(THESPIS_RESOURCES "/demo.thespis"); }
+constexpr const char* kLine = "Maybe mum may come by.";
+
+} // namespace
+
+class SpeechStudioTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void init();
+    void previewSpeaksLiveAndTheSoundFollowsTheTransport();
+    void insertIsOneUndoStepThatTheTimelinePlays();
+    void aRecordingIsLipSyncedFromItsTranscript();
+    void visemeTableEditsAndRefuses();
+    void badTagsAreNamedWithLineAndColumn();
+
+private:
+    editor::SpeechPanel* panel() { return m_window->speech(); }
+    float visemeNow(int character, int viseme)
+    {
+        return m_window->session()->poses().characters[std::size_t(character)].face[std::size_t(core::scene::visemeChannel(viseme))];
+    }
+    std::unique_ptr<studio::MainWindow> m_window;
+};
+
+void SpeechStudioTest::initTestCase()
+{
+    m_window = std::make_unique<studio::MainWindow>();
+    m_window->resize(1440, 900);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+}
+
+void SpeechStudioTest::init()
+{
+    QVERIFY(m_window->openScenario(demoPath()));
+    m_window->clock()->pause();
+    m_window->clock()->seek(core::secondsToTicks(9.0)); // Antigone holds her head up then
+    raiseDock(panel());
+    panel()->setCurrentCharacter(characterIndex(*m_window->document(), "Antigone"));
+    panel()->setText(QString::fromUtf8(kLine));
+    QVERIFY(panel()->setVoice(QStringLiteral("en-gb")));
+    panel()->setRate(150);
+}
+
+void SpeechStudioTest::previewSpeaksLiveAndTheSoundFollowsTheTransport()
+{
+    editor::Document& document = *m_window->document();
+    const auto original = document.scenario();
+    const int antigone = characterIndex(document, "Antigone");
+    editor::StageAudio* audio = m_window->audio();
+    QSignalSpy mixed(audio, &editor::StageAudio::mixed);
+    panel()->setCloseUp(true);
+    panel()->preview();
+    QVERIFY(panel()->isBusy());
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isBusy(), 20000);
+    QVERIFY2(panel()->message().startsWith(QStringLiteral("Previewing")), qPrintable(panel()->message()));
+    QVERIFY(m_window->clock()->isPlaying()); // Preview plays from the playhead
+
+    // While it plays, the studio's mix carries the voice from the playhead on.
+    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(mixed.begin(), mixed.end(), [](const QList<QVariant>& block) {
+                                 return block.at(2).toFloat() > 0.05f;
+                             }),
+                             5000);
+    const core::Tick firstBlock = mixed.front().at(0).value<core::Tick>();
+    QVERIFY(std::abs(core::ticksToSeconds(firstBlock) - 9.0) < 0.1);
+
+    // Paused, the sound stops: no block is mixed any more.
+    m_window->clock()->pause();
+    QTest::qWait(50);
+    const auto blocks = mixed.count();
+    QTest::qWait(300);
+    QCOMPARE(mixed.count(), blocks);
+
+    // Where espeak-ng says "m" and "b", the lips are shut; on the "ay" of "may" they are open.
+    auto spoken = core::speech::speak(kLine, {.voice = "en-gb", .wordsPerMinute = 150});
+    QVERIFY(spoken.ok());
+    widgets::OsgViewport* viewport = m_window->viewport();
+    QImage shut, open;
+    for (const auto& p : spoken->timing.phonemes) {
+        m_window->clock()->seek(core::secondsToTicks(9.0 + (p.start + p.end) / 2));
+        if (p.phoneme == "M" || p.phoneme == "B") {
+            QVERIFY2(visemeNow(antigone, 1) > 0.6f, qPrintable(QStringLiteral("%1 at %2 s").arg(QString::fromStdString(p.phoneme)).arg(p.start)));
+            if (shut.isNull()) {
+                QTest::qWait(100);
+                shut = viewport->grabFramebuffer();
+            }
+        } else if (p.phoneme == "EY" && open.isNull()) {
+            QVERIFY(visemeNow(antigone, 1) < 0.3f);
+            QTest::qWait(100);
+            open = viewport->grabFramebuffer();
+        }
+    }
+    QVERIFY(!shut.isNull() && !open.isNull());
+    QVERIFY(shut.save(QStringLiteral(THESPIS_SCREENSHOT_DIR "/speech_preview_m.png")));
+    QVERIFY(open.save(QStringLiteral(THESPIS_SCREENSHOT_DIR "/speech_preview_ay.png")));
+    const int changed = changedPixels(shut, open);
+    QVERIFY2(changed > 100, qPrintable(QStringLiteral("%1 pixels differ between the shut and the open mouth").arg(changed)));
+    QVERIFY2(changed < shut.width() * shut.height() / 4, "only the mouth moves");
+
+    // A seek while playing: the sound starts again at the new playhead.
+    m_window->clock()->seek(core::secondsToTicks(9.5));
+    mixed.clear();
+    m_window->clock()->play();
+    QTRY_VERIFY(!mixed.isEmpty());
+    QVERIFY(std::abs(core::ticksToSeconds(mixed.front().at(0).value<core::Tick>()) - 9.5) < 0.1);
+    m_window->clock()->pause();
+    QVERIFY(document.scenario() == original); // a preview changes nothing
+    saveScreenshot(m_window.get(), QStringLiteral("studio_speech_preview.png"));
+}
+
+void SpeechStudioTest::insertIsOneUndoStepThatTheTimelinePlays()
+{
+    editor::Document& document = *m_window->document();
+    const auto original = document.scenario();
+    const int antigone = characterIndex(document, "Antigone");
+    const int steps = document.undoStack()->count();
+    panel()->insert();
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isBusy(), 20000);
+    QCOMPARE(document.undoStack()->count(), steps + 1);
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Insert Speech"));
+    const auto& character = document.scenario().characters[std::size_t(antigone)];
+    QCOMPARE(character.speech.size(), original.characters[std::size_t(antigone)].speech.size() + 1);
+    const auto& line = character.speech.back();
+    QCOMPARE(line.start, std::optional<core::Tick>(core::secondsToTicks(9.0)));
+    QCOMPARE(line.voice, std::string("gmw/en"));
+    QVERIFY(line.audio.empty()); // spoken again from its text
+    const auto speech = std::find_if(character.layers.begin(), character.layers.end(), [](const auto& l) { return l.name == "Speech"; });
+    QVERIFY(speech != character.layers.end());
+    QVERIFY(speech->actions.size() >= 12);
+    // The timeline shows the words under the visemes they drive, where they are said.
+    const auto& captions = m_window->timeline()->view()->captions();
+    QCOMPARE(captions.size(), qsizetype(5));
+    QCOMPARE(captions.front().text, QStringLiteral("Maybe"));
+    QCOMPARE(captions.front().start, *line.start + core::secondsToTicks(line.words.front().start));
+    QCOMPARE(captions.back().text, QStringLiteral("by"));
+    m_window->timeline()->view()->setPixelsPerSecond(400);
+    m_window->timeline()->view()->horizontalScrollBar()->setValue(int(8.8 * 400));
+
+    // The timeline's audio says the line where it is; the face plays it from the document.
+    const auto sounds = m_window->audio()->timelineSounds()->activations();
+    QVERIFY(std::any_of(sounds.begin(), sounds.end(), [&](const auto& a) { return a.owner == "Antigone" && a.start == *line.start; }));
+    QVERIFY(m_window->audio()->problems().isEmpty());
+    auto spoken = core::speech::speak(kLine, {.voice = "en-gb", .wordsPerMinute = 150});
+    const auto b = std::find_if(spoken->timing.phonemes.begin(), spoken->timing.phonemes.end(), [](const auto& p) { return p.phoneme == "B"; });
+    m_window->clock()->seek(core::secondsToTicks(9.0 + (b->start + b->end) / 2));
+    QVERIFY(visemeNow(antigone, 1) > 0.6f);
+    saveScreenshot(m_window.get(), QStringLiteral("studio_speech_inserted.png"));
+    saveScreenshot(m_window->timeline(), QStringLiteral("timeline_speech_words.png"));
+
+    document.undoStack()->undo();
+    QVERIFY(document.scenario() == original);
+    QVERIFY(m_window->audio()->timelineSounds()->activations().size() == sounds.size() - 1);
+    QVERIFY(m_window->timeline()->view()->captions().isEmpty());
+}
+
+void SpeechStudioTest::aRecordingIsLipSyncedFromItsTranscript()
+{
+    const QString base = QStringLiteral(THESPIS_SHARED_DATA "/speech/pocketsphinx/librivox/sense_and_sensibility_01_austen_64kb-0870");
+    QFile transcript(base + QStringLiteral(".txt"));
+    QVERIFY(transcript.open(QIODevice::ReadOnly));
+    const QString words = QString::fromUtf8(transcript.readAll()).simplified();
+    QVERIFY(!words.isEmpty());
+    editor::Document& document = *m_window->document();
+    const int antigone = characterIndex(document, "Antigone");
+    panel()->setText(words);
+    panel()->lipSync(base + QStringLiteral(".wav"));
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isBusy(), 60000);
+    QVERIFY2(panel()->message().startsWith(QStringLiteral("Lip-synced")), qPrintable(panel()->message()));
+    const auto& line = document.scenario().characters[std::size_t(antigone)].speech.back();
+    QCOMPARE(QString::fromStdString(line.audio), QDir::cleanPath(QFileInfo(base + QStringLiteral(".wav")).absoluteFilePath())); // outside the scenario's folder
+    QCOMPARE(int(line.words.size()), int(words.split(QLatin1Char(' ')).size()));
+    for (std::size_t w = 1; w < line.words.size(); ++w)
+        QVERIFY(line.words[w].start >= line.words[w - 1].start); // in order
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Lip Sync Recording"));
+    const auto sounds = m_window->audio()->timelineSounds()->activations();
+    QVERIFY(std::any_of(sounds.begin(), sounds.end(), [&](const auto& a) { return a.sound.find("Antigone") == 0 && a.clip->rate == 16000; }));
+    document.undoStack()->undo();
+}
+
+void SpeechStudioTest::visemeTableEditsAndRefuses()
+{
+    editor::VisemeTable* table = panel()->visemeTable();
+    QTableWidget* cells = table->table();
+    QCOMPARE(cells->rowCount(), core::scene::kVisemeCount);
+    QVERIFY(cells->item(0, 0)->text().contains(QStringLiteral("p_b_m")));
+    cells->item(0, 2)->setData(Qt::EditRole, 7.5); // α of p_b_m
+    QCOMPARE(table->visemes().find(1)->alpha, 7.5);
+    cells->item(0, 3)->setData(Qt::EditRole, 3.0); // a weight above 1 is refused and put back
+    QCOMPARE(table->visemes().find(1)->weight, 1.0);
+    QTRY_COMPARE(cells->item(0, 3)->data(Qt::EditRole).toDouble(), 1.0);
+    QVERIFY(table->findChild<QLabel*>() != nullptr);
+    saveScreenshot(panel(), QStringLiteral("speech_dock.png"));
+    QVERIFY(table->setVisemes(core::speech::mpeg4Visemes()).ok());
+}
+
+void SpeechStudioTest::badTagsAreNamedWithLineAndColumn()
+{
+    panel()->setText(QStringLiteral("Well,\nare you <begin_gesture anim=\"nod\"/>sure?"));
+    panel()->preview();
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isBusy(), 10000);
+    QVERIFY2(panel()->message().contains(QStringLiteral("line 2, column 9")), qPrintable(panel()->message()));
+}
+
+QTEST_MAIN(SpeechStudioTest)
+#include "speech_studio_test.moc"
