@@ -7,6 +7,8 @@ namespace thespis::core::speech {
 std::vector<VisemeCue> visemeCues(const SpeechTiming& timing, const VisemeSet& set)
 {
     std::vector<VisemeCue> cues;
+    // Cues stay inside the utterance: the face speaks while the audio does.
+    const double end = std::max(timing.duration, timing.phonemes.empty() ? 0.0 : timing.phonemes.back().end);
     for (std::size_t i = 0; i < timing.phonemes.size(); ++i) {
         const PhonemeTiming& p = timing.phonemes[i];
         if (isPause(p.phoneme) || !(p.end > p.start))
@@ -19,8 +21,9 @@ std::vector<VisemeCue> visemeCues(const SpeechTiming& timing, const VisemeSet& s
                 continue;
             const double from = p.start + part * double(k), to = from + part;
             // Widened by the spread on each side; kept symmetric about the centre, so the peak of
-            // the dominance curve stays on the phoneme even when the start is clamped at 0.
-            const double reach = std::min(part * viseme->spread, from);
+            // the dominance curve stays on the phoneme even where the utterance's start or end
+            // clamps it.
+            const double reach = std::min({part * viseme->spread, from, std::max(0.0, end - to)});
             VisemeCue cue;
             cue.viseme = viseme->id;
             cue.name = viseme->name;

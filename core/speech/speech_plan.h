@@ -34,7 +34,8 @@ struct GestureCue {
 };
 
 /// The visemes of `timing` in `set`: one cue per phoneme (two or more when the set shows a
-/// phoneme as a sequence, "ey" → 4, 6, each taking an equal part), none in pauses. Sorted by start.
+/// phoneme as a sequence, "ey" → 4, 6, each taking an equal part), none in pauses, all within
+/// the utterance. Sorted by start.
 std::vector<VisemeCue> visemeCues(const SpeechTiming& timing, const VisemeSet& set = mpeg4Visemes());
 
 /// When each gesture of `text` plays, from the timing of the words it spans (the timing of

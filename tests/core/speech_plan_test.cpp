@@ -244,4 +244,23 @@ TEST(SpeakJob, SentenceRanges)
     EXPECT_EQ(sentences, (std::vector<std::string>{"Mr.", "Smith said \"Hi!\"", "Then (he left.)", "3.5 apples?", "Yes"}));
 }
 
+TEST(SpeechPlan, WideSpreadsStayInsideTheUtterance)
+{
+    // Found by fuzz_viseme_set: a spread of 1.5 reached past the end of the audio.
+    speech::VisemeSet set = speech::mpeg4Visemes();
+    for (speech::Viseme& v : set.visemes)
+        v.spread = 2.0;
+    speech::SpeechTiming timing;
+    timing.phonemes = {{"M", 0.0, 0.1, 0}, {"AA", 0.1, 0.3, 0}, {"M", 0.3, 0.4, 0}};
+    timing.duration = 0.4;
+    const auto cues = speech::visemeCues(timing, set);
+    ASSERT_EQ(cues.size(), 3u);
+    for (const speech::VisemeCue& cue : cues) {
+        EXPECT_GE(cue.start, 0.0);
+        EXPECT_LE(cue.start + cue.duration, timing.duration + 1e-12) << cue.phoneme;
+        EXPECT_NEAR(cue.start + cue.duration / 2, cue.centre, 1e-12) << "the peak stays on " << cue.phoneme;
+    }
+    EXPECT_NEAR(cues[1].duration, 0.2 + 2 * 0.1, 1e-12); // the vowel reaches as far as both ends allow
+}
+
 } // namespace thespis::test
