@@ -24,7 +24,7 @@ using json_document::Range;
 // must be reached, so they are at full weight and reach little past their phoneme; shapes made
 // with the tongue behind the teeth show less and borrow more from their neighbours; vowels open
 // the mouth and carry into the consonants around them.
-constexpr Viseme kSilence{0, "sil", 4, 1, 0.5};
+const Viseme kSilence{0, "sil", 4, 1, 0.5};
 Viseme lips(int id, std::string name) { return {id, std::move(name), 3, 1, 0.3}; }
 Viseme tongue(int id, std::string name) { return {id, std::move(name), 5, 0.8, 0.5}; }
 Viseme vowel(int id, std::string name) { return {id, std::move(name), 4, 1, 0.6}; }
