@@ -5,11 +5,16 @@
 //   edit/speech_edits.h). Synthesis excluded. Goal ≤ 5 ms.
 // Speech/firstSound: a 20-word answer of two sentences → the first sentence's audio and visemes
 //   ready (the SpeakJob hands each sentence on as it is synthesised). Goal ≤ 60 ms.
+// Speech/live: the 20-word sentence's visemes and gestures started live on the demo's Stage
+//   (runtime::performSpeech, what Preview and voiceService do once the audio is ready) and the
+//   stage evaluated once: added to firstSound, the time to the first viseme on the face.
 #include <benchmark/benchmark.h>
 
 #include <stop_token>
 
 #include "edit/speech_edits.h"
+#include "runtime/speech_performance.h"
+#include "runtime/stage.h"
 #include "scenario/scenario_io.h"
 #include "speech/speak_job.h"
 
@@ -64,5 +69,33 @@ void FirstSound(benchmark::State& state)
     }
 }
 BENCHMARK(FirstSound)->Name("Speech/firstSound")->Unit(benchmark::kMillisecond);
+
+void Live(benchmark::State& state)
+{
+    auto scenario = scenario::loadScenario(THESPIS_RESOURCES "/demo.thespis");
+    speech::SpeakJob job;
+    job.text = kTwentyWords;
+    JobContext context;
+    if (!scenario) {
+        state.SkipWithError("cannot load the demo");
+        return;
+    }
+    auto built = scenario::buildRuntime(*scenario, THESPIS_RESOURCES);
+    if (!built || !job.run(context).ok()) {
+        state.SkipWithError("cannot build the demo or speak");
+        return;
+    }
+    runtime::Stage stage(std::move(built).value());
+    runtime::PoseSet poses = stage.makePoseSet();
+    for (auto _ : state) {
+        auto performed = runtime::performSpeech(stage, "Creon", "line", job.visemeCues, job.gestureCues, 0);
+        stage.evaluate(secondsToTicks(0.1), poses);
+        benchmark::DoNotOptimize(performed);
+        state.PauseTiming();
+        stage.resetLive();
+        state.ResumeTiming();
+    }
+}
+BENCHMARK(Live)->Name("Speech/live")->Unit(benchmark::kMillisecond);
 
 } // namespace
