@@ -86,6 +86,23 @@ TEST(ScenarioSpeech, TheReaderNamesWhatIsWrong)
     EXPECT_NE(refused(bad).find("characters[1].speech[1].name"), std::string::npos);
 }
 
+TEST(ScenarioSpeech, ALineWithoutAStartIsKeptOffTheTimeline)
+{
+    // Said by scripts (voiceService.activateAction): no start is read, none is written.
+    json document = json::parse(serializeScenario(golden(9)));
+    document["characters"][1]["speech"][0].erase("start");
+    auto read = parseScenario(document.dump());
+    ASSERT_TRUE(read) << read.error().message;
+    EXPECT_FALSE(read->characters[1].speech[0].start.has_value());
+    const json written = json::parse(serializeScenario(*read));
+    EXPECT_FALSE(written["characters"][1]["speech"][0].contains("start"));
+    EXPECT_EQ(*parseScenario(written.dump()), *read);
+    // Its audio does not play by itself.
+    core::runtime::SoundService sound(testData("formats/v9"), std::make_shared<core::runtime::ManualClock>());
+    EXPECT_TRUE(sound.playSpeech(*read).empty());
+    EXPECT_EQ(sound.activationCount(), 0u);
+}
+
 TEST(ScenarioSpeech, RebasingMovesTheAudioPath)
 {
     Scenario s = golden(9);
