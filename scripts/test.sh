@@ -33,8 +33,15 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTHESPIS_SA
 cmake --build build-asan -j "$jobs" --target thespis_core_tests
 # tests/lsan.supp: leaks inside third-party libraries (pocketsphinx's grammar parser) only.
 leak_suppressions="$PWD/tests/lsan.supp"
+# PlayJob.TheDemoPlaysOnItsOwn runs without the leak check: under ctest (never when started by
+# hand, even in its folder and with ctest's arguments) LeakSanitizer's own tracer dies of a
+# segfault at exit once the demo has speech lines. Its code is leak-checked by the other PlayJob
+# tests, which render the same demo over a video.
+unchecked='^PlayJob\.TheDemoPlaysOnItsOwn$'
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   LSAN_OPTIONS=suppressions="$leak_suppressions" \
-  ctest -j "$jobs" -L core --output-on-failure --timeout 600)
+  ctest -j "$jobs" -L core -E "$unchecked" --output-on-failure --timeout 600)
+(cd build-asan && ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest -L core -R "$unchecked" --output-on-failure --timeout 600)
 
 echo "== all tests passed =="
