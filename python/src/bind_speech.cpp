@@ -40,6 +40,15 @@ py::list phonemesOf(const speech::SpeechTiming& timing)
     return phonemes;
 }
 
+// The index of the character who speaks; ValueError naming it when there is none.
+int speakerIndex(const core::scenario::Scenario& scenario, const std::string& character)
+{
+    const core::scenario::Character* who = scenario.findCharacter(character);
+    if (!who)
+        throw py::value_error("The scenario has no character '" + character + "'.");
+    return int(who - scenario.characters.data());
+}
+
 } // namespace
 
 void bindSpeech(py::module_& m)
@@ -158,12 +167,9 @@ void bindSpeech(py::module_& m)
         "insert",
         [](const core::scenario::Scenario& scenario, const std::string& character, const speech::SpeakJob& spoken,
            double at, const std::string& audio) {
-            const core::scenario::Character* who = scenario.findCharacter(character);
-            if (!who)
-                throw py::value_error("The scenario has no character '" + character + "'.");
             auto line = core::edit::speechLine(spoken.text, spoken.voice, spoken.utterance.timing, audio,
                                                core::secondsToTicks(at));
-            return unwrap(core::edit::insertSpeech(scenario, int(who - scenario.characters.data()), std::move(line),
+            return unwrap(core::edit::insertSpeech(scenario, speakerIndex(scenario, character), std::move(line),
                                                    spoken.visemeCues, spoken.gestureCues))
                 .edit;
         },
@@ -200,13 +206,10 @@ void bindSpeech(py::module_& m)
         "insert",
         [](const core::scenario::Scenario& scenario, const std::string& character, const speech::LipSyncJob& aligned,
            double at, const std::string& audio) {
-            const core::scenario::Character* who = scenario.findCharacter(character);
-            if (!who)
-                throw py::value_error("The scenario has no character '" + character + "'.");
             const speech::SpeechTiming& timing = aligned.result.timing;
             auto line = core::edit::speechLine(aligned.result.transcript, {}, timing,
                                                audio.empty() ? aligned.audio.string() : audio, core::secondsToTicks(at));
-            return unwrap(core::edit::insertSpeech(scenario, int(who - scenario.characters.data()), std::move(line),
+            return unwrap(core::edit::insertSpeech(scenario, speakerIndex(scenario, character), std::move(line),
                                                    speech::visemeCues(timing), {}))
                 .edit;
         },
