@@ -20,9 +20,12 @@ int insertSpeechAndSave(const std::string& command, const core::scenario::Opened
         return ExitInvalidInput;
     }
     const auto folder = std::filesystem::absolute(target.out).parent_path();
-    // The line names its audio relative to the scenario it is saved in, as every file is.
+    // The line names its audio relative to the scenario it is saved in, as every file is: from the
+    // real folders, since ".." after a symbolic link leads elsewhere than the path reads.
     if (!line.audio.empty())
-        line.audio = std::filesystem::absolute(line.audio).lexically_relative(folder).generic_string();
+        line.audio = std::filesystem::weakly_canonical(std::filesystem::absolute(line.audio))
+                         .lexically_relative(std::filesystem::weakly_canonical(folder))
+                         .generic_string();
     line.start = core::secondsToTicks(target.at);
     auto inserted = core::edit::insertSpeech(opened.scenario, int(speaker - opened.scenario.characters.data()),
                                              std::move(line), visemes, gestures);
