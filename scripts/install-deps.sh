@@ -15,7 +15,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest
   libeigen3-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri libegl-mesa0 libegl-dev libgl-dev mesa-utils
-  libespeak-ng-dev espeak-ng libpocketsphinx-dev pocketsphinx-en-us
+  libespeak-ng-dev espeak-ng libpocketsphinx-dev pocketsphinx-en-us libexpat1-dev
   python3-distributed clang nodejs
 )
 

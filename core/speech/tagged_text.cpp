@@ -214,15 +214,8 @@ TaggedText parse(std::string_view input)
 std::string escaped(std::string_view text, bool attribute)
 {
     std::string out;
-    for (char c : text) {
-        switch (c) {
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '&': out += "&amp;"; break;
-        case '"': out += attribute ? "&quot;" : "\""; break;
-        default: out += c;
-        }
-    }
+    for (char c : text)
+        appendEscaped(out, c, attribute);
     return out;
 }
 

@@ -17,14 +17,45 @@ inline std::string inQuotes(std::string_view text)
     return quoted;
 }
 
-/// ASCII lower case (file extensions, names compared without case).
-inline std::string lowercase(std::string_view text)
+/// The text with its ASCII letters in one case.
+inline std::string asciiCase(std::string_view text, bool upper)
 {
+    const char from = upper ? 'a' : 'A', to = upper ? 'A' : 'a';
     std::string out(text);
     for (char& c : out)
-        if (c >= 'A' && c <= 'Z')
-            c = char(c - 'A' + 'a');
+        if (c >= from && c <= from + 25)
+            c = char(c - from + to);
     return out;
+}
+
+/// ASCII lower case (file extensions, names compared without case).
+inline std::string lowercase(std::string_view text) { return asciiCase(text, false); }
+
+/// ASCII upper case (BML's lexemes and enumerations, compared without case).
+inline std::string uppercase(std::string_view text) { return asciiCase(text, true); }
+
+/// The text without the spaces, tabs and line ends around it.
+inline std::string_view trimmed(std::string_view text)
+{
+    const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    while (!text.empty() && space(text.front()))
+        text.remove_prefix(1);
+    while (!text.empty() && space(text.back()))
+        text.remove_suffix(1);
+    return text;
+}
+
+/// Appends `c` as markup text holds it: <, > and & as references, and " too when `quote` (in a
+/// quoted attribute value).
+inline void appendEscaped(std::string& out, char c, bool quote)
+{
+    switch (c) {
+    case '<': out += "&lt;"; break;
+    case '>': out += "&gt;"; break;
+    case '&': out += "&amp;"; break;
+    case '"': out += quote ? "&quot;" : "\""; break;
+    default: out += c;
+    }
 }
 
 /// A sentence to go after a colon: its first letter in lower case ("The file …" → "the file …").

@@ -13,6 +13,7 @@
 
 #include "speech/speech_plan.h"
 #include "speech/tagged_text.h"
+#include "../core/made_up_timing.h"
 
 namespace speech = thespis::core::speech;
 
@@ -22,24 +23,6 @@ namespace {
 {
     std::fprintf(stderr, "fuzz_tagged_text: %s\n%s\n", what, detail.c_str());
     std::abort();
-}
-
-// One word per run of non-space bytes, each a tenth of a second.
-speech::SpeechTiming wordsOf(const std::string& text)
-{
-    speech::SpeechTiming timing;
-    for (std::size_t i = 0; i < text.size();) {
-        if (text[i] == ' ') {
-            ++i;
-            continue;
-        }
-        const std::size_t end = std::min(text.find(' ', i), text.size());
-        const double start = 0.1 * double(timing.words.size());
-        timing.words.push_back({text.substr(i, end - i), start, start + 0.1, i, end});
-        i = end;
-    }
-    timing.duration = 0.1 * double(timing.words.size());
-    return timing;
 }
 
 } // namespace
@@ -69,7 +52,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!(a == b))
         failure("the tagged text changed in a write/read round trip", written);
 
-    const speech::SpeechTiming timing = wordsOf(first->text);
+    const speech::SpeechTiming timing = thespis::test::madeUpTiming(first->text, 0.1);
     for (const speech::GestureCue& cue : speech::gestureCues(*first, timing))
         if (!(cue.start >= 0 && cue.start <= cue.end && cue.end <= timing.duration + 1e-9))
             failure("a gesture cue outside the utterance", std::string(input));
