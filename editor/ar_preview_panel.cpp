@@ -63,6 +63,10 @@ ArPreviewPanel::ArPreviewPanel(QWidget* parent) : QWidget(parent), m_timer(new Q
     m_smooth = new QCheckBox(tr("Smooth edges (slower)"), preview);
     m_smooth->setObjectName(QStringLiteral("arSmoothEdges"));
     m_smooth->setChecked(QSettings().value(kSettingsGroup + QStringLiteral("smooth"), true).toBool());
+    m_lookAtCamera = new QCheckBox(tr("Characters look at the camera"), preview);
+    m_lookAtCamera->setObjectName(QStringLiteral("arLookAtCamera"));
+    m_lookAtCamera->setToolTip(tr("Their eyes, heads and chests turn to the real camera as it is tracked: they look "
+                                  "at the visitor"));
     m_clock = new QComboBox(preview);
     m_clock->setObjectName(QStringLiteral("arClock"));
     m_clock->addItem(tr("Plays with the studio's transport"), int(Clock::Transport));
@@ -89,6 +93,7 @@ ArPreviewPanel::ArPreviewPanel(QWidget* parent) : QWidget(parent), m_timer(new Q
     previewLayout->addWidget(m_clock);
     previewLayout->addWidget(m_mirrorBall);
     previewLayout->addWidget(m_smooth);
+    previewLayout->addWidget(m_lookAtCamera);
     previewLayout->addLayout(buttons);
     previewLayout->addWidget(m_status);
 
@@ -118,6 +123,7 @@ ArPreviewPanel::ArPreviewPanel(QWidget* parent) : QWidget(parent), m_timer(new Q
             (void)startRecording(path);
     });
     connect(m_smooth, &QCheckBox::toggled, this, [](bool on) { storeSetting("smooth", on); });
+    connect(m_lookAtCamera, &QCheckBox::toggled, this, &ArPreviewPanel::applyLookAtCamera);
     connect(m_clock, &QComboBox::currentIndexChanged, this, [this] {
         storeSetting("clock", clock() == Clock::Video ? QStringLiteral("video") : QStringLiteral("transport"));
     });
@@ -287,6 +293,8 @@ bool ArPreviewPanel::start()
     if (!session)
         return fail(fromUtf8(session.error().message));
     m_session = std::move(session).value();
+    if (m_lookAtCamera->isChecked())
+        applyLookAtCamera(true);
     m_snapshot = {};
     m_recordingPath.clear();
     m_endTitle.clear();
@@ -521,6 +529,23 @@ void ArPreviewPanel::setStatus(const QString& text, bool error)
 QString ArPreviewPanel::statusText() const
 {
     return m_status->text();
+}
+
+void ArPreviewPanel::applyLookAtCamera(bool look)
+{
+    if (!m_studio || !m_studio->stage())
+        return;
+    core::runtime::Stage& stage = *m_studio->stage();
+    const core::Tick now = m_studio->clock()->time();
+    core::motion::GazeSettings listening; // the visitor is the one who talks
+    // A camera over a table-top target is often high above the characters: the whole body turns.
+    listening.influence = core::motion::GazeInfluence::Waist;
+    for (const std::string& name : stage.characterNames()) {
+        if (look)
+            (void)stage.gaze(name, {core::runtime::GazeTarget::Kind::Camera, {}, {}, {}}, listening, now);
+        else
+            (void)stage.stopGaze(name, now);
+    }
 }
 
 } // namespace thespis::editor

@@ -128,6 +128,7 @@ public:
     QCheckBox* shadowsCheck() const { return m_shadows; }
     QCheckBox* smoothCheck() const { return m_smooth; }
     QCheckBox* mirrorBallCheck() const { return m_mirrorBall; }
+    QCheckBox* lookAtCameraCheck() const { return m_lookAtCamera; }
     QComboBox* clockCombo() const { return m_clock; }
     QPushButton* startButton() const { return m_start; }
     QPushButton* stopButton() const { return m_stop; }
@@ -156,6 +157,8 @@ private:
     void pushPlacement();
     void updateEnabled();
     void poll();
+    /// Turns every character to the camera, or lets go, as "Characters look at the camera" says.
+    void applyLookAtCamera(bool look);
     void showSnapshot();
     void followVideo();
     // After an edit: the same scene plays on, or the preview starts again with the new one.
@@ -220,6 +223,7 @@ private:
     QCheckBox* m_shadows = nullptr;
     QCheckBox* m_mirrorBall = nullptr;
     QCheckBox* m_smooth = nullptr;
+    QCheckBox* m_lookAtCamera = nullptr;
     QComboBox* m_clock = nullptr; ///< data: Clock
     QPushButton* m_start = nullptr;
     QPushButton* m_stop = nullptr;

@@ -124,6 +124,10 @@ void ScenePreview::setPoses(const core::runtime::PoseSet& poses)
     if (!m_scene)
         return;
     m_scene->setPoses(poses);
+    if (m_viewIsTheCamera && m_session && m_session->stage()) {
+        const QVector3D eye = m_viewport->eye();
+        m_session->stage()->setCameraPosition(core::anim::Vec3d{eye.x(), eye.y(), eye.z()});
+    }
     m_viewport->update();
 }
 

@@ -56,6 +56,9 @@ public:
     void setShading(core::render::Shading shading);
     core::render::Shading shading() const { return m_shading; }
     void setGroundVisible(bool visible);
+    /// Whether the view's camera is the one the stage's "camera" gaze targets look at (true until
+    /// the AR preview runs: then the tracked real camera is).
+    void setViewIsTheCamera(bool view) { m_viewIsTheCamera = view; }
     bool groundVisible() const { return m_groundVisible; }
 
     /// Turns the camera to a close-up of the character's face as it is posed now (its home view
@@ -104,6 +107,7 @@ private:
     void onLightProjected(const core::Result<void>& result);
     void applyHighlights();
 
+    bool m_viewIsTheCamera = true;
     QPointer<widgets::OsgViewport> m_viewport; // may go first when a window closes
     Session* m_session = nullptr;
     QString m_problem;

@@ -683,6 +683,14 @@ Drücken Sie Start, um sie über dem Video zu sehen.</translation>
         <source>tilt unsure (ratio %1)</source>
         <translation>Neigung unsicher (Verhältnis %1)</translation>
     </message>
+    <message>
+        <source>Characters look at the camera</source>
+        <translation>Die Figuren sehen in die Kamera</translation>
+    </message>
+    <message>
+        <source>Their eyes, heads and chests turn to the real camera as it is tracked: they look at the visitor</source>
+        <translation>Augen, Köpfe und Oberkörper wenden sich der echten, verfolgten Kamera zu: Sie sehen den Besucher an</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::Autosaver</name>

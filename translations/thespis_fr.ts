@@ -683,6 +683,14 @@ Appuyez sur Démarrer pour les voir sur la vidéo.</translation>
         <source>tilt unsure (ratio %1)</source>
         <translation>inclinaison incertaine (rapport %1)</translation>
     </message>
+    <message>
+        <source>Characters look at the camera</source>
+        <translation>Les personnages regardent la caméra</translation>
+    </message>
+    <message>
+        <source>Their eyes, heads and chests turn to the real camera as it is tracked: they look at the visitor</source>
+        <translation>Leurs yeux, leur tête et leur buste se tournent vers la vraie caméra suivie : ils regardent le visiteur</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::Autosaver</name>

@@ -161,6 +161,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     m_session->addPanel(m_bake);
     m_session->addPanel(m_postureChart);
     m_session->addPanel(m_arPreview);
+    connect(m_arPreview, &editor::ArPreviewPanel::runningChanged, this,
+            [this](bool running) {
+                if (m_preview)
+                    m_preview->setViewIsTheCamera(!running);
+            });
     m_session->addPanel(m_autosaver);
     // After the views: when the window refreshes its lists, the views have followed the edit.
     connect(m_session, &editor::Session::edited, this, &MainWindow::onDocumentEdited);

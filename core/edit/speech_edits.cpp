@@ -158,10 +158,16 @@ Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, sc
         const double clipSeconds = clip && clip->frames.size() >= 2 * clip->valuesPerFrame()
                                        ? double(clip->frames.size() / clip->valuesPerFrame() - 1) / clip->frameRate
                                        : 0.0;
-        // A keyframed face gesture lasts as long as its words; a recorded one plays as recorded
-        // (how body gestures fit their words is the gesture planner's).
-        if (isFace && clipSeconds > 0 && cue.end > cue.start)
+        // A keyframed face gesture lasts as long as its words; a recorded one plays as recorded.
+        // A body gesture spans its words with its fades (speech::fitGesture).
+        if (isFace && clipSeconds > 0 && cue.end > cue.start) {
             action.modifiers.insert(action.modifiers.begin(), stretchTo(cue.end - cue.start, clipSeconds));
+        } else if (!isFace && clipSeconds > 0) {
+            const speech::GestureFit fit =
+                speech::fitGesture(cue, clipSeconds, ticksToSeconds(gesture.fadeIn), ticksToSeconds(gesture.fadeOut));
+            action.start = at + secondsToTicks(fit.start);
+            action.modifiers.insert(action.modifiers.begin(), stretchTo(fit.duration, clipSeconds));
+        }
         (isFace ? face : body).push_back(std::move(action));
     }
     if (face.empty() && body.empty())

@@ -52,9 +52,14 @@ double BlinkSynthesizer::closure(double t) const
     const auto next = std::upper_bound(m_starts.begin(), m_starts.end(), t);
     if (next == m_starts.begin())
         return 0;
-    const double into = t - *(next - 1);
-    const BlinkOptions& o = m_options;
+    return blinkClosure(t - *(next - 1), m_options);
+}
+
+double blinkClosure(double into, const BlinkOptions& o)
+{
     const double half = std::numbers::pi / 2;
+    if (into < 0)
+        return 0;
     if (into < o.closeSeconds)
         return std::pow(std::sin(half * into / o.closeSeconds), 2);
     if (into < o.closeSeconds + o.shutSeconds)
@@ -67,10 +72,16 @@ double BlinkSynthesizer::closure(double t) const
 void BlinkSynthesizer::evaluate(double t, std::span<float> out) const
 {
     std::fill(out.begin(), out.end(), 0.0f);
-    const double shut = closure(t);
+    closeLids(out, closure(t));
+}
+
+void closeLids(std::span<float> face, double shut)
+{
     const float upper = float(1024 * (1 - kLowerLidShare) * shut), lower = float(1024 * kLowerLidShare * shut);
-    out[std::size_t(scene::fapChannel(19))] = out[std::size_t(scene::fapChannel(20))] = upper;
-    out[std::size_t(scene::fapChannel(21))] = out[std::size_t(scene::fapChannel(22))] = lower;
+    for (const int fap : {19, 20})
+        face[std::size_t(scene::fapChannel(fap))] = std::max(face[std::size_t(scene::fapChannel(fap))], upper);
+    for (const int fap : {21, 22})
+        face[std::size_t(scene::fapChannel(fap))] = std::max(face[std::size_t(scene::fapChannel(fap))], lower);
 }
 
 } // namespace thespis::core::motion

@@ -25,6 +25,12 @@ struct BlinkOptions {
     bool operator==(const BlinkOptions&) const = default;
 };
 
+/// How shut the eyes are `into` seconds after a blink starts, 0 … 1.
+double blinkClosure(double into, const BlinkOptions& options = {});
+/// Closes the lids of a face frame by `shut` (0 … 1): the upper lids (FAPs 19, 20) and, a little,
+/// the lower ones (21, 22), in IRISD units; lids already closed further stay so.
+void closeLids(std::span<float> face, double shut);
+
 /// The people's rates: at rest and while talking (blinks a minute).
 inline constexpr double kBlinkRateAtRest = 17, kBlinkRateTalking = 26;
 

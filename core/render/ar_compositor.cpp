@@ -265,6 +265,11 @@ void ArCompositor::updateShadow()
     m_shadowArea->set(osg::Vec3f(float(centreX), float(centreZ), float(half)));
 }
 
+anim::Vec3d ArCompositor::cameraPosition(const ar::TargetPose& pose) const
+{
+    return arCameraView(m_camera, pose, m_target, m_placement).eye;
+}
+
 Result<void> ArCompositor::compose(ar::VideoFrame& frame, const ar::TargetPose& pose)
 {
     if (frame.width != m_camera.width || frame.height != m_camera.height)

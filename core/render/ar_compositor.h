@@ -51,6 +51,8 @@ public:
     ScenarioScene& scene() { return *m_scene; }
     const ar::CameraIntrinsics& camera() const { return m_camera; }
     const scenario::ArSpec& placement() const { return m_placement; }
+    /// Where the real camera is in the scenario's world when the target is at `pose`.
+    anim::Vec3d cameraPosition(const ar::TargetPose& pose) const;
     /// A new placement (the user moved, turned or scaled the world, or edited the occluders).
     Result<void> setPlacement(const scenario::ArSpec& placement);
 

@@ -162,11 +162,14 @@ void ArSession::draw(std::stop_token stop)
                 posesSeen = newest;
                 ar.scene().setPoses(poses);
             }
-        if (tracking.hasPose)
+        if (tracking.hasPose) {
             if (auto drawn = ar.compose(frame, tracking.pose); !drawn) {
                 s.finish(ArSessionState::Failed, describe(drawn.error()));
                 break;
             }
+            // A character told to look at the camera looks at the visitor's real one.
+            s.settings.stage->setCameraPosition(ar.cameraPosition(tracking.pose));
+        }
         const auto now = std::chrono::steady_clock::now();
         composed.push_back(now);
         while (now - composed.front() > std::chrono::seconds(1))

@@ -49,6 +49,14 @@ public:
     /// Cancelled when stopped.
     Result<bool> waitUntil(Tick t, Clock::Patience patience = Clock::Forever);
 
+    /// Turns the character's eyes, head and body toward `target` from now (Stage::gaze).
+    Result<void> gaze(const std::string& character, const GazeTarget& target, const motion::GazeSettings& settings)
+    {
+        return m_stage->gaze(character, target, settings, now());
+    }
+    /// Lets go of the gaze from now; false when none was on.
+    Result<bool> stopGaze(const std::string& character) { return m_stage->stopGaze(character, now()); }
+
     /// initPlayerScope_face(False): the face track is not played.
     void initPlayerScope(Track track, bool enabled) { m_stage->setTrackEnabled(track, enabled); }
     /// What start_player / stop_player do: `control(true)` asks the host to play, false to

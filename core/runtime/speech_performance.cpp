@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "anim/keyframe_clip.h"
+#include "anim/modifiers.h"
 #include "scene/face_mask.h"
 #include "scene/fap.h"
 
@@ -82,12 +83,31 @@ Result<SpeechPerformance> performSpeech(Stage& stage, const std::string& charact
         performance.visemes = int(cues.size());
     }
     for (const speech::GestureCue& cue : gestures) {
-        const Tick start = at + secondsToTicks(cue.start);
-        if (stage.activateAction(character, Track::Face, cue.animation, start)
-            || stage.activateAction(character, Track::Body, cue.animation, start))
+        if (stage.activateAction(character, Track::Face, cue.animation, at + secondsToTicks(cue.start))) {
             ++performance.gestures;
-        else
+            continue;
+        }
+        // A body gesture spans its words with its fades, its clip fitted to them.
+        auto found = stage.actionTemplate(character, Track::Body, cue.animation);
+        if (!found || !*found) {
             performance.unknownGestures.push_back(cue.animation);
+            continue;
+        }
+        ActionTemplate gesture = std::move(**found);
+        const anim::TimeDomain domain = gesture.source->domain();
+        const speech::GestureFit fit = speech::fitGesture(cue, domain.openEnded() ? 0 : domain.duration(),
+                                                          gesture.fadeIn, gesture.fadeOut);
+        if (!domain.openEnded() && domain.duration() > 0) {
+            auto stretched = anim::TimeStretch::create(gesture.source, fit.stretch);
+            if (!stretched)
+                return stretched.error();
+            gesture.source = std::move(stretched).value();
+        }
+        if (auto played = stage.playAction(character, Track::Body, cue.animation, gesture,
+                                           at + secondsToTicks(fit.start), {.fadeIn = 0});
+            !played)
+            return played.error();
+        ++performance.gestures;
     }
     return performance;
 }

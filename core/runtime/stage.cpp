@@ -113,8 +113,21 @@ void Stage::fillLibrary(Performer& performer, scenario::CharacterRuntime& charac
     }
     for (const auto& [name, gesture] : character.gestures) {
         const BlendingAction& played = gesture.played();
-        performer.body.library[name] = ActionTemplate{played.source, played.params, played.renderOutsideDomain};
+        performer.body.library[name] =
+            ActionTemplate{played.source, played.params, played.renderOutsideDomain, gesture.fadeIn, gesture.fadeOut};
     }
+}
+
+Result<std::optional<ActionTemplate>> Stage::actionTemplate(const std::string& character, Track track,
+                                                            const std::string& action) const
+{
+    const std::lock_guard lock(m_mutex);
+    auto performer = find(character);
+    if (!performer)
+        return performer.error();
+    const TrackState& s = state(**performer, track);
+    const auto found = s.library.find(action);
+    return found == s.library.end() ? std::nullopt : std::optional<ActionTemplate>(found->second);
 }
 
 scenario::ScenarioRuntime Stage::runtimeCopy() const
@@ -150,6 +163,9 @@ Result<void> Stage::initPerformer(Performer& performer, const anim::Skeleton& sk
                                   std::shared_ptr<const BlendingSchedule> face)
 {
     const auto faceLayout = anim::FrameLayout::mpeg4Face();
+    performer.skeleton = skeleton;
+    if (auto rig = motion::GazeRig::create(skeleton))
+        performer.gazeRig = std::move(rig).value();
     const std::pair<TrackState*, std::shared_ptr<const BlendingSchedule>> tracks[] = {{&performer.body, body},
                                                                                         {&performer.face, face}};
     for (auto [track, authored] : tracks) {
@@ -452,7 +468,8 @@ Result<double> Stage::timeUntilFinished(const std::string& character, Track trac
 void Stage::resetLive()
 {
     const std::lock_guard lock(m_mutex);
-    for (Performer& performer : m_performers)
+    for (Performer& performer : m_performers) {
+        performer.gaze.reset();
         for (TrackState* s : {&performer.body, &performer.face}) {
             for (auto& [name, activation] : s->latest)
                 if (activation.schedule)
@@ -465,6 +482,7 @@ void Stage::resetLive()
             s->superseded.clear();
             s->synthSlots.clear();
         }
+    }
     for (const Activation& cut : m_authoredCuts)
         cut.schedule->restoreAction(cut.id);
     m_authoredCuts.clear();
@@ -552,6 +570,7 @@ void Stage::evaluate(Tick t, PoseSet& out)
         play(m_bodyEnabled, performer.body, out.characters[i].body);
         play(m_faceEnabled, performer.face, out.characters[i].face);
     }
+    applyGazes(seconds, out);
 }
 
 anim::Placement Stage::placement(std::size_t performer) const

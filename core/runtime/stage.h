@@ -26,6 +26,7 @@
 
 #include "anim/blending_schedule.h"
 #include "anim/frame_cache.h"
+#include "motion/gaze.h"
 #include "runtime/pose_set.h"
 #include "scenario/scenario_runtime.h"
 #include "util/error.h"
@@ -40,6 +41,8 @@ struct ActionTemplate {
     anim::BlendablePtr source;
     anim::BlendingParams params;
     bool renderOutsideDomain = false;
+    /// A gesture's fades (seconds), by which speech fits it to its words (speech::fitGesture).
+    double fadeIn = 0, fadeOut = 0;
 };
 
 struct ActivateOptions {
@@ -48,6 +51,15 @@ struct ActivateOptions {
     /// Seconds over which the action fades in over what plays, when its own weight curve does
     /// not start at 0 already (0: at once).
     double fadeIn = 0.25;
+};
+
+/// Where a character looks (Stage::gaze).
+struct GazeTarget {
+    enum class Kind { Point, Joint, Camera };
+    Kind kind = Kind::Camera;
+    anim::Vec3d point;        ///< Point: in the scene, metres
+    std::string character;    ///< Joint: whose
+    std::string joint;        ///< Joint: which; empty for the point between its eyes
 };
 
 class Stage {
@@ -80,6 +92,9 @@ public:
     /// Names (or renames) an action the character can play on a track.
     Result<void> defineAction(const std::string& character, Track track, const std::string& action,
                               ActionTemplate source);
+    /// What the named action of the character's library plays; nullopt when it has none of that name.
+    Result<std::optional<ActionTemplate>> actionTemplate(const std::string& character, Track track,
+                                                         const std::string& action) const;
     /// Sorted names of the actions the character can play on a track.
     Result<std::vector<std::string>> actionNames(const std::string& character, Track track) const;
     /// Puts an open-ended synthesizer in a named slot under the character's authored motion
@@ -113,7 +128,23 @@ public:
     /// Seconds from `at` until the action ends (0 when it has; ∞ when it never does).
     Result<double> timeUntilFinished(const std::string& character, Track track, const std::string& action,
                                      Tick at) const;
-    /// Removes every live action and empties every synthesizer slot (a script starts over).
+    /// Turns the character's eyes, head and body toward `target` from `at` (the gaze layer, over
+    /// everything else it plays: motion/gaze.h) with `settings`. A gaze already on takes the new
+    /// target and settings and moves on from where it is. Errors: no such character, one without
+    /// a head joint, a target character or joint that does not exist.
+    Result<void> gaze(const std::string& character, const GazeTarget& target, const motion::GazeSettings& settings,
+                      Tick at);
+    /// Lets go of the gaze from `at`: the parts turn back to the pose, then the gaze is off.
+    /// False when no gaze is on.
+    Result<bool> stopGaze(const std::string& character, Tick at);
+    /// What the character's gaze does now; nullopt when none is on.
+    Result<std::optional<motion::GazeState>> gazeState(const std::string& character) const;
+    /// Where the camera is in the scene (the viewport's, a render's, AR's tracked camera), which
+    /// "camera" targets look at; none: such a gaze waits for one.
+    void setCameraPosition(std::optional<anim::Vec3d> position);
+    std::optional<anim::Vec3d> cameraPosition() const;
+
+    /// Removes every live action and gaze and empties every synthesizer slot (a script starts over).
     void resetLive();
 
     /// A pose set sized for this stage (evaluate() then allocates nothing).
@@ -157,9 +188,19 @@ private:
         int liveCount = 0, layeredCount = 0;     // live actions in `live` and `layered`
         std::vector<float> scratch, coverage;    // a frame and its coverage, for 2 and 3
     };
+    struct GazeSlot {
+        motion::GazeController controller;
+        GazeTarget target;
+        int targetCharacter = -1, targetJoint = -1; // of a Joint target (−1 joint: its eyes)
+        double start = 0;
+        std::optional<double> release;
+    };
     struct Performer {
         std::string name;
         TrackState body, face;
+        anim::Skeleton skeleton;
+        std::optional<motion::GazeRig> gazeRig; // none without a head joint
+        std::optional<GazeSlot> gaze;
     };
 
     static void fillLibrary(Performer& performer, scenario::CharacterRuntime& character);
@@ -181,6 +222,11 @@ private:
     static void drop(TrackState& track, Activation& activation);
     static void dropFinished(TrackState& track, double seconds);
     void evaluateTrack(TrackState& track, double seconds, std::vector<float>& out) const;
+    /// The gaze layer over the poses of every character (runtime/stage_gaze.cpp).
+    void applyGazes(double seconds, PoseSet& out);
+    /// Where a gaze target is in the scene now, from the poses in `out`; none for the camera
+    /// when none is known.
+    std::optional<anim::Vec3d> targetPosition(const GazeSlot& gaze, const PoseSet& out) const;
     /// Where the performer stands: its runtime character's placement (none for one added by hand).
     anim::Placement placement(std::size_t performer) const;
 
@@ -190,6 +236,7 @@ private:
     std::vector<Performer> m_performers;
     std::vector<Activation> m_authoredCuts; // authored actions cut off live (resetLive restores them)
     bool m_bodyEnabled = true, m_faceEnabled = true;
+    std::optional<anim::Vec3d> m_camera;
     std::uint64_t m_ticks = 0;
     int m_cacheFrames = 0;
 };

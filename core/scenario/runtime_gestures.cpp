@@ -12,6 +12,8 @@ void buildGestures(const Scenario& scenario, const Character& character, const B
             continue; // reported by the builder's checks
         GestureActions actions;
         actions.filter = gesture.dependentJointFilter;
+        actions.fadeIn = ticksToSeconds(gesture.fadeIn);
+        actions.fadeOut = ticksToSeconds(gesture.fadeOut);
         const std::string where = "Character \"" + character.name + "\", gesture \"" + gesture.name + "\"";
         for (const bool filter : {false, true}) {
             if (filter && !basesReadable)

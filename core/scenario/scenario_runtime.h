@@ -28,6 +28,7 @@ namespace thespis::core::scenario {
 struct GestureActions {
     anim::BlendingAction withFilter, withoutFilter;
     bool filter = false; ///< the gesture's own choice
+    double fadeIn = 0, fadeOut = 0; ///< seconds
     const anim::BlendingAction& played() const { return filter ? withFilter : withoutFilter; }
 };
 

@@ -68,4 +68,13 @@ std::vector<GestureCue> gestureCues(const TaggedText& text, const SpeechTiming& 
     return cues;
 }
 
+GestureFit fitGesture(const GestureCue& cue, double clipSeconds, double fadeIn, double fadeOut)
+{
+    GestureFit fit;
+    fit.start = std::max(0.0, cue.start - std::max(fadeIn, 0.0));
+    fit.duration = std::max(cue.end + std::max(fadeOut, 0.0) - fit.start, 1e-3);
+    fit.stretch = clipSeconds > 0 ? fit.duration / clipSeconds : 1;
+    return fit;
+}
+
 } // namespace thespis::core::speech

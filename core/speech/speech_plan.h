@@ -43,4 +43,16 @@ std::vector<VisemeCue> visemeCues(const SpeechTiming& timing, const VisemeSet& s
 /// side, or around punctuation) lasts from the end of the word before it to the start of the next.
 std::vector<GestureCue> gestureCues(const TaggedText& text, const SpeechTiming& timing);
 
+/// How a gesture plays over its words (paper §5.2: "the TTS timing information is used to plan
+/// the length of the gesture motions. A blending fade-in and fade-out is applied"): it fades in
+/// before its first word and out after its last, so that it is wholly there while the words are
+/// said, and its clip is stretched or shrunk to fill that. Never before the utterance starts: a
+/// gesture on the first words then fades in over them.
+struct GestureFit {
+    double start = 0;     ///< seconds from the utterance's start
+    double duration = 0;  ///< seconds, fades included
+    double stretch = 1;   ///< the clip's time scale (2: twice as long)
+};
+GestureFit fitGesture(const GestureCue& cue, double clipSeconds, double fadeIn, double fadeOut);
+
 } // namespace thespis::core::speech

@@ -138,5 +138,6 @@ void bindEdit(py::module_& m);     // thespis.edit: the studio's undoable scenar
 void bindRuntime(py::module_& m);  // thespis.runtime: clocks, the Stage, the animation service
 void bindMotion(py::module_& m);   // thespis.motion: postures, the posture PCA, idle motion, the filter
 void bindSpeech(py::module_& m);   // thespis.speech: tagged text, espeak-ng speech, visemes, Insert
+void bindBml(py::module_& m);      // thespis.bml: BML blocks read and realised on the Stage
 
 } // namespace thespis::python

@@ -12,6 +12,7 @@
 
 #include "runtime/animation_service.h"
 #include "runtime/clock.h"
+#include "runtime/gaze_target.h"
 #include "runtime/sound.h"
 #include "runtime/voice_service.h"
 #include "runtime/stage.h"
@@ -51,6 +52,31 @@ std::shared_ptr<AnimationService> makeService(std::shared_ptr<Stage> stage, std:
     if (!clock)
         clock = std::make_shared<ManualClock>();
     return std::make_shared<AnimationService>(std::move(stage), std::move(clock));
+}
+
+// A gaze target from Python: "camera", "Antigone", "Antigone:l_radiocarpal", or three numbers.
+GazeTarget gazeTarget(const py::object& target)
+{
+    if (py::isinstance<py::str>(target))
+        return unwrap(parseGazeTarget(target.cast<std::string>()));
+    const auto xyz = target.cast<std::vector<double>>();
+    if (xyz.size() != 3)
+        throw py::value_error("A gaze target point has three coordinates (x, y, z), not " + std::to_string(xyz.size()) + ".");
+    return {GazeTarget::Kind::Point, {xyz[0], xyz[1], xyz[2]}, {}, {}};
+}
+
+py::object gazeStateObject(const std::optional<core::motion::GazeState>& state)
+{
+    if (!state)
+        return py::none();
+    py::dict d;
+    const char* parts[] = {"back", "chest", "neck"};
+    for (std::size_t p = 0; p < 3; ++p)
+        d[parts[p]] = py::make_tuple(state->heading[p], state->pitch[p]);
+    d["eyes"] = py::make_tuple(state->eyeHeading, state->eyePitch);
+    d["shifting"] = state->shifting;
+    d["released"] = state->released;
+    return d;
 }
 
 ActivateOptions activateOptions(std::optional<core::anim::Curve> weight, double fadeIn)
@@ -287,6 +313,46 @@ void bindRuntime(py::module_& m)
              "Stops every wait of this service, now and later (raises thespis.Cancelled in them).");
     bindTrack(service, Track::Body, "body");
     bindTrack(service, Track::Face, "face");
+    service
+        .def(
+            "gaze_body",
+            [](AnimationService& s, const std::string& character, const py::object& target, const std::string& influence,
+               double offsetAngle, const std::string& offsetDirection, bool saccades, bool talking, std::uint64_t seed) {
+                core::motion::GazeSettings settings;
+                settings.influence = unwrap(parseGazeInfluence(influence));
+                unwrap(setGazeOffset(settings, offsetAngle, offsetDirection));
+                settings.saccades = saccades;
+                settings.talking = talking;
+                settings.seed = seed;
+                unwrap(s.gaze(character, gazeTarget(target), settings));
+            },
+            "character"_a, "target"_a, "influence"_a = "SHOULDER", "offset_angle"_a = 0.0, "offset_direction"_a = "",
+            "saccades"_a = true, "talking"_a = false, "seed"_a = 1,
+            "Turns the character's eyes, head and body toward `target` from now, over everything else it plays: "
+            "\"camera\", a character (\"Antigone\": between her eyes; \"Antigone:l_radiocarpal\": her left wrist) "
+            "or a point (x, y, z). influence is BML's: EYES, HEAD, SHOULDER or WAIST. Fixating, the eyes make Eyes "
+            "Alive's saccades (talking: more often away).")
+        .def("stopGaze", [](AnimationService& s, const std::string& character) { return unwrap(s.stopGaze(character)); },
+             "character"_a, "Lets go of the gaze: the body turns back to its pose. False when no gaze was on.")
+        .def("stop_gaze", [](AnimationService& s, const std::string& character) { return unwrap(s.stopGaze(character)); },
+             "character"_a, "Alias of stopGaze.")
+        .def(
+            "gaze_state",
+            [](AnimationService& s, const std::string& character) {
+                return gazeStateObject(unwrap(s.stage().gazeState(character)));
+            },
+            "character"_a,
+            "What the gaze does (degrees): (heading, pitch) of back, chest, neck and eyes, heading + left, pitch + "
+            "down; None when no gaze is on.")
+        .def(
+            "set_camera_position",
+            [](AnimationService& s, std::optional<std::vector<double>> xyz) {
+                if (xyz && xyz->size() != 3)
+                    throw py::value_error("The camera position has three coordinates.");
+                s.stage().setCameraPosition(xyz ? std::optional<core::anim::Vec3d>({(*xyz)[0], (*xyz)[1], (*xyz)[2]})
+                                                : std::nullopt);
+            },
+            "position"_a, "Where the camera is in the scene (metres), which gaze targets \"camera\" look at.");
 
     py::class_<SoundService, std::shared_ptr<SoundService>>(
         r, "SoundService",

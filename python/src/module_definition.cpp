@@ -25,6 +25,7 @@ void defineModule(py::module_& m)
     bindRuntime(m);
     bindMotion(m);
     bindSpeech(m);
+    bindBml(m);
     bindAr(m);
 }
 

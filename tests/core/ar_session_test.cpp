@@ -11,6 +11,9 @@
 #include "ar/frame_source.h"
 #include "ar/synthetic_source.h"
 #include "anim/quat.h"
+#include "motion/gaze.h"
+#include "render/ar_view.h"
+#include "scene/fap.h"
 #include "render/ar_session.h"
 #include "runtime/stage.h"
 #include "scenario/scenario_runtime.h"
@@ -229,4 +232,83 @@ TEST(ArSession, CharactersWithoutTheirStageAreRefused)
     auto session = ArSession::start(SyntheticSource::create(scene).value(), standingOnTheBoard(), scenario::Assets(), settings);
     ASSERT_FALSE(session);
     EXPECT_NE(session.error().message.find("stage"), std::string::npos) << session.error().message;
+}
+
+// Gaze in AR (issue 33): a character told to look at the camera looks at the real, tracked one —
+// the synthetic footage's camera moves round and over the board, and whenever the gaze has
+// settled his eyes point at where its known pose puts it, within 3°.
+TEST(ArSession, TheCharacterLooksAtTheTrackedCamera)
+{
+    const SyntheticScene scene = boardScene(120);
+    ArSessionSettings settings = settingsFor(scene);
+    const auto mailbox = playedBy(settings, standingOnTheBoard());
+    motion::GazeSettings look;
+    look.saccades = false;
+    // The footage's camera looks down on the board from nearly overhead (up to 84° above the
+    // character's eyes): beyond eyes and neck (80°), so the back bends too.
+    look.influence = motion::GazeInfluence::Waist;
+    ASSERT_TRUE(settings.stage->gaze("Hero", {runtime::GazeTarget::Kind::Camera, {}, {}, {}}, look, 0));
+    const auto truth = SyntheticSource::create(scene);
+    ASSERT_TRUE(truth);
+    auto session = ArSession::start(SyntheticSource::create(scene).value(), standingOnTheBoard(), scenario::Assets(),
+                                    settings);
+    ASSERT_TRUE(session) << session.error().message;
+    const anim::Skeleton& skeleton = settings.stage->runtime().characters[0].skeleton;
+    const auto rig = motion::GazeRig::create(skeleton);
+    ASSERT_TRUE(rig);
+    auto tracker = makeTracker(settings.target, scene.camera);
+    ASSERT_TRUE(tracker);
+    const TargetGeometry target = (*tracker)->geometry();
+    const scenario::ArSpec placement = standingOnTheBoard().ar;
+
+    ArSnapshot snapshot;
+    runtime::PoseSet poses = settings.stage->makePoseSet();
+    std::vector<anim::Vec3d> positions(std::size_t(skeleton.jointCount()));
+    std::vector<anim::Quatd> orientations(positions.size());
+    double worst = 0, worstCamera = 0;
+    int checked = 0;
+    std::int64_t last = -1;
+    while (true) {
+        const bool running = (*session)->state() == ArSessionState::Running;
+        if ((*session)->takeSnapshot(snapshot)) {
+            const std::int64_t frame = snapshot.tracking.frame;
+            if (frame <= last)
+                continue;
+            // The owner plays the stage at the video's time, every frame as a player does, and
+            // publishes the poses.
+            for (std::int64_t f = last + 1; f <= frame; ++f)
+                settings.stage->evaluate(secondsToTicks(double(f) / scene.fps), poses);
+            last = frame;
+            mailbox->publish(poses);
+            const std::optional<anim::Vec3d> camera = settings.stage->cameraPosition();
+            if (!camera || frame < 40)
+                continue;
+            const anim::Vec3d real = arCameraView(scene.camera, (*truth)->truth(frame), target, placement).eye;
+            worstCamera = std::max(worstCamera, std::sqrt(anim::dot(*camera - real, *camera - real)));
+            skeleton.worldTransforms(poses.characters[0].body, positions, orientations);
+            const auto head = std::size_t(skeleton.find("skullbase"));
+            const anim::Vec3d eyes = positions[head] + anim::rotate(orientations[head], rig->eyes);
+            const auto& face = poses.characters[0].face;
+            const double yaw = face[std::size_t(thespis::core::scene::fapChannel(23))] * 1e-5,
+                         pitch = face[std::size_t(thespis::core::scene::fapChannel(25))] * 1e-5;
+            const anim::Quatd eye = anim::Quatd{0, std::sin(yaw / 2), 0, std::cos(yaw / 2)} *
+                                    anim::Quatd{std::sin(pitch / 2), 0, 0, std::cos(pitch / 2)};
+            const anim::Vec3d gaze = anim::rotate(orientations[head] * eye, anim::Vec3d{0, 0, 1});
+            const anim::Vec3d toCamera = *camera - eyes;
+            const double cosine = anim::dot(gaze, toCamera) / std::sqrt(anim::dot(toCamera, toCamera));
+            // Settled: passing overhead the camera makes the head swing round, the eyes' range
+            // shrunk while it does (as people's is), and the gaze catch up after.
+            if ((**settings.stage->gazeState("Hero")).shifting)
+                continue;
+            worst = std::max(worst, std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / 3.14159265358979);
+            ++checked;
+            continue;
+        }
+        if (!running)
+            break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    EXPECT_GE(checked, 10);
+    EXPECT_LT(worst, 3.0) << "degrees between his eyes' direction and the camera";
+    EXPECT_LT(worstCamera, 0.5) << "the tracked camera, in world metres (the board's scale makes 1 m 6 cm)";
 }

@@ -158,4 +158,77 @@ TEST(VoiceService, ANameThatIsNoLineIsASoundFileNamedInTheError)
     EXPECT_NE(nobody.error().message.find("Ismene"), std::string::npos);
 }
 
+// The paper §5.2: "the TTS timing information is used to plan the length of the gesture motions.
+// A blending fade-in and fade-out is applied". On the demo, Creon's tagged body gestures (nested:
+// a nod inside a greeting) fade in before their words and out after them, within a frame, played
+// live and inserted alike; and the greeting moves his arm while its words are said.
+TEST(SpeechGestures, ATaggedBodyGestureSpansItsWordsWithItsFades)
+{
+    speech::SpeakJob job;
+    job.text = "Welcome home. <begin_gesture id=\"g1\" anim=\"greet\"/>My <begin_gesture id=\"g2\" anim=\"agree\"/>dear"
+               "<end_gesture id=\"g2\"/> friend and guest<end_gesture id=\"g1\"/>, to Thebes.";
+    job.voice = {.voice = "en-gb", .wordsPerMinute = 140};
+    core::JobContext context;
+    ASSERT_TRUE(job.run(context).ok());
+    ASSERT_EQ(job.gestureCues.size(), 2u);
+    const Scenario scenario = demo();
+    const auto& creon = scenario.characters[0];
+    const double frame = 1.0 / 60, at = 2.0;
+
+    // When each gesture must play: its words, widened by its gesticon entry's fades.
+    struct Expected {
+        std::string name;
+        double start, end;
+    };
+    std::vector<Expected> expected;
+    for (const speech::GestureCue& cue : job.gestureCues) {
+        const auto* gesture = creon.findGesture(cue.animation);
+        ASSERT_TRUE(gesture) << cue.animation;
+        expected.push_back({cue.animation, at + cue.start - core::ticksToSeconds(gesture->fadeIn),
+                            at + cue.end + core::ticksToSeconds(gesture->fadeOut)});
+        EXPECT_GT(cue.start, core::ticksToSeconds(gesture->fadeIn)) << "the test wants a gesture after the first words";
+    }
+    EXPECT_LT(expected[0].start, expected[1].start);
+    EXPECT_GT(expected[0].end, expected[1].end);
+
+    // Live.
+    auto live = stageOf(scenario);
+    ASSERT_TRUE(performSpeech(*live, creon.name, "welcome", job.visemeCues, job.gestureCues, secondsToTicks(at)));
+    for (const Expected& e : expected) {
+        SCOPED_TRACE("live " + e.name);
+        EXPECT_NEAR(*live->actionEnd(creon.name, core::runtime::Track::Body, e.name), e.end, frame);
+        EXPECT_FALSE(*live->isPlaying(creon.name, core::runtime::Track::Body, e.name, secondsToTicks(e.start - frame)));
+        EXPECT_TRUE(*live->isPlaying(creon.name, core::runtime::Track::Body, e.name, secondsToTicks(e.start + frame)));
+    }
+    // Its arm moves while the words are said: the greeting is no still pose.
+    auto still = stageOf(scenario);
+    core::runtime::PoseSet waving = live->makePoseSet(), standing = still->makePoseSet();
+    const double middle = (job.gestureCues[0].start + job.gestureCues[0].end) / 2 + at;
+    live->evaluate(secondsToTicks(middle), waving);
+    still->evaluate(secondsToTicks(middle), standing);
+    float moved = 0;
+    for (std::size_t i = 0; i < waving.characters[0].body.size(); ++i)
+        moved = std::max(moved, std::abs(waving.characters[0].body[i] - standing.characters[0].body[i]));
+    EXPECT_GT(moved, 0.1f);
+
+    // Inserted at the same time: the timeline's actions play over the same spans.
+    Scenario inserted = scenario;
+    auto insertion = core::edit::insertSpeech(
+        inserted, 0, core::edit::speechLine(job.text, job.voice, job.utterance.timing, "", secondsToTicks(at)),
+        job.visemeCues, job.gestureCues);
+    ASSERT_TRUE(insertion) << insertion.error().message;
+    EXPECT_EQ(insertion->bodyGestures, 2);
+    ASSERT_TRUE(insertion->edit.apply(inserted).ok());
+    auto authored = stageOf(inserted);
+    for (std::size_t g = 0; g < expected.size(); ++g) {
+        const std::string name = job.gestureCues[g].id + " " + job.gestureCues[g].animation;
+        SCOPED_TRACE("inserted " + name);
+        EXPECT_NEAR(*authored->actionEnd(creon.name, core::runtime::Track::Body, name), expected[g].end, frame);
+        EXPECT_FALSE(*authored->isPlaying(creon.name, core::runtime::Track::Body, name,
+                                          secondsToTicks(expected[g].start - frame)));
+        EXPECT_TRUE(*authored->isPlaying(creon.name, core::runtime::Track::Body, name,
+                                         secondsToTicks(expected[g].start + frame)));
+    }
+}
+
 } // namespace thespis::test

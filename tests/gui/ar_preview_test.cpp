@@ -299,6 +299,20 @@ void ArPreviewTest::testPatternStartsAndStopsAndPlacementIsUndoable()
     QCOMPARE(p->scaleSpin()->value(), 0.08);
     QVERIFY(p->isRunning());
 
+    // "Characters look at the camera": every character gazes at the camera the video is tracked
+    // from, which the session hands the stage; unchecked, they let go.
+    core::runtime::Stage& stage = *m_window->session()->stage();
+    QTest::mouseClick(p->lookAtCameraCheck(), Qt::LeftButton);
+    QVERIFY(p->lookAtCameraCheck()->isChecked());
+    QVERIFY(!stage.characterNames().empty());
+    for (const std::string& name : stage.characterNames())
+        QVERIFY2(*stage.gazeState(name), name.c_str());
+    QTRY_VERIFY_WITH_TIMEOUT(stage.cameraPosition().has_value(), kTimeout);
+    saveScreenshot(m_window.get(), QStringLiteral("ar_look_at_camera.png"));
+    QTest::mouseClick(p->lookAtCameraCheck(), Qt::LeftButton);
+    for (const std::string& name : stage.characterNames())
+        QVERIFY2(!*stage.gazeState(name) || (*stage.gazeState(name))->released, name.c_str());
+
     QTest::mouseClick(p->stopButton(), Qt::LeftButton);
     QVERIFY(!p->isRunning());
     QCOMPARE(p->view()->messageTitle(), QStringLiteral("Stopped"));

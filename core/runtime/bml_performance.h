@@ -1,0 +1,86 @@
+#pragma once
+// A BML realizer on the Stage (issue 33): a <bml> block's behaviours played for one character —
+// its speeches spoken by espeak-ng with their lips (runtime/speech_performance.h), gestures of
+// the character's gesticon fitted between their start and end points, faceLexemes on the face
+// (speech/face_lexemes.h), head nods, shakes and tilts (motion/head_gesture.h) and gaze
+// (Stage::gaze) — at the times speech::resolveBml() finds from the speeches' TTS timing. Blocks
+// compose as BML says: merge plays alongside what plays, append after the character's last block
+// ends, replace stops that first. The studio, scripts, the command line and the dialogue all
+// realise BML through here.
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "motion/gaze.h"
+#include "runtime/sound.h"
+#include "runtime/stage.h"
+#include "speech/bml.h"
+#include "speech/espeak_voice.h"
+#include "util/error.h"
+#include "util/tick.h"
+
+namespace thespis::core::runtime {
+
+/// BML gesture lexemes (BEAT, POINT, WAVE …) → entries of a character's gesticon. A lexeme that
+/// names an entry (in any case) needs no row.
+struct BmlLexicon {
+    std::map<std::string, std::string> gestures;
+    /// Rows for the shipped gesticons: BEAT, NOD and AGREE → "agree"; WAVE and GREET → "greet";
+    /// POINT → "point".
+    static BmlLexicon defaults();
+    /// The entry of `gesticon` (its gestures' names) that plays `lexeme`; empty when none does.
+    std::string entryFor(const std::string& lexeme, const std::vector<std::string>& gesticon) const;
+};
+
+struct BmlOptions {
+    speech::VoiceSettings voice;
+    BmlLexicon lexicon = BmlLexicon::defaults();
+    motion::GazeSettings gaze; ///< what a <gaze> does beyond its target, influence and offset
+    /// Speeches already spoken, by behaviour id (the others are synthesised with `voice`).
+    std::shared_ptr<const std::map<std::string, speech::Utterance>> spoken;
+};
+
+/// When something of a block happens: its start and end ("bml1:start", "bml1:end") and each
+/// behaviour's sync points ("g1:stroke", "s1:t1"), in seconds on the stage's time.
+struct BmlEvent {
+    double time = 0;
+    std::string name;
+};
+
+struct BmlPerformance {
+    std::string block;
+    double start = 0, end = 0;                 ///< seconds on the stage's time
+    std::vector<speech::BmlTimes> times;       ///< each behaviour's points, on the stage's time
+    std::vector<BmlEvent> events;              ///< sorted by time
+    std::vector<std::string> warnings;         ///< what could not play, one sentence each
+};
+
+class BmlRealizer {
+public:
+    /// `sound` (may be null) plays the speeches' audio, named speechSoundName(character, "BLOCK:ID").
+    BmlRealizer(std::shared_ptr<Stage> stage, std::shared_ptr<SoundService> sound);
+
+    /// Plays `block` for `character` from `at` (append: from the end of its last block, when later).
+    /// Errors: no such character; a speech espeak-ng cannot say; a constraint resolveBml() refuses;
+    /// a gesture lexeme, faceLexeme or head lexeme the character cannot play, or a gaze target
+    /// that does not exist — each named with the behaviour's line and column.
+    Result<BmlPerformance> perform(const std::string& character, const speech::BmlBlock& block,
+                                   const BmlOptions& options, Tick at);
+
+private:
+    struct Played {
+        double end = 0;
+        std::vector<std::pair<Track, std::string>> actions; // to stop on replace
+        std::vector<std::string> sounds;
+        bool gaze = false;
+    };
+    std::shared_ptr<Stage> m_stage;
+    std::shared_ptr<SoundService> m_sound;
+    std::mutex m_mutex;
+    std::map<std::string, Played> m_played; // by character
+};
+
+} // namespace thespis::core::runtime

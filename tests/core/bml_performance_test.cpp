@@ -1,0 +1,140 @@
+// The BML realizer (runtime/bml_performance.h) on the demo: Creon says a BML block in which a
+// beat gesture's stroke falls on a word, a nod follows the stroke, his brows rise over the speech
+// and he looks at Antigone — each at the time its sync references give from espeak-ng's timing,
+// as seen in the poses the Stage gives; blocks composed; errors named with line and column.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "runtime/bml_performance.h"
+#include "runtime/clock.h"
+#include "runtime/sound.h"
+#include "runtime/stage.h"
+#include "scenario/scenario_io.h"
+#include "scene/fap.h"
+#include "test_support.h"
+
+namespace thespis::test {
+namespace {
+
+namespace speech = core::speech;
+namespace runtime = core::runtime;
+using core::secondsToTicks;
+
+struct Demo {
+    std::shared_ptr<runtime::Stage> stage;
+    std::shared_ptr<runtime::SoundService> sound;
+    std::string creon;
+};
+
+Demo demo()
+{
+    auto scenario = core::scenario::loadScenario(resources("demo.thespis"));
+    EXPECT_TRUE(scenario) << core::describe(scenario.error());
+    auto built = core::scenario::buildRuntime(*scenario, resources());
+    EXPECT_TRUE(built) << core::describe(built.error());
+    Demo d;
+    d.stage = std::make_shared<runtime::Stage>(std::move(built).value());
+    d.sound = std::make_shared<runtime::SoundService>(resources(), std::make_shared<runtime::ManualClock>());
+    d.creon = scenario->characters[0].name;
+    return d;
+}
+
+double eventTime(const runtime::BmlPerformance& p, const std::string& name)
+{
+    for (const runtime::BmlEvent& e : p.events)
+        if (e.name == name)
+            return e.time;
+    ADD_FAILURE() << "no event " << name;
+    return -1;
+}
+
+runtime::CharacterPose poseAt(runtime::Stage& stage, double seconds)
+{
+    runtime::PoseSet poses = stage.makePoseSet();
+    stage.evaluate(secondsToTicks(seconds), poses);
+    return poses.characters[0];
+}
+
+constexpr const char* kBlock = R"(<bml xmlns="http://www.bml-initiative.org/bml/bml-1.0" id="bml1" characterId="Creon">
+  <speech id="s1"><text>Hear me, <sync id="t1"/>Antigone, daughter of Oedipus.</text></speech>
+  <gesture id="g1" lexeme="BEAT" stroke="s1:t1"/>
+  <head id="h1" lexeme="NOD" start="g1:stroke + 0.3" repetition="2"/>
+  <faceLexeme id="f1" lexeme="RAISE_BROWS" start="s1:start" end="s1:end"/>
+  <gaze id="z1" target="Antigone" influence="HEAD" start="s1:start"/>
+</bml>)";
+
+} // namespace
+
+TEST(BmlRealizer, BehavioursPlayAtTheirSyncPointsOnTheSpeechsWords)
+{
+    Demo d = demo();
+    auto block = speech::parseBml(kBlock);
+    ASSERT_TRUE(block) << block.error().message;
+    runtime::BmlRealizer realizer(d.stage, d.sound);
+    runtime::BmlOptions options;
+    options.voice = {.voice = "en-gb", .wordsPerMinute = 140};
+    options.gaze.saccades = false;
+    const double at = 1.0;
+    auto performed = realizer.perform(d.creon, *block, options, secondsToTicks(at));
+    ASSERT_TRUE(performed) << performed.error().message;
+
+    // "Antigone" is the third word: the beat's stroke is on it, and the speech's audio starts at 1 s.
+    auto said = speech::speak("Hear me, Antigone, daughter of Oedipus.", options.voice);
+    ASSERT_TRUE(said);
+    const double word = at + said->timing.words.at(2).start;
+    // (espeak-ng's timing of the same words may move by a few samples from one call to the next.)
+    EXPECT_NEAR(eventTime(*performed, "s1:t1"), word, 0.002);
+    EXPECT_NEAR(eventTime(*performed, "g1:stroke"), eventTime(*performed, "s1:t1"), 1e-9);
+    EXPECT_NEAR(eventTime(*performed, "h1:start"), eventTime(*performed, "g1:stroke") + 0.3, 1e-9);
+    EXPECT_NEAR(eventTime(*performed, "bml1:end"), at + said->duration(), 0.01);
+    ASSERT_EQ(d.sound->activations().size(), 1u);
+    EXPECT_EQ(d.sound->activations()[0].start, secondsToTicks(at));
+
+    // What a viewer sees. The beat plays around its stroke; the nod after it; brows up while he speaks.
+    EXPECT_TRUE(*d.stage->isPlaying(d.creon, runtime::Track::Body, "bml1:g1", secondsToTicks(word)));
+    EXPECT_TRUE(*d.stage->isPlaying(d.creon, runtime::Track::Body, "bml1:h1", secondsToTicks(word + 0.4)));
+    EXPECT_FALSE(*d.stage->isPlaying(d.creon, runtime::Track::Body, "bml1:h1", secondsToTicks(word + 0.25)));
+    const auto brows = [&](double t) { return poseAt(*d.stage, t).face[std::size_t(core::scene::fapChannel(33))]; };
+    EXPECT_TRUE(*d.stage->isPlaying(d.creon, runtime::Track::Face, "bml1:f1", secondsToTicks(at + said->duration() / 2)));
+    EXPECT_GT(brows(at + said->duration() / 2), 250.0f);
+    EXPECT_NEAR(brows(at + said->duration() + 0.1), 0.0f, 1.0f);
+    auto gaze = d.stage->gazeState(d.creon);
+    ASSERT_TRUE(gaze && *gaze) << "looking at Antigone";
+
+    // Appended, the next block waits for this one; replacing stops it.
+    auto next = speech::parseBml(R"(<bml id="bml2" composition="append"><head id="h" lexeme="SHAKE"/></bml>)");
+    ASSERT_TRUE(next);
+    auto appended = realizer.perform(d.creon, *next, options, secondsToTicks(at));
+    ASSERT_TRUE(appended);
+    EXPECT_NEAR(appended->start, performed->end, 1e-9);
+    auto replacing = speech::parseBml(R"(<bml id="bml3" composition="replace"><head id="h" lexeme="TILT"/></bml>)");
+    ASSERT_TRUE(replacing);
+    ASSERT_TRUE(realizer.perform(d.creon, *replacing, options, secondsToTicks(word)));
+    EXPECT_FALSE(*d.stage->isPlaying(d.creon, runtime::Track::Body, "bml1:g1", secondsToTicks(word + 0.5)));
+}
+
+TEST(BmlRealizer, WhatCannotPlayIsNamedWithItsLineAndColumn)
+{
+    Demo d = demo();
+    runtime::BmlRealizer realizer(d.stage, d.sound);
+    const runtime::BmlOptions options;
+    const auto fails = [&](const char* xml) {
+        auto block = speech::parseBml(xml);
+        EXPECT_TRUE(block) << block.error().message;
+        auto performed = realizer.perform(d.creon, *block, options, 0);
+        EXPECT_FALSE(performed);
+        return performed ? std::string() : performed.error().message;
+    };
+    EXPECT_NE(fails("<bml id=\"b\">\n  <gesture id=\"g\" lexeme=\"JUGGLE\"/></bml>").find("line 2, column 3"),
+              std::string::npos);
+    EXPECT_NE(fails("<bml id=\"b\"><faceLexeme id=\"f\" lexeme=\"WIGGLE_EARS\"/></bml>").find("WIGGLE_EARS"),
+              std::string::npos);
+    EXPECT_NE(fails("<bml id=\"b\"><gaze id=\"z\" target=\"Ismene\"/></bml>").find("Ismene"), std::string::npos);
+    const std::string cycle =
+        fails("<bml id=\"b\"><head id=\"a\" lexeme=\"NOD\" start=\"c:end\"/><head id=\"c\" lexeme=\"NOD\" start=\"a:end\"/></bml>");
+    EXPECT_NE(cycle.find("→"), std::string::npos) << cycle;
+}
+
+} // namespace thespis::test
