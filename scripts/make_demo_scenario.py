@@ -261,7 +261,8 @@ def scenario():
         # What the paper's script has him say (voiceService.activateAction): not on the timeline.
         "speech": [
             speech_line("CreonSpeech.Cam01CreonP1",
-                        "Now, tell me thou, not in many words, but briefly: knewest thou that an edict had "
+                        '<begin_gesture id="g1" anim="greet"/>Now<end_gesture id="g1"/>, tell me thou, not in '
+                        "many words, but briefly: knewest thou that an edict had "
                         "forbidden this?", voice="en-gb", rate=140, pitch=35),
         ],
     }

@@ -4,7 +4,8 @@
 # given to every script (in the studio, `thespis-cli run` and from python3: see README.md,
 # Scripting). The speeches are the demo characters' speech lines (Sophocles' Antigone, Jebb's
 # translation), spoken by espeak-ng: unlike the paper's script, which played recorded voices with
-# no face, the face plays here, and the lips move with the words.
+# no face, the face plays here, and the lips move with the words. Creon's wave ("creon_wrk") is
+# the greeting tagged on his first word; and, beyond the paper, the two look at each other.
 
 # global variables
 Antigone = "Antigone"
@@ -17,13 +18,18 @@ animService.initPlayerScope_face(True)
 animService.start_player()
 animService.activateAction_body(Antigone, "antigone_idle")
 
-# creon monologue
-animService.activateAction_body(Creon, "creon_wave")
+# they look at each other: the speaker's eyes leave the listener's more often (Eyes Alive)
+animService.gaze_body(Creon, Antigone, talking=True)
+animService.gaze_body(Antigone, Creon, talking=False)
+
+# creon monologue, greeting on his first word
 voiceService.activateAction(Creon, "CreonSpeech.Cam01CreonP1", 1.0)
 animService.waitUntilActionFinished_face(Creon, "speech CreonSpeech.Cam01CreonP1", -0.3)
 animService.activateAction_body(Creon, "creon_nod")
 
-# Antigone answers to Creon
+# Antigone answers to Creon, who listens
+animService.gaze_body(Creon, Antigone, talking=False)
+animService.gaze_body(Antigone, Creon, talking=True)
 animService.cutOffAction_body(Antigone, "antigone_idle", 3.0)
 animService.activateAction_body(Antigone, "antigone_wave")
 voiceService.activateAction(Antigone, "AntigoneSpeech.Cam01CreonP3", 1.0)
