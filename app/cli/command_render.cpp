@@ -75,7 +75,7 @@ int runRender(const CommandSpec& spec, const ParsedArguments& arguments)
         std::unique_ptr<core::render::ScenarioPicture> picture;
         if (const int status = makePicture(spec, arguments, scenarioPath, *document, quiet, picture); status != ExitOk)
             return status;
-        picture->scene().playAt(core::secondsToTicks(time));
+        picture->playAt(core::secondsToTicks(time));
         if (const int status = writePicture(spec.name, *picture, outPath); status != ExitOk)
             return status;
         if (!quiet)

@@ -102,7 +102,7 @@ int runRun(const CommandSpec& spec, const ParsedArguments& arguments)
                 break;
             if (interrupted())
                 return core::makeError(core::ErrorCode::Cancelled, "stopped");
-            picture->scene().playAt(core::secondsToTicks(seconds));
+            picture->playAt(core::secondsToTicks(seconds));
             renderStatus = writePicture(spec.name, *picture, outDir / core::render::frameFileName(next));
             if (renderStatus != ExitOk)
                 return core::makeError(core::ErrorCode::IoError, "a frame could not be written");

@@ -42,7 +42,7 @@ Result<void> FrameSequenceJob::run(JobContext& context)
             discardOutput();
             return cancelledError(title());
         }
-        scene.scene().playAt(secondsToTicks(double(frame) / fps));
+        scene.playAt(secondsToTicks(double(frame) / fps));
         const std::filesystem::path file = folder / frameFileName(frame);
         if (auto written = scene.writePng(file); !written) {
             discardOutput();

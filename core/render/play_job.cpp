@@ -60,7 +60,7 @@ private:
     {
         if (m_context.stopRequested())
             return makeError(ErrorCode::Cancelled, "stopped");
-        m_shot.scene().playAt(secondsToTicks(time));
+        m_shot.playAt(secondsToTicks(time));
         auto drawn = m_shot.draw();
         if (!drawn)
             return drawn.error();
@@ -137,6 +137,8 @@ private:
         m_tracked += seen.tracked ? 1 : 0;
         const Tick duration = m_ar.scene().duration();
         const Tick videoTime = secondsToTicks(m_frame.time);
+        if (seen.hasPose) // a character told to look at the camera looks at the one that filmed
+            m_ar.scene().stage().setCameraPosition(m_ar.cameraPosition(seen.pose));
         m_ar.scene().playAt(m_loop && duration > 0 ? videoTime % duration : videoTime);
         if (seen.hasPose)
             if (auto drawn = m_ar.compose(m_frame, seen.pose); !drawn)

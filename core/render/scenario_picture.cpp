@@ -34,6 +34,12 @@ Result<std::unique_ptr<ScenarioPicture>> ScenarioPicture::create(const scenario:
     return self;
 }
 
+void ScenarioPicture::playAt(Tick t)
+{
+    m_scene->stage().setCameraPosition(m_view.eye);
+    m_scene->playAt(t);
+}
+
 Result<const RgbaImage*> ScenarioPicture::draw()
 {
     if (!m_settings.closeUp.empty()) {

@@ -43,6 +43,9 @@ public:
     const PictureSettings& settings() const { return m_settings; }
     const std::string& glDescription() const { return m_renderer->glDescription(); }
 
+    /// Poses the scene at `t`, with this picture's camera as the one "camera" gaze targets look at
+    /// (the last frame's, for a close-up that follows the head).
+    void playAt(Tick t);
     /// Draws the scene as it is posed now (a close-up framed on the head as it is now).
     Result<const RgbaImage*> draw();
     /// Draws the scene as it is posed now into a PNG (written atomically).

@@ -138,3 +138,21 @@ def test_the_demo_characters_say_their_lines_in_the_papers_script(tmp_path):
     # Creon's line (voiceService.activateAction with his speech line, spoken by espeak-ng) from the start.
     assert max(map(abs, values[:48000])) > 1000
     assert "Antigone answered Creon at" in result.stdout
+
+
+def test_a_character_told_to_look_at_the_camera_looks_at_the_one_rendering(tmp_path):
+    # Headless, the render's camera is the camera: Creon's eyes and head turn to it, where with no
+    # camera known his gaze would wait and stay at nothing.
+    look = script(tmp_path, "\n".join([
+        "animService.gaze_body('Creon', 'camera', influence='HEAD', saccades=False)",
+        "animService.wait(1.5)",
+        "state = animService.gaze_state('Creon')",
+        "print('neck', *('%.2f' % v for v in state['neck']), 'eyes', *('%.2f' % v for v in state['eyes']))",
+    ]) + "\n")
+    result = run("run", DEMO, "--script", look, "--frames", "0:59", "--out", tmp_path / "frames", *SMALL)
+    assert result.returncode == 0, result.stderr
+    words = next(line for line in result.stdout.splitlines() if line.startswith("neck")).split()
+    neck, eyes = (float(words[1]), float(words[2])), (float(words[4]), float(words[5]))
+    # The demo's camera frames both from in front: Creon, turned towards Antigone, turns his
+    # head and eyes back toward it.
+    assert abs(neck[0]) + abs(eyes[0]) > 5, (neck, eyes)
