@@ -121,7 +121,13 @@ TEST(LiveCapture, TheNewestFrameWinsAndASlowConsumerDropsFrames)
         EXPECT_GT(frame.index, last) << "frames come in order, never twice";
         last = frame.index;
         ++taken;
-        std::this_thread::sleep_for(std::chrono::milliseconds(20)); // slower than the source
+        // Slower than the source, whatever the machine's load: wait until two newer frames have
+        // been captured (or the source ended), so the first of them is overwritten. A capture that
+        // blocked its source instead would never get there: the wait gives up after 2 s.
+        const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+        while (capture.state() == CaptureState::Running && capture.captured() < frame.index + 3 &&
+               std::chrono::steady_clock::now() < giveUp)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     EXPECT_EQ(capture.state(), CaptureState::Ended);
     EXPECT_NE(capture.message().find("ended after 60 frames"), std::string::npos) << capture.message();

@@ -30,7 +30,9 @@ std::filesystem::path folder()
 // The four tutorial photos as a 2 fps Motion JPEG video: real footage of the board.
 std::filesystem::path photoVideo()
 {
-    const std::filesystem::path path = folder() / "charuco_photos.avi";
+    // One file per test: ctest runs the tests of this file side by side.
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const std::filesystem::path path = folder() / ("charuco_photos_" + test + ".avi");
     auto writer = VideoWriter::create(path, 640, 480, 2);
     EXPECT_TRUE(writer) << writer.error().message;
     for (int i = 0; i < 4; ++i) {
