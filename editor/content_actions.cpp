@@ -9,8 +9,10 @@
 
 #include "edit/content_edits.h"
 #include "edit/document_edits.h"
+#include "edit/gaze_edits.h"
 #include "editor/character_dialog.h"
 #include "editor/document.h"
+#include "editor/playback_clock.h"
 #include "editor/import_motion_dialog.h"
 #include "editor/lighting_dialog.h"
 #include "editor/qt_conversions.h"
@@ -40,6 +42,9 @@ ContentActions::ContentActions(Session* session, QWidget* window, ContentSelecti
                           tr("A layer of body actions on top of the current character's"));
     m_addFaceLayer = make(tr("Add &Face Layer"), QStringLiteral("addFaceLayer"),
                           tr("A layer of facial animation (MPEG-4 FAPs)"));
+    m_addGaze = make(tr("Add &Gaze at Playhead"), QStringLiteral("addGaze"),
+                     tr("The current character looks at the camera (or at the other character) for two seconds "
+                        "from the playhead; pick what it looks at in Properties"));
     m_renameLayer = make(tr("Rena&me Layer…"), QStringLiteral("renameLayer"), {});
     m_moveLayerUp = make(tr("Move Layer &Up"), QStringLiteral("moveLayerUp"), {});
     m_moveLayerDown = make(tr("Move Layer Do&wn"), QStringLiteral("moveLayerDown"), {});
@@ -66,6 +71,18 @@ ContentActions::ContentActions(Session* session, QWidget* window, ContentSelecti
     };
     connect(m_addBodyLayer, &QAction::triggered, this, [=] { addLayer(core::scenario::LayerKind::Body, tr("Add Body Layer")); });
     connect(m_addFaceLayer, &QAction::triggered, this, [=] { addLayer(core::scenario::LayerKind::Face, tr("Add Face Layer")); });
+    connect(m_addGaze, &QAction::triggered, this, [this] {
+        auto* d = document();
+        const int c = m_selection.character();
+        if (!d || c < 0 || std::size_t(c) >= d->scenario().characters.size())
+            return;
+        // With two characters each looks at the other by default; otherwise at the viewer.
+        core::scenario::GazeSpec gaze;
+        const auto& characters = d->scenario().characters;
+        if (characters.size() == 2)
+            gaze.target = characters[std::size_t(1 - c)].name;
+        push(core::edit::addGaze(d->scenario(), c, std::move(gaze), m_session->clock()->time(), 2.0), tr("Add Gaze"));
+    });
     const auto moveLayer = [this](int delta) {
         auto* d = document();
         const auto layer = m_selection.layer();
@@ -91,6 +108,7 @@ void ContentActions::fillCharacterMenu(QMenu* menu) const
     menu->addSeparator();
     menu->addAction(m_addBodyLayer);
     menu->addAction(m_addFaceLayer);
+    menu->addAction(m_addGaze);
     menu->addAction(m_renameLayer);
     menu->addAction(m_moveLayerUp);
     menu->addAction(m_moveLayerDown);
@@ -106,7 +124,8 @@ void ContentActions::updateEnabled()
     m_importMotion->setEnabled(anyCharacter);
     m_addCharacter->setEnabled(open);
     m_lighting->setEnabled(open);
-    for (QAction* action : {m_duplicateCharacter, m_renameCharacter, m_removeCharacter, m_addBodyLayer, m_addFaceLayer})
+    for (QAction* action : {m_duplicateCharacter, m_renameCharacter, m_removeCharacter, m_addBodyLayer, m_addFaceLayer,
+                             m_addGaze})
         action->setEnabled(anyCharacter);
     for (QAction* action : {m_renameLayer, m_moveLayerUp, m_moveLayerDown, m_removeLayer})
         action->setEnabled(anyLayer);

@@ -79,6 +79,7 @@ private:
     QAction* m_removeCharacter = nullptr;
     QAction* m_addBodyLayer = nullptr;
     QAction* m_addFaceLayer = nullptr;
+    QAction* m_addGaze = nullptr;
     QAction* m_renameLayer = nullptr;
     QAction* m_moveLayerUp = nullptr;
     QAction* m_moveLayerDown = nullptr;

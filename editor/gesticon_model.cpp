@@ -112,10 +112,19 @@ QVariant GesticonModel::data(const QModelIndex& index, int role) const
                        : tr("Only the joints of the gesture's clip move");
         return {};
     }
+    if (column == HoldColumn) {
+        if (role == Qt::CheckStateRole)
+            return g->hold ? Qt::Checked : Qt::Unchecked;
+        if (role == Qt::ToolTipRole)
+            return g->hold ? tr("Speech plays it at its own speed and holds its stroke while the words last")
+                           : tr("Speech stretches or shrinks it to its words");
+        return {};
+    }
     if (column == BandColumn && role == Qt::ForegroundRole && !g->dependentJointFilter)
         return QPalette().color(QPalette::Disabled, QPalette::Text); // kept, but the filter is off
     if (role == Qt::TextAlignmentRole)
-        return column == FadeInColumn || column == FadeOutColumn ? QVariant(Qt::AlignRight | Qt::AlignVCenter)
+        return column == FadeInColumn || column == FadeOutColumn || column == StrokeColumn
+                   ? QVariant(Qt::AlignRight | Qt::AlignVCenter)
                                                                  : QVariant(Qt::AlignLeft | Qt::AlignVCenter);
     if (role != Qt::DisplayRole && role != Qt::EditRole && role != Qt::ToolTipRole)
         return {};
@@ -138,6 +147,14 @@ QVariant GesticonModel::data(const QModelIndex& index, int role) const
             return seconds;
         return QLocale().toString(seconds, 'f', 2);
     }
+    case StrokeColumn:
+        if (role == Qt::EditRole)
+            return g->stroke;
+        if (role == Qt::ToolTipRole)
+            return g->stroke < 0 ? tr("No stroke marked: speech fits the gesture as a whole")
+                                 : tr("The stroke, %1 s into the clip, falls on the first stressed word of its words")
+                                       .arg(QLocale().toString(g->stroke, 'f', 2));
+        return g->stroke < 0 ? tr("none") : QLocale().toString(g->stroke, 'f', 2);
     case BandColumn:
         if (role == Qt::ToolTipRole)
             return tr("The filter keeps upper-body PCs 1–%1, fades them out to PC %2 and mutes the rest: a later "
@@ -163,14 +180,17 @@ QVariant GesticonModel::headerData(int section, Qt::Orientation orientation, int
         case FadeOutColumn: return tr("Fade out (s)");
         case FilterColumn: return tr("Dependent joints");
         case BandColumn: return tr("Filter PCs");
+        case HoldColumn: return tr("Holds");
+        case StrokeColumn: return tr("Stroke (s)");
         default: return {};
         }
     }
     if (role == Qt::TextAlignmentRole) {
         // As the cells below: numbers on the right, the check box in the middle.
-        const Qt::Alignment horizontal = section == FadeInColumn || section == FadeOutColumn ? Qt::AlignRight
-                                         : section == FilterColumn                          ? Qt::AlignHCenter
-                                                                                            : Qt::AlignLeft;
+        const Qt::Alignment horizontal =
+            section == FadeInColumn || section == FadeOutColumn || section == StrokeColumn ? Qt::AlignRight
+            : isCheckColumn(section)                                                     ? Qt::AlignHCenter
+                                                                                         : Qt::AlignLeft;
         return QVariant::fromValue(horizontal | Qt::AlignVCenter);
     }
     if (role == Qt::ToolTipRole) {
@@ -184,6 +204,10 @@ QVariant GesticonModel::headerData(int section, Qt::Orientation orientation, int
             return tr("Dependent-joint filter: joints the gesture does not drive (spine, neck) follow it");
         case BandColumn:
             return tr("The filter's band, e.g. 20–30: PCs kept up to the first, muted above the second (paper: 20–30 of 48)");
+        case HoldColumn:
+            return tr("Words longer than the gesture: hold its stroke (checked) or stretch it (unchecked)");
+        case StrokeColumn:
+            return tr("Where the gesture's stroke is in its clip, in seconds: speech puts it on the stressed word");
         default: return {};
         }
     }
@@ -195,7 +219,7 @@ Qt::ItemFlags GesticonModel::flags(const QModelIndex& index) const
     if (!index.isValid() || !gesture(index.row()))
         return Qt::NoItemFlags;
     const Qt::ItemFlags base = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
-    return index.column() == FilterColumn ? base | Qt::ItemIsUserCheckable : base | Qt::ItemIsEditable;
+    return isCheckColumn(index.column()) ? base | Qt::ItemIsUserCheckable : base | Qt::ItemIsEditable;
 }
 
 bool GesticonModel::setData(const QModelIndex& index, const QVariant& value, int role)
@@ -211,6 +235,11 @@ bool GesticonModel::setData(const QModelIndex& index, const QVariant& value, int
             return false;
         next.dependentJointFilter = value.value<Qt::CheckState>() == Qt::Checked;
         text = next.dependentJointFilter ? tr("Turn Dependent-Joint Filter On") : tr("Turn Dependent-Joint Filter Off");
+    } else if (column == HoldColumn) {
+        if (role != Qt::CheckStateRole)
+            return false;
+        next.hold = value.value<Qt::CheckState>() == Qt::Checked;
+        text = next.hold ? tr("Hold Gesture Stroke") : tr("Stretch Gesture to Its Words");
     } else {
         if (role != Qt::EditRole)
             return false;
@@ -237,6 +266,17 @@ bool GesticonModel::setData(const QModelIndex& index, const QVariant& value, int
             next.filterFadeFrom = match.captured(1).toInt();
             next.filterMuteAbove = match.captured(2).toInt();
             text = tr("Change Filter Band");
+            break;
+        }
+        case StrokeColumn: {
+            bool ok = false;
+            const double seconds = value.toDouble(&ok);
+            if (!ok || !std::isfinite(seconds)) {
+                emit editFailed(tr("A stroke is a number of seconds into the clip (below 0: none)."));
+                return false;
+            }
+            next.stroke = seconds < 0 ? -1.0 : seconds;
+            text = tr("Mark Gesture Stroke");
             break;
         }
         case FadeInColumn:

@@ -1,7 +1,8 @@
 #pragma once
 // GesticonModel: the gesture database (gesticon, paper §5) of one character of a Document as a
 // table: name, clip, body part (the mask; "Whole body" without one), fade in and fade out in
-// seconds, the dependent-joint filter as a check box and its band of PCs ("20–30"). Editable in
+// seconds, the dependent-joint filter as a check box and its band of PCs ("20–30"), and how speech
+// fits it to its words: whether it holds its stroke, and where the stroke is. Editable in
 // place: each setData() is one undoable edit of the document (core::edit::replaceGesture); an
 // edit the document refuses (a duplicate name, a clip the character does not have, a band out of
 // order, …) changes nothing and is reported through editFailed(). The model follows the document's edits (do, undo, redo) on its own.
@@ -20,7 +21,14 @@ class Document;
 class GesticonModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { NameColumn, ClipColumn, MaskColumn, FadeInColumn, FadeOutColumn, FilterColumn, BandColumn, ColumnCount };
+    enum Column {
+        NameColumn, ClipColumn, MaskColumn, FadeInColumn, FadeOutColumn, FilterColumn, BandColumn,
+        HoldColumn,   ///< check box: speech holds the stroke rather than stretching the gesture
+        StrokeColumn, ///< seconds into the clip of the stroke; EditRole −1 for none
+        ColumnCount
+    };
+    /// The columns toggled as check boxes.
+    static bool isCheckColumn(int column) { return column == FilterColumn || column == HoldColumn; }
 
     explicit GesticonModel(QObject* parent = nullptr);
 

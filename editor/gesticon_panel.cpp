@@ -34,7 +34,8 @@ using core::scenario::Gesture;
 namespace {
 
 // Editors of the gesticon table: the clip and the body part as combo boxes of what the character
-// and the scenario have, the fades as spin boxes in seconds, the filter as a centred check box.
+// and the scenario have, the fades and the stroke as spin boxes in seconds, the filter and the
+// hold as centred check boxes.
 // A combo commits as soon as an entry is picked.
 class GestureDelegate : public QStyledItemDelegate {
 public:
@@ -72,7 +73,18 @@ public:
             spin->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
             return spin;
         }
+        case GesticonModel::StrokeColumn: {
+            auto* spin = new QDoubleSpinBox(parent);
+            spin->setFrame(false);
+            spin->setRange(-1.0, 60.0);
+            spin->setDecimals(2);
+            spin->setSingleStep(0.05);
+            spin->setSpecialValueText(GesticonModel::tr("none"));
+            spin->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            return spin;
+        }
         case GesticonModel::FilterColumn:
+        case GesticonModel::HoldColumn:
             return nullptr; // toggled in place (editorEvent)
         default:
             return QStyledItemDelegate::createEditor(parent, option, index);
@@ -111,7 +123,7 @@ public:
 
     void paint(QPainter* painter, const QStyleOptionViewItem& option, const QModelIndex& index) const override
     {
-        if (index.column() != GesticonModel::FilterColumn) {
+        if (!GesticonModel::isCheckColumn(index.column())) {
             QStyledItemDelegate::paint(painter, option, index);
             return;
         }
@@ -134,7 +146,7 @@ public:
     bool editorEvent(QEvent* event, QAbstractItemModel* model, const QStyleOptionViewItem& option,
                      const QModelIndex& index) override
     {
-        if (index.column() != GesticonModel::FilterColumn)
+        if (!GesticonModel::isCheckColumn(index.column()))
             return QStyledItemDelegate::editorEvent(event, model, option, index);
         if (!(index.flags() & Qt::ItemIsUserCheckable) || !(index.flags() & Qt::ItemIsEnabled))
             return false;

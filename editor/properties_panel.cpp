@@ -18,6 +18,7 @@
 #include "editor/blink_properties.h"
 #include "editor/character_properties.h"
 #include "editor/document.h"
+#include "editor/gaze_properties.h"
 #include "editor/idle_properties.h"
 #include "editor/qt_conversions.h"
 #include "scene/face_mask.h"
@@ -94,7 +95,7 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent)
     m_pages->addWidget(m_scenarioSummary);
 
     auto* actionPage = new QWidget(m_pages);
-    auto* form = new QFormLayout(actionPage);
+    auto* form = m_form = new QFormLayout(actionPage);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     m_owner = new QLabel(actionPage);
     m_owner->setObjectName(QStringLiteral("actionOwner"));
@@ -156,6 +157,11 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent)
     m_blinks = new BlinkProperties(actionPage);
     form->addRow(m_blinks);
     connect(m_blinks, &BlinkProperties::problem, this, &PropertiesPanel::problem);
+    m_gaze = new GazeProperties(actionPage);
+    form->addRow(m_gaze);
+    connect(m_gaze, &GazeProperties::gazeEditRequested, this, [this](const core::scenario::GazeSpec& gaze) {
+        editAction(tr("Change Gaze"), [&](ActionSpec& spec) { spec.gaze = gaze; });
+    });
     m_pages->addWidget(actionPage);
     m_characterPage = new CharacterProperties(m_pages);
     m_pages->addWidget(m_characterPage);
@@ -371,6 +377,14 @@ void PropertiesPanel::showAction()
     m_modifiers->setText(modifiers.isEmpty() ? tr("none") : modifiers.join(QStringLiteral(", ")));
     m_idle->show(m_document, m_action->character, spec.clip, editable);
     m_blinks->show(m_document, m_action->character, spec.clip, editable);
+    // A gaze action plays no clip: what it looks at replaces what blends a clip.
+    const bool gaze = layer.kind == core::scenario::LayerKind::Gaze;
+    m_gaze->show(scenario, m_action->character, gaze ? spec.gaze : std::nullopt, editable);
+    for (QWidget* clipField : {static_cast<QWidget*>(m_clip), static_cast<QWidget*>(m_placement),
+                               static_cast<QWidget*>(m_repeat), static_cast<QWidget*>(m_rootMotion),
+                               static_cast<QWidget*>(m_mode), static_cast<QWidget*>(m_mask),
+                               static_cast<QWidget*>(m_outsideDomain)})
+        m_form->setRowVisible(clipField, !gaze);
 
     for (QWidget* field : {static_cast<QWidget*>(m_name), static_cast<QWidget*>(m_clip), static_cast<QWidget*>(m_start),
                            static_cast<QWidget*>(m_mode), static_cast<QWidget*>(m_mask), static_cast<QWidget*>(m_outsideDomain),

@@ -15,6 +15,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QSpinBox;
@@ -25,6 +26,7 @@ namespace thespis::editor {
 class CharacterProperties;
 class Document;
 class BlinkProperties;
+class GazeProperties;
 class IdleProperties;
 
 class PropertiesPanel : public QWidget {
@@ -43,6 +45,8 @@ public:
     IdleProperties* idleProperties() const { return m_idle; }
     /// The blink clip's settings, shown for an action playing blinks.
     BlinkProperties* blinkProperties() const { return m_blinks; }
+    /// What an action of a gaze layer looks at.
+    GazeProperties* gazeProperties() const { return m_gaze; }
 
     QLineEdit* nameEdit() const { return m_name; }
     QComboBox* clipChoice() const { return m_clip; }
@@ -90,7 +94,9 @@ private:
     QLabel* m_modifiers = nullptr;
     IdleProperties* m_idle = nullptr;
     BlinkProperties* m_blinks = nullptr;
+    GazeProperties* m_gaze = nullptr;
     QLabel* m_maskLabel = nullptr;
+    QFormLayout* m_form = nullptr;
 };
 
 } // namespace thespis::editor

@@ -320,7 +320,12 @@ QVariant ScenarioTreeModel::displayData(const Node& node, int column) const
         case NameColumn:
             return layer.name.empty() ? tr("Layer %1").arg(node.layer + 1) : fromUtf8(layer.name);
         case ClipColumn:
-            return layer.kind == core::scenario::LayerKind::Face ? tr("face layer") : tr("body layer");
+            switch (layer.kind) {
+            case core::scenario::LayerKind::Body: return tr("body layer");
+            case core::scenario::LayerKind::Face: return tr("face layer");
+            case core::scenario::LayerKind::Gaze: return tr("gaze layer");
+            }
+            return {};
         case ModeColumn: return node.layer == 0 ? tr("base") : describeBlendMode(layer.mode);
         default: return {};
         }

@@ -16,6 +16,7 @@
 #include <QSplitter>
 #include <QVBoxLayout>
 
+#include "edit/bml_edits.h"
 #include "edit/speech_edits.h"
 #include "editor/character_choice.h"
 #include "editor/document.h"
@@ -26,6 +27,7 @@
 #include "editor/session.h"
 #include "editor/stage_audio.h"
 #include "editor/viseme_table.h"
+#include "runtime/bml_performance.h"
 #include "runtime/clock.h"
 #include "runtime/sound.h"
 #include "runtime/speech_performance.h"
@@ -79,7 +81,10 @@ SpeechPanel::SpeechPanel(QWidget* parent) : QWidget(parent), m_runner(new JobRun
     m_text = new QPlainTextEdit(split);
     m_text->setObjectName(QStringLiteral("speechText"));
     m_text->setPlaceholderText(tr("What the character says. Gestures go around the words they span:\n"
-                                  "Are you <begin_gesture id=\"g1\" anim=\"raise_eyebrows\"/>really sure<end_gesture id=\"g1\"/>?"));
+                                  "Are you <begin_gesture id=\"g1\" anim=\"raise_eyebrows\"/>really sure<end_gesture id=\"g1\"/>?\n"
+                                  "Or a BML block:\n"
+                                  "<bml id=\"b1\"><speech id=\"s1\"><text>Hello <sync id=\"t1\"/>there.</text></speech>\n"
+                                  "<gesture id=\"g1\" lexeme=\"BEAT\" stroke=\"s1:t1\"/><gaze id=\"z1\" target=\"camera\"/></bml>"));
     auto* visemeBox = new QGroupBox(tr("Visemes (MPEG-4) and their coarticulation"), split);
     auto* visemeLayout = new QVBoxLayout(visemeBox);
     m_visemes = new VisemeTable(visemeBox);
@@ -94,7 +99,7 @@ SpeechPanel::SpeechPanel(QWidget* parent) : QWidget(parent), m_runner(new JobRun
     m_preview->setToolTip(tr("Say it from the playhead, face and voice, without changing the scenario"));
     m_insert = new QPushButton(tr("Insert at Playhead"), this);
     m_insert->setObjectName(QStringLiteral("speechInsert"));
-    m_insert->setToolTip(tr("Put the line, its visemes and its gestures on the timeline at the playhead (one undo step)"));
+    m_insert->setToolTip(tr("Put the line, its visemes and its gestures (or the BML block's speech, gestures, head, face and gaze) on the timeline at the playhead (one undo step)"));
     m_lipSync = new QPushButton(tr("Lip Sync a Recording…"), this);
     m_lipSync->setObjectName(QStringLiteral("speechLipSync"));
     m_lipSync->setToolTip(tr("Align a WAV with the text above as its transcript (empty: the words are recognised) and insert it"));
@@ -243,6 +248,10 @@ void SpeechPanel::playPreview()
         return;
     const std::string& name = m_document->scenario().characters[std::size_t(c)].name;
     const core::Tick at = m_session->clock()->time();
+    if (job->bml) {
+        previewBml(*job, name, at);
+        return;
+    }
     auto performed = core::runtime::performSpeech(*m_session->stage(), name, kPreviewLine, job->visemeCues, job->gestureCues, at);
     if (!performed) {
         m_progress->failed(performed.error());
@@ -267,11 +276,68 @@ void SpeechPanel::playPreview()
     emit playRequested();
 }
 
+void SpeechPanel::previewBml(const core::speech::SpeakJob& job, const std::string& character, core::Tick at)
+{
+    m_previewSound->clear();
+    core::runtime::BmlRealizer realizer(m_session->stage(), m_previewSound);
+    core::runtime::BmlOptions options;
+    options.voice = job.voice;
+    options.spoken = std::make_shared<const std::map<std::string, core::speech::Utterance>>(job.bmlSpeech);
+    auto performed = realizer.perform(character, *job.bml, options, at);
+    if (!performed) {
+        m_progress->failed(performed.error());
+        return;
+    }
+    if (m_audio)
+        m_audio->addSource(m_previewSound);
+    m_progress->finished(tr("Previewing"), tr("Previewing BML block “%1” from %2 s to %3 s: %n behaviour(s)", nullptr,
+                                              int(performed->times.size()))
+                                               .arg(fromUtf8(performed->block))
+                                               .arg(performed->start, 0, 'f', 2)
+                                               .arg(performed->end, 0, 'f', 2));
+    if (m_closeUp->isChecked())
+        emit closeUpRequested(currentCharacter());
+    m_session->tick();
+    emit playRequested();
+}
+
+void SpeechPanel::insertBml(const core::speech::SpeakJob& job)
+{
+    core::edit::BmlInsertOptions options;
+    options.voice = job.voice;
+    options.visemes = m_visemes->visemes();
+    const core::Tick at = m_session->clock()->time();
+    auto inserted = core::edit::insertBml(m_document->scenario(), m_document->runtime(), currentCharacter(), *job.bml,
+                                          job.bmlSpeech, options, at);
+    if (!inserted) {
+        m_progress->failed(inserted.error());
+        return;
+    }
+    if (auto done = m_document->edit(std::move(inserted->edit), tr("Insert BML")); !done) {
+        m_progress->failed(done.error());
+        return;
+    }
+    m_progress->finished(tr("Inserted"),
+                         tr("Inserted BML from %1 s to %2 s: %n speech(es), %3 gesture(s), %4 head gesture(s), "
+                            "%5 face lexeme(s), %6 gaze(s).",
+                            nullptr, inserted->speeches)
+                             .arg(core::ticksToSeconds(at), 0, 'f', 2)
+                             .arg(core::ticksToSeconds(at) + inserted->seconds, 0, 'f', 2)
+                             .arg(inserted->gestures)
+                             .arg(inserted->headGestures)
+                             .arg(inserted->faceLexemes)
+                             .arg(inserted->gazes));
+}
+
 void SpeechPanel::insertSpoken()
 {
     const auto* job = m_runner->jobAs<core::speech::SpeakJob>();
     if (!job)
         return;
+    if (job->bml) {
+        insertBml(*job);
+        return;
+    }
     // The line keeps its text, not a file: espeak-ng says it again the same way when it plays.
     auto line = core::edit::speechLine(job->text, job->voice, job->utterance.timing, {}, m_session->clock()->time());
     auto inserted = core::edit::insertSpeech(m_document->scenario(), currentCharacter(), std::move(line),

@@ -1,6 +1,6 @@
 #pragma once
 // SpeechPanel: the studio's Speech dock (paper §5.1–5.2). For the chosen character: what it says,
-// as tagged text (`<begin_gesture id=".." anim=".."/> … <end_gesture id=".."/>`), the espeak-ng
+// as tagged text (`<begin_gesture id=".." anim=".."/> … <end_gesture id=".."/>`) or a BML block, the espeak-ng
 // voice, rate and pitch, and the viseme set with each viseme's α, weight and spread (VisemeTable).
 //  - Preview speaks it (a core SpeakJob, with progress and Cancel) and plays it live from the
 //    playhead: its visemes and face gestures on the Stage (runtime::performSpeech) and its audio
@@ -14,8 +14,10 @@
 #include <QWidget>
 
 #include <memory>
+#include <string>
 
 #include "speech/espeak_voice.h"
+#include "util/tick.h"
 
 class QCheckBox;
 class QComboBox;
@@ -25,6 +27,9 @@ class QSpinBox;
 
 namespace thespis::core::runtime {
 class SoundService;
+}
+namespace thespis::core::speech {
+struct SpeakJob;
 }
 
 namespace thespis::editor {
@@ -79,7 +84,9 @@ private:
     void start(Then then);
     void onFinished(bool ok);
     void playPreview();
+    void previewBml(const core::speech::SpeakJob& job, const std::string& character, core::Tick at);
     void insertSpoken();
+    void insertBml(const core::speech::SpeakJob& job);
     void insertLipSync();
     void updateEnabled();
 

@@ -228,7 +228,7 @@ void TimelinePanel::refresh()
                 track.muted = layer.mute;
                 track.solo = layer.solo;
                 track.locked = layer.lock;
-                track.kind = layer.kind == core::scenario::LayerKind::Face ? QStringLiteral("face") : QStringLiteral("body");
+                track.kind = QString::fromLatin1(core::scenario::layerKindName(layer.kind));
                 tracks.push_back(track);
                 m_tracks.push_back({c, l});
                 for (int a = 0; a < int(layer.actions.size()); ++a) {
@@ -253,8 +253,9 @@ void TimelinePanel::refresh()
                     clips.push_back(std::move(clip));
                     m_clipPaths.push_back(path);
                 }
-                // The words of the character's speech lines, under the visemes they drive.
-                if (layer.kind == core::scenario::LayerKind::Face && layer.name == "Speech")
+                // The words of the character's speech lines, with the visemes and gestures they drive.
+                if ((layer.kind == core::scenario::LayerKind::Face && layer.name == "Speech") ||
+                    (layer.kind == core::scenario::LayerKind::Body && layer.name == "Gestures"))
                     for (const auto& line : character.speech)
                         if (line.start)
                             for (const auto& word : line.words)

@@ -180,7 +180,7 @@ def modifier(kind, **params):
 
 
 def action(name, clip_name, start, weight, scale=None, mask=None, mode="normalized", modifiers=()):
-    out = {"schema": "Action.2", "name": name, "clip": clip_name, "start": ticks(start)}
+    out = {"schema": "Action.3", "name": name, "clip": clip_name, "start": ticks(start)}
     if modifiers:
         out["modifiers"] = list(modifiers)
     out["weight"] = weight
@@ -193,11 +193,11 @@ def action(name, clip_name, start, weight, scale=None, mask=None, mode="normaliz
 
 
 def layer(name, kind, actions):
-    return {"schema": "Layer.2", "name": name, "kind": kind, "mode": "normalized", "actions": actions}
+    return {"schema": "Layer.3", "name": name, "kind": kind, "mode": "normalized", "actions": actions}
 
 
 def gesture(name, clip_name, mask_name, fade_in, fade_out, dependent_joint_filter=False, filter_band=None):
-    out = {"schema": "Gesture.1", "name": name, "clip": clip_name, "mask": mask_name,
+    out = {"schema": "Gesture.2", "name": name, "clip": clip_name, "mask": mask_name,
            "fadeIn": ticks(fade_in), "fadeOut": ticks(fade_out),
            "dependentJointFilter": dependent_joint_filter}
     if filter_band:
@@ -302,8 +302,8 @@ def scenario():
     }
     return {
         "format": "thespis-scenario",
-        "version": 9,
-        "schema": "Scenario.9",
+        "version": 10,
+        "schema": "Scenario.10",
         "name": "Antigone, act 1 (demo)",
         "duration": ticks(12.0),
         "masks": [

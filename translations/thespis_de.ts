@@ -1456,6 +1456,18 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>Change Lighting</source>
         <translation>Beleuchtung ändern</translation>
     </message>
+    <message>
+        <source>Add &amp;Gaze at Playhead</source>
+        <translation>&amp;Blick am Abspielkopf hinzufügen</translation>
+    </message>
+    <message>
+        <source>The current character looks at the camera (or at the other character) for two seconds from the playhead; pick what it looks at in Properties</source>
+        <translation>Die aktuelle Figur blickt ab dem Abspielkopf zwei Sekunden lang in die Kamera (oder zur anderen Figur); wohin sie blickt, wählen Sie in den Eigenschaften</translation>
+    </message>
+    <message>
+        <source>Add Gaze</source>
+        <translation>Blick hinzufügen</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::CurvePanel</name>
@@ -2049,6 +2061,101 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source> and gesture</source>
         <translation> und Geste</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::GazeProperties</name>
+    <message>
+        <source>Looks at</source>
+        <translation>Blickt auf</translation>
+    </message>
+    <message>
+        <source>The camera, a character (its eyes), a joint of one (&quot;Creon:r_radiocarpal&quot;) or a point in metres (&quot;0.5 1.6 2&quot;)</source>
+        <translation>Die Kamera, eine Figur (ihre Augen), ein Gelenk einer Figur („Creon:r_radiocarpal“) oder ein Punkt in Metern („0.5 1.6 2“)</translation>
+    </message>
+    <message>
+        <source>The eyes alone</source>
+        <translation>Nur die Augen</translation>
+    </message>
+    <message>
+        <source>Eyes and head</source>
+        <translation>Augen und Kopf</translation>
+    </message>
+    <message>
+        <source>Eyes, head and shoulders</source>
+        <translation>Augen, Kopf und Schultern</translation>
+    </message>
+    <message>
+        <source>Eyes, head, shoulders and waist</source>
+        <translation>Augen, Kopf, Schultern und Hüfte</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>rechts</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>links</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>oben</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>unten</translation>
+    </message>
+    <message>
+        <source>up and right</source>
+        <translation>rechts oben</translation>
+    </message>
+    <message>
+        <source>up and left</source>
+        <translation>links oben</translation>
+    </message>
+    <message>
+        <source>down and right</source>
+        <translation>rechts unten</translation>
+    </message>
+    <message>
+        <source>down and left</source>
+        <translation>links unten</translation>
+    </message>
+    <message>
+        <source>Target:</source>
+        <translation>Ziel:</translation>
+    </message>
+    <message>
+        <source>Turns:</source>
+        <translation>Dreht:</translation>
+    </message>
+    <message>
+        <source>Away by:</source>
+        <translation>Daneben um:</translation>
+    </message>
+    <message>
+        <source>Toward:</source>
+        <translation>Richtung:</translation>
+    </message>
+    <message>
+        <source>The camera (the viewer)</source>
+        <translation>Die Kamera (der Betrachter)</translation>
+    </message>
+    <message>
+        <source>%1&apos;s eyes</source>
+        <translation>Augen von %1</translation>
+    </message>
+    <message>
+        <source>%1&apos;s right hand</source>
+        <translation>Rechte Hand von %1</translation>
+    </message>
+    <message>
+        <source>%1&apos;s left hand</source>
+        <translation>Linke Hand von %1</translation>
     </message>
 </context>
 <context>
@@ -3140,6 +3247,10 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>none (dominance weight curve, α %1)</source>
         <translation>keine (Dominanz-Gewichtskurve, α %1)</translation>
     </message>
+    <message>
+        <source>Change Gaze</source>
+        <translation>Blick ändern</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::ScenarioTreeModel</name>
@@ -3359,6 +3470,10 @@ Ein grüner Punkt markiert eine Aktion, die zur aktuellen Zeit spielt.</translat
     <message>
         <source>dominance α %1</source>
         <translation>Dominanz α %1</translation>
+    </message>
+    <message>
+        <source>gaze layer</source>
+        <translation>Blickebene</translation>
     </message>
 </context>
 <context>
@@ -3638,12 +3753,6 @@ Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
         <translation>Tonhöhe:</translation>
     </message>
     <message>
-        <source>What the character says. Gestures go around the words they span:
-Are you &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;really sure&lt;end_gesture id=&quot;g1&quot;/&gt;?</source>
-        <translation>Was die Figur sagt. Gesten umschließen die Wörter, über die sie reichen:
-Sind Sie &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;wirklich sicher&lt;end_gesture id=&quot;g1&quot;/&gt;?</translation>
-    </message>
-    <message>
         <source>Visemes (MPEG-4) and their coarticulation</source>
         <translation>Viseme (MPEG-4) und ihre Koartikulation</translation>
     </message>
@@ -3658,10 +3767,6 @@ Sind Sie &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt
     <message>
         <source>Insert at Playhead</source>
         <translation>Am Abspielkopf einfügen</translation>
-    </message>
-    <message>
-        <source>Put the line, its visemes and its gestures on the timeline at the playhead (one undo step)</source>
-        <translation>Den Text, seine Viseme und seine Gesten am Abspielkopf auf die Zeitleiste setzen (ein Rückgängig-Schritt)</translation>
     </message>
     <message>
         <source>Lip Sync a Recording…</source>
@@ -3734,6 +3839,40 @@ Sind Sie &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt
         <translation>
             <numerusform>„%1“ lippensynchronisiert: %n Wort, %2 Visem(e).</numerusform>
             <numerusform>„%1“ lippensynchronisiert: %n Wörter, %2 Visem(e).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>What the character says. Gestures go around the words they span:
+Are you &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;really sure&lt;end_gesture id=&quot;g1&quot;/&gt;?
+Or a BML block:
+&lt;bml id=&quot;b1&quot;&gt;&lt;speech id=&quot;s1&quot;&gt;&lt;text&gt;Hello &lt;sync id=&quot;t1&quot;/&gt;there.&lt;/text&gt;&lt;/speech&gt;
+&lt;gesture id=&quot;g1&quot; lexeme=&quot;BEAT&quot; stroke=&quot;s1:t1&quot;/&gt;&lt;gaze id=&quot;z1&quot; target=&quot;camera&quot;/&gt;&lt;/bml&gt;</source>
+        <translation>Was die Figur sagt. Gesten umschließen die Wörter, die sie überspannen:
+Bist du &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;wirklich sicher&lt;end_gesture id=&quot;g1&quot;/&gt;?
+Oder ein BML-Block:
+&lt;bml id=&quot;b1&quot;&gt;&lt;speech id=&quot;s1&quot;&gt;&lt;text&gt;Hallo &lt;sync id=&quot;t1&quot;/&gt;du.&lt;/text&gt;&lt;/speech&gt;
+&lt;gesture id=&quot;g1&quot; lexeme=&quot;BEAT&quot; stroke=&quot;s1:t1&quot;/&gt;&lt;gaze id=&quot;z1&quot; target=&quot;camera&quot;/&gt;&lt;/bml&gt;</translation>
+    </message>
+    <message>
+        <source>Put the line, its visemes and its gestures (or the BML block&apos;s speech, gestures, head, face and gaze) on the timeline at the playhead (one undo step)</source>
+        <translation>Den Satz, seine Viseme und Gesten (oder Sprache, Gesten, Kopf, Gesicht und Blick des BML-Blocks) am Abspielkopf in die Zeitleiste setzen (ein Rückgängig-Schritt)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Previewing BML block “%1” from %2 s to %3 s: %n behaviour(s)</source>
+        <translation>
+            <numerusform>Vorschau des BML-Blocks „%1“ von %2 s bis %3 s: %n Verhalten</numerusform>
+            <numerusform>Vorschau des BML-Blocks „%1“ von %2 s bis %3 s: %n Verhalten</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Insert BML</source>
+        <translation>BML einfügen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Inserted BML from %1 s to %2 s: %n speech(es), %3 gesture(s), %4 head gesture(s), %5 face lexeme(s), %6 gaze(s).</source>
+        <translation>
+            <numerusform>BML von %1 s bis %2 s eingefügt: %n Sprechtext, %3 Geste(n), %4 Kopfgeste(n), %5 Gesichtslexem(e), %6 Blick(e).</numerusform>
+            <numerusform>BML von %1 s bis %2 s eingefügt: %n Sprechtexte, %3 Geste(n), %4 Kopfgeste(n), %5 Gesichtslexem(e), %6 Blick(e).</numerusform>
         </translation>
     </message>
 </context>

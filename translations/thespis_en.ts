@@ -252,6 +252,20 @@
             <numerusform>Lip-synced “%1”: %n words, %2 viseme(s).</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>Previewing BML block “%1” from %2 s to %3 s: %n behaviour(s)</source>
+        <translation>
+            <numerusform>Previewing BML block “%1” from %2 s to %3 s: %n behaviour</numerusform>
+            <numerusform>Previewing BML block “%1” from %2 s to %3 s: %n behaviours</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Inserted BML from %1 s to %2 s: %n speech(es), %3 gesture(s), %4 head gesture(s), %5 face lexeme(s), %6 gaze(s).</source>
+        <translation>
+            <numerusform>Inserted BML from %1 s to %2 s: %n speech, %3 gesture(s), %4 head gesture(s), %5 face lexeme(s), %6 gaze(s).</numerusform>
+            <numerusform>Inserted BML from %1 s to %2 s: %n speeches, %3 gesture(s), %4 head gesture(s), %5 face lexeme(s), %6 gaze(s).</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::TimelinePanel</name>

@@ -1456,6 +1456,18 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>Change Lighting</source>
         <translation>Modifier l’éclairage</translation>
     </message>
+    <message>
+        <source>Add &amp;Gaze at Playhead</source>
+        <translation>&amp;Regard à la tête de lecture</translation>
+    </message>
+    <message>
+        <source>The current character looks at the camera (or at the other character) for two seconds from the playhead; pick what it looks at in Properties</source>
+        <translation>Le personnage courant regarde la caméra (ou l’autre personnage) pendant deux secondes à partir de la tête de lecture ; choisissez ce qu’il regarde dans Propriétés</translation>
+    </message>
+    <message>
+        <source>Add Gaze</source>
+        <translation>Ajouter un regard</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::CurvePanel</name>
@@ -2049,6 +2061,101 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source> and gesture</source>
         <translation> et geste</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::GazeProperties</name>
+    <message>
+        <source>Looks at</source>
+        <translation>Regarde</translation>
+    </message>
+    <message>
+        <source>The camera, a character (its eyes), a joint of one (&quot;Creon:r_radiocarpal&quot;) or a point in metres (&quot;0.5 1.6 2&quot;)</source>
+        <translation>La caméra, un personnage (ses yeux), une articulation d’un personnage (« Creon:r_radiocarpal ») ou un point en mètres (« 0.5 1.6 2 »)</translation>
+    </message>
+    <message>
+        <source>The eyes alone</source>
+        <translation>Les yeux seuls</translation>
+    </message>
+    <message>
+        <source>Eyes and head</source>
+        <translation>Les yeux et la tête</translation>
+    </message>
+    <message>
+        <source>Eyes, head and shoulders</source>
+        <translation>Les yeux, la tête et les épaules</translation>
+    </message>
+    <message>
+        <source>Eyes, head, shoulders and waist</source>
+        <translation>Les yeux, la tête, les épaules et la taille</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>à droite</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>à gauche</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>en haut</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>en bas</translation>
+    </message>
+    <message>
+        <source>up and right</source>
+        <translation>en haut à droite</translation>
+    </message>
+    <message>
+        <source>up and left</source>
+        <translation>en haut à gauche</translation>
+    </message>
+    <message>
+        <source>down and right</source>
+        <translation>en bas à droite</translation>
+    </message>
+    <message>
+        <source>down and left</source>
+        <translation>en bas à gauche</translation>
+    </message>
+    <message>
+        <source>Target:</source>
+        <translation>Cible :</translation>
+    </message>
+    <message>
+        <source>Turns:</source>
+        <translation>Tourne :</translation>
+    </message>
+    <message>
+        <source>Away by:</source>
+        <translation>À côté de :</translation>
+    </message>
+    <message>
+        <source>Toward:</source>
+        <translation>Vers :</translation>
+    </message>
+    <message>
+        <source>The camera (the viewer)</source>
+        <translation>La caméra (le spectateur)</translation>
+    </message>
+    <message>
+        <source>%1&apos;s eyes</source>
+        <translation>Les yeux de %1</translation>
+    </message>
+    <message>
+        <source>%1&apos;s right hand</source>
+        <translation>La main droite de %1</translation>
+    </message>
+    <message>
+        <source>%1&apos;s left hand</source>
+        <translation>La main gauche de %1</translation>
     </message>
 </context>
 <context>
@@ -3140,6 +3247,10 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>none (dominance weight curve, α %1)</source>
         <translation>aucun (courbe de poids de dominance, α %1)</translation>
     </message>
+    <message>
+        <source>Change Gaze</source>
+        <translation>Changer le regard</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::ScenarioTreeModel</name>
@@ -3359,6 +3470,10 @@ Un point vert signale une action jouée à l’instant courant.</translation>
     <message>
         <source>dominance α %1</source>
         <translation>dominance α %1</translation>
+    </message>
+    <message>
+        <source>gaze layer</source>
+        <translation>calque de regard</translation>
     </message>
 </context>
 <context>
@@ -3638,12 +3753,6 @@ Utilisez Fichier ▸ Ouvrir… (Ctrl+O) pour ouvrir un fichier .thespis.</transl
         <translation>Hauteur :</translation>
     </message>
     <message>
-        <source>What the character says. Gestures go around the words they span:
-Are you &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;really sure&lt;end_gesture id=&quot;g1&quot;/&gt;?</source>
-        <translation>Ce que dit le personnage. Les gestes entourent les mots qu’ils couvrent :
-Êtes-vous &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;vraiment sûr&lt;end_gesture id=&quot;g1&quot;/&gt; ?</translation>
-    </message>
-    <message>
         <source>Visemes (MPEG-4) and their coarticulation</source>
         <translation>Visèmes (MPEG-4) et leur coarticulation</translation>
     </message>
@@ -3658,10 +3767,6 @@ Are you &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;
     <message>
         <source>Insert at Playhead</source>
         <translation>Insérer à la tête de lecture</translation>
-    </message>
-    <message>
-        <source>Put the line, its visemes and its gestures on the timeline at the playhead (one undo step)</source>
-        <translation>Placer la réplique, ses visèmes et ses gestes sur la ligne temporelle à la tête de lecture (une étape d’annulation)</translation>
     </message>
     <message>
         <source>Lip Sync a Recording…</source>
@@ -3734,6 +3839,40 @@ Are you &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;
         <translation>
             <numerusform>« %1 » synchronisé sur les lèvres : %n mot, %2 visème(s).</numerusform>
             <numerusform>« %1 » synchronisé sur les lèvres : %n mots, %2 visème(s).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>What the character says. Gestures go around the words they span:
+Are you &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;really sure&lt;end_gesture id=&quot;g1&quot;/&gt;?
+Or a BML block:
+&lt;bml id=&quot;b1&quot;&gt;&lt;speech id=&quot;s1&quot;&gt;&lt;text&gt;Hello &lt;sync id=&quot;t1&quot;/&gt;there.&lt;/text&gt;&lt;/speech&gt;
+&lt;gesture id=&quot;g1&quot; lexeme=&quot;BEAT&quot; stroke=&quot;s1:t1&quot;/&gt;&lt;gaze id=&quot;z1&quot; target=&quot;camera&quot;/&gt;&lt;/bml&gt;</source>
+        <translation>Ce que dit le personnage. Les gestes entourent les mots qu’ils couvrent :
+Es-tu &lt;begin_gesture id=&quot;g1&quot; anim=&quot;raise_eyebrows&quot;/&gt;vraiment sûr&lt;end_gesture id=&quot;g1&quot;/&gt; ?
+Ou un bloc BML :
+&lt;bml id=&quot;b1&quot;&gt;&lt;speech id=&quot;s1&quot;&gt;&lt;text&gt;Bonjour &lt;sync id=&quot;t1&quot;/&gt;toi.&lt;/text&gt;&lt;/speech&gt;
+&lt;gesture id=&quot;g1&quot; lexeme=&quot;BEAT&quot; stroke=&quot;s1:t1&quot;/&gt;&lt;gaze id=&quot;z1&quot; target=&quot;camera&quot;/&gt;&lt;/bml&gt;</translation>
+    </message>
+    <message>
+        <source>Put the line, its visemes and its gestures (or the BML block&apos;s speech, gestures, head, face and gaze) on the timeline at the playhead (one undo step)</source>
+        <translation>Placer la réplique, ses visèmes et ses gestes (ou la parole, les gestes, la tête, le visage et le regard du bloc BML) sur la timeline à la tête de lecture (une seule annulation)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Previewing BML block “%1” from %2 s to %3 s: %n behaviour(s)</source>
+        <translation>
+            <numerusform>Aperçu du bloc BML « %1 » de %2 s à %3 s : %n comportement</numerusform>
+            <numerusform>Aperçu du bloc BML « %1 » de %2 s à %3 s : %n comportements</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Insert BML</source>
+        <translation>Insérer du BML</translation>
+    </message>
+    <message numerus="yes">
+        <source>Inserted BML from %1 s to %2 s: %n speech(es), %3 gesture(s), %4 head gesture(s), %5 face lexeme(s), %6 gaze(s).</source>
+        <translation>
+            <numerusform>BML inséré de %1 s à %2 s : %n réplique, %3 geste(s), %4 geste(s) de tête, %5 lexème(s) facial(aux), %6 regard(s).</numerusform>
+            <numerusform>BML inséré de %1 s à %2 s : %n répliques, %3 geste(s), %4 geste(s) de tête, %5 lexème(s) facial(aux), %6 regard(s).</numerusform>
         </translation>
     </message>
 </context>

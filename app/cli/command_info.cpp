@@ -110,13 +110,18 @@ int runInfo(const CommandSpec& spec, const ParsedArguments& arguments)
             std::printf("  clip '%s': %s\n", clip.name.c_str(), clipSummary(clip).c_str());
         for (const scenario::Layer& layer : character.layers) {
             std::printf("  layer '%s' (%s, %s): %zu action%s\n", layer.name.c_str(),
-                        layer.kind == scenario::LayerKind::Body ? "body" : "face", modeName(layer.mode),
+                        scenario::layerKindName(layer.kind), modeName(layer.mode),
                         layer.actions.size(), layer.actions.size() == 1 ? "" : "s");
             for (const scenario::ActionSpec& action : layer.actions)
-                std::printf("    action '%s': clip '%s' at %.3f s, %s%s%s%s%s\n", action.name.c_str(),
-                            action.clip.c_str(), core::ticksToSeconds(action.start), modeName(action.mode),
-                            action.mask.empty() ? "" : ", mask '", action.mask.c_str(), action.mask.empty() ? "" : "'",
-                            placementName(action.placement));
+                if (action.gaze)
+                    std::printf("    action '%s': looks at '%s' (%s) from %.3f s\n", action.name.c_str(),
+                                action.gaze->target.c_str(), action.gaze->influence.c_str(),
+                                core::ticksToSeconds(action.start));
+                else
+                    std::printf("    action '%s': clip '%s' at %.3f s, %s%s%s%s%s\n", action.name.c_str(),
+                                action.clip.c_str(), core::ticksToSeconds(action.start), modeName(action.mode),
+                                action.mask.empty() ? "" : ", mask '", action.mask.c_str(), action.mask.empty() ? "" : "'",
+                                placementName(action.placement));
         }
     }
     if (document->lighting.probe.empty())

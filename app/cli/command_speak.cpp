@@ -1,7 +1,8 @@
-// thespis-cli speak: a character of a scenario says tagged text (paper §5): core's SpeakJob
-// speaks it with espeak-ng and plans its visemes and gestures; the speech is written as a WAV,
-// and with --scenario-out its face actions and gestures are inserted into the scenario as the
-// studio's Insert does (core/edit/speech_edits.h).
+// thespis-cli speak: a character of a scenario says tagged text or plays a BML block (paper §5,
+// issue 33): core's SpeakJob speaks it with espeak-ng; tagged text's visemes and gestures are
+// planned and written as a WAV, and with --scenario-out its face actions and gestures — or the
+// BML block's speeches, gestures, head and face lexemes and gaze — are inserted into the
+// scenario as the studio's Insert does (core/edit/speech_edits.h, bml_edits.h).
 
 #include <cstdio>
 
@@ -20,12 +21,13 @@ CommandSpec speakSpec()
 {
     CommandSpec spec;
     spec.name = "speak";
-    spec.summary = "Make a character say tagged text: speech audio, visemes and gestures.";
+    spec.summary = "Make a character say tagged text or play BML: speech audio, visemes, gestures and gaze.";
     spec.positionals = {"SCENARIO"};
     spec.options = {
         {"character", "NAME", "who speaks", true},
         {"text", "TEXT", "what is said; gestures as <begin_gesture id=\"g1\" anim=\"NAME\"/> … <end_gesture id=\"g1\"/>"},
         {"text-file", "FILE", "read what is said from a UTF-8 file instead"},
+        {"bml", "FILE.xml", "a BML 1.0 block to play instead (<speech>, <gesture>, <head>, <faceLexeme>, <gaze> …)"},
         {"voice", "VOICE", "an espeak-ng voice (default en-us; --voices lists them)"},
         {"rate", "WPM", "words a minute, 80 … 450 (default 175)"},
         {"pitch", "P", "0 … 100 (default 50)"},
@@ -42,8 +44,13 @@ CommandSpec speakSpec()
         "over the time of its words (face gestures on the\n"
         "Speech layer, body gestures on a \"Gestures\" layer). The summary lists the words with their\n"
         "times. Give --out, --scenario-out or both.\n"
+        "With --bml the block's behaviours are timed against its speeches' words and inserted with\n"
+        "--scenario-out: speeches as lines with their visemes, gestures on \"Gestures\", head nods,\n"
+        "shakes and tilts on the additive \"Head\" layer, faceLexemes on \"Face lexemes\", gaze on the\n"
+        "\"Gaze\" gaze layer. A BML error names its line and column.\n"
         "Example: thespis-cli speak demo.thespis --character Creon --text 'Are you <begin_gesture\n"
         "  id=\"g1\" anim=\"agree\"/>sure?<end_gesture id=\"g1\"/>' --out creon.wav --scenario-out demo2.thespis\n"
+        "         thespis-cli speak demo.thespis --character Creon --bml greet.xml --at 2 --scenario-out demo2.thespis\n"
         "Exit status: 0 done, 2 bad command line or text, 3 the scenario cannot be read or has no such\n"
         "character or gesture, 4 a file could not be written, 130 cancelled.";
     return spec;
@@ -52,9 +59,10 @@ CommandSpec speakSpec()
 int runSpeak(const CommandSpec& spec, const ParsedArguments& arguments)
 {
     const auto text = arguments.value("text");
-    const auto textFile = arguments.value("text-file");
-    if (text.has_value() == textFile.has_value())
-        return usageError(spec, "give either --text or --text-file");
+    const auto bml = arguments.value("bml");
+    const auto textFile = bml ? bml : arguments.value("text-file");
+    if (int(text.has_value()) + int(arguments.has("text-file")) + int(bml.has_value()) != 1)
+        return usageError(spec, "give one of --text, --text-file and --bml");
     const auto out = arguments.value("out");
     const auto scenarioOut = arguments.value("scenario-out");
     if (!out && !scenarioOut)
@@ -68,6 +76,8 @@ int runSpeak(const CommandSpec& spec, const ParsedArguments& arguments)
             return ExitInvalidInput;
         }
         job.text = std::move(*read);
+        if (bml && !core::speech::isBml(job.text))
+            return usageError(spec, *bml + " is not BML: it does not start with <bml");
     } else {
         job.text = *text;
     }
@@ -103,6 +113,10 @@ int runSpeak(const CommandSpec& spec, const ParsedArguments& arguments)
     if (!spoken)
         return reportJobFailure(spec.name, spoken.error());
 
+    if (job.bml) {
+        const SpeechTarget target{scenarioPath, *scenarioOut, character, at};
+        return insertBmlAndSave(spec.name, *opened, target, *job.bml, job.bmlSpeech, job.voice, quiet);
+    }
     if (scenarioOut) {
         const int inserted = insertSpeechAndSave(
             spec.name, *opened, {scenarioPath, *scenarioOut, character, at},

@@ -1,14 +1,17 @@
 #pragma once
-// What `speak` and `lipsync` share: a spoken or lip-synced line put into a scenario as the
-// studio's Insert does (edit::insertSpeech) and saved as another scenario file, its audio named
-// relative to where that file is.
+// What `speak` and `lipsync` share: a spoken or lip-synced line, or a BML block, put into a
+// scenario as the studio's Insert does (edit::insertSpeech, edit::insertBml) and saved as another
+// scenario file, its audio named relative to where that file is.
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "scenario/open_scenario.h"
+#include "speech/bml.h"
+#include "speech/espeak_voice.h"
 #include "speech/speech_plan.h"
 
 namespace thespis::cli {
@@ -27,5 +30,12 @@ int insertSpeechAndSave(const std::string& command, const core::scenario::Opened
                         const SpeechTarget& target, core::scenario::SpeechLine line,
                         const std::vector<core::speech::VisemeCue>& visemes,
                         const std::vector<core::speech::GestureCue>& gestures, bool quiet);
+
+/// Inserts `block` (its speeches said in `spoken` with `voice`) into `opened` as the studio's
+/// Insert does (edit::insertBml) and writes the result to target.out; as insertSpeechAndSave().
+int insertBmlAndSave(const std::string& command, const core::scenario::OpenedScenario& opened,
+                     const SpeechTarget& target, const core::speech::BmlBlock& block,
+                     const std::map<std::string, core::speech::Utterance>& spoken,
+                     const core::speech::VoiceSettings& voice, bool quiet);
 
 } // namespace thespis::cli

@@ -187,7 +187,7 @@ Result<Edit> addLayer(const Scenario& scenario, int index, const std::string& na
         return character.error();
     Layer layer;
     layer.kind = kind;
-    layer.name = uniqueName(name.empty() ? (kind == LayerKind::Face ? "face" : "body") : name, namesOf((*character)->layers));
+    layer.name = uniqueName(name.empty() ? std::string(layerKindName(kind)) : name, namesOf((*character)->layers));
     return Edit(LayerChange{{index, int((*character)->layers.size())}, std::nullopt, std::move(layer)});
 }
 

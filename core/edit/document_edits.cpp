@@ -184,8 +184,6 @@ Result<Edit> insertActions(const Scenario& scenario, const LayerPath& layerPath,
 
 namespace {
 
-const char* kindName(LayerKind kind) { return kind == LayerKind::Face ? "face" : "body"; }
-
 // moveActions()'s edit and where each action lands (in the order given).
 struct PlannedMove {
     Edit edit;
@@ -217,8 +215,8 @@ Result<PlannedMove> planMove(const Scenario& scenario, std::span<const ActionPat
             if (to->lock)
                 return invalid("Layer " + inQuotes(to->name) + " is locked.");
             if (to->kind != from.kind)
-                return invalid("Action " + inQuotes(name) + " is a " + kindName(from.kind) + " action: it cannot go to "
-                               + kindName(to->kind) + " layer " + inQuotes(to->name) + ".");
+                return invalid("Action " + inQuotes(name) + " is a " + layerKindName(from.kind) + " action: it cannot go to "
+                               + layerKindName(to->kind) + " layer " + inQuotes(to->name) + ".");
         }
         earliest = std::min(earliest, (*action)->start);
     }
@@ -360,8 +358,12 @@ Result<Edit> replaceAction(const Scenario& scenario, const ActionPath& path, Act
         return invalid("Layer " + inQuotes(layer.name) + " is locked.");
     if (spec.name.empty())
         return invalid("An action needs a name.");
-    if (!scenario.characters[std::size_t(path.character)].findClip(spec.clip))
+    if (layer.kind == LayerKind::Gaze) {
+        if (!spec.gaze || spec.gaze->target.empty())
+            return invalid("An action of a gaze layer needs a target to look at.");
+    } else if (!scenario.characters[std::size_t(path.character)].findClip(spec.clip)) {
         return invalid("The character has no clip named " + inQuotes(spec.clip) + ".");
+    }
     if (!spec.mask.empty() && !scenario.findMask(spec.mask))
         return invalid("The scenario has no mask named " + inQuotes(spec.mask) + ".");
     return replaceActionEdit(path, **found, std::move(spec));

@@ -4,6 +4,7 @@
 
 #include "edit/content_edits.h"
 #include "edit/document_edits.h"
+#include "edit/layer_insert.h"
 #include "scenario/gesture_action.h"
 #include "scene/face_mask.h"
 #include "scene/fap.h"
@@ -23,37 +24,6 @@ constexpr const char* kSpeechMask = "Speech";
 
 Error invalid(std::string message) { return makeError(ErrorCode::InvalidArgument, std::move(message)); }
 
-// Applies `step` to `after`: later steps are made for the document as the earlier ones leave it.
-Result<void> take(Result<Edit> step, Scenario& after)
-{
-    if (!step)
-        return step.error();
-    return step->apply(after);
-}
-
-// The layer of that name and kind, added when the character has none: an Override layer, so that
-// where its actions cover the face (or the body part) they replace what the layers below do,
-// and where they fade out the layers below show again.
-Result<LayerPath> layerNamed(Scenario& after, int character, const std::string& name, LayerKind kind)
-{
-    const auto& layers = after.characters[std::size_t(character)].layers;
-    const auto it = std::find_if(layers.begin(), layers.end(),
-                                 [&](const scenario::Layer& l) { return l.name == name && l.kind == kind; });
-    if (it != layers.end()) {
-        if (it->lock)
-            return invalid("The layer " + inQuotes(name) + " is locked: unlock it to insert speech.");
-        return LayerPath{character, int(it - layers.begin())};
-    }
-    scenario::Layer layer;
-    layer.name = name;
-    layer.kind = kind;
-    layer.mode = anim::BlendMode::Override;
-    const LayerPath path{character, int(layers.size())};
-    if (auto added = take(Edit(LayerChange{path, std::nullopt, std::move(layer)}), after); !added)
-        return added.error();
-    return path;
-}
-
 std::string visemeClipName(const std::string& viseme) { return "viseme " + viseme; }
 
 // One face channel at 1, held for a second: stretched, it lasts as long as its cue.
@@ -65,11 +35,6 @@ ClipAsset visemeClip(const speech::VisemeCue& cue)
     clip.scalars = {"viseme" + std::to_string(cue.viseme)};
     clip.frames = {1.0f, 1.0f};
     return clip;
-}
-
-scenario::ModifierSpec stretchTo(double seconds, double clipSeconds)
-{
-    return {.kind = scenario::ModifierKind::TimeStretch, .factor = seconds / clipSeconds};
 }
 
 std::string gesturesOf(const scenario::Character& character)
@@ -163,17 +128,28 @@ Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, sc
         if (isFace && clipSeconds > 0 && cue.end > cue.start) {
             action.modifiers.insert(action.modifiers.begin(), stretchTo(cue.end - cue.start, clipSeconds));
         } else if (!isFace && clipSeconds > 0) {
-            const speech::GestureFit fit =
-                speech::fitGesture(cue, clipSeconds, ticksToSeconds(gesture.fadeIn), ticksToSeconds(gesture.fadeOut));
+            const speech::GestureFit fit = speech::fitGesture(cue, clipSeconds, ticksToSeconds(gesture.fadeIn),
+                                                              ticksToSeconds(gesture.fadeOut), {gesture.hold, gesture.stroke});
             action.start = at + secondsToTicks(fit.start);
-            action.modifiers.insert(action.modifiers.begin(), stretchTo(fit.duration, clipSeconds));
+            if (fit.warp.empty()) {
+                action.modifiers.insert(action.modifiers.begin(), stretchTo(fit.duration, clipSeconds));
+            } else {
+                auto curve = anim::Curve::keyframed(fit.warp);
+                if (!curve)
+                    return curve.error();
+                scenario::ModifierSpec warp{.kind = scenario::ModifierKind::TimeWarp};
+                warp.warp = std::move(curve).value();
+                warp.duration = fit.duration;
+                action.modifiers.insert(action.modifiers.begin(), std::move(warp));
+            }
         }
         (isFace ? face : body).push_back(std::move(action));
     }
     if (face.empty() && body.empty())
         return invalid("There is nothing to insert: the speech has no phonemes.");
     if (!face.empty()) {
-        auto layer = layerNamed(after, character, kSpeechLayer, LayerKind::Face);
+        // Override: where its actions cover the face they replace what the layers below do.
+        auto layer = layerNamed(after, character, kSpeechLayer, LayerKind::Face, anim::BlendMode::Override);
         if (!layer)
             return layer.error();
         result.visemeActions = int(visemes.size());
@@ -182,7 +158,7 @@ Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, sc
             return added.error();
     }
     if (!body.empty()) {
-        auto layer = layerNamed(after, character, kGestureLayer, LayerKind::Body);
+        auto layer = layerNamed(after, character, kGestureLayer, LayerKind::Body, anim::BlendMode::Override);
         if (!layer)
             return layer.error();
         result.bodyGestures = int(body.size());
@@ -196,10 +172,7 @@ Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, sc
         taken.push_back(other.name);
     line.name = uniqueName(line.name.empty() ? "line" : line.name, taken);
     who.speech.push_back(std::move(line));
-    Edit& edit = result.edit;
-    for (std::size_t m = scenario.masks.size(); m < after.masks.size(); ++m)
-        edit.add(MaskChange{int(m), std::nullopt, after.masks[m]});
-    edit.add(CharacterChange{character, speaker, who});
+    result.edit = characterEdit(scenario, after, character);
     return result;
 }
 

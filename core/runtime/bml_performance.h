@@ -3,7 +3,7 @@
 // its speeches spoken by espeak-ng with their lips (runtime/speech_performance.h), gestures of
 // the character's gesticon fitted between their start and end points, faceLexemes on the face
 // (speech/face_lexemes.h), head nods, shakes and tilts (motion/head_gesture.h) and gaze
-// (Stage::gaze) — at the times speech::resolveBml() finds from the speeches' TTS timing. Blocks
+// (Stage::gaze) — at the times the planner (speech/bml_plan.h) finds from the speeches' TTS timing. Blocks
 // compose as BML says: merge plays alongside what plays, append after the character's last block
 // ends, replace stops that first. The studio, scripts, the command line and the dialogue all
 // realise BML through here.
@@ -18,26 +18,16 @@
 #include "runtime/sound.h"
 #include "runtime/stage.h"
 #include "speech/bml.h"
+#include "speech/bml_plan.h"
 #include "speech/espeak_voice.h"
 #include "util/error.h"
 #include "util/tick.h"
 
 namespace thespis::core::runtime {
 
-/// BML gesture lexemes (BEAT, POINT, WAVE …) → entries of a character's gesticon. A lexeme that
-/// names an entry (in any case) needs no row.
-struct BmlLexicon {
-    std::map<std::string, std::string> gestures;
-    /// Rows for the shipped gesticons: BEAT, NOD and AGREE → "agree"; WAVE and GREET → "greet";
-    /// POINT → "point".
-    static BmlLexicon defaults();
-    /// The entry of `gesticon` (its gestures' names) that plays `lexeme`; empty when none does.
-    std::string entryFor(const std::string& lexeme, const std::vector<std::string>& gesticon) const;
-};
-
 struct BmlOptions {
     speech::VoiceSettings voice;
-    BmlLexicon lexicon = BmlLexicon::defaults();
+    speech::BmlLexicon lexicon = speech::BmlLexicon::defaults();
     motion::GazeSettings gaze; ///< what a <gaze> does beyond its target, influence and offset
     /// Speeches already spoken, by behaviour id (the others are synthesised with `voice`).
     std::shared_ptr<const std::map<std::string, speech::Utterance>> spoken;

@@ -96,12 +96,22 @@ Result<SpeechPerformance> performSpeech(Stage& stage, const std::string& charact
         ActionTemplate gesture = std::move(**found);
         const anim::TimeDomain domain = gesture.source->domain();
         const speech::GestureFit fit = speech::fitGesture(cue, domain.openEnded() ? 0 : domain.duration(),
-                                                          gesture.fadeIn, gesture.fadeOut);
+                                                          gesture.fadeIn, gesture.fadeOut, gesture.shape);
         if (!domain.openEnded() && domain.duration() > 0) {
-            auto stretched = anim::TimeStretch::create(gesture.source, fit.stretch);
-            if (!stretched)
-                return stretched.error();
-            gesture.source = std::move(stretched).value();
+            if (fit.warp.empty()) {
+                auto stretched = anim::TimeStretch::create(gesture.source, fit.stretch);
+                if (!stretched)
+                    return stretched.error();
+                gesture.source = std::move(stretched).value();
+            } else {
+                auto warp = anim::Curve::keyframed(fit.warp);
+                if (!warp)
+                    return warp.error();
+                auto warped = anim::TimeWarp::create(gesture.source, std::move(warp).value(), fit.duration);
+                if (!warped)
+                    return warped.error();
+                gesture.source = std::move(warped).value();
+            }
         }
         if (auto played = stage.playAction(character, Track::Body, cue.animation, gesture,
                                            at + secondsToTicks(fit.start), {.fadeIn = 0});

@@ -114,7 +114,8 @@ void Stage::fillLibrary(Performer& performer, scenario::CharacterRuntime& charac
     for (const auto& [name, gesture] : character.gestures) {
         const BlendingAction& played = gesture.played();
         performer.body.library[name] =
-            ActionTemplate{played.source, played.params, played.renderOutsideDomain, gesture.fadeIn, gesture.fadeOut};
+            ActionTemplate{played.source, played.params, played.renderOutsideDomain, gesture.fadeIn, gesture.fadeOut,
+                           {gesture.hold, gesture.stroke}};
     }
 }
 
@@ -152,6 +153,11 @@ Result<void> Stage::setRuntime(scenario::ScenarioRuntime runtime)
     m_runtime = std::move(runtime);
     for (std::size_t i = 0; i < m_performers.size(); ++i) {
         fillLibrary(m_performers[i], m_runtime.characters[i]); // live actions play on
+        // The gaze actions may have changed: the one playing is looked up again, and a gaze one
+        // started lets go unless it still plays.
+        m_performers[i].authoredCue = -1;
+        if (m_performers[i].gaze && m_performers[i].gaze->authored)
+            m_performers[i].gaze->release = 0.0;
         cacheAuthored(m_performers[i].body);
         cacheAuthored(m_performers[i].face);
     }
@@ -222,6 +228,15 @@ int Stage::findCharacter(const std::string& name) const
         if (m_performers[i].name == name)
             return int(i);
     return -1;
+}
+
+Result<anim::Skeleton> Stage::skeleton(const std::string& character) const
+{
+    const std::lock_guard lock(m_mutex);
+    auto performer = find(character);
+    if (!performer)
+        return performer.error();
+    return (*performer)->skeleton;
 }
 
 Result<Stage::Performer*> Stage::find(const std::string& character)
@@ -470,6 +485,7 @@ void Stage::resetLive()
     const std::lock_guard lock(m_mutex);
     for (Performer& performer : m_performers) {
         performer.gaze.reset();
+        performer.authoredCue = -1; // the scenario's gaze action playing starts again
         for (TrackState* s : {&performer.body, &performer.face}) {
             for (auto& [name, activation] : s->latest)
                 if (activation.schedule)

@@ -21,14 +21,17 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "anim/blending_schedule.h"
 #include "anim/frame_cache.h"
 #include "motion/gaze.h"
+#include "motion/gaze_target.h"
 #include "runtime/pose_set.h"
 #include "scenario/scenario_runtime.h"
+#include "speech/speech_plan.h"
 #include "util/error.h"
 #include "util/tick.h"
 
@@ -41,8 +44,10 @@ struct ActionTemplate {
     anim::BlendablePtr source;
     anim::BlendingParams params;
     bool renderOutsideDomain = false;
-    /// A gesture's fades (seconds), by which speech fits it to its words (speech::fitGesture).
+    /// A gesture's fades (seconds), stroke and hold, by which speech fits it to its words
+    /// (speech::fitGesture).
     double fadeIn = 0, fadeOut = 0;
+    speech::GestureShape shape;
 };
 
 struct ActivateOptions {
@@ -53,14 +58,7 @@ struct ActivateOptions {
     double fadeIn = 0.25;
 };
 
-/// Where a character looks (Stage::gaze).
-struct GazeTarget {
-    enum class Kind { Point, Joint, Camera };
-    Kind kind = Kind::Camera;
-    anim::Vec3d point;        ///< Point: in the scene, metres
-    std::string character;    ///< Joint: whose
-    std::string joint;        ///< Joint: which; empty for the point between its eyes
-};
+using motion::GazeTarget;
 
 class Stage {
 public:
@@ -88,6 +86,8 @@ public:
     std::vector<std::string> characterNames() const;
     /// Index of the character, or −1.
     int findCharacter(const std::string& name) const;
+    /// The character's skeleton (what its body frames are laid out on).
+    Result<anim::Skeleton> skeleton(const std::string& character) const;
 
     /// Names (or renames) an action the character can play on a track.
     Result<void> defineAction(const std::string& character, Track track, const std::string& action,
@@ -194,6 +194,7 @@ private:
         int targetCharacter = -1, targetJoint = -1; // of a Joint target (−1 joint: its eyes)
         double start = 0;
         std::optional<double> release;
+        bool authored = false; // set by a gaze action of the scenario, not by gaze()
     };
     struct Performer {
         std::string name;
@@ -201,6 +202,7 @@ private:
         anim::Skeleton skeleton;
         std::optional<motion::GazeRig> gazeRig; // none without a head joint
         std::optional<GazeSlot> gaze;
+        int authoredCue = -1; // the scenario's gaze action playing (CharacterRuntime::gaze), or −1
     };
 
     static void fillLibrary(Performer& performer, scenario::CharacterRuntime& character);
@@ -224,6 +226,11 @@ private:
     void evaluateTrack(TrackState& track, double seconds, std::vector<float>& out) const;
     /// The gaze layer over the poses of every character (runtime/stage_gaze.cpp).
     void applyGazes(double seconds, PoseSet& out);
+    /// Points the performer's gaze at `target` from `start` (seconds); errors as gaze()'s.
+    Result<void> aim(Performer& performer, const GazeTarget& target, const motion::GazeSettings& settings,
+                     double start, bool authored);
+    /// Starts the scenario's gaze action playing at `seconds`, or lets go of the one that ended.
+    void followAuthoredGaze(Performer& performer, std::span<const scenario::GazeCue> cues, double seconds);
     /// Where a gaze target is in the scene now, from the poses in `out`; none for the camera
     /// when none is known.
     std::optional<anim::Vec3d> targetPosition(const GazeSlot& gaze, const PoseSet& out) const;

@@ -58,7 +58,13 @@ Result<void> Stage::gaze(const std::string& character, const GazeTarget& target,
     auto performer = find(character);
     if (!performer)
         return performer.error();
-    Performer& p = **performer;
+    return aim(**performer, target, settings, ticksToSeconds(at), false);
+}
+
+Result<void> Stage::aim(Performer& p, const GazeTarget& target, const motion::GazeSettings& settings, double start,
+                        bool authored)
+{
+    const std::string& character = p.name;
     if (!p.gazeRig)
         return makeError(ErrorCode::InvalidArgument,
                          "\"" + character + "\" cannot look at anything: its skeleton has no head joint (skullbase).");
@@ -85,14 +91,36 @@ Result<void> Stage::gaze(const std::string& character, const GazeTarget& target,
     if (p.gaze) {
         p.gaze->controller.setSettings(settings);
     } else {
-        p.gaze.emplace(GazeSlot{motion::GazeController(*p.gazeRig, settings), {}, -1, -1, 0, {}});
+        p.gaze.emplace(GazeSlot{motion::GazeController(*p.gazeRig, settings), {}, -1, -1, 0, {}, false});
     }
     p.gaze->target = target;
     p.gaze->targetCharacter = targetCharacter;
     p.gaze->targetJoint = targetJoint;
-    p.gaze->start = ticksToSeconds(at);
+    p.gaze->start = start;
     p.gaze->release.reset();
+    p.gaze->authored = authored;
     return {};
+}
+
+void Stage::followAuthoredGaze(Performer& performer, std::span<const scenario::GazeCue> cues, double seconds)
+{
+    // The cue playing now: the latest started that has not ended.
+    int now = -1;
+    for (std::size_t k = 0; k < cues.size() && cues[k].start <= seconds; ++k)
+        if (seconds < cues[k].end)
+            now = int(k);
+    if (now == performer.authoredCue)
+        return;
+    performer.authoredCue = now;
+    if (now >= 0) {
+        const scenario::GazeCue& cue = cues[std::size_t(now)];
+        // A target the scenario checked but this stage cannot find (a joint of a rig without
+        // it) leaves the gaze as it is.
+        if (aim(performer, cue.target, cue.settings, cue.start, true))
+            performer.gaze->release = cue.end;
+    } else if (performer.gaze && performer.gaze->authored) {
+        performer.gaze->release = std::min(performer.gaze->release.value_or(seconds), seconds);
+    }
 }
 
 Result<bool> Stage::stopGaze(const std::string& character, Tick at)
@@ -116,7 +144,8 @@ Result<std::optional<motion::GazeState>> Stage::gazeState(const std::string& cha
     if (!(*performer)->gaze)
         return std::optional<motion::GazeState>{};
     motion::GazeState state = (*performer)->gaze->controller.state();
-    state.released |= (*performer)->gaze->release.has_value(); // let go, now or later
+    // Let go, now or later by stopGaze(); a gaze action of the scenario lets go when it ends.
+    state.released |= (*performer)->gaze->release.has_value() && !(*performer)->gaze->authored;
     return std::optional<motion::GazeState>(state);
 }
 
@@ -160,6 +189,8 @@ void Stage::applyGazes(double seconds, PoseSet& out)
 {
     for (std::size_t i = 0; i < m_performers.size() && i < out.characters.size(); ++i) {
         Performer& performer = m_performers[i];
+        if (i < m_runtime.characters.size())
+            followAuthoredGaze(performer, m_runtime.characters[i].gaze, seconds);
         if (!performer.gaze || seconds < performer.gaze->start)
             continue;
         GazeSlot& gaze = *performer.gaze;

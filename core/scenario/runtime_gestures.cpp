@@ -14,6 +14,8 @@ void buildGestures(const Scenario& scenario, const Character& character, const B
         actions.filter = gesture.dependentJointFilter;
         actions.fadeIn = ticksToSeconds(gesture.fadeIn);
         actions.fadeOut = ticksToSeconds(gesture.fadeOut);
+        actions.hold = gesture.hold;
+        actions.stroke = gesture.stroke;
         const std::string where = "Character \"" + character.name + "\", gesture \"" + gesture.name + "\"";
         for (const bool filter : {false, true}) {
             if (filter && !basesReadable)

@@ -35,6 +35,16 @@ void rebasePaths(Scenario& scenario, const std::filesystem::path& from, const st
         occluder.model = rebasedPath(occluder.model, from, to, keep);
 }
 
+const char* layerKindName(LayerKind kind)
+{
+    switch (kind) {
+    case LayerKind::Body: return "body";
+    case LayerKind::Face: return "face";
+    case LayerKind::Gaze: break;
+    }
+    return "gaze";
+}
+
 const Character* Scenario::findCharacter(const std::string& characterName) const
 {
     for (const Character& character : characters)

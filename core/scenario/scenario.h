@@ -118,9 +118,23 @@ struct ModifierSpec {
 /// character's place and heading, or on from where the layer's previous action leaves the body.
 enum class Placement { World, Character, Continue };
 
+/// What an action on a gaze layer looks at (format 10): the Stage's gaze (motion/gaze_target.h)
+/// turned toward `target` while the action lasts, with BML's influence and offset.
+struct GazeSpec {
+    std::string target = "camera";        ///< "camera", "Creon", "Creon:l_wrist", "0.5 1.6 2"
+    std::string influence = "HEAD";       ///< EYES, HEAD, SHOULDER, WAIST
+    double offsetAngle = 0;               ///< degrees away from the target …
+    std::string offsetDirection;          ///< … toward RIGHT, LEFT, UP, DOWN, UPRIGHT … ("": none)
+    bool operator==(const GazeSpec&) const = default;
+};
+
+/// A gaze action lasts this long before its modifiers (a time stretch gives it its length).
+inline constexpr double kGazeActionSeconds = 1.0;
+
 struct ActionSpec {
     std::string name;
-    std::string clip;                     ///< name of a ClipAsset of the character
+    std::string clip;                     ///< name of a ClipAsset of the character (none on a gaze layer)
+    std::optional<GazeSpec> gaze;         ///< on a gaze layer, and only there
     Tick start = 0;
     std::vector<ModifierSpec> modifiers;
     anim::Curve weight;
@@ -136,7 +150,11 @@ struct ActionSpec {
     bool operator==(const ActionSpec&) const = default;
 };
 
-enum class LayerKind { Body, Face };
+/// Body and face layers blend clips; a gaze layer's actions turn the eyes, head and body toward
+/// their targets over all of them (format 10).
+enum class LayerKind { Body, Face, Gaze };
+/// "body", "face", "gaze": as files write it.
+const char* layerKindName(LayerKind kind);
 
 /// A track of actions blended into one schedule; a character's layers of one kind are
 /// combined in order, the first as the base and each next one with its own mode.
@@ -169,6 +187,12 @@ struct Gesture {
     /// until filterMuteAbove, the rest muted. Later starts keep the gesture closer to its keys
     /// (paper §4.4); the paper's 20–30 suits a posture database that holds gestures like it.
     int filterFadeFrom = 20, filterMuteAbove = 30;
+    /// How speech fits it to its words (format 10): a holding gesture plays at its own speed and
+    /// holds its stroke (or middle) pose while the words last; otherwise it is time-scaled.
+    bool hold = false;
+    /// Seconds into the clip of its stroke (format 10; −1: none marked), which speech puts on the
+    /// first stressed word the gesture spans.
+    double stroke = -1;
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const Gesture&) const = default;
 };

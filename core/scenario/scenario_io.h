@@ -31,7 +31,8 @@ enum Version : int {
     Blinks = 7,              ///< clips that are blink generators (face layers)
     FaceMappingTable = 8,    ///< a character's own face mapping table file ("faceMapping")
     Speech = 9,              ///< characters' speech lines; dominance weight curves
-    Current = Speech,
+    Gaze = 10,               ///< gaze layers, whose actions look at a target
+    Current = Gaze,
 };
 } // namespace format
 

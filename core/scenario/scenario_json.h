@@ -77,6 +77,7 @@ constexpr NamedValue<Placement> kPlacements[] = {
 constexpr NamedValue<LayerKind> kLayerKinds[] = {
     {LayerKind::Body, "body"},
     {LayerKind::Face, "face"},
+    {LayerKind::Gaze, "gaze"},
 };
 
 template <class E, std::size_t N>

@@ -153,12 +153,30 @@ ModifierSpec readModifier(const json& value, const std::string& path)
     return m;
 }
 
+// {"target": "Creon", "influence": "HEAD", "offsetAngle": 10, "offsetDirection": "LEFT"}: all
+// but the target optional. Whether they read as gaze is the runtime's to check (it names the action).
+GazeSpec readGaze(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "");
+    GazeSpec gaze;
+    gaze.target = r.name("target");
+    gaze.influence = r.string("influence", false, gaze.influence);
+    gaze.offsetAngle = r.number("offsetAngle", false, 0, Range::Any);
+    gaze.offsetDirection = r.string("offsetDirection", false);
+    if (!r.extra().empty())
+        fail(path + "." + r.extra().begin().key(),
+             "unknown member of a gaze (known: target, influence, offsetAngle, offsetDirection)");
+    return gaze;
+}
+
 ActionSpec readAction(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Action.2");
+    ObjectReader r(value, path, "Action.3");
     ActionSpec a;
     a.name = r.name();
-    a.clip = r.name("clip");
+    if (const json* gaze = r.find("gaze"))
+        a.gaze = readGaze(*gaze, r.fieldPath("gaze"));
+    a.clip = a.gaze ? r.string("clip", false) : r.name("clip"); // a gaze action plays no clip
     a.start = r.ticks("start", true);
     const json& modifiers = r.array("modifiers", false);
     for (std::size_t i = 0; i < modifiers.size(); ++i)
@@ -177,7 +195,7 @@ ActionSpec readAction(const json& value, const std::string& path)
 
 Layer readLayer(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Layer.2");
+    ObjectReader r(value, path, "Layer.3");
     Layer layer;
     layer.name = r.name();
     layer.kind = r.enumeration("kind", kLayerKinds, false, LayerKind::Body);
@@ -328,7 +346,7 @@ LightingSpec readLighting(const json& value, const std::string& path)
 
 Gesture readGesture(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Gesture.1");
+    ObjectReader r(value, path, "Gesture.2");
     Gesture gesture;
     gesture.name = r.name();
     gesture.clip = r.name("clip");
@@ -341,6 +359,11 @@ Gesture readGesture(const json& value, const std::string& path)
     if (gesture.filterMuteAbove < gesture.filterFadeFrom)
         fail(r.fieldPath("filterMuteAbove"), "must not be below filterFadeFrom (" + std::to_string(gesture.filterFadeFrom) +
                                                  "), found " + std::to_string(gesture.filterMuteAbove));
+    const std::string fit = r.string("fit", false, "stretch");
+    if (fit != "stretch" && fit != "hold")
+        fail(r.fieldPath("fit"), "expected \"stretch\" or \"hold\", found " + describeValue(json(fit)));
+    gesture.hold = fit == "hold";
+    gesture.stroke = r.number("stroke", false, -1, Range::NonNegative);
     gesture.extra = r.extra();
     return gesture;
 }
@@ -490,7 +513,7 @@ NamedMask readMask(const json& value, const std::string& path)
 
 Scenario readScenario(const json& document)
 {
-    ObjectReader r(document, "", "Scenario.9");
+    ObjectReader r(document, "", "Scenario.10");
     r.find("format");  // checked before
     r.find("version");
     Scenario scenario;

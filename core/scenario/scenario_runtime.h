@@ -16,6 +16,7 @@
 #include "anim/keyframe_clip.h"
 #include "anim/root_motion.h"
 #include "anim/skeleton.h"
+#include "motion/gaze_target.h"
 #include "scenario/clip_file.h"
 #include "scenario/scenario.h"
 #include "util/error.h"
@@ -29,7 +30,17 @@ struct GestureActions {
     anim::BlendingAction withFilter, withoutFilter;
     bool filter = false; ///< the gesture's own choice
     double fadeIn = 0, fadeOut = 0; ///< seconds
+    bool hold = false;              ///< Gesture::hold
+    double stroke = -1;             ///< Gesture::stroke, seconds into the clip (−1: none)
     const anim::BlendingAction& played() const { return filter ? withFilter : withoutFilter; }
+};
+
+/// An action of a gaze layer that plays: from `start` to `end` (seconds) the character looks at
+/// `target` (Stage's gaze layer) with `settings` (BML's influence and offset; the rest default).
+struct GazeCue {
+    double start = 0, end = 0;
+    motion::GazeTarget target;
+    motion::GazeSettings settings;
 };
 
 /// A character's schedules. Every layer is built (so that its actions are checked and can be
@@ -48,6 +59,8 @@ struct CharacterRuntime {
     std::map<std::string, GestureActions> gestures;
     /// The character's speech lines: what scripts say with voiceService.activateAction.
     std::vector<SpeechLine> speech;
+    /// What its gaze layers that play look at, by start.
+    std::vector<GazeCue> gaze;
     std::shared_ptr<anim::BlendingSchedule> body;       ///< every body layer, nested
     std::shared_ptr<anim::BlendingSchedule> face;       ///< every face layer (MPEG-4 FAPs), nested
     std::vector<std::shared_ptr<anim::BlendingSchedule>> layers; ///< per Layer, same order

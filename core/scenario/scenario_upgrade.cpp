@@ -131,6 +131,22 @@ static Result<void> upgradeV8toV9(nlohmann::json& document)
     return {};
 }
 
+// 9 → 10: layers may be gaze layers, whose actions name a target ("gaze") instead of a clip, and
+// gestures may hold ("fit") and mark their stroke; nothing else changed, so only the scenario's,
+// the layers', the actions' and the gestures' schemas are new.
+static Result<void> upgradeV9toV10(nlohmann::json& document)
+{
+    renameSchema(document, "Scenario.9", "Scenario.10");
+    forEachIn(document, "characters", [](nlohmann::json& character) {
+        forEachIn(character, "gestures", [](nlohmann::json& gesture) { renameSchema(gesture, "Gesture.1", "Gesture.2"); });
+        forEachIn(character, "layers", [](nlohmann::json& layer) {
+            renameSchema(layer, "Layer.2", "Layer.3");
+            forEachIn(layer, "actions", [](nlohmann::json& action) { renameSchema(action, "Action.2", "Action.3"); });
+        });
+    });
+    return {};
+}
+
 std::span<const UpgradeStep> upgradeSteps()
 {
     static constexpr UpgradeStep steps[] = {
@@ -142,6 +158,7 @@ std::span<const UpgradeStep> upgradeSteps()
         {format::NoPostureTags, "blink clips", &upgradeV6toV7},
         {format::Blinks, "face mapping tables", &upgradeV7toV8},
         {format::FaceMappingTable, "speech lines", &upgradeV8toV9},
+        {format::Speech, "gaze layers", &upgradeV9toV10},
     };
     return steps;
 }

@@ -147,9 +147,20 @@ ojson writeModifier(const ModifierSpec& m)
 ojson writeAction(const ActionSpec& a)
 {
     ojson out = ojson::object();
-    out["schema"] = "Action.2";
+    out["schema"] = "Action.3";
     out["name"] = a.name;
-    out["clip"] = a.clip;
+    if (!a.clip.empty() || !a.gaze)
+        out["clip"] = a.clip;
+    if (a.gaze) {
+        ojson gaze = ojson::object();
+        gaze["target"] = a.gaze->target;
+        gaze["influence"] = a.gaze->influence;
+        if (a.gaze->offsetAngle != 0)
+            gaze["offsetAngle"] = a.gaze->offsetAngle;
+        if (!a.gaze->offsetDirection.empty())
+            gaze["offsetDirection"] = a.gaze->offsetDirection;
+        out["gaze"] = std::move(gaze);
+    }
     out["start"] = a.start;
     if (!a.modifiers.empty()) {
         ojson modifiers = ojson::array();
@@ -172,7 +183,7 @@ ojson writeAction(const ActionSpec& a)
 ojson writeLayer(const Layer& layer)
 {
     ojson out = ojson::object();
-    out["schema"] = "Layer.2";
+    out["schema"] = "Layer.3";
     out["name"] = layer.name;
     out["kind"] = nameOf(kLayerKinds, layer.kind);
     out["mode"] = nameOf(kBlendModes, layer.mode);
@@ -293,7 +304,7 @@ ojson writeCharacter(const Character& character)
         ojson gestures = ojson::array();
         for (const Gesture& gesture : character.gestures) {
             ojson entry = ojson::object();
-            entry["schema"] = "Gesture.1";
+            entry["schema"] = "Gesture.2";
             entry["name"] = gesture.name;
             entry["clip"] = gesture.clip;
             if (!gesture.mask.empty())
@@ -305,6 +316,10 @@ ojson writeCharacter(const Character& character)
                 entry["filterFadeFrom"] = gesture.filterFadeFrom;
                 entry["filterMuteAbove"] = gesture.filterMuteAbove;
             }
+            if (gesture.hold)
+                entry["fit"] = "hold";
+            if (gesture.stroke >= 0)
+                entry["stroke"] = gesture.stroke;
             appendExtra(entry, gesture.extra);
             gestures.push_back(std::move(entry));
         }
@@ -422,7 +437,7 @@ ojson writeScenario(const Scenario& scenario)
     ojson out = ojson::object();
     out["format"] = FormatName;
     out["version"] = int(format::Current);
-    out["schema"] = "Scenario.9";
+    out["schema"] = "Scenario.10";
     out["name"] = scenario.name;
     out["duration"] = scenario.duration;
     ojson masks = ojson::array();

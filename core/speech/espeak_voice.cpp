@@ -211,6 +211,42 @@ Result<void> VoiceSettings::validate() const
     return {};
 }
 
+namespace {
+
+// espeak-ng's transcription of `text` (its voice selected, its lock held): one token of phoneme
+// mnemonics per word it says, stress marks included ("DI2; 'oUld m'an s'at 0nD@ b'EntS" — "on the"
+// said as one word, as its word events have it).
+std::vector<std::string> transcribedWords(const std::string& text, int phonemeMode)
+{
+    std::vector<std::string> words;
+    const void* cursor = text.c_str();
+    while (cursor) {
+        const char* clause = espeak_TextToPhonemes(&cursor, espeakCHARS_UTF8, phonemeMode);
+        if (!clause)
+            break;
+        std::string_view rest(clause);
+        while (!rest.empty()) {
+            const std::size_t space = rest.find(' ');
+            if (space != 0)
+                words.emplace_back(rest.substr(0, space));
+            rest = space == std::string_view::npos ? std::string_view{} : rest.substr(space + 1);
+        }
+    }
+    return words;
+}
+
+// The word events carry no stress; the transcription of the whole text does (`transcribed`): when
+// it has as many words as the events, a word with a primary stress mark (') is stressed.
+void markStressedWords(const std::vector<std::string>& transcribed, std::vector<WordTiming>& words)
+{
+    if (transcribed.size() != words.size())
+        return;
+    for (std::size_t w = 0; w < words.size(); ++w)
+        words[w].stressed = transcribed[w].find('\'') != std::string::npos;
+}
+
+} // namespace
+
 Result<std::vector<VoiceInfo>> listVoices()
 {
     std::lock_guard lock(espeakMutex());
@@ -239,6 +275,9 @@ Result<Utterance> speak(std::string_view text, const VoiceSettings& settings,
     espeak_SetParameter(espeakPITCH, settings.pitch, 0);
     espeak_SetParameter(espeakVOLUME, settings.volume, 0);
 
+    // Transcribed first: espeak-ng's state after a transcription moves the next synthesis by a few
+    // samples, so each synthesis follows its own transcription and repeats the same.
+    const std::vector<std::string> transcribed = transcribedWords(std::string(text), 0);
     Collector collector;
     collector.stop = &stop;
     const espeak_ERROR status = espeak_Synth(ssml.c_str(), ssml.size() + 1, 0, POS_CHARACTER, 0,
@@ -305,6 +344,7 @@ Result<Utterance> speak(std::string_view text, const VoiceSettings& settings,
         phonemes.insert(phonemes.begin(), {"SIL", 0.0, phonemes.front().start, -1});
     includeClosures(utterance.samples, rate, phonemes);
     timing.fitWordsToPhonemes();
+    markStressedWords(transcribed, timing.words);
     return utterance;
 }
 
@@ -315,26 +355,15 @@ Result<std::vector<std::string>> phonemesOf(std::string_view word, const std::st
         return ready.error();
     if (auto selected = selectVoice(voice); !selected)
         return selected.error();
-    const std::string text(word);
-    const void* cursor = text.c_str();
     std::vector<std::string> out;
-    // espeakPHONEMES_SHOW separates phonemes with the separator in bits 8–15 (a space here).
-    while (cursor) {
-        const char* phonemes = espeak_TextToPhonemes(&cursor, espeakCHARS_UTF8, (int(' ') << 8));
-        if (!phonemes)
-            break;
-        std::string_view rest(phonemes);
-        while (!rest.empty()) {
-            const std::size_t space = rest.find(' ');
-            std::string_view mnemonic = rest.substr(0, space);
-            // Stress marks lead a syllable's first phoneme: take them off.
-            while (!mnemonic.empty() && (mnemonic.front() == '\'' || mnemonic.front() == ','))
-                mnemonic.remove_prefix(1);
-            for (std::string& p : arpabetFromEspeak(mnemonic))
-                if (!isPause(p))
-                    out.push_back(std::move(p));
-            rest = space == std::string_view::npos ? std::string_view{} : rest.substr(space + 1);
-        }
+    // With a separator (a space, bits 8–15) espeak-ng spaces the phonemes rather than the words.
+    for (std::string_view mnemonic : transcribedWords(std::string(word), int(' ') << 8)) {
+        // Stress marks lead a syllable's first phoneme: take them off.
+        while (!mnemonic.empty() && (mnemonic.front() == '\'' || mnemonic.front() == ','))
+            mnemonic.remove_prefix(1);
+        for (std::string& p : arpabetFromEspeak(mnemonic))
+            if (!isPause(p))
+                out.push_back(std::move(p));
     }
     return out;
 }

@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include "runtime/sound.h"
+#include "speech/bml_plan.h"
 
 namespace thespis::core::speech {
 namespace {
@@ -42,8 +43,28 @@ std::string SpeakJob::title() const
     return "Speaking";
 }
 
+bool isBml(std::string_view text)
+{
+    std::size_t at = 0;
+    while (at < text.size() && isSpace(text[at]))
+        ++at;
+    text.remove_prefix(at);
+    return text.starts_with("<bml") || text.starts_with("<?xml");
+}
+
 Result<void> SpeakJob::validate() const
 {
+    if (isBml(text)) {
+        auto block = parseBml(text);
+        if (!block)
+            return makeError(ErrorCode::InvalidArgument, "The text is not valid BML: " + block.error().message);
+        if (block->behaviors.empty())
+            return makeError(ErrorCode::InvalidArgument, "The BML block \"" + block->id + "\" has no behaviour.");
+        if (!wavOutput.empty())
+            return makeError(ErrorCode::InvalidArgument,
+                             "A BML block's speeches are not written as one WAV: leave the WAV out.");
+        return voice.validate();
+    }
     auto parsed = parseTaggedText(text);
     if (!parsed)
         return makeError(ErrorCode::InvalidArgument, "The text is not valid tagged text: " + parsed.error().message);
@@ -61,10 +82,40 @@ Result<void> SpeakJob::validate() const
     return {};
 }
 
+Result<void> SpeakJob::runBml(JobContext& context)
+{
+    bml = parseBml(text).value();
+    bmlSpeech.clear();
+    std::size_t speeches = 0;
+    for (const BmlBehavior& b : bml->behaviors)
+        speeches += b.kind == BmlBehaviorKind::Speech;
+    context.beginStage(SpeakingStage, speeches);
+    for (const BmlBehavior& b : bml->behaviors) {
+        if (b.kind != BmlBehaviorKind::Speech)
+            continue;
+        auto spoken = speak(b.text, voice, {}, context.stopToken());
+        if (!spoken) {
+            if (spoken.error().code == ErrorCode::Cancelled)
+                return cancelledError(title());
+            return bmlBehaviorError(spoken.error().code, b, spoken.error().message);
+        }
+        bmlSpeech[b.id] = std::move(spoken).value();
+        context.setDone(bmlSpeech.size());
+    }
+    return {};
+}
+
 Result<void> SpeakJob::run(JobContext& context)
 {
     if (auto valid = validate(); !valid)
         return valid;
+    tagged = {};
+    utterance = {};
+    visemeCues.clear();
+    gestureCues.clear();
+    bml.reset();
+    if (isBml(text))
+        return runBml(context);
     tagged = parseTaggedText(text).value();
     const auto sentences = sentenceRanges(tagged.text);
     context.beginStage(SpeakingStage, sentences.size());

@@ -1,13 +1,17 @@
 #pragma once
 // Speaking tagged text as a job (paper §5.1): the text is read, spoken sentence by sentence —
 // so that a player can start the first sentence while the rest is being synthesised — and
-// planned into visemes and gesture cues. The CLI, Python and the studio run it the same way.
+// planned into visemes and gesture cues; or a BML block is read and each of its speeches spoken.
+// The CLI, Python and the studio run it the same way.
 
 #include <filesystem>
 #include <functional>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "speech/bml.h"
 #include "speech/espeak_voice.h"
 #include "speech/speech_plan.h"
 #include "speech/tagged_text.h"
@@ -20,10 +24,14 @@ namespace thespis::core::speech {
 /// belongs to no sentence.
 std::vector<std::pair<std::size_t, std::size_t>> sentenceRanges(std::string_view text);
 
+/// True when `text` is a BML block (it starts with "<bml" or an XML declaration, after white
+/// space) rather than tagged text.
+bool isBml(std::string_view text);
+
 struct SpeakJob final : Job {
     static constexpr const char* SpeakingStage = "Speaking";
 
-    std::string text;              ///< tagged text (plain text is tagged text without tags)
+    std::string text;              ///< tagged text (plain text is tagged text without tags), or a BML block
     VoiceSettings voice;
     VisemeSet visemes = mpeg4Visemes();
     std::filesystem::path wavOutput; ///< optional: the speech as a 16-bit WAV, written at the end
@@ -36,6 +44,9 @@ struct SpeakJob final : Job {
     Utterance utterance;           ///< the whole speech; timing offsets into tagged.text
     std::vector<VisemeCue> visemeCues;
     std::vector<GestureCue> gestureCues;
+    /// BML: the block, and each of its speeches said, by behaviour id (the fields above stay empty).
+    std::optional<BmlBlock> bml;
+    std::map<std::string, Utterance> bmlSpeech;
 
     std::string title() const override;
     /// The text reads as tagged text (line and column otherwise) and has something to say; the
@@ -43,6 +54,9 @@ struct SpeakJob final : Job {
     Result<void> validate() const override;
     Result<void> run(JobContext& context) override;
     void discardOutput() override;
+
+private:
+    Result<void> runBml(JobContext& context);
 };
 
 } // namespace thespis::core::speech

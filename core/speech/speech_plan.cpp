@@ -44,12 +44,14 @@ std::vector<GestureCue> gestureCues(const TaggedText& text, const SpeechTiming& 
 {
     std::vector<GestureCue> cues;
     for (const TaggedGesture& g : text.gestures) {
-        GestureCue cue{g.id, g.animation, 0, 0, g.line, g.column};
+        GestureCue cue{g.id, g.animation, 0, 0, -1, g.line, g.column};
         bool any = false;
         double before = 0, after = timing.duration;
         for (const WordTiming& w : timing.words) {
             const bool inside = w.textBegin < g.end && w.textEnd > g.begin;
             if (inside) {
+                if (w.stressed && (cue.stress < 0 || w.start < cue.stress))
+                    cue.stress = w.start;
                 cue.start = any ? std::min(cue.start, w.start) : w.start;
                 cue.end = any ? std::max(cue.end, w.end) : w.end;
                 any = true;
@@ -68,12 +70,39 @@ std::vector<GestureCue> gestureCues(const TaggedText& text, const SpeechTiming& 
     return cues;
 }
 
-GestureFit fitGesture(const GestureCue& cue, double clipSeconds, double fadeIn, double fadeOut)
+GestureFit fitGesture(const GestureCue& cue, double clipSeconds, double fadeIn, double fadeOut,
+                      const GestureShape& shape)
 {
     GestureFit fit;
     fit.start = std::max(0.0, cue.start - std::max(fadeIn, 0.0));
     fit.duration = std::max(cue.end + std::max(fadeOut, 0.0) - fit.start, 1e-3);
     fit.stretch = clipSeconds > 0 ? fit.duration / clipSeconds : 1;
+    const bool stroke = shape.stroke >= 0 && shape.stroke <= clipSeconds;
+    if (clipSeconds <= 0 || (!stroke && !shape.hold))
+        return fit;
+    // The pose the gesture is about (its stroke, else its middle) and when it shows, in local seconds.
+    const double pose = stroke ? shape.stroke : clipSeconds / 2, length = fit.duration;
+    constexpr double kRoom = 1e-3; // keys stay strictly in order
+    double at = pose * fit.stretch;
+    if (stroke)
+        at = (cue.stress >= 0 ? cue.stress : cue.start) - fit.start;
+    else if (shape.hold)
+        at = std::min(pose, length);
+    at = std::clamp(at, kRoom, length - kRoom);
+    const auto key = [](double time, double value) { return anim::CurveKey{time, value, anim::TangentMode::AutoClamped}; };
+    fit.warp.push_back(key(0, 0));
+    if (shape.hold) {
+        // Its own speed into the pose and out of it, the pose held between; squeezed where short.
+        const double into = at - pose, outOf = length - (clipSeconds - pose);
+        if (into > kRoom && at - into > kRoom)
+            fit.warp.push_back(key(into, 0));
+        fit.warp.push_back(key(at, pose));
+        if (outOf > at + kRoom && length - outOf > kRoom)
+            fit.warp.push_back(key(outOf, pose));
+    } else {
+        fit.warp.push_back(key(at, pose));
+    }
+    fit.warp.push_back(key(length, clipSeconds));
     return fit;
 }
 

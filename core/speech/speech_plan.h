@@ -30,6 +30,7 @@ struct VisemeCue {
 struct GestureCue {
     std::string id, animation;
     double start = 0, end = 0; ///< seconds: from its first word's start to its last word's end
+    double stress = -1;        ///< seconds: the start of the first word it spans that is stressed (−1: none)
     int line = 0, column = 0;  ///< of its tag
 };
 
@@ -48,11 +49,26 @@ std::vector<GestureCue> gestureCues(const TaggedText& text, const SpeechTiming& 
 /// before its first word and out after its last, so that it is wholly there while the words are
 /// said, and its clip is stretched or shrunk to fill that. Never before the utterance starts: a
 /// gesture on the first words then fades in over them.
+/// How a gesture entry meets words longer or shorter than its motion (scenario.h's Gesture): its
+/// stroke, seconds into its clip (−1: none marked), and whether it holds rather than stretches.
+struct GestureShape {
+    bool hold = false;
+    double stroke = -1;
+};
+
 struct GestureFit {
     double start = 0;     ///< seconds from the utterance's start
     double duration = 0;  ///< seconds, fades included
     double stretch = 1;   ///< the clip's time scale (2: twice as long)
+    /// Local seconds → the clip's seconds, when the gesture is not simply stretched (a stroke to
+    /// put on its stressed word, a hold): a monotone curve through its keys. Empty: `stretch`.
+    std::vector<anim::CurveKey> warp;
 };
-GestureFit fitGesture(const GestureCue& cue, double clipSeconds, double fadeIn, double fadeOut);
+/// With `shape`: a marked stroke falls on the start of the cue's stressed word (its first word
+/// when none is stressed), each side of it time-scaled to fit; a holding entry plays at its own
+/// speed and holds its stroke (or middle) pose for as long as the words last, scaled only where
+/// the words leave too little time.
+GestureFit fitGesture(const GestureCue& cue, double clipSeconds, double fadeIn, double fadeOut,
+                      const GestureShape& shape = {});
 
 } // namespace thespis::core::speech

@@ -18,6 +18,7 @@ struct WordTiming {
     double start = 0, end = 0;    ///< seconds
     std::size_t textBegin = 0;    ///< the word's bytes in the text spoken: [textBegin, textEnd)
     std::size_t textEnd = 0;
+    bool stressed = false;        ///< espeak-ng gave it a primary stress (a content word)
     bool operator==(const WordTiming&) const = default;
 };
 

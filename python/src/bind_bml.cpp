@@ -74,7 +74,7 @@ void bindBml(py::module_& m)
     b.def("normalize", [](const std::string& xml) { return speech::bmlString(unwrap(speech::parseBml(xml))); },
           "xml"_a, "The block as the realizer reads it, written back as BML.");
     b.def("face_lexemes", &speech::faceLexemeNames, "The faceLexemes the face shows (RAISE_BROWS, …).");
-    b.def("default_lexicon", [] { return runtime::BmlLexicon::defaults().gestures; },
+    b.def("default_lexicon", [] { return core::speech::BmlLexicon::defaults().gestures; },
           "Gesture lexemes → gesticon entries used when the character's gesticon has no entry of the lexeme's name.");
 
     py::class_<Realizer>(b, "Realizer", "Realises BML blocks for the characters of an animation service's stage.")

@@ -14,6 +14,7 @@
 #include "bind_common.h"
 #include "edit/content_edits.h"
 #include "edit/document_edits.h"
+#include "edit/gaze_edits.h"
 #include "edit/scenario_edit.h"
 #include "errors.h"
 
@@ -413,6 +414,13 @@ void bindEdit(py::module_& m)
         "scenario"_a, "character"_a, "path"_a,
         "Sets the face mapping table file a glTF character's face follows (relative to the scenario's folder; '' = "
         "the table recognised from the model's names). Refused for the built-in humanoid.");
+    e.def(
+        "add_gaze",
+        [](const Scenario& scenario, int character, const core::scenario::GazeSpec& gaze, core::Tick start,
+           double seconds) { return unwrap(edit::addGaze(scenario, character, gaze, start, seconds)); },
+        "scenario"_a, "character"_a, "gaze"_a, "start"_a, "seconds"_a = 2.0,
+        "Adds a gaze action (a GazeSpec: what the character looks at) from `start` (ticks) for `seconds` seconds "
+        "on the character's 'Gaze' gaze layer, added when it has none.");
     e.def(
         "add_layer",
         [](const Scenario& scenario, int character, const std::string& name, core::scenario::LayerKind kind) {

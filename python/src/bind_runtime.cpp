@@ -12,7 +12,7 @@
 
 #include "runtime/animation_service.h"
 #include "runtime/clock.h"
-#include "runtime/gaze_target.h"
+#include "motion/gaze_target.h"
 #include "runtime/sound.h"
 #include "runtime/voice_service.h"
 #include "runtime/stage.h"
@@ -58,7 +58,7 @@ std::shared_ptr<AnimationService> makeService(std::shared_ptr<Stage> stage, std:
 GazeTarget gazeTarget(const py::object& target)
 {
     if (py::isinstance<py::str>(target))
-        return unwrap(parseGazeTarget(target.cast<std::string>()));
+        return unwrap(core::motion::parseGazeTarget(target.cast<std::string>()));
     const auto xyz = target.cast<std::vector<double>>();
     if (xyz.size() != 3)
         throw py::value_error("A gaze target point has three coordinates (x, y, z), not " + std::to_string(xyz.size()) + ".");
@@ -319,8 +319,8 @@ void bindRuntime(py::module_& m)
             [](AnimationService& s, const std::string& character, const py::object& target, const std::string& influence,
                double offsetAngle, const std::string& offsetDirection, bool saccades, bool talking, std::uint64_t seed) {
                 core::motion::GazeSettings settings;
-                settings.influence = unwrap(parseGazeInfluence(influence));
-                unwrap(setGazeOffset(settings, offsetAngle, offsetDirection));
+                settings.influence = unwrap(core::motion::parseGazeInfluence(influence));
+                unwrap(core::motion::setGazeOffset(settings, offsetAngle, offsetDirection));
                 settings.saccades = saccades;
                 settings.talking = talking;
                 settings.seed = seed;

@@ -68,7 +68,8 @@ void bindDocument(py::module_& m)
 {
     py::enum_<LayerKind>(m, "LayerKind", "What a layer animates.")
         .value("body", LayerKind::Body)
-        .value("face", LayerKind::Face);
+        .value("face", LayerKind::Face)
+        .value("gaze", LayerKind::Gaze);
 
     py::enum_<Placement>(m, "Placement", "Where an action's motion plays.")
         .value("world", Placement::World, "as recorded, in the character's frame")
@@ -195,6 +196,23 @@ void bindDocument(py::module_& m)
         .def("__eq__", [](const ModifierSpec& a, const ModifierSpec& b) { return a == b; });
     defExtra(modifier);
 
+    py::class_<core::scenario::GazeSpec>(m, "GazeSpec", "What an action of a gaze layer looks at (format 10).")
+        .def(py::init([](std::string target, std::string influence, double offsetAngle, std::string offsetDirection) {
+                 return core::scenario::GazeSpec{std::move(target), std::move(influence), offsetAngle,
+                                                 std::move(offsetDirection)};
+             }),
+             "target"_a = "camera", "influence"_a = "HEAD", "offset_angle"_a = 0.0, "offset_direction"_a = "")
+        .def_readwrite("target", &core::scenario::GazeSpec::target,
+                       "'camera', a character ('Creon'), a joint of one ('Creon:r_radiocarpal') or a point ('0.5 1.6 2').")
+        .def_readwrite("influence", &core::scenario::GazeSpec::influence, "EYES, HEAD, SHOULDER or WAIST.")
+        .def_readwrite("offset_angle", &core::scenario::GazeSpec::offsetAngle, "Degrees away from the target.")
+        .def_readwrite("offset_direction", &core::scenario::GazeSpec::offsetDirection,
+                       "RIGHT, LEFT, UP, DOWN, UPRIGHT, UPLEFT, DOWNRIGHT, DOWNLEFT.")
+        .def("__eq__", [](const core::scenario::GazeSpec& a, const core::scenario::GazeSpec& b) { return a == b; })
+        .def("__repr__", [](const core::scenario::GazeSpec& g) {
+            return "<thespis.GazeSpec at '" + g.target + "' (" + g.influence + ")>";
+        });
+
     py::class_<ActionSpec> action(m, "ActionSpec", "An action of a layer: which clip, when (ticks), how it blends.");
     action
         .def(py::init([](std::string name, std::string clipName, core::Tick start) {
@@ -207,6 +225,7 @@ void bindDocument(py::module_& m)
              "name"_a = "", "clip"_a = "", "start"_a = core::Tick(0))
         .def_readwrite("name", &ActionSpec::name)
         .def_readwrite("clip", &ActionSpec::clip, "Name of a ClipAsset of the character.")
+        .def_readwrite("gaze", &ActionSpec::gaze, "On a gaze layer: what it looks at (a GazeSpec); None elsewhere.")
         .def_readwrite("start", &ActionSpec::start, "Start time in ticks (thespis.TICKS_PER_SECOND per second).")
         .def_property(
             "start_seconds", [](const ActionSpec& a) { return core::ticksToSeconds(a.start); },
@@ -272,6 +291,10 @@ void bindDocument(py::module_& m)
                        "Run the dependent-joint motion filter, so that joints the gesture does not drive follow it.")
         .def_readwrite("filter_fade_from", &Gesture::filterFadeFrom, "The filter keeps upper-body PCs up to it (20).")
         .def_readwrite("filter_mute_above", &Gesture::filterMuteAbove, "The filter mutes PCs above it (30).")
+        .def_readwrite("hold", &Gesture::hold,
+                       "Speech plays it at its own speed and holds its stroke while the words last (else: stretched).")
+        .def_readwrite("stroke", &Gesture::stroke,
+                       "Seconds into the clip of its stroke, which speech puts on the stressed word (-1: none).")
         .def("__eq__", [](const Gesture& a, const Gesture& b) { return a == b; })
         .def("__repr__", [](const Gesture& g) {
             return "<thespis.Gesture '" + g.name + "' clip '" + g.clip + "'>";

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bind_common.h"
+#include "edit/bml_edits.h"
 #include "edit/speech_edits.h"
 #include "errors.h"
 #include "run_job.h"
@@ -120,7 +121,17 @@ void bindSpeech(py::module_& m)
     // The speak job's results, kept whole so that insert() gets exactly what was heard.
     py::class_<speech::SpeakJob, std::shared_ptr<speech::SpeakJob>>(
         s, "Speech", "Speech made by thespis.speech.speak(): audio, timing, viseme and gesture cues.")
-        .def_property_readonly("text", [](const speech::SpeakJob& j) { return j.text; }, "the tagged text")
+        .def_property_readonly("text", [](const speech::SpeakJob& j) { return j.text; }, "the tagged text or BML")
+        .def_property_readonly("bml_block", [](const speech::SpeakJob& j) {
+            return j.bml ? py::object(py::str(j.bml->id)) : py::object(py::none());
+        },
+                               "the BML block's id when the text was BML (its speeches are in bml_speeches), else None")
+        .def_property_readonly("bml_speeches", [](const speech::SpeakJob& j) {
+            py::dict out;
+            for (const auto& [id, u] : j.bmlSpeech)
+                out[py::str(id)] = wordsOf(u.timing);
+            return out;
+        }, "BML: each speech's words [(text, start, end)] by its id")
         .def_property_readonly("spoken_text", [](const speech::SpeakJob& j) { return j.tagged.text; })
         .def_property_readonly("rate", [](const speech::SpeakJob& j) { return j.utterance.rate; })
         .def_property_readonly("samples", [](const speech::SpeakJob& j) { return toArray<float>(j.utterance.samples); },
@@ -177,6 +188,24 @@ void bindSpeech(py::module_& m)
         "The Edit that puts the speech on the character from `at` seconds as the studio's Insert does: the line "
         "(text, voice, timing, `audio` file relative to the scenario), viseme actions on its 'Speech' face layer, "
         "tagged gestures over their words. One undo step: apply(scenario), inverse().");
+
+    s.def(
+        "insert_bml",
+        [](const core::scenario::Scenario& scenario, const core::scenario::ScenarioRuntime& runtime,
+           const std::string& character, const speech::SpeakJob& spoken, double at) {
+            if (!spoken.bml)
+                throw py::value_error("This speech was tagged text, not BML: use insert().");
+            core::edit::BmlInsertOptions options;
+            options.voice = spoken.voice;
+            options.visemes = spoken.visemes;
+            return unwrap(core::edit::insertBml(scenario, runtime, speakerIndex(scenario, character), *spoken.bml,
+                                                spoken.bmlSpeech, options, core::secondsToTicks(at)))
+                .edit;
+        },
+        "scenario"_a, "runtime"_a, "character"_a, "speech"_a, "at"_a = 0.0,
+        "The Edit that puts a BML block spoken by speak() on the character from `at` seconds as the studio's "
+        "Insert does: speeches with their visemes, gestures on 'Gestures', head gestures on 'Head', faceLexemes on "
+        "'Face lexemes', gaze on the 'Gaze' gaze layer. `runtime` is the scenario's (the gestures' lengths).");
 
     py::class_<speech::LipSyncJob, std::shared_ptr<speech::LipSyncJob>>(
         s, "Alignment", "A recording lip-synced by thespis.speech.align(): its words and phonemes in time.")

@@ -84,3 +84,34 @@ def test_bml_plays_on_the_words_and_calls_back_its_sync_points():
     assert service.gaze_state("Creon") is not None
     with pytest.raises(thespis.FormatError, match="line 1, column"):
         thespis.bml.parse("<bml id='b'><gesture lexeme='BEAT'/></bml>")
+
+
+def test_bml_goes_on_the_timeline_and_a_gaze_layer_plays_from_the_scenario():
+    scenario = thespis.load_scenario(demo_scenario())
+    runtime = thespis.build_runtime(scenario, demo_scenario().parent)
+    said = thespis.speech.speak('<bml id="b1"><speech id="s1"><text>Hear me, Antigone.</text></speech>'
+                                '<gaze id="z1" target="Antigone" influence="HEAD" start="s1:start" end="s1:end"/>'
+                                '<head id="h1" lexeme="NOD" start="s1:end"/></bml>', voice="en-gb")
+    assert said.bml_block == "b1" and [w[0] for w in said.bml_speeches["s1"]] == ["Hear", "me", "Antigone"]
+    edit = thespis.speech.insert_bml(scenario, runtime, "Creon", said, at=1.0)
+    edit.apply(scenario)
+    creon = next(c for c in scenario.characters if c.name == "Creon")
+    gaze = next(layer for layer in creon.layers if layer.name == "Gaze")
+    assert gaze.kind == thespis.LayerKind.gaze
+    look = gaze.actions[0]
+    assert look.gaze == thespis.GazeSpec("Antigone", "HEAD") and look.start_seconds == 1.0
+    with pytest.raises(ValueError, match="tagged text"):
+        thespis.speech.insert_bml(scenario, runtime, "Creon", thespis.speech.speak("Hello.", voice="en-gb"))
+
+    # Another gaze added by hand goes on the same layer; played from the scenario he turns to her.
+    thespis.edit.add_gaze(scenario, 0, thespis.GazeSpec("camera"), start=4 * thespis.TICKS_PER_SECOND, seconds=1.5).apply(scenario)
+    assert [a.gaze.target for a in gaze_layer(scenario).actions] == ["Antigone", "camera"]
+    service = thespis.AnimationService.from_runtime(thespis.build_runtime(scenario, demo_scenario().parent),
+                                                    thespis.ManualClock())
+    play(service, 0.0, 2.0)
+    state = service.gaze_state("Creon")
+    assert state is not None and abs(state["neck"][0]) > 5
+
+
+def gaze_layer(scenario):
+    return next(layer for layer in scenario.characters[0].layers if layer.name == "Gaze")

@@ -264,3 +264,97 @@ TEST(SpeechPlan, WideSpreadsStayInsideTheUtterance)
 }
 
 } // namespace thespis::test
+
+namespace thespis::test {
+namespace {
+
+double warpAt(const speech::GestureFit& fit, double local)
+{
+    return core::anim::Curve::keyframed(fit.warp).value().evaluate(local, fit.duration);
+}
+
+} // namespace
+
+TEST(GestureFit, EspeakStressesContentWordsNotArticles)
+{
+    const speech::SpeakJob job = spoken("The old man sat on a bench.");
+    const auto stressed = [&](const std::string& text) {
+        for (const speech::WordTiming& w : job.utterance.timing.words)
+            if (w.text == text)
+                return w.stressed;
+        ADD_FAILURE() << "espeak-ng said no word \"" << text << "\"";
+        return false;
+    };
+    EXPECT_FALSE(stressed("The"));
+    EXPECT_TRUE(stressed("old"));
+    EXPECT_TRUE(stressed("man"));
+    EXPECT_TRUE(stressed("sat"));
+    EXPECT_TRUE(stressed("bench"));
+}
+
+TEST(GestureFit, AMarkedStrokeFallsOnTheFirstStressedWordOfItsWords)
+{
+    const speech::SpeakJob job =
+        spoken("Look at <begin_gesture id=\"g1\" anim=\"point\"/>the old bench<end_gesture id=\"g1\"/> there.");
+    ASSERT_EQ(job.gestureCues.size(), 1u);
+    const speech::GestureCue& cue = job.gestureCues[0];
+    const auto& words = job.utterance.timing.words;
+    ASSERT_EQ(words[2].text, "the");
+    EXPECT_DOUBLE_EQ(cue.start, words[2].start);
+    EXPECT_DOUBLE_EQ(cue.stress, words[3].start) << "\"old\", not \"the\"";
+
+    // A 1.2 s pointing gesture with its stroke 0.8 s in: the stroke lands on "old"; both sides scaled.
+    const speech::GestureFit fit = speech::fitGesture(cue, 1.2, 0.3, 0.3, {.hold = false, .stroke = 0.8});
+    ASSERT_FALSE(fit.warp.empty());
+    EXPECT_NEAR(warpAt(fit, cue.stress - fit.start), 0.8, 1e-6);
+    EXPECT_NEAR(warpAt(fit, 0), 0.0, 1e-9);
+    EXPECT_NEAR(warpAt(fit, fit.duration), 1.2, 1e-6);
+    for (double t = 0.01; t <= fit.duration; t += 0.01)
+        EXPECT_GE(warpAt(fit, t), warpAt(fit, t - 0.01) - 1e-9) << "time never runs back, at " << t;
+    // Without a mark the gesture is only stretched, as before.
+    EXPECT_TRUE(speech::fitGesture(cue, 1.2, 0.3, 0.3).warp.empty());
+}
+
+TEST(GestureFit, AHoldingGesturePlaysAtItsOwnSpeedAndHoldsItsStroke)
+{
+    speech::GestureCue cue;
+    cue.start = 1.0;
+    cue.end = 4.0; // three seconds of words for a one-second gesture
+    const speech::GestureFit fit = speech::fitGesture(cue, 1.0, 0.2, 0.2, {.hold = true, .stroke = 0.4});
+    EXPECT_NEAR(fit.start, 0.8, 1e-9);
+    EXPECT_NEAR(fit.duration, 3.4, 1e-9);
+    // Into the stroke at its own speed (it was at 0.4 s on its first word), held, then out at its own speed.
+    EXPECT_NEAR(warpAt(fit, cue.start - fit.start), 0.4, 1e-6);
+    EXPECT_NEAR(warpAt(fit, 2.0), 0.4, 1e-6);
+    EXPECT_NEAR(warpAt(fit, fit.duration - 0.6), 0.4, 1e-6);
+    EXPECT_NEAR(warpAt(fit, fit.duration), 1.0, 1e-6);
+    EXPECT_NEAR(warpAt(fit, fit.duration - 0.3) , 0.7, 0.08) << "the way out at about its own speed";
+    // Stretched instead, the same gesture plays three times slower.
+    EXPECT_NEAR(speech::fitGesture(cue, 1.0, 0.2, 0.2).stretch, 3.4, 1e-9);
+}
+
+TEST(GestureFit, AnInsertedHoldingGestureHoldsOnTheTimeline)
+{
+    Scenario scenario = demo();
+    auto& creon = scenario.characters[0];
+    auto greet = std::find_if(creon.gestures.begin(), creon.gestures.end(), [](const auto& g) { return g.name == "greet"; });
+    ASSERT_NE(greet, creon.gestures.end());
+    greet->hold = true;
+    greet->stroke = 0.5;
+    const speech::SpeakJob job = spoken(
+        "<begin_gesture id=\"g1\" anim=\"greet\"/>Welcome, all of you, to the old palace of Thebes.<end_gesture id=\"g1\"/>");
+    auto inserted = core::edit::insertSpeech(scenario, 0, lineOf(job, 1.0), job.visemeCues, job.gestureCues);
+    ASSERT_TRUE(inserted) << inserted.error().message;
+    Scenario after = scenario;
+    ASSERT_TRUE(inserted->edit.apply(after));
+    const auto& layers = after.characters[0].layers;
+    const auto gestures = std::find_if(layers.begin(), layers.end(), [](const auto& l) { return l.name == "Gestures"; });
+    ASSERT_NE(gestures, layers.end());
+    const core::scenario::ActionSpec& action = gestures->actions.back();
+    ASSERT_FALSE(action.modifiers.empty());
+    EXPECT_EQ(action.modifiers.front().kind, core::scenario::ModifierKind::TimeWarp);
+    auto built = core::scenario::buildRuntime(after, resources());
+    ASSERT_TRUE(built) << core::describe(built.error());
+}
+
+} // namespace thespis::test

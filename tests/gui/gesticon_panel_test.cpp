@@ -128,7 +128,7 @@ void GesticonPanelTest::listsEachCharactersGestures()
     QCOMPARE(panel.currentCharacter(), 0);
     QCOMPARE(panel.characterCombo()->currentText(), QStringLiteral("Creon"));
     QCOMPARE(model.rowCount(), 2);
-    QCOMPARE(model.columnCount(), 7);
+    QCOMPARE(model.columnCount(), 9);
     QCOMPARE(model.headerData(GesticonModel::MaskColumn, Qt::Horizontal).toString(), QStringLiteral("Body part"));
     QCOMPARE(cell(model, 0, GesticonModel::NameColumn), QStringLiteral("greet"));
     QCOMPARE(cell(model, 0, GesticonModel::ClipColumn), QStringLiteral("wave"));
@@ -255,6 +255,21 @@ void GesticonPanelTest::everyEditIsOneUndoStepAndUndoAllRestores()
     QCOMPARE(gestures()[3].mask, std::string("head"));
     QCOMPARE(undo.count(), 9);
 
+    // How speech fits it to its words: held at its stroke, marked 0.4 s into the clip; "none" below 0.
+    QCOMPARE(cell(model, 3, GesticonModel::StrokeColumn), QStringLiteral("none"));
+    QVERIFY(model.setData(model.index(3, GesticonModel::HoldColumn), Qt::Checked, Qt::CheckStateRole));
+    QVERIFY(model.setData(model.index(3, GesticonModel::StrokeColumn), 0.4));
+    QVERIFY(gestures()[3].hold);
+    QCOMPARE(gestures()[3].stroke, 0.4);
+    QCOMPARE(undo.text(10), QStringLiteral("Mark Gesture Stroke"));
+    QVERIFY(model.setData(model.index(3, GesticonModel::StrokeColumn), -0.5));
+    QCOMPARE(gestures()[3].stroke, -1.0);
+    QVERIFY(!model.setData(model.index(3, GesticonModel::StrokeColumn), QStringLiteral("soon")));
+    for (int i = 0; i < 3; ++i)
+        undo.undo();
+    QCOMPARE(undo.count(), 12);
+    QVERIFY(!gestures()[3].hold);
+
     // Remove two selected gestures: one step.
     panel.table()->clearSelection();
     panel.table()->selectionModel()->select(model.index(2, 0),
@@ -263,7 +278,7 @@ void GesticonPanelTest::everyEditIsOneUndoStepAndUndoAllRestores()
                                             QItemSelectionModel::Select | QItemSelectionModel::Rows);
     QCOMPARE(panel.selectedRows(), QList<int>({2, 3}));
     panel.removeSelected();
-    QCOMPARE(undo.count(), 10);
+    QCOMPARE(undo.count(), 10); // the undone hold and stroke edits are gone from the stack
     // "Remove 2 Gestures" once thespis_en.ts has the plural forms of the new strings.
     QVERIFY2(undo.text(9).startsWith(QStringLiteral("Remove 2 Gesture")), qPrintable(undo.text(8)));
     QCOMPARE(model.rowCount(), 2);

@@ -5,6 +5,7 @@
 // timeline as one undo step that the timeline's audio then plays; a LibriVox recording is
 // lip-synced from its transcript; the viseme table edits α and refuses what the set cannot hold.
 
+#include <QComboBox>
 #include <QDockWidget>
 #include <QDir>
 #include <QFile>
@@ -20,6 +21,8 @@
 #include <cmath>
 
 #include "editor/document.h"
+#include "editor/gaze_properties.h"
+#include "editor/properties_panel.h"
 #include "editor/playback_clock.h"
 #include "editor/session.h"
 #include "editor/speech_panel.h"
@@ -57,6 +60,7 @@ private slots:
     void aRecordingIsLipSyncedFromItsTranscript();
     void visemeTableEditsAndRefuses();
     void badTagsAreNamedWithLineAndColumn();
+    void bmlInsertsSpeechGesturesAndAGazeWithItsTargetPicker();
 
 private:
     editor::SpeechPanel* panel() { return m_window->speech(); }
@@ -107,7 +111,8 @@ void SpeechStudioTest::previewSpeaksLiveAndTheSoundFollowsTheTransport()
                              }),
                              5000);
     const core::Tick firstBlock = mixed.front().at(0).value<core::Tick>();
-    QVERIFY(std::abs(core::ticksToSeconds(firstBlock) - 9.0) < 0.1);
+    QVERIFY2(std::abs(core::ticksToSeconds(firstBlock) - 9.0) < 0.1,
+             qPrintable(QStringLiteral("the first block mixed starts at %1 s").arg(core::ticksToSeconds(firstBlock))));
 
     // Paused, the sound stops: no block is mixed any more.
     m_window->clock()->pause();
@@ -249,6 +254,65 @@ void SpeechStudioTest::badTagsAreNamedWithLineAndColumn()
     panel()->preview();
     QTRY_VERIFY_WITH_TIMEOUT(!panel()->isBusy(), 10000);
     QVERIFY2(panel()->message().contains(QStringLiteral("line 2, column 9")), qPrintable(panel()->message()));
+}
+
+void SpeechStudioTest::bmlInsertsSpeechGesturesAndAGazeWithItsTargetPicker()
+{
+    editor::Document& document = *m_window->document();
+    const auto original = document.scenario();
+    const int creon = characterIndex(document, "Creon");
+    panel()->setCurrentCharacter(creon);
+    panel()->setText(QStringLiteral(
+        "<bml id=\"b1\">\n"
+        "  <speech id=\"s1\"><text>Hear me, <sync id=\"t1\"/>Antigone.</text></speech>\n"
+        "  <gesture id=\"g1\" lexeme=\"BEAT\" stroke=\"s1:t1\"/>\n"
+        "  <head id=\"h1\" lexeme=\"NOD\" start=\"g1:stroke\"/>\n"
+        "  <gaze id=\"z1\" target=\"Antigone\" influence=\"HEAD\" start=\"s1:start\" end=\"s1:end\"/>\n"
+        "</bml>"));
+    const int steps = document.undoStack()->count();
+    panel()->insert();
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isBusy(), 20000);
+    QVERIFY2(panel()->message().contains(QStringLiteral("1 gaze")), qPrintable(panel()->message()));
+    QCOMPARE(document.undoStack()->count(), steps + 1);
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Insert BML"));
+
+    // The timeline has Creon's gaze track, and his words above the gesture they drive as above his visemes.
+    const auto& tracks = m_window->timeline()->view()->tracks();
+    const auto gazeTrack = std::find_if(tracks.begin(), tracks.end(), [](const widgets::TimelineTrack& t) {
+        return t.kind == QStringLiteral("gaze") && t.group == QStringLiteral("Creon");
+    });
+    QVERIFY(gazeTrack != tracks.end());
+    QCOMPARE(gazeTrack->name, QStringLiteral("Gaze"));
+    const auto& captions = m_window->timeline()->view()->captions();
+    QCOMPARE(std::count_if(captions.begin(), captions.end(), [](const auto& c) { return c.text == QStringLiteral("Antigone"); }),
+             qsizetype(2));
+
+    // Selected, the gaze action shows what it looks at; picking the camera is one undo step.
+    const auto& layers = document.scenario().characters[std::size_t(creon)].layers;
+    const int gazeLayer = int(std::find_if(layers.begin(), layers.end(), [](const auto& l) { return l.name == "Gaze"; }) -
+                              layers.begin());
+    m_window->timeline()->selectActions({{creon, gazeLayer, 0}});
+    editor::GazeProperties* gaze = m_window->properties()->gazeProperties();
+    QTRY_VERIFY(gaze->isVisible());
+    QCOMPARE(gaze->targetChoice()->currentData().toString(), QStringLiteral("Antigone"));
+    QCOMPARE(gaze->influenceChoice()->currentData().toString(), QStringLiteral("HEAD"));
+    m_window->timeline()->view()->setPixelsPerSecond(300);
+    m_window->timeline()->view()->horizontalScrollBar()->setValue(int(8.5 * 300));
+    m_window->clock()->seek(core::secondsToTicks(9.8));
+    QTest::qWait(200);
+    saveScreenshot(m_window.get(), QStringLiteral("studio_bml_gaze.png"));
+    QVERIFY(m_window->session()->stage()->gazeState("Creon").value().has_value());
+    const int camera = gaze->targetChoice()->findData(QStringLiteral("camera"));
+    QVERIFY(camera >= 0);
+    gaze->targetChoice()->setCurrentIndex(camera);
+    emit gaze->targetChoice()->activated(camera);
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Change Gaze"));
+    QCOMPARE(document.scenario().characters[std::size_t(creon)].layers[std::size_t(gazeLayer)].actions[0].gaze->target,
+             std::string("camera"));
+
+    document.undoStack()->undo();
+    document.undoStack()->undo();
+    QVERIFY(document.scenario() == original);
 }
 
 QTEST_MAIN(SpeechStudioTest)

@@ -8,20 +8,30 @@
 #include <string>
 #include <string_view>
 
+#include "anim/quat.h"
 #include "motion/gaze.h"
-#include "runtime/stage.h"
 #include "util/error.h"
 
-namespace thespis::core::runtime {
+namespace thespis::core::motion {
+
+/// Where a character looks (Stage::gaze, a scenario's gaze actions).
+struct GazeTarget {
+    enum class Kind { Point, Joint, Camera };
+    Kind kind = Kind::Camera;
+    anim::Vec3d point;        ///< Point: in the scene, metres
+    std::string character;    ///< Joint: whose
+    std::string joint;        ///< Joint: which; empty for the point between its eyes
+    bool operator==(const GazeTarget&) const = default;
+};
 
 /// InvalidArgument naming what does not read.
 Result<GazeTarget> parseGazeTarget(std::string_view text);
 std::string gazeTargetString(const GazeTarget& target);
 
-Result<motion::GazeInfluence> parseGazeInfluence(std::string_view text);
-std::string_view gazeInfluenceName(motion::GazeInfluence influence);
+Result<GazeInfluence> parseGazeInfluence(std::string_view text);
+std::string_view gazeInfluenceName(GazeInfluence influence);
 
 /// Sets settings.offsetHeading and offsetPitch from BML's offset angle and direction.
-Result<void> setGazeOffset(motion::GazeSettings& settings, double angleDegrees, std::string_view direction);
+Result<void> setGazeOffset(GazeSettings& settings, double angleDegrees, std::string_view direction);
 
-} // namespace thespis::core::runtime
+} // namespace thespis::core::motion

@@ -1,4 +1,4 @@
-#include "runtime/gaze_target.h"
+#include "motion/gaze_target.h"
 
 #include <algorithm>
 #include <array>
@@ -10,7 +10,7 @@
 
 #include "util/text.h"
 
-namespace thespis::core::runtime {
+namespace thespis::core::motion {
 
 namespace {
 
@@ -82,33 +82,33 @@ std::string gazeTargetString(const GazeTarget& target)
     return target.joint.empty() ? target.character : target.character + ":" + target.joint;
 }
 
-Result<motion::GazeInfluence> parseGazeInfluence(std::string_view text)
+Result<GazeInfluence> parseGazeInfluence(std::string_view text)
 {
     const std::string name = uppercase(trimmed(text));
     if (name == "EYES")
-        return motion::GazeInfluence::Eyes;
+        return GazeInfluence::Eyes;
     if (name == "HEAD" || name == "NECK")
-        return motion::GazeInfluence::Head;
+        return GazeInfluence::Head;
     if (name == "SHOULDER")
-        return motion::GazeInfluence::Shoulder;
+        return GazeInfluence::Shoulder;
     if (name == "WAIST" || name == "WHOLE")
-        return motion::GazeInfluence::Waist;
+        return GazeInfluence::Waist;
     return makeError(ErrorCode::InvalidArgument, "The gaze influence \"" + std::string(text) +
                                                      "\" is none of EYES, HEAD, NECK, SHOULDER, WAIST, WHOLE.");
 }
 
-std::string_view gazeInfluenceName(motion::GazeInfluence influence)
+std::string_view gazeInfluenceName(GazeInfluence influence)
 {
     switch (influence) {
-    case motion::GazeInfluence::Eyes: return "EYES";
-    case motion::GazeInfluence::Head: return "HEAD";
-    case motion::GazeInfluence::Shoulder: return "SHOULDER";
-    case motion::GazeInfluence::Waist: break;
+    case GazeInfluence::Eyes: return "EYES";
+    case GazeInfluence::Head: return "HEAD";
+    case GazeInfluence::Shoulder: return "SHOULDER";
+    case GazeInfluence::Waist: break;
     }
     return "WAIST";
 }
 
-Result<void> setGazeOffset(motion::GazeSettings& settings, double angleDegrees, std::string_view direction)
+Result<void> setGazeOffset(GazeSettings& settings, double angleDegrees, std::string_view direction)
 {
     // Clockwise from up, as BML's POLAR: the named ones are its multiples of 45°.
     const std::string name = uppercase(trimmed(direction));
@@ -141,4 +141,4 @@ Result<void> setGazeOffset(motion::GazeSettings& settings, double angleDegrees, 
     return {};
 }
 
-} // namespace thespis::core::runtime
+} // namespace thespis::core::motion
