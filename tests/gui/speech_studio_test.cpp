@@ -299,6 +299,7 @@ void SpeechStudioTest::bmlInsertsSpeechGesturesAndAGazeWithItsTargetPicker()
     m_window->timeline()->view()->setPixelsPerSecond(300);
     m_window->timeline()->view()->horizontalScrollBar()->setValue(int(8.5 * 300));
     m_window->clock()->seek(core::secondsToTicks(9.8));
+    raiseDock(m_window->properties());
     QTest::qWait(200);
     saveScreenshot(m_window.get(), QStringLiteral("studio_bml_gaze.png"));
     QVERIFY(m_window->session()->stage()->gazeState("Creon").value().has_value());
