@@ -111,7 +111,9 @@ void SpeechStudioTest::previewSpeaksLiveAndTheSoundFollowsTheTransport()
                              }),
                              5000);
     const core::Tick firstBlock = mixed.front().at(0).value<core::Tick>();
-    QVERIFY2(std::abs(core::ticksToSeconds(firstBlock) - 9.0) < 0.1,
+    // From the playhead on: the first block mixed is where the clock is when the audio starts, a
+    // little after 9 s on a loaded machine (the mixer's first pass waits for its timer).
+    QVERIFY2(core::ticksToSeconds(firstBlock) > 8.99 && core::ticksToSeconds(firstBlock) < 9.5,
              qPrintable(QStringLiteral("the first block mixed starts at %1 s").arg(core::ticksToSeconds(firstBlock))));
 
     // Paused, the sound stops: no block is mixed any more.
