@@ -230,9 +230,10 @@ GesticonPanel::GesticonPanel(QWidget* parent) : QWidget(parent), m_model(new Ges
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 10);
     QHeaderView* header = m_table->horizontalHeader();
     header->setHighlightSections(false);
-    // The name takes the room left; every other column fits what it shows.
+    // Every column fits what it shows, the name first among them; the last takes the room left,
+    // and a narrow dock scrolls rather than squeezing the names.
     header->setSectionResizeMode(QHeaderView::ResizeToContents);
-    header->setSectionResizeMode(GesticonModel::NameColumn, QHeaderView::Stretch);
+    header->setStretchLastSection(true);
     layout->addWidget(m_table, 1);
 
     auto* buttons = new QHBoxLayout;
