@@ -78,11 +78,11 @@ GestureFit fitGesture(const GestureCue& cue, double clipSeconds, double fadeIn, 
     fit.duration = std::max(cue.end + std::max(fadeOut, 0.0) - fit.start, 1e-3);
     fit.stretch = clipSeconds > 0 ? fit.duration / clipSeconds : 1;
     const bool stroke = shape.stroke >= 0 && shape.stroke <= clipSeconds;
-    if (clipSeconds <= 0 || (!stroke && !shape.hold))
+    constexpr double kRoom = 1e-3; // keys stay strictly in order
+    if (clipSeconds <= 0 || (!stroke && !shape.hold) || fit.duration <= 4 * kRoom)
         return fit;
     // The pose the gesture is about (its stroke, else its middle) and when it shows, in local seconds.
     const double pose = stroke ? shape.stroke : clipSeconds / 2, length = fit.duration;
-    constexpr double kRoom = 1e-3; // keys stay strictly in order
     double at = pose * fit.stretch;
     if (stroke)
         at = (cue.stress >= 0 ? cue.stress : cue.start) - fit.start;
