@@ -15,9 +15,9 @@
 #include "scene/foot_soles.h"
 #include "anim/hanim.h"
 #include "anim/modifiers.h"
-#include "motion/gaze_target.h"
 #include "motion/idle_motion.h"
 #include "scenario/action_modifier.h"
+#include "scenario/gaze_cue.h"
 #include "scenario/runtime_gestures.h"
 #include "scenario/scenario_character.h"
 #include "scenario/source_clip.h"
@@ -399,31 +399,7 @@ private:
         return action;
     }
 
-    // What a gaze action looks at and how, read so that a wrong field names its action.
-    std::optional<GazeCue> gazeCue(const GazeSpec& gaze, const std::string& where)
-    {
-        GazeCue cue;
-        const std::size_t before = errors.size();
-        if (auto target = motion::parseGazeTarget(gaze.target); !target)
-            problem(ErrorCode::InvalidSchedule, where + ", gaze.target: " + target.error().message);
-        else if (target->kind == motion::GazeTarget::Kind::Joint && !m_scenario.findCharacter(target->character))
-            problem(ErrorCode::InvalidSchedule, where + ", gaze.target: the scenario has no character named "
-                                                    + inQuotes(target->character) + ".");
-        else
-            cue.target = *target;
-        if (auto influence = motion::parseGazeInfluence(gaze.influence); !influence)
-            problem(ErrorCode::InvalidSchedule, where + ", gaze.influence: " + influence.error().message);
-        else
-            cue.settings.influence = *influence;
-        if (auto offset = motion::setGazeOffset(cue.settings, gaze.offsetAngle, gaze.offsetDirection); !offset)
-            problem(ErrorCode::InvalidSchedule, where + ", gaze.offsetDirection: " + offset.error().message);
-        if (errors.size() != before)
-            return std::nullopt;
-        return cue;
-    }
-
-    // A gaze action's span: kGazeActionSeconds of the neutral face (never blended), which its
-    // modifiers stretch to the action's length.
+    // A gaze action's source (gazeSpanClip), once what it looks at reads.
     anim::BlendablePtr gazeSpan(const ActionSpec& spec, const std::string& where)
     {
         if (!spec.gaze) {
@@ -432,15 +408,11 @@ private:
         }
         if (!spec.clip.empty())
             problem(ErrorCode::InvalidSchedule, where + ", clip: an action of a gaze layer plays no clip.");
-        if (!gazeCue(*spec.gaze, where))
+        if (auto cue = readGazeCue(*spec.gaze, m_scenario); !cue) {
+            problem(cue.error().code, where + ", " + cue.error().message);
             return nullptr;
-        if (!m_gazeSpan) {
-            const auto layout = anim::FrameLayout::mpeg4Face();
-            std::vector<float> frames = anim::neutralFrame(*layout);
-            frames.insert(frames.end(), frames.begin(), frames.end());
-            m_gazeSpan = anim::KeyframeClip::create(layout, 1.0 / kGazeActionSeconds, std::move(frames), "gaze").value();
         }
-        return m_gazeSpan;
+        return gazeSpanClip();
     }
 
     // Where each action of a body layer plays (ActionSpec::placement): in start order, an action
@@ -694,15 +666,7 @@ private:
             if (layer.mute || (anySolo && !layer.solo))
                 continue;
             if (layer.kind == LayerKind::Gaze) {
-                for (std::size_t a = 0; a < layer.actions.size(); ++a)
-                    if (const anim::BlendingAction* built = schedule->action(runtime.actionIds.back()[a]))
-                        if (auto cue = gazeCue(*layer.actions[a].gaze, where)) {
-                            cue->start = built->start;
-                            cue->end = built->start + built->source->domain().duration();
-                            runtime.gaze.push_back(std::move(*cue));
-                        }
-                std::stable_sort(runtime.gaze.begin(), runtime.gaze.end(),
-                                 [](const GazeCue& a, const GazeCue& b) { return a.start < b.start; });
+                addGazeCues(layer, *schedule, runtime.actionIds.back(), m_scenario, runtime.gaze);
                 continue;
             }
             bool& first = body ? firstBody : firstFace;
@@ -732,7 +696,6 @@ private:
     std::map<std::string, std::shared_ptr<const anim::JointMask>> m_masks;
     std::shared_ptr<const motion::PostureBases> m_bases;
     std::optional<Error> m_basesError;
-    anim::BlendablePtr m_gazeSpan; // every gaze action's source
 };
 
 } // namespace
