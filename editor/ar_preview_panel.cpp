@@ -450,7 +450,8 @@ core::Result<void> ArPreviewPanel::startRecording(const QString& path)
 
 void ArPreviewPanel::stopRecording()
 {
-    if (!m_session || !m_session->recording())
+    // The session may have finished the file already, as its video ended before this was polled.
+    if (!m_session || m_recordingPath.isEmpty())
         return;
     if (auto finished = m_session->stopRecording(); !finished)
         setStatus(tr("The recording could not be finished: %1").arg(fromUtf8(finished.error().message)), true);
