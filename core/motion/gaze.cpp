@@ -16,6 +16,7 @@ using anim::Quatd;
 using anim::Vec3d;
 
 constexpr double kDegree = std::numbers::pi / 180;
+constexpr double kDegrees = 180 / std::numbers::pi; // in a radian
 constexpr double kFapAngleUnit = 1e-5; // radians (MPEG-4's AU)
 constexpr double kLongestStep = 0.25;  // seconds: a longer step (or one back) settles at once
 constexpr double kNewShift = 5;        // degrees a goal moves before the parts count it a new shift
@@ -45,7 +46,8 @@ double atan2Fast(double y, double x)
     return y < 0 ? -r : r;
 }
 
-// sin and cos of |x| ≤ π/2 by their Taylor series (beyond it, libm's).
+// sin and cos of |x| ≤ π/2 by their Taylor series (beyond it, libm's), multiplying by the
+// terms' reciprocals: a division by a constant stays a division without -ffast-math.
 void sinCos(double x, double& sine, double& cosine)
 {
     if (std::abs(x) > std::numbers::pi / 2) {
@@ -54,8 +56,8 @@ void sinCos(double x, double& sine, double& cosine)
         return;
     }
     const double x2 = x * x;
-    sine = x * (1 - x2 / 6 * (1 - x2 / 20 * (1 - x2 / 42 * (1 - x2 / 72 * (1 - x2 / 110)))));
-    cosine = 1 - x2 / 2 * (1 - x2 / 12 * (1 - x2 / 30 * (1 - x2 / 56 * (1 - x2 / 90 * (1 - x2 / 132)))));
+    sine = x * (1 - x2 * (1. / 6) * (1 - x2 * (1. / 20) * (1 - x2 * (1. / 42) * (1 - x2 * (1. / 72) * (1 - x2 * (1. / 110))))));
+    cosine = 1 - x2 * 0.5 * (1 - x2 * (1. / 12) * (1 - x2 * (1. / 30) * (1 - x2 * (1. / 56) * (1 - x2 * (1. / 90) * (1 - x2 * (1. / 132))))));
 }
 
 Quatd heading(double degrees)
@@ -78,8 +80,8 @@ double norm(double a, double b) { return std::sqrt(a * a + b * b); }
 // Heading (+ left) and pitch (+ down) of a direction in a frame that faces +z with +y up.
 void anglesOf(const Vec3d& d, double& headingDegrees, double& pitchDegrees)
 {
-    headingDegrees = atan2Fast(d.x, d.z) / kDegree;
-    pitchDegrees = atan2Fast(-d.y, norm(d.x, d.z)) / kDegree;
+    headingDegrees = atan2Fast(d.x, d.z) * kDegrees;
+    pitchDegrees = atan2Fast(-d.y, norm(d.x, d.z)) * kDegrees;
 }
 
 // The parts' goals on one axis for a shift of `total` degrees (see the header): the neck takes
@@ -179,7 +181,7 @@ Result<GazeRig> GazeRig::create(const anim::Skeleton& skeleton, std::optional<Ve
 
 GazeController::GazeController(GazeRig rig, GazeSettings settings)
     : m_rig(std::move(rig)), m_settings(settings), m_saccades(settings.seed),
-      m_offsets(m_rig.path.size()), m_locals(m_rig.path.size()), m_orientations(m_rig.path.size())
+      m_stretches(m_rig.path.size() + 1), m_locals(m_rig.path.size()), m_orientations(m_rig.path.size())
 {
 }
 
@@ -291,8 +293,10 @@ void GazeController::apply(double t, const Vec3d& target, std::span<float> body,
 {
     if (m_finished)
         return;
+    // The same time again (a paused view drawn anew, the target moved) shows where the gaze
+    // goes, as a time going back or jumping does.
     const double dt = m_last ? t - *m_last : 0;
-    const bool settle = dt < 0 || dt > kLongestStep;
+    const bool settle = dt < 0 || dt > kLongestStep || (m_last && dt == 0);
     m_last = t;
 
     // The chain as the other layers posed it: orientations, and positions up to the base.
@@ -309,23 +313,31 @@ void GazeController::apply(double t, const Vec3d& target, std::span<float> body,
             break;
         }
     // Up to the base in the body's frame; above it in the base's (m_orientations[i]: link i's
-    // orientation in the base's frame, which the turns below need).
+    // orientation in the base's frame, which the turns below need). Above the base, the head's
+    // position is summed per stretch between turning joints (m_stretches[s]: the links after the
+    // s-th turning joint), for the turns rotate each stretch as one: the turned head is then
+    // Σ turn_s · stretch_s, without walking the chain again.
     Vec3d basePosition, headInBase;
     Quatd base{0, 0, 0, 1}, inBase{0, 0, 0, 1};
+    std::fill(m_stretches.begin(), m_stretches.end(), Vec3d{});
+    std::size_t stretch = 0;
     for (std::size_t i = 0; i < links; ++i) {
         const GazeRig::Link& link = m_rig.path[i];
         const anim::Quat& q = anim::rotationAt(std::span<const float>(body), link.joint);
         m_locals[i] = {q.x, q.y, q.z, q.w};
-        m_offsets[i] = link.translation >= 0 ? Vec3d{body[std::size_t(link.translation)],
-                                                     body[std::size_t(link.translation) + 1],
-                                                     body[std::size_t(link.translation) + 2]}
-                                             : link.offset;
+        const Vec3d offset = link.translation >= 0 ? Vec3d{body[std::size_t(link.translation)],
+                                                           body[std::size_t(link.translation) + 1],
+                                                           body[std::size_t(link.translation) + 2]}
+                                                   : link.offset;
         if (i <= baseLink) {
-            basePosition = basePosition + anim::rotate(base, m_offsets[i]);
+            basePosition = basePosition + anim::rotate(base, offset);
             base = base * m_locals[i];
         } else {
-            headInBase = headInBase + anim::rotate(inBase, m_offsets[i]);
+            const Vec3d step = anim::rotate(inBase, offset);
+            headInBase = headInBase + step;
+            m_stretches[stretch] = m_stretches[stretch] + step;
             inBase = inBase * m_locals[i];
+            stretch += link.part >= 0 ? 1 : 0;
         }
         m_orientations[i] = inBase;
     }
@@ -345,44 +357,45 @@ void GazeController::apply(double t, const Vec3d& target, std::span<float> body,
     }
     moveParts(t, settle ? 0 : dt, settle, headingGoal, pitchGoal);
 
-    // Turn the chain. The turn so far, in the base's frame, is the heading of the parts below and
-    // of this joint's share of its part about the base's up, then their pitch: the head's is the
-    // whole shift as shareShift() measured it. Each joint's share is the same step; headings (and
-    // pitches) about one axis add up by multiplying, so that one sine and cosine a part will do.
+    // Turn the chain. A turning joint's turn so far, in the base's frame, is the heading of the
+    // parts below and of this joint's share of its part about the base's up, then their pitch:
+    // the head's is the whole shift as shareShift() measured it. Each joint's share is the same
+    // step; headings (and pitches) about one axis add up by multiplying, so that one sine and
+    // cosine a part will do. Every link turns with the last turning joint at or below it, so only
+    // the turning joints' local rotations change.
     int part = -1;
     Quatd headingStep{0, 0, 0, 1}, pitchStep{0, 0, 0, 1}, headingSoFar{0, 0, 0, 1}, pitchSoFar{0, 0, 0, 1};
-    Quatd turned{0, 0, 0, 1}; // the link's turned orientation, in the base's frame
-    Vec3d turnedHead{};
+    Quatd turn{0, 0, 0, 1}; // of the last turning joint so far
+    Vec3d turnedHead = m_stretches[0];
+    stretch = 0;
     for (std::size_t i = baseLink + 1; i < links; ++i) {
         const GazeRig::Link& link = m_rig.path[i];
-        turnedHead = turnedHead + anim::rotate(turned, m_offsets[i]);
-        if (link.part < 0) {
-            turned = turned * m_locals[i];
+        if (link.part < 0)
             continue;
-        }
         if (link.part != part) {
             part = link.part;
             const auto p = std::size_t(part);
             headingStep = heading(link.share * m_state.heading[p]);
             pitchStep = pitch(link.share * m_state.pitch[p]);
         }
+        const Quatd parent = turn * m_orientations[i - 1]; // the link below, turned
         headingSoFar = headingSoFar * headingStep;
         pitchSoFar = pitchSoFar * pitchStep;
-        const Quatd now = headingSoFar * pitchSoFar * m_orientations[i];
-        const Quatd local = anim::conjugate(turned) * now; // unit times unit
+        turn = headingSoFar * pitchSoFar;
+        const Quatd local = anim::conjugate(parent) * (turn * m_orientations[i]); // unit times unit
         anim::rotationAt(body, link.joint) = {float(local.x), float(local.y), float(local.z), float(local.w)};
-        turned = now;
+        turnedHead = turnedHead + anim::rotate(turn, m_stretches[++stretch]);
     }
 
     // The eyes: toward the target from where the turned head holds them.
-    const Quatd head = turned;
+    const Quatd head = turn * headOrientation;
     const Vec3d turnedEyes = turnedHead + anim::rotate(head, m_rig.eyes);
     const auto fap = [&face](int number) -> float& { return face[std::size_t(scene::fapChannel(number))]; };
     double eyeHeading = 0, eyePitch = 0;
     if (m_released) {
         // Back to the eyes the face has.
-        eyeHeading = 0.5 * (fap(23) + fap(24)) * kFapAngleUnit / kDegree;
-        eyePitch = 0.5 * (fap(25) + fap(26)) * kFapAngleUnit / kDegree;
+        eyeHeading = 0.5 * (fap(23) + fap(24)) * (kFapAngleUnit * kDegrees);
+        eyePitch = 0.5 * (fap(25) + fap(26)) * (kFapAngleUnit * kDegrees);
     } else {
         anglesOf(anim::rotate(anim::conjugate(head), targetInBase - turnedEyes), eyeHeading, eyePitch);
         eyeHeading += s.offsetHeading;
@@ -396,8 +409,8 @@ void GazeController::apply(double t, const Vec3d& target, std::span<float> body,
     m_state.shifting |= jumping; // the eyes on their way to the goal are part of the shift
     m_state.eyeHeading = std::clamp(m_state.eyeHeading, -s.eyes.heading, s.eyes.heading);
     m_state.eyePitch = std::clamp(m_state.eyePitch, -s.eyes.pitch, s.eyes.pitch);
-    fap(23) = fap(24) = float(m_state.eyeHeading * kDegree / kFapAngleUnit);
-    fap(25) = fap(26) = float(m_state.eyePitch * kDegree / kFapAngleUnit);
+    fap(23) = fap(24) = float(m_state.eyeHeading * (kDegree / kFapAngleUnit));
+    fap(25) = fap(26) = float(m_state.eyePitch * (kDegree / kFapAngleUnit));
     if (m_blinkStart)
         closeLids(face, blinkClosure(t - *m_blinkStart));
 

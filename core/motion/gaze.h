@@ -140,7 +140,7 @@ private:
     Saccade m_eyeJump;                        // to the goal, from where the eyes were
     std::optional<double> m_blinkStart;
     bool m_fixating = false;
-    std::vector<anim::Vec3d> m_offsets;        // the chain's, per link (allocated once)
+    std::vector<anim::Vec3d> m_stretches;      // the head's position summed per stretch (allocated once)
     std::vector<anim::Quatd> m_locals, m_orientations;
 };
 
