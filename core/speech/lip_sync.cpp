@@ -5,7 +5,6 @@
 #include <cmath>
 #include <map>
 #include <optional>
-#include <random>
 #include <set>
 
 #include "runtime/sound.h"
@@ -307,19 +306,6 @@ std::vector<PhonemeTiming> timedPhonemes(const std::vector<PlacedPhone>& phones,
     return timed;
 }
 
-// 16-bit samples, dithered by one step either way (from a fixed seed, so that results repeat):
-// digital silence, as in espeak-ng's pauses, has no log energy for the recogniser.
-std::vector<std::int16_t> pcm16(std::span<const float> samples)
-{
-    std::minstd_rand random(1);
-    std::vector<std::int16_t> pcm(samples.size());
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-        const long value = std::lround(std::clamp(samples[i], -1.0f, 1.0f) * 32766.0f) + (random() & 1 ? 1 : -1);
-        pcm[i] = std::int16_t(value);
-    }
-    return pcm;
-}
-
 Result<std::string> recognisedText(const SphinxModel& model, std::span<const std::int16_t> pcm)
 {
     auto decoder = SphinxDecoder::open(model, SphinxDecoder::Mode::Recognise);
@@ -355,7 +341,7 @@ Result<LipSyncResult> lipSync(std::span<const float> samples, int rate, std::str
     if (rate <= 0 || samples.empty())
         return makeError(ErrorCode::InvalidArgument, "The recording has no sound.");
     const double duration = double(samples.size()) / rate;
-    const std::vector<std::int16_t> pcm = pcm16(resampled(samples, rate, kSphinxRate));
+    const std::vector<std::int16_t> pcm = dithered16(resampled(samples, rate, kSphinxRate));
     const SphinxModel model = SphinxModel::installed();
     const auto cancelled = [] { return cancelledError("The lip sync"); };
 
