@@ -75,7 +75,8 @@ private:
             m_recursed = m_recursed || !state->second;
             return known;
         }
-        Positions found = match(m_set.grammarOf(rule), rule.expansion, start);
+        Positions found = none();
+        match(m_set.grammarOf(rule), rule.expansion, start, found);
         if (found != known) {
             m_grew = true;
             known = found;
@@ -84,42 +85,40 @@ private:
         return found;
     }
 
-    Positions matchFrom(const JsgfGrammar& grammar, const JsgfExpansion& expansion, const Positions& starts)
+    // Adds to `ends` the positions `expansion` reaches from each of `starts`.
+    void matchFrom(const JsgfGrammar& grammar, const JsgfExpansion& expansion, const Positions& starts, Positions& ends)
     {
-        Positions ends = none();
         for (std::size_t p = 0; p < starts.size(); ++p)
-            if (starts[p]) {
-                const Positions reached = match(grammar, expansion, p);
-                for (std::size_t q = 0; q < reached.size(); ++q)
-                    ends[q] |= reached[q];
-            }
-        return ends;
+            if (starts[p])
+                match(grammar, expansion, p, ends);
     }
 
-    // `starts` and everything reached from them by repeating `expansion`.
-    Positions closure(const JsgfGrammar& grammar, const JsgfExpansion& expansion, Positions reached)
+    // Adds to `reached` everything reached from it by repeating `expansion`.
+    void closure(const JsgfGrammar& grammar, const JsgfExpansion& expansion, Positions& reached)
     {
         std::vector<std::size_t> todo;
         for (std::size_t p = 0; p < reached.size(); ++p)
             if (reached[p])
                 todo.push_back(p);
+        Positions next = none();
         while (!todo.empty()) {
             const std::size_t p = todo.back();
             todo.pop_back();
-            const Positions next = match(grammar, expansion, p);
+            std::fill(next.begin(), next.end(), 0);
+            match(grammar, expansion, p, next);
             for (std::size_t q = 0; q < next.size(); ++q)
                 if (next[q] && !reached[q]) {
                     reached[q] = 1;
                     todo.push_back(q);
                 }
         }
-        return reached;
     }
 
-    Positions match(const JsgfGrammar& grammar, const JsgfExpansion& expansion, std::size_t start)
+    // Adds to `ends` the positions `expansion` reaches from `start` (written into, never
+    // cleared: alternatives add up without copies).
+    void match(const JsgfGrammar& grammar, const JsgfExpansion& expansion, std::size_t start, Positions& ends)
     {
         using Kind = JsgfExpansion::Kind;
-        Positions ends = none();
         switch (expansion.kind) {
         case Kind::Token:
             if (start < m_words.size() && m_words[start] == expansion.text)
@@ -128,37 +127,50 @@ private:
         case Kind::Null: ends[start] = 1; break;
         case Kind::Void: break;
         case Kind::RuleRef:
-            if (const JsgfRule* rule = resolved(grammar, expansion))
-                ends = matchRule(*rule, start);
-            break;
-        case Kind::Sequence:
-            ends[start] = 1;
-            for (const JsgfExpansion& child : expansion.children) {
-                ends = matchFrom(grammar, child, ends);
-                if (std::none_of(ends.begin(), ends.end(), [](char c) { return c != 0; }))
-                    break;
-            }
-            break;
-        case Kind::Alternatives:
-            for (const JsgfExpansion& child : expansion.children) {
-                const Positions reached = match(grammar, child, start);
+            if (const JsgfRule* rule = resolved(grammar, expansion)) {
+                const Positions reached = matchRule(*rule, start);
                 for (std::size_t q = 0; q < reached.size(); ++q)
                     ends[q] |= reached[q];
             }
             break;
+        case Kind::Sequence: {
+            const JsgfExpansion& first = expansion.children.front();
+            if (first.kind == Kind::Token && (start >= m_words.size() || m_words[start] != first.text))
+                return; // most alternatives of a large grammar end here: no sets made
+            Positions frontier = none(), next = none();
+            frontier[start] = 1;
+            for (const JsgfExpansion& child : expansion.children) {
+                std::fill(next.begin(), next.end(), 0);
+                matchFrom(grammar, child, frontier, next);
+                std::swap(frontier, next);
+                if (std::none_of(frontier.begin(), frontier.end(), [](char c) { return c != 0; }))
+                    return;
+            }
+            for (std::size_t q = 0; q < frontier.size(); ++q)
+                ends[q] |= frontier[q];
+            break;
+        }
+        case Kind::Alternatives:
+            for (const JsgfExpansion& child : expansion.children)
+                match(grammar, child, start, ends);
+            break;
         case Kind::Optional:
-            ends = match(grammar, expansion.children.front(), start);
+            match(grammar, expansion.children.front(), start, ends);
             ends[start] = 1;
             break;
         case Kind::ZeroOrMore:
-            ends[start] = 1;
-            ends = closure(grammar, expansion.children.front(), std::move(ends));
-            break;
-        case Kind::OneOrMore:
-            ends = closure(grammar, expansion.children.front(), match(grammar, expansion.children.front(), start));
+        case Kind::OneOrMore: {
+            Positions reached = none();
+            if (expansion.kind == Kind::ZeroOrMore)
+                reached[start] = 1;
+            else
+                match(grammar, expansion.children.front(), start, reached);
+            closure(grammar, expansion.children.front(), reached);
+            for (std::size_t q = 0; q < reached.size(); ++q)
+                ends[q] |= reached[q];
             break;
         }
-        return ends;
+        }
     }
 
     const JsgfRule* resolved(const JsgfGrammar& grammar, const JsgfExpansion& reference)
