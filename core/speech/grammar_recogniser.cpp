@@ -75,11 +75,16 @@ Result<std::vector<std::string>> addPronunciations(SphinxDecoder& decoder, const
     return espeakPronounced;
 }
 
-double totalScore(const SphinxDecoding& decoding)
+// The acoustic score of frames [first, last] in `decoding`; a segment partly inside counts in
+// proportion (the phone loop's segments do not end where the grammar's words do).
+double scoreWithin(const SphinxDecoding& decoding, int first, int last)
 {
     double total = 0;
-    for (const SphinxSegment& segment : decoding.segments)
-        total += segment.acousticScore;
+    for (const SphinxSegment& segment : decoding.segments) {
+        const int overlap = std::min(last, segment.lastFrame) - std::max(first, segment.firstFrame) + 1;
+        if (overlap > 0)
+            total += segment.acousticScore * overlap / (segment.lastFrame - segment.firstFrame + 1);
+    }
     return total;
 }
 
@@ -157,18 +162,23 @@ Result<Recognition> GrammarRecogniser::finish()
         return phones.error();
     Recognition recognition;
     recognition.frames = heard->frames;
+    int first = -1, last = -1; // the frames from the first word to the last: the speech
     for (const SphinxSegment& segment : heard->segments) {
         const std::string word = segment.word.substr(0, segment.word.find('(')); // "word(2)": its second pronunciation
         if (!std::binary_search(m_words.begin(), m_words.end(), word))
             continue; // a pause or a noise
         recognition.words.push_back({word, segment.firstFrame * kSphinxFrame, (segment.lastFrame + 1) * kSphinxFrame});
         recognition.text += (recognition.text.empty() ? "" : " ") + word;
+        first = first < 0 ? segment.firstFrame : first;
+        last = segment.lastFrame;
     }
     if (recognition.words.empty()) {
         recognition.confidence = -std::numeric_limits<double>::infinity();
         return recognition;
     }
-    recognition.confidence = (totalScore(*heard) - totalScore(*phones)) / std::max(1, heard->frames);
+    // Over the speech only: the pauses around it score alike on both paths and would water
+    // the difference down by how long the microphone was open.
+    recognition.confidence = (scoreWithin(*heard, first, last) - scoreWithin(*phones, first, last)) / (last - first + 1);
     recognition.verdict = recognition.confidence >= m_options.rejectBelow ? Recognition::Verdict::Understood
                                                                           : Recognition::Verdict::NotUnderstood;
     return recognition;
