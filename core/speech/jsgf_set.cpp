@@ -11,6 +11,9 @@ namespace {
 
 // More grammars than one import chain of a real grammar pulls in: a cap on hostile chains.
 constexpr std::size_t kMaxGrammars = 64;
+// Rules nested deeper than this while matching (a chain of thousands of rules, each naming the
+// next) match nothing: the stack stays bounded on hostile grammars.
+constexpr int kMaxRuleDepth = 1000;
 
 Error importError(const JsgfGrammar& grammar, const JsgfImport& imported, const std::string& what)
 {
@@ -76,7 +79,11 @@ private:
             return known;
         }
         Positions found = none();
-        match(m_set.grammarOf(rule), rule.expansion, start, found);
+        if (m_depth < kMaxRuleDepth) {
+            ++m_depth;
+            match(m_set.grammarOf(rule), rule.expansion, start, found);
+            --m_depth;
+        }
         if (found != known) {
             m_grew = true;
             known = found;
@@ -187,6 +194,7 @@ private:
     std::map<Key, bool> m_done; ///< this round's rules: finished, or still being matched
     std::unordered_map<const JsgfExpansion*, const JsgfRule*> m_references;
     bool m_recursed = false, m_grew = false;
+    int m_depth = 0;
 };
 
 } // namespace
