@@ -94,14 +94,6 @@ std::pair<char32_t, std::size_t> decode(std::string_view text)
     return {c, length};
 }
 
-std::string joined(const std::vector<std::string>& words)
-{
-    std::string text;
-    for (const std::string& word : words)
-        text += (text.empty() ? "" : " ") + word;
-    return text;
-}
-
 // One step of a pattern as the grammar's tree keeps it.
 // Inner wildcards (neither first nor last in their pattern) are copied once each: their loop is
 // the shorter <few>.

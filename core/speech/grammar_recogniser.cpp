@@ -14,14 +14,6 @@ namespace {
 const std::string kGrammarSearch = "grammar";
 const std::string kPhoneLoopSearch = "phones";
 
-std::string joined(const std::vector<std::string>& parts)
-{
-    std::string text;
-    for (const std::string& part : parts)
-        text += (text.empty() ? "" : " ") + part;
-    return text;
-}
-
 // The grammar's tokens, after checking it as pocketsphinx will read it.
 Result<std::vector<std::string>> grammarTokens(std::string_view jsgf)
 {
@@ -101,11 +93,13 @@ Result<GrammarRecogniser> GrammarRecogniser::open(std::string_view jsgf, const R
     auto espeakPronounced = addPronunciations(*grammar, *tokens, options);
     if (!espeakPronounced)
         return espeakPronounced.error();
+    grammar->setPruning(options.beam, options.wordBeam, options.maxActiveHmms);
     if (auto compiled = grammar->addGrammar(kGrammarSearch, jsgf); !compiled)
         return compiled.error();
     auto phoneLoop = SphinxDecoder::open(options.model, SphinxDecoder::Mode::Listen);
     if (!phoneLoop)
         return phoneLoop.error();
+    phoneLoop->setPruning(options.beam, options.wordBeam, options.maxActiveHmms);
     if (auto made = phoneLoop->addPhoneLoop(kPhoneLoopSearch); !made)
         return made.error();
     GrammarRecogniser recogniser(std::move(*grammar), std::move(*phoneLoop));

@@ -31,6 +31,10 @@ struct RecogniserOptions {
     /// (or no path at all). espeak-ng's voices score about 1.5 lower even in the grammar: tune
     /// this on the microphone and voices the character will hear.
     double rejectBelow = -1.5;
+    /// Pruning (SphinxDecoder::setPruning): narrower than pocketsphinx's defaults, for grammars
+    /// of thousands of sentences must be decoded faster than they are spoken.
+    double beam = 1e-48, wordBeam = 7e-29;
+    int maxActiveHmms = 30000;
 };
 
 struct HeardWord {

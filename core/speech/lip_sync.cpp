@@ -117,14 +117,6 @@ std::vector<TranscriptWord> transcriptWords(std::string_view text)
     return words;
 }
 
-std::string joinPhones(const std::vector<std::string>& phones)
-{
-    std::string text;
-    for (const std::string& phone : phones)
-        text += (text.empty() ? "" : " ") + phone;
-    return text;
-}
-
 // Each word's pronunciations: CMUdict's, or espeak-ng's (with a warning); none when neither
 // has one (a warning too: the word is left out of the alignment).
 Result<void> pronounce(std::vector<TranscriptWord>& words, const SphinxModel& model, std::vector<std::string>& warnings)
@@ -151,7 +143,7 @@ Result<void> pronounce(std::vector<TranscriptWord>& words, const SphinxModel& mo
                                "it is left out.");
         else
             warnings.push_back(inQuotes(word.text) + " is not in pocketsphinx's dictionary: espeak-ng's pronunciation "
-                               + joinPhones(word.pronunciations.front()) + " is used.");
+                               + joined(word.pronunciations.front()) + " is used.");
     }
     return {};
 }
@@ -181,11 +173,11 @@ Result<void> addWords(SphinxDecoder& decoder, const std::vector<TranscriptWord>&
 {
     for (std::size_t i = 0; i < words.size(); ++i)
         for (std::size_t p = 0; p < words[i].pronunciations.size(); ++p) {
-            if (auto added = decoder.addWord(wordName(i, p), joinPhones(words[i].pronunciations[p])); !added)
+            if (auto added = decoder.addWord(wordName(i, p), joined(words[i].pronunciations[p])); !added)
                 return added.error();
         }
     for (const auto& [filler, phones] : kFillers)
-        if (auto added = decoder.addWord(filler, joinPhones(phones)); !added)
+        if (auto added = decoder.addWord(filler, joined(phones)); !added)
             return added.error();
     for (std::string_view phone : arpabetPhonemes())
         if (auto added = decoder.addWord(phoneWord(std::string(phone)), std::string(phone)); !added)

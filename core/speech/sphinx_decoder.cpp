@@ -155,11 +155,7 @@ Result<void> SphinxDecoder::addWord(const std::string& name, const std::string& 
 Result<std::vector<SphinxSegment>> SphinxDecoder::decodeGrammar(std::string_view jsgf,
                                                                 std::span<const std::int16_t> samples, bool wideBeams)
 {
-    // The search reads its beams from the configuration when it is made.
-    cmd_ln_t* config = ps_get_config(m_decoder.get());
-    cmd_ln_set_float_r(config, "-beam", wideBeams ? 1e-80 : 1e-48);
-    cmd_ln_set_float_r(config, "-pbeam", wideBeams ? 1e-80 : 1e-48);
-    cmd_ln_set_float_r(config, "-wbeam", wideBeams ? 1e-60 : 7e-29);
+    setPruning(wideBeams ? 1e-80 : 1e-48, wideBeams ? 1e-60 : 7e-29, 30000);
     if (auto added = addGrammar("grammar", jsgf); !added)
         return added.error();
     return decode("grammar", samples);
@@ -169,6 +165,16 @@ Result<std::vector<SphinxSegment>> SphinxDecoder::recognise(std::span<const std:
 {
     assert(!m_languageModelSearch.empty()); // opened to recognise
     return decode(m_languageModelSearch, samples);
+}
+
+void SphinxDecoder::setPruning(double beam, double wordBeam, int maxActiveHmms)
+{
+    // A search reads these from the configuration when it is made.
+    cmd_ln_t* config = ps_get_config(m_decoder.get());
+    cmd_ln_set_float_r(config, "-beam", beam);
+    cmd_ln_set_float_r(config, "-pbeam", beam);
+    cmd_ln_set_float_r(config, "-wbeam", wordBeam);
+    cmd_ln_set_int_r(config, "-maxhmmpf", maxActiveHmms);
 }
 
 Result<void> SphinxDecoder::addGrammar(const std::string& name, std::string_view jsgf)

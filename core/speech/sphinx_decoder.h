@@ -86,6 +86,10 @@ public:
     /// Recognises `samples` with the language model (Recognise mode only): the words in time order.
     Result<std::vector<SphinxSegment>> recognise(std::span<const std::int16_t> samples);
 
+    /// Pruning for the searches added from now on: the beams (pocketsphinx's -beam and -pbeam,
+    /// -wbeam: relative to the best path, smaller keeps more) and how many HMMs a frame may keep
+    /// active before the beams narrow (-maxhmmpf).
+    void setPruning(double beam, double wordBeam, int maxActiveHmms);
     /// Compiles the JSGF grammar `jsgf` (its first public rule, as pocketsphinx takes it) as the
     /// search `name`, with the current beams. Error: it does not compile (a word not added, …).
     Result<void> addGrammar(const std::string& name, std::string_view jsgf);

@@ -10,6 +10,7 @@
 #include "speech/jsgf.h"
 #include "speech/sphinx_decoder.h"
 #include "test_support.h"
+#include "util/text.h"
 
 namespace dialogue = thespis::core::dialogue;
 namespace speech = thespis::core::speech;
@@ -183,12 +184,8 @@ TEST(ListeningGrammar, ARosieSizedSourceIsAcceptedWholeAndCompilesInPocketsphinx
     std::set<std::string, std::less<>> wanted(grammar->words.begin(), grammar->words.end());
     auto pronunciations = speech::readPronunciations(model.dictionary, wanted);
     ASSERT_TRUE(pronunciations) << describe(pronunciations.error());
-    for (const auto& [w, phones] : *pronunciations) {
-        std::string joined;
-        for (const std::string& p : phones.front())
-            joined += (joined.empty() ? "" : " ") + p;
-        ASSERT_TRUE(decoder->addWord(w, joined));
-    }
+    for (const auto& [w, phones] : *pronunciations)
+        ASSERT_TRUE(decoder->addWord(w, thespis::core::joined(phones.front())));
     const auto added = Clock::now();
     auto compiled = decoder->addGrammar("rosie", grammar->jsgf);
     ASSERT_TRUE(compiled) << describe(compiled.error());

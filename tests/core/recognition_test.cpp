@@ -14,6 +14,7 @@
 #include "listening_source.h"
 #include "test_support.h"
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace speech = thespis::core::speech;
 using thespis::core::ErrorCode;
@@ -71,14 +72,6 @@ std::map<std::string, std::string> cardsTranscripts()
         transcripts[line.substr(open + 1, close - open - 1)] = text;
     }
     return transcripts;
-}
-
-std::string joined(const std::vector<std::string>& words)
-{
-    std::string text;
-    for (const std::string& word : words)
-        text += (text.empty() ? "" : " ") + word;
-    return text;
 }
 
 // What a small bot answers: greetings, questions with wildcards and a set, a number, and a name
@@ -202,7 +195,7 @@ TEST(GrammarRecogniser, EspeakSpeechOfADialoguesGrammarIsRecognised)
     for (const auto& voice : voices)
         for (std::size_t p = 0; p < source.patterns.size(); ++p) {
             const std::string expected =
-                joined(thespis::test::literalForm(source, source.patterns[p], wildcardWords[p % wildcardWords.size()]));
+                thespis::core::joined(thespis::test::literalForm(source, source.patterns[p], wildcardWords[p % wildcardWords.size()]));
             auto heard = recogniser.recognise(spoken(expected, voice));
             ASSERT_TRUE(heard) << describe(heard.error());
             ++sentences;
