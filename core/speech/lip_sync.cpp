@@ -5,7 +5,6 @@
 #include <cmath>
 #include <map>
 #include <optional>
-#include <random>
 #include <set>
 
 #include "runtime/sound.h"
@@ -118,14 +117,6 @@ std::vector<TranscriptWord> transcriptWords(std::string_view text)
     return words;
 }
 
-std::string joinPhones(const std::vector<std::string>& phones)
-{
-    std::string text;
-    for (const std::string& phone : phones)
-        text += (text.empty() ? "" : " ") + phone;
-    return text;
-}
-
 // Each word's pronunciations: CMUdict's, or espeak-ng's (with a warning); none when neither
 // has one (a warning too: the word is left out of the alignment).
 Result<void> pronounce(std::vector<TranscriptWord>& words, const SphinxModel& model, std::vector<std::string>& warnings)
@@ -152,7 +143,7 @@ Result<void> pronounce(std::vector<TranscriptWord>& words, const SphinxModel& mo
                                "it is left out.");
         else
             warnings.push_back(inQuotes(word.text) + " is not in pocketsphinx's dictionary: espeak-ng's pronunciation "
-                               + joinPhones(word.pronunciations.front()) + " is used.");
+                               + joined(word.pronunciations.front()) + " is used.");
     }
     return {};
 }
@@ -182,11 +173,11 @@ Result<void> addWords(SphinxDecoder& decoder, const std::vector<TranscriptWord>&
 {
     for (std::size_t i = 0; i < words.size(); ++i)
         for (std::size_t p = 0; p < words[i].pronunciations.size(); ++p) {
-            if (auto added = decoder.addWord(wordName(i, p), joinPhones(words[i].pronunciations[p])); !added)
+            if (auto added = decoder.addWord(wordName(i, p), joined(words[i].pronunciations[p])); !added)
                 return added.error();
         }
     for (const auto& [filler, phones] : kFillers)
-        if (auto added = decoder.addWord(filler, joinPhones(phones)); !added)
+        if (auto added = decoder.addWord(filler, joined(phones)); !added)
             return added.error();
     for (std::string_view phone : arpabetPhonemes())
         if (auto added = decoder.addWord(phoneWord(std::string(phone)), std::string(phone)); !added)
@@ -307,19 +298,6 @@ std::vector<PhonemeTiming> timedPhonemes(const std::vector<PlacedPhone>& phones,
     return timed;
 }
 
-// 16-bit samples, dithered by one step either way (from a fixed seed, so that results repeat):
-// digital silence, as in espeak-ng's pauses, has no log energy for the recogniser.
-std::vector<std::int16_t> pcm16(std::span<const float> samples)
-{
-    std::minstd_rand random(1);
-    std::vector<std::int16_t> pcm(samples.size());
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-        const long value = std::lround(std::clamp(samples[i], -1.0f, 1.0f) * 32766.0f) + (random() & 1 ? 1 : -1);
-        pcm[i] = std::int16_t(value);
-    }
-    return pcm;
-}
-
 Result<std::string> recognisedText(const SphinxModel& model, std::span<const std::int16_t> pcm)
 {
     auto decoder = SphinxDecoder::open(model, SphinxDecoder::Mode::Recognise);
@@ -355,7 +333,7 @@ Result<LipSyncResult> lipSync(std::span<const float> samples, int rate, std::str
     if (rate <= 0 || samples.empty())
         return makeError(ErrorCode::InvalidArgument, "The recording has no sound.");
     const double duration = double(samples.size()) / rate;
-    const std::vector<std::int16_t> pcm = pcm16(resampled(samples, rate, kSphinxRate));
+    const std::vector<std::int16_t> pcm = dithered16(resampled(samples, rate, kSphinxRate));
     const SphinxModel model = SphinxModel::installed();
     const auto cancelled = [] { return cancelledError("The lip sync"); };
 

@@ -1,9 +1,11 @@
 #include "speech/resample.h"
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 namespace thespis::core::speech {
 namespace {
@@ -60,6 +62,17 @@ std::vector<float> resampled(std::span<const float> samples, int from, int to)
         out[n] = float(sum * cutoff);
     }
     return out;
+}
+
+std::vector<std::int16_t> dithered16(std::span<const float> samples)
+{
+    std::minstd_rand random(1);
+    std::vector<std::int16_t> pcm(samples.size());
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        const long value = std::lround(std::clamp(samples[i], -1.0f, 1.0f) * 32766.0f) + (random() & 1 ? 1 : -1);
+        pcm[i] = std::int16_t(value);
+    }
+    return pcm;
 }
 
 } // namespace thespis::core::speech

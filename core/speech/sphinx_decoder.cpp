@@ -129,7 +129,7 @@ Result<SphinxDecoder> SphinxDecoder::open(const SphinxModel& model, Mode mode)
     // grammar's end ("made a warm woollen"), so grammars name their pauses instead.
     silenceLog();
     cmd_ln_t* config = cmd_ln_init(nullptr, ps_args(), TRUE, "-hmm", hmm.c_str(), "-remove_silence", "no",
-                                   "-fsgusefiller", "no", nullptr);
+                                   "-fsgusefiller", mode == Mode::Listen ? "yes" : "no", nullptr);
     if (config && mode == Mode::Recognise) {
         cmd_ln_set_str_r(config, "-dict", dict.c_str());
         cmd_ln_set_str_r(config, "-lm", lm.c_str());
@@ -155,45 +155,100 @@ Result<void> SphinxDecoder::addWord(const std::string& name, const std::string& 
 Result<std::vector<SphinxSegment>> SphinxDecoder::decodeGrammar(std::string_view jsgf,
                                                                 std::span<const std::int16_t> samples, bool wideBeams)
 {
-    // The search reads its beams from the configuration when it is made.
-    cmd_ln_t* config = ps_get_config(m_decoder.get());
-    cmd_ln_set_float_r(config, "-beam", wideBeams ? 1e-80 : 1e-48);
-    cmd_ln_set_float_r(config, "-pbeam", wideBeams ? 1e-80 : 1e-48);
-    cmd_ln_set_float_r(config, "-wbeam", wideBeams ? 1e-60 : 7e-29);
-    const std::string grammar(jsgf);
-    if (ps_set_jsgf_string(m_decoder.get(), "grammar", grammar.c_str()) < 0)
-        return makeError(ErrorCode::Internal, "pocketsphinx could not compile a grammar.", grammar);
+    setPruning(wideBeams ? 1e-80 : 1e-48, wideBeams ? 1e-60 : 7e-29, 30000);
+    if (auto added = addGrammar("grammar", jsgf); !added)
+        return added.error();
     return decode("grammar", samples);
 }
 
 Result<std::vector<SphinxSegment>> SphinxDecoder::recognise(std::span<const std::int16_t> samples)
 {
     assert(!m_languageModelSearch.empty()); // opened to recognise
-    return decode(m_languageModelSearch.c_str(), samples);
+    return decode(m_languageModelSearch, samples);
 }
 
-Result<std::vector<SphinxSegment>> SphinxDecoder::decode(const char* search, std::span<const std::int16_t> samples)
+void SphinxDecoder::setPruning(double beam, double wordBeam, int maxActiveHmms)
+{
+    // A search reads these from the configuration when it is made.
+    cmd_ln_t* config = ps_get_config(m_decoder.get());
+    cmd_ln_set_float_r(config, "-beam", beam);
+    cmd_ln_set_float_r(config, "-pbeam", beam);
+    cmd_ln_set_float_r(config, "-wbeam", wordBeam);
+    cmd_ln_set_int_r(config, "-maxhmmpf", maxActiveHmms);
+}
+
+Result<void> SphinxDecoder::addGrammar(const std::string& name, std::string_view jsgf)
+{
+    const std::string grammar(jsgf);
+    if (ps_set_jsgf_string(m_decoder.get(), name.c_str(), grammar.c_str()) < 0)
+        return makeError(ErrorCode::Internal, "pocketsphinx could not compile a grammar.", grammar.substr(0, 4096));
+    return {};
+}
+
+Result<void> SphinxDecoder::addPhoneLoop(const std::string& name)
+{
+    // Context-independent phones: a few dozen models instead of every triphone, and fast.
+    cmd_ln_set_boolean_r(ps_get_config(m_decoder.get()), "-allphone_ci", TRUE);
+    if (ps_set_allphone(m_decoder.get(), name.c_str(), nullptr) < 0)
+        return makeError(ErrorCode::Internal, "pocketsphinx could not make its phone loop.");
+    return {};
+}
+
+Result<void> SphinxDecoder::startUtterance(const std::string& search)
 {
     ps_decoder_t* ps = m_decoder.get();
-    if (ps_set_search(ps, search) < 0)
+    if (ps_set_search(ps, search.c_str()) < 0)
         return makeError(ErrorCode::Internal, "pocketsphinx has no search " + inQuotes(search) + ".");
-    // One call with the whole utterance: pocketsphinx then normalises the cepstra over all of
-    // it (batch CMN) instead of adapting from its initial estimate as it goes.
-    if (ps_start_utt(ps) < 0 || ps_process_raw(ps, samples.data(), samples.size(), FALSE, TRUE) < 0 || ps_end_utt(ps) < 0)
+    if (ps_start_utt(ps) < 0)
+        return makeError(ErrorCode::Internal, "pocketsphinx could not start an utterance.");
+    return {};
+}
+
+Result<void> SphinxDecoder::feed(std::span<const std::int16_t> samples, bool wholeUtterance)
+{
+    if (ps_process_raw(m_decoder.get(), samples.data(), samples.size(), FALSE, wholeUtterance ? TRUE : FALSE) < 0)
         return makeError(ErrorCode::Internal, "pocketsphinx could not decode the audio.");
-    std::vector<SphinxSegment> segments;
+    return {};
+}
+
+Result<SphinxDecoding> SphinxDecoder::finishUtterance()
+{
+    ps_decoder_t* ps = m_decoder.get();
+    if (ps_end_utt(ps) < 0)
+        return makeError(ErrorCode::Internal, "pocketsphinx could not finish decoding the audio.");
+    SphinxDecoding decoding;
+    decoding.frames = ps_get_n_frames(ps);
     std::int32_t score = 0;
     if (!ps_get_hyp(ps, &score))
-        return segments;
+        return decoding;
+    // Acoustic scores are logmath values shifted right by 10 bits (SENSCR_SHIFT in hmm.h).
+    logmath_t* logmath = ps_get_logmath(ps);
     for (ps_seg_t* seg = ps_seg_iter(ps); seg; seg = ps_seg_next(seg)) {
         const char* word = ps_seg_word(seg);
         if (!word || std::string_view(word) == "(NULL)") // an empty transition of the grammar
             continue;
-        SphinxSegment segment{word, 0, 0};
+        SphinxSegment segment{word, 0, 0, 0};
         ps_seg_frames(seg, &segment.firstFrame, &segment.lastFrame);
-        segments.push_back(std::move(segment));
+        std::int32_t acoustic = 0, language = 0, backoff = 0;
+        ps_seg_prob(seg, &acoustic, &language, &backoff);
+        segment.acousticScore = logmath_log_to_ln(logmath, acoustic) * 1024.0;
+        decoding.segments.push_back(std::move(segment));
     }
-    return segments;
+    return decoding;
+}
+
+Result<std::vector<SphinxSegment>> SphinxDecoder::decode(const std::string& search, std::span<const std::int16_t> samples)
+{
+    // One call with the whole utterance: pocketsphinx then normalises the cepstra over all of
+    // it (batch CMN) instead of adapting from its initial estimate as it goes.
+    if (auto started = startUtterance(search); !started)
+        return started.error();
+    if (auto fed = feed(samples, true); !fed)
+        return fed.error();
+    auto decoding = finishUtterance();
+    if (!decoding)
+        return decoding.error();
+    return std::move(decoding->segments);
 }
 
 } // namespace thespis::core::speech

@@ -52,13 +52,23 @@ inline constexpr double kSphinxWindow = 0.0256; ///< seconds of sound in one fra
 struct SphinxSegment {
     std::string word;
     int firstFrame = 0, lastFrame = 0; ///< inclusive
+    double acousticScore = 0;          ///< log-likelihood of its frames under the model (natural log)
+};
+
+/// What one utterance decoded to: its words in time order (empty when no path reached the
+/// search's end) and how many frames were heard.
+struct SphinxDecoding {
+    std::vector<SphinxSegment> segments;
+    int frames = 0;
 };
 
 class SphinxDecoder {
 public:
     /// Align: only the words added (and the model's noise words); Recognise: the model's
-    /// dictionary and language model (slower to open: about a second).
-    enum class Mode { Align, Recognise };
+    /// dictionary and language model (slower to open: about a second); Listen: only the words
+    /// added, and a grammar's words may have pauses and the model's noises between and around
+    /// them (pocketsphinx's -fsgusefiller), as people's speech has.
+    enum class Mode { Align, Recognise, Listen };
     /// Errors: the model's files are missing (naming them and the package) or do not load.
     static Result<SphinxDecoder> open(const SphinxModel& model, Mode mode);
 
@@ -76,10 +86,28 @@ public:
     /// Recognises `samples` with the language model (Recognise mode only): the words in time order.
     Result<std::vector<SphinxSegment>> recognise(std::span<const std::int16_t> samples);
 
+    /// Pruning for the searches added from now on: the beams (pocketsphinx's -beam and -pbeam,
+    /// -wbeam: relative to the best path, smaller keeps more) and how many HMMs a frame may keep
+    /// active before the beams narrow (-maxhmmpf).
+    void setPruning(double beam, double wordBeam, int maxActiveHmms);
+    /// Compiles the JSGF grammar `jsgf` (its first public rule, as pocketsphinx takes it) as the
+    /// search `name`, with the current beams. Error: it does not compile (a word not added, …).
+    Result<void> addGrammar(const std::string& name, std::string_view jsgf);
+    /// Adds the search `name` that hears any sequence of the model's context-independent phones:
+    /// the best the model can say of any sound, to compare a grammar's path with.
+    Result<void> addPhoneLoop(const std::string& name);
+
+    /// An utterance decoded as it comes (a microphone): startUtterance, feed as often as samples
+    /// arrive (kSphinxRate), finishUtterance. `wholeUtterance` when one feed holds all of it:
+    /// the cepstra are then normalised over all of it. Error: no search `search`.
+    Result<void> startUtterance(const std::string& search);
+    Result<void> feed(std::span<const std::int16_t> samples, bool wholeUtterance = false);
+    Result<SphinxDecoding> finishUtterance();
+
 private:
     struct Free { void operator()(::ps_decoder_s* decoder) const; };
     explicit SphinxDecoder(::ps_decoder_s* decoder) : m_decoder(decoder) {}
-    Result<std::vector<SphinxSegment>> decode(const char* search, std::span<const std::int16_t> samples);
+    Result<std::vector<SphinxSegment>> decode(const std::string& search, std::span<const std::int16_t> samples);
 
     std::unique_ptr<::ps_decoder_s, Free> m_decoder;
     std::string m_languageModelSearch; ///< the search opened with the language model (Recognise)

@@ -1,6 +1,7 @@
 #pragma once
 // Small text helpers shared across core.
 
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -26,6 +27,18 @@ inline std::string asciiCase(std::string_view text, bool upper)
         if (c >= from && c <= from + 25)
             c = char(c - from + to);
     return out;
+}
+
+/// The parts one after another, with `separator` between them ("AH L", "go forward").
+inline std::string joined(std::span<const std::string> parts, std::string_view separator = " ")
+{
+    std::string text;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        if (i > 0)
+            text += separator;
+        text += parts[i];
+    }
+    return text;
 }
 
 /// ASCII lower case (file extensions, names compared without case).
