@@ -338,7 +338,7 @@ private:
 void readAiml(std::string_view xml, const std::string& file, CategoryStore& store, std::vector<LoadProblem>& problems)
 {
     const std::unique_ptr<std::remove_pointer_t<XML_Parser>, decltype(&XML_ParserFree)> parser(
-        XML_ParserCreate("UTF-8"), &XML_ParserFree);
+        XML_ParserCreate(nullptr), &XML_ParserFree);
     AimlReader reader(parser.get(), file, store, problems);
     XML_SetUserData(parser.get(), &reader);
     XML_SetElementHandler(parser.get(), &AimlReader::onStart, &AimlReader::onEnd);
@@ -353,6 +353,20 @@ void readAiml(std::string_view xml, const std::string& file, CategoryStore& stor
                                        int(XML_GetCurrentColumnNumber(parser.get())) + 1,
                                        std::string("the XML is malformed: ") + XML_ErrorString(XML_GetErrorCode(parser.get()))
                                            + "; categories after this point are not loaded"});
+}
+
+} // namespace thespis::core::dialogue
+
+namespace thespis::core::dialogue {
+
+std::string describe(const LoadProblem& problem)
+{
+    std::string text = problem.file;
+    if (problem.line > 0)
+        text += ":" + std::to_string(problem.line);
+    if (problem.column > 0)
+        text += ":" + std::to_string(problem.column);
+    return text + ": " + problem.message;
 }
 
 } // namespace thespis::core::dialogue

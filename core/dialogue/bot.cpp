@@ -15,6 +15,12 @@ std::string Bot::property(std::string_view name) const
     return fallback != m_properties.end() ? fallback->second : "unknown";
 }
 
+std::string_view Bot::sentenceSplitters() const
+{
+    const auto it = m_properties.find("sentence-splitters");
+    return it != m_properties.end() ? std::string_view(it->second) : std::string_view();
+}
+
 const Substitutions& Bot::substitutions(std::string_view name) const
 {
     static const Substitutions kNone;

@@ -31,6 +31,8 @@ public:
     const std::map<std::string, std::string>& properties() const { return m_properties; }
     /// A property's value, or the "default-property" property (else "unknown") when it has none.
     std::string property(std::string_view name) const;
+    /// The characters that end a sentence: the "sentence-splitters" property, else "" (".!?").
+    std::string_view sentenceSplitters() const;
     /// Predicate values a new conversation starts with (the .pdefaults files).
     const std::map<std::string, std::string>& predicateDefaults() const { return m_predicateDefaults; }
     /// A substitution list by name ("normal", "denormal", "person", "person2", "gender"); empty if none.

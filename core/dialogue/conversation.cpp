@@ -73,7 +73,7 @@ Answer Conversation::respond(std::string_view input)
     Answer answer;
     m_state.requests.emplace_back(input);
     keepNewest(m_state.requests);
-    const std::string splitters = m_bot->property("sentence-splitters");
+    const std::string_view splitters = m_bot->sentenceSplitters();
     TemplateEvaluator evaluator(*this);
     for (const std::string& sentence : splitSentences(m_bot->substitutions("normal").apply(input), splitters)) {
         m_state.inputs.push_back(sentence);

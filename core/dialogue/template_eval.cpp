@@ -161,7 +161,7 @@ std::string TemplateEvaluator::srai(const std::string& text)
     ++m_depth;
     std::string result;
     // A srai's text may hold several sentences; each is answered, as an input would be.
-    for (const std::string& sentence : splitSentences(text, m_bot.property("sentence-splitters")))
+    for (const std::string& sentence : splitSentences(text, m_bot.sentenceSplitters()))
         result.append(result.empty() ? "" : " ").append(matchAndEvaluate(sentence, nullptr));
     --m_depth;
     return result;
