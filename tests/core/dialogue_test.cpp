@@ -406,10 +406,22 @@ TEST(DialogueRosie, AnswersHelloThroughItsReduction)
 TEST(DialogueRosie, RemembersTheVisitorsName)
 {
     Conversation c(rosie());
-    c.respond("my name is Alice");
-    EXPECT_EQ(c.state().predicates.at("name"), "Alice");
-    const std::string answer = c.respond("what is my name").text;
-    EXPECT_NE(answer.find("Alice"), std::string::npos) << answer;
+    // reductions1.aiml: MY NAME IS * → CALL ME *, which client_profile.aiml answers and sets "name".
+    EXPECT_EQ(say(c, "My name is Ada."), "How are you doing, Ada.");
+    EXPECT_EQ(c.state().predicates.at("name"), "Ada");
+    // ("My name is Alice" would not do: reductions_update.aiml's "_ ALICE" outranks "MY NAME IS *".)
+    EXPECT_EQ(say(c, "What is my name?"), "Ada.");
+}
+
+TEST(DialogueRosie, SetsAndMapsAnswerKnowledgeQuestions)
+{
+    Conversation c(rosie());
+    // knowledge.aiml: WHAT IS THE CAPITAL OF <set>nation</set> → <map name="nation2capital">.
+    const Answer answer = c.respond("What is the capital of France?");
+    EXPECT_EQ(answer.text, "Paris.");
+    ASSERT_EQ(answer.matched.size(), 1u);
+    EXPECT_EQ(answer.matched[0].pattern, "WHAT IS THE CAPITAL OF <set>nation</set>");
+    EXPECT_EQ(say(c, "knock knock"), "Who is there?"); // personality.aiml:1794
 }
 
 TEST(DialogueAlice, SraiReductionsAndBadAnswerLearning)
