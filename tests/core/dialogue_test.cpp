@@ -367,10 +367,10 @@ TEST(DialogueRosie, LoadsEveryCategoryAndDataFile)
     auto loaded = dialogue::loadBotFolder(kData / "rosie");
     ASSERT_TRUE(loaded.ok());
     const std::string problems = problemsOf(loaded->problems);
-    // Rosie's patterns use Pandorabots' "wh", "season" and "acronym" sets, which it does not ship.
+XX
     for (const auto& problem : loaded->problems)
         EXPECT_NE(problem.message.find("the pattern uses the set"), std::string::npos) << problems;
-    EXPECT_LE(loaded->problems.size(), 5u) << problems;
+    EXPECT_EQ(loaded->problems.size(), 2u) << problems;
     const dialogue::Bot& bot = *loaded->bot;
     EXPECT_GT(bot.categories().size(), 12000u);
     EXPECT_EQ(bot.sets().size(), 42u);
