@@ -28,10 +28,11 @@ std::string withoutMarkup(std::string_view text)
     return out;
 }
 
+// Trimmed only when twice as long, so that most answers move no strings.
 template <class T>
 void keepNewest(std::vector<T>& history)
 {
-    if (history.size() > kHistoryLength)
+    if (history.size() >= 2 * kHistoryLength)
         history.erase(history.begin(), history.end() - std::ptrdiff_t(kHistoryLength));
 }
 

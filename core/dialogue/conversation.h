@@ -18,8 +18,8 @@
 
 namespace thespis::core::dialogue {
 
-/// What a conversation remembers; all of it is saved. Histories are newest last and keep the
-/// last kHistoryLength entries.
+/// What a conversation remembers; all of it is saved. Histories are newest last and keep at
+/// least the last kHistoryLength entries.
 struct ConversationState {
     std::string id = "visitor";                    ///< <id/>
     std::map<std::string, std::string> predicates; ///< <set name>/<get name>; "topic" among them

@@ -1,6 +1,7 @@
 #include "dialogue/normalise.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "util/text.h"
 
@@ -24,7 +25,11 @@ Substitutions::Substitutions(const Pairs& pairs)
     for (const auto& [from, to] : pairs) {
         if (from.empty())
             continue;
-        m_byFirstByte[static_cast<unsigned char>(lowerAscii(from[0]))].push_back(std::uint32_t(m_rules.size()));
+        const auto index = std::uint32_t(m_rules.size());
+        if (from[0] == ' ' && from.size() > 1)
+            m_bySecondAfterSpace[static_cast<unsigned char>(lowerAscii(from[1]))].push_back(index);
+        else
+            m_byFirstByte[static_cast<unsigned char>(lowerAscii(from[0]))].push_back(index);
         m_rules.emplace_back(lowercase(from), to);
     }
 }
@@ -40,8 +45,7 @@ std::string Substitutions::apply(std::string_view text) const
     std::string out;
     out.reserve(padded.size() + 16);
     for (std::size_t at = 0; at < padded.size();) {
-        const auto& candidates = m_byFirstByte[static_cast<unsigned char>(lowerAscii(padded[at]))];
-        const auto rule = std::find_if(candidates.begin(), candidates.end(), [&](std::uint32_t index) {
+        const auto matchesHere = [&](std::uint32_t index) {
             const std::string& from = m_rules[index].first;
             if (from.size() > padded.size() - at)
                 return false;
@@ -49,12 +53,28 @@ std::string Substitutions::apply(std::string_view text) const
                 if (lowerAscii(padded[at + i]) != from[i])
                     return false;
             return true;
-        });
-        if (rule == candidates.end()) {
+        };
+        // The first rule in file order of the two lists that apply here (each is in file order).
+        std::uint32_t rule = std::numeric_limits<std::uint32_t>::max();
+        for (std::uint32_t index : m_byFirstByte[static_cast<unsigned char>(lowerAscii(padded[at]))])
+            if (matchesHere(index)) {
+                rule = index;
+                break;
+            }
+        if (padded[at] == ' ' && at + 1 < padded.size())
+            for (std::uint32_t index : m_bySecondAfterSpace[static_cast<unsigned char>(lowerAscii(padded[at + 1]))]) {
+                if (index > rule)
+                    break;
+                if (matchesHere(index)) {
+                    rule = index;
+                    break;
+                }
+            }
+        if (rule == std::numeric_limits<std::uint32_t>::max()) {
             out += padded[at++];
             continue;
         }
-        const auto& [from, to] = m_rules[*rule];
+        const auto& [from, to] = m_rules[rule];
         // A rule's closing space may open the next word's rule (" i am " → " i " then " am ").
         const bool shareSpace = from.back() == ' ' && !to.empty() && to.back() == ' ';
         out.append(to, 0, shareSpace ? to.size() - 1 : to.size());

@@ -27,7 +27,9 @@ public:
 
 private:
     Pairs m_rules; // `from` in lower case
-    std::array<std::vector<std::uint32_t>, 256> m_byFirstByte; // rule indices by first byte of `from`
+    // Rule indices by the first byte of `from`; most rules start with a space (" you "), so those
+    // are found by their second byte instead.
+    std::array<std::vector<std::uint32_t>, 256> m_byFirstByte, m_bySecondAfterSpace;
 };
 
 /// The sentences of `text`, split after each character of `splitters` (UTF-8; ".!?" when empty),
