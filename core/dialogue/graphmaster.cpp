@@ -106,7 +106,8 @@ bool Graphmaster::addTokens(std::uint32_t& node, std::string_view tokens, const 
                 problem = "the pattern uses the bot property " + inQuotes(name) + ", which the bot does not have";
                 return false;
             }
-            for (std::string_view word : splitWords(matchForm(property->second)))
+            const std::string words = matchForm(property->second); // splitWords' views point into it
+            for (std::string_view word : splitWords(words))
                 node = child(node, EdgeKind::Word, wordId(word));
         } else {
             const bool priority = token.size() > 1 && token[0] == '$';

@@ -49,7 +49,8 @@ const T* newest(const std::vector<T>& history, int n)
 
 std::string firstWord(std::string_view text)
 {
-    const std::vector<std::string_view> words = splitWords(collapseSpaces(text));
+    const std::string tidy = collapseSpaces(text); // splitWords' views point into it
+    const std::vector<std::string_view> words = splitWords(tidy);
     return words.empty() ? "NIL" : std::string(words.front());
 }
 
