@@ -42,7 +42,7 @@ public:
 
     const Graphmaster& graph() const { return m_graph; }
     const Template& templateOf(const Category& category) const { return m_store.templates[category.templateIndex]; }
-    const PatternContext patternContext() const { return PatternContext{&m_sets, &m_properties}; }
+    PatternContext patternContext() const { return PatternContext{&m_sets, &m_properties}; }
 
 private:
     friend class BotBuilder;

@@ -256,7 +256,7 @@ std::optional<GraphMatch> Graphmaster::match(const MatchInput& input) const
     const auto size = std::uint32_t(input.words.size());
     search.ids.reserve(size);
     for (std::string_view word : input.words) {
-        const auto it = m_words.find(std::string(word));
+        const auto it = m_words.find(word);
         search.ids.push_back(it == m_words.end() ? kNone : it->second);
     }
     search.segmentEnd.resize(size);

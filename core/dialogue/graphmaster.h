@@ -84,7 +84,12 @@ private:
 
     std::vector<Node> m_nodes = std::vector<Node>(1);
     std::vector<Edge> m_edges;
-    std::unordered_map<std::string, std::uint32_t> m_words; // match-form word → id
+    // Looked up by string_view, so matching a word allocates nothing.
+    struct WordHash {
+        using is_transparent = void;
+        std::size_t operator()(std::string_view word) const { return std::hash<std::string_view>{}(word); }
+    };
+    std::unordered_map<std::string, std::uint32_t, WordHash, std::equal_to<>> m_words; // match-form word → id
     std::vector<const PhraseSet*> m_sets;                    // by set key; nullptr is the built-in number set
     std::map<std::string, std::uint32_t, std::less<>> m_setKeys;
     // Only while building: (parent, kind, key) → child.

@@ -303,9 +303,8 @@ void TemplateEvaluator::evaluateNode(const TemplateNode& node, Frame& frame, std
     switch (node.op) {
     case TemplateOp::Text: appendText(out, node.text); return;
     case TemplateOp::Markup: {
-        TemplateNode shell{TemplateOp::Markup, node.text, {}, {}};
-        for (const TemplateAttribute& a : node.attributes)
-            shell.attributes.push_back(TemplateAttribute{a.name, {TemplateNode{TemplateOp::Text, evaluate(a.value, frame), {}, {}}}});
+        // Markup's attributes are always literal (only AIML elements take attribute elements).
+        TemplateNode shell{TemplateOp::Markup, node.text, node.attributes, {}};
         if (node.children.empty()) {
             appendXml(out, {shell});
             return;

@@ -296,10 +296,10 @@ TEST(DialogueTemplate, SpeechMarkupAndUnknownElementsPassThrough)
 {
     const std::string gesture = "<begin_gesture id=\"g1\" anim=\"wave\"/>Hello <star/>!<end_gesture id=\"g1\"/>";
     const std::string bml = "<bml id=\"b1\"><gesture id=\"x\" lexeme=\"BEAT\" start=\"0.5\"/><speech id=\"s\"><text>Hi</text></speech></bml>";
-    Conversation c(botOf(cat("GREET *", gesture) + cat("BML", bml) + cat("HTML", "Look <a href=\"x.html\">here</a> &amp; <oob><search>cats</search></oob>")));
+    Conversation c(botOf(cat("GREET *", gesture) + cat("BML", bml) + cat("HTML", "Look <a href=\"x.html?a=1&amp;b=2\">here</a> &amp; <oob><search>cats</search></oob>")));
     EXPECT_EQ(say(c, "greet Ada"), "<begin_gesture id=\"g1\" anim=\"wave\"/>Hello Ada!<end_gesture id=\"g1\"/>");
     EXPECT_EQ(say(c, "bml"), bml);
-    EXPECT_EQ(say(c, "html"), "Look <a href=\"x.html\">here</a> &amp; <oob><search>cats</search></oob>");
+    EXPECT_EQ(say(c, "html"), "Look <a href=\"x.html?a=1&amp;b=2\">here</a> &amp; <oob><search>cats</search></oob>");
 }
 
 // --- Loading -----------------------------------------------------------------------------
@@ -474,7 +474,10 @@ TEST(DialogueYbot, ThatBasedReply)
     Conversation c(loaded.bot);
     EXPECT_EQ(say(c, "ywhythattest"), "WHY");
     EXPECT_EQ(say(c, "because I can"), "Interesting explanation.");
-    const Answer hello = c.respond("hello");
+    // defaults_topics_hello.aiml: "# HI #" (zero words on either side) → <srai>HELLO</srai>.
+    const Answer hello = c.respond("hi");
+    ASSERT_EQ(hello.matched.size(), 1u);
+    EXPECT_EQ(hello.matched[0].pattern, "# HI #");
     EXPECT_FALSE(hello.text.empty());
 }
 
