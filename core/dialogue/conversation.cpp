@@ -72,8 +72,6 @@ bool Conversation::learn(const std::string& aiml)
 Answer Conversation::respond(std::string_view input)
 {
     Answer answer;
-    m_state.requests.emplace_back(input);
-    keepNewest(m_state.requests);
     const std::string_view splitters = m_bot->sentenceSplitters();
     TemplateEvaluator evaluator(*this);
     for (const std::string& sentence : splitSentences(m_bot->substitutions("normal").apply(input), splitters)) {
@@ -89,6 +87,11 @@ Answer Conversation::respond(std::string_view input)
         if (!text.empty())
             answer.text.append(answer.text.empty() ? "" : " ").append(text);
     }
+    // Requests, like responses, join the history after the answer: <request index="1"/> is the
+    // visitor's previous input (alice's badanswer.aiml relies on it), while <input/> is the
+    // sentence being answered.
+    m_state.requests.emplace_back(input);
+    keepNewest(m_state.requests);
     m_state.responses.push_back(answer.text);
     keepNewest(m_state.responses);
     m_state.thats.push_back(splitSentences(withoutMarkup(answer.text), splitters));

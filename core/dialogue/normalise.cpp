@@ -76,7 +76,8 @@ std::string Substitutions::apply(std::string_view text) const
         }
         const auto& [from, to] = m_rules[rule];
         // A rule's closing space may open the next word's rule (" i am " → " i " then " am ").
-        const bool shareSpace = from.back() == ' ' && !to.empty() && to.back() == ' ';
+        // (Not for a rule that is only a space: the text would never move on.)
+        const bool shareSpace = from.size() > 1 && from.back() == ' ' && !to.empty() && to.back() == ' ';
         out.append(to, 0, shareSpace ? to.size() - 1 : to.size());
         at += shareSpace ? from.size() - 1 : from.size();
     }

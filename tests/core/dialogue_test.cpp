@@ -227,6 +227,13 @@ TEST(DialogueTemplate, PersonGenderAndCase)
     EXPECT_EQ(say(c, "case hello wORLD"), "HELLO WORLD hello world Hello World Hello wORLD h e l l o w O R L D");
 }
 
+TEST(DialogueTemplate, SubstitutionOfASpaceEnds)
+{
+    // Found by fuzz_bot_files: a rule of one space sharing its space with the next never moved on.
+    const dialogue::Substitutions spaces(dialogue::Pairs{{" ", " _ "}});
+    EXPECT_EQ(spaces.apply("a b"), "_ a _ b _");
+}
+
 TEST(DialogueTemplate, MapsFirstRestNormalize)
 {
     BotBuilder builder;
@@ -262,9 +269,10 @@ TEST(DialogueTemplate, DateAndInterval)
 
 TEST(DialogueTemplate, InputThatRequestResponseHistory)
 {
-    Conversation c(botOf(cat("A", "First. Second.") + cat("B", "<that index=\"1,2\"/>|<that/>|<input index=\"2\"/>|<request index=\"2\"/>|<response/>")));
+    Conversation c(botOf(cat("A", "First. Second.") + cat("B", "<that index=\"1,2\"/>|<that/>|<input/>|<input index=\"2\"/>|<request/>|<response/>")));
     say(c, "a");
-    EXPECT_EQ(say(c, "b!"), "First|Second|a|a|First. Second.");
+    // <input/> is the sentence being answered; <request/> and <response/> the previous exchange.
+    EXPECT_EQ(say(c, "b!"), "First|Second|b|a|a|First. Second.");
 }
 
 TEST(DialogueTemplate, IdSizeVocabularyProgram)
@@ -435,6 +443,18 @@ TEST(DialogueAlice, SraiReductionsAndBadAnswerLearning)
     const Answer answer = c.respond("My dog's name is Rex");
     ASSERT_FALSE(answer.matched.empty());
     EXPECT_EQ(answer.matched[0].pattern, "MY _ S NAME IS *");
+    // badanswer.aiml teaches a new answer through topics, <that>, <input>/<that>/<response>
+    // history, condition on predicates and <learn> with <eval>.
+    c.respond("What is your favorite color?");
+    EXPECT_EQ(say(c, "Bad answer"), "Would you like to teach me a new answer to \"What is your favorite color\"?");
+    EXPECT_EQ(say(c, "yes"), "OK, what should I have said?");
+    EXPECT_TRUE(say(c, "Blue is nice").starts_with("\"Blue is nice...\"? Does this depend on me having just said"));
+    EXPECT_EQ(say(c, "no"), "I'll try to remember to respond, \"Blue is nice\" when you say, \"What is your favorite color\"");
+    const Answer learned = c.respond("What is your favorite color?");
+    EXPECT_EQ(learned.text, "Blue is nice");
+    ASSERT_EQ(learned.matched.size(), 1u);
+    EXPECT_TRUE(learned.matched[0].learned);
+    EXPECT_EQ(learned.matched[0].pattern, "WHAT IS YOUR FAVORITE COLOR");
 }
 
 TEST(DialogueFreeAiml, KnockKnockFollowsThatAndCopyMeFollowsTheTopic)
