@@ -39,6 +39,7 @@ struct ConversationLimits {
     int sraiCalls = 2000;       ///< <srai> evaluations for one input
     int loopIterations = 100;   ///< one <condition>'s <loop/> repeats
     int nodeVisits = 1000000;   ///< template elements evaluated for one input
+    std::uint32_t matchVisits = 2000000; ///< graphmaster nodes visited for one input (every srai included)
 };
 
 class Conversation {

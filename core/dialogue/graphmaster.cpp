@@ -9,9 +9,6 @@
 namespace thespis::core::dialogue {
 namespace {
 
-// A hostile pattern set (many wildcards in a row) against a long input could search for ages;
-// real bots visit a few hundred nodes per sentence.
-constexpr std::uint32_t kMaxVisits = 200000;
 
 // Step priorities, in AIML 2.0's order; the words a step took break ties (fewest first, except
 // sets, which try their longest phrase first).
@@ -170,7 +167,7 @@ struct Graphmaster::Search {
     std::vector<Capture> captures;
     std::vector<std::uint16_t> order;
     std::string phrase; // a set's candidate phrase
-    std::uint32_t visits = 0;
+    std::uint32_t& visits; // what is left of the caller's budget
     std::uint32_t found = kNone;
 
     Capture::Part partAt(std::uint32_t at) const
@@ -220,8 +217,9 @@ struct Graphmaster::Search {
 
     bool walk(std::uint32_t nodeIndex, std::uint32_t at)
     {
-        if (++visits > kMaxVisits)
+        if (visits == 0)
             return false;
+        --visits;
         const Node& node = graph.m_nodes[nodeIndex];
         const auto size = std::uint32_t(ids.size());
         if (at == size && node.category != kNone) {
@@ -250,9 +248,9 @@ struct Graphmaster::Search {
     }
 };
 
-std::optional<GraphMatch> Graphmaster::match(const MatchInput& input) const
+std::optional<GraphMatch> Graphmaster::match(const MatchInput& input, std::uint32_t& visits) const
 {
-    Search search{*this, input, {}, {}, 0, 0, {}, {}, {}, 0, kNone};
+    Search search{*this, input, {}, {}, 0, 0, {}, {}, {}, visits, kNone};
     const auto size = std::uint32_t(input.words.size());
     search.ids.reserve(size);
     for (std::string_view word : input.words) {

@@ -53,7 +53,9 @@ public:
     /// Turns what was added into the flat arrays matching reads; add() may not follow.
     void freeze();
 
-    std::optional<GraphMatch> match(const MatchInput& input) const;
+    /// The best match, or nullopt. Each node visited takes one from `visits`; at 0 the search
+    /// gives up (patterns such as "* * * *" against a long input would otherwise take ages).
+    std::optional<GraphMatch> match(const MatchInput& input, std::uint32_t& visits) const;
     std::size_t nodeCount() const { return m_nodes.size(); }
     /// Distinct words the patterns hold, the two part markers included.
     std::size_t wordCount() const { return m_words.size(); }

@@ -83,7 +83,8 @@ std::string elementAround(TemplateNode element, const std::string& inner)
 } // namespace
 
 TemplateEvaluator::TemplateEvaluator(Conversation& conversation)
-    : m_conversation(conversation), m_bot(*conversation.m_bot), m_state(conversation.m_state)
+    : m_conversation(conversation), m_bot(*conversation.m_bot), m_state(conversation.m_state),
+      m_matchVisitsLeft(conversation.m_limits.matchVisits)
 {
 }
 
@@ -125,13 +126,17 @@ const Template* TemplateEvaluator::matchSentence(std::string_view sentence, Fram
     if (shownWords.size() != input.words.size())
         shownWords = input.words; // case folding changed a word's bytes: show it in upper case
 
-    std::optional<GraphMatch> match = m_bot.graph().match(input);
+    std::optional<GraphMatch> match = m_bot.graph().match(input, m_matchVisitsLeft);
     bool learned = false;
     if (!m_conversation.m_learnedGraph.empty())
-        if (std::optional<GraphMatch> own = m_conversation.m_learnedGraph.match(input); own && (!match || own->order <= match->order)) {
+        if (std::optional<GraphMatch> own = m_conversation.m_learnedGraph.match(input, m_matchVisitsLeft);
+            own && (!match || own->order <= match->order)) {
             match = std::move(own);
             learned = true;
         }
+    if (m_matchVisitsLeft == 0)
+        throw Cut{"The answer was cut: matching its sentences visited more than "
+                  + std::to_string(m_conversation.m_limits.matchVisits) + " pattern nodes."};
     if (!match)
         return nullptr;
     const Category& category = learned ? m_conversation.m_learned.categories[match->category] : m_bot.categories()[match->category];

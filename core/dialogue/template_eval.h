@@ -48,6 +48,7 @@ private:
     const Bot& m_bot;
     ConversationState& m_state;
     int m_depth = 0, m_sraiCalls = 0, m_visits = 0;
+    std::uint32_t m_matchVisitsLeft;
 };
 
 } // namespace thespis::core::dialogue

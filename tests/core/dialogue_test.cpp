@@ -214,6 +214,19 @@ TEST(DialogueTemplate, SraiLoopIsCutWithAMessage)
     EXPECT_EQ(say(c, "hello"), "Hi");
 }
 
+TEST(DialogueTemplate, MatchingThatWouldTakeAgesIsCut)
+{
+    // Ten wildcards before a word no input has: every way of splitting 60 words is tried.
+    Conversation c(botOf(cat("* * * * * * * * * * NEVER", "x") + cat("HELLO", "Hi")));
+    std::string input;
+    for (int i = 0; i < 60; ++i)
+        input += "word ";
+    const Answer answer = c.respond(input);
+    EXPECT_EQ(answer.text, "");
+    EXPECT_NE(answer.problem.find("pattern nodes"), std::string::npos) << answer.problem;
+    EXPECT_EQ(say(c, "hello"), "Hi");
+}
+
 TEST(DialogueTemplate, PersonGenderAndCase)
 {
     BotBuilder builder;

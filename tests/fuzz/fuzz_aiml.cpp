@@ -46,7 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     // Small limits keep each input fast; they are the same checks as the defaults.
     dialogue::Conversation conversation(loaded.bot, "fuzz");
-    conversation.setLimits(dialogue::ConversationLimits{20, 200, 20, 20000});
+    conversation.setLimits(dialogue::ConversationLimits{20, 200, 20, 20000, 100000});
     for (std::string_view input : {said, std::string_view("hello"), std::string_view("I like dark blue. What is * red?")}) {
         const dialogue::Answer answer = conversation.respond(input);
         if (!answer.problem.empty() && answer.problem.find("cut") == std::string::npos)
