@@ -361,12 +361,12 @@ namespace thespis::core::dialogue {
 
 std::string describe(const LoadProblem& problem)
 {
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) about ":" + std::to_string(…).
     std::string text = problem.file;
-    if (problem.line > 0)
-        text += ":" + std::to_string(problem.line);
-    if (problem.column > 0)
-        text += ":" + std::to_string(problem.column);
-    return text + ": " + problem.message;
+    for (const int place : {problem.line, problem.column > 0 && problem.line > 0 ? problem.column : 0})
+        if (place > 0)
+            text.append(":").append(std::to_string(place));
+    return text.append(": ").append(problem.message);
 }
 
 } // namespace thespis::core::dialogue
