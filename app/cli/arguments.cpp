@@ -22,6 +22,15 @@ std::optional<std::string> ParsedArguments::value(const std::string& option) con
     return it == values.end() ? std::nullopt : std::optional<std::string>(it->second);
 }
 
+std::vector<std::string> ParsedArguments::all(const std::string& option) const
+{
+    std::vector<std::string> found;
+    const auto [first, last] = repeated.equal_range(option);
+    for (auto it = first; it != last; ++it)
+        found.push_back(it->second);
+    return found;
+}
+
 ParseOutcome parseArguments(const CommandSpec& spec, std::span<const std::string_view> args)
 {
     ParseOutcome outcome;
@@ -75,14 +84,16 @@ ParseOutcome parseArguments(const CommandSpec& spec, std::span<const std::string
             outcome.error = "option '--" + option->name + "' needs a value (" + option->valueName + ")";
             return outcome;
         }
-        if (parsed.values.count(option->name)) {
+        if (option->repeats)
+            parsed.repeated.emplace(option->name, value);
+        else if (parsed.values.count(option->name)) {
             outcome.error = "option '--" + option->name + "' is given twice";
             return outcome;
         }
-        parsed.values[option->name] = std::move(value);
+        parsed.values.try_emplace(option->name, std::move(value));
     }
 
-    if (parsed.positionals.size() < spec.positionals.size()) {
+    if (parsed.positionals.size() + (spec.lastOptional ? 1 : 0) < spec.positionals.size()) {
         outcome.error = "missing " + spec.positionals[parsed.positionals.size()];
         return outcome;
     }
@@ -101,8 +112,9 @@ ParseOutcome parseArguments(const CommandSpec& spec, std::span<const std::string
 std::string usageLine(const CommandSpec& spec)
 {
     std::string line = "Usage: thespis-cli " + spec.name;
-    for (const std::string& positional : spec.positionals)
-        line += " " + positional;
+    for (std::size_t i = 0; i < spec.positionals.size(); ++i)
+        line += spec.lastOptional && i + 1 == spec.positionals.size() ? " [" + spec.positionals[i] + "]"
+                                                                       : " " + spec.positionals[i];
     if (spec.repeatsLast)
         line += "...";
     for (const OptionSpec& option : spec.options)
@@ -125,7 +137,8 @@ std::string helpText(const CommandSpec& spec)
     std::vector<std::pair<std::string, std::string>> rows;
     for (const OptionSpec& option : spec.options)
         rows.emplace_back("--" + option.name + (option.valueName.empty() ? "" : " " + option.valueName),
-                          option.help + (option.required ? " (required)" : ""));
+                          option.help + (option.required ? " (required)" : "") +
+                              (option.repeats ? " (may be given more than once)" : ""));
     rows.emplace_back("-h, --help", "show this help and exit");
     std::size_t width = 0;
     for (const auto& row : rows)

@@ -18,6 +18,7 @@ struct OptionSpec {
     std::string valueName; ///< empty: a flag without a value
     std::string help;
     bool required = false;
+    bool repeats = false;  ///< may be given more than once (ParsedArguments::all())
 };
 
 struct CommandSpec {
@@ -25,6 +26,7 @@ struct CommandSpec {
     std::string summary;                 ///< one line for the command list
     std::vector<std::string> positionals;///< names shown in usage, all required (e.g. "SCENARIO")
     bool repeatsLast = false;            ///< the last positional takes one or more values ("CLIP...")
+    bool lastOptional = false;           ///< the last positional may be left out ("[SCENARIO]")
     std::vector<OptionSpec> options;
     std::string description;             ///< paragraphs shown by --help after the usage line
 };
@@ -32,12 +34,15 @@ struct CommandSpec {
 class ParsedArguments {
 public:
     std::vector<std::string> positionals;
-    std::map<std::string, std::string> values;
+    std::map<std::string, std::string> values;   ///< the first value of each option
+    std::multimap<std::string, std::string> repeated; ///< every value of the options that repeat
     std::set<std::string> flags;
     bool help = false;
 
     bool has(const std::string& option) const { return values.count(option) || flags.count(option); }
     std::optional<std::string> value(const std::string& option) const;
+    /// Every value of an option that repeats, in the order given.
+    std::vector<std::string> all(const std::string& option) const;
 };
 
 struct ParseOutcome {

@@ -29,6 +29,7 @@ const std::vector<Command>& commands()
         {faceMappingSpec(), &runFaceMapping},
         {speakSpec(), &runSpeak},
         {lipsyncSpec(), &runLipsync},
+        {chatSpec(), &runChat},
     };
     return all;
 }

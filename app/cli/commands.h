@@ -54,6 +54,8 @@ CommandSpec speakSpec();
 int runSpeak(const CommandSpec& spec, const ParsedArguments& arguments);
 CommandSpec lipsyncSpec();
 int runLipsync(const CommandSpec& spec, const ParsedArguments& arguments);
+CommandSpec chatSpec();
+int runChat(const CommandSpec& spec, const ParsedArguments& arguments);
 #ifdef THESPIS_WITH_PYTHON
 CommandSpec runSpec();
 int runRun(const CommandSpec& spec, const ParsedArguments& arguments);

@@ -105,24 +105,38 @@ LoadedBot BotBuilder::build() &&
     return LoadedBot{std::shared_ptr<const Bot>(std::move(m_bot)), std::move(m_problems)};
 }
 
+Result<LoadedBot> loadBot(std::span<const std::filesystem::path> paths)
+{
+    BotBuilder builder;
+    for (const std::filesystem::path& path : paths) {
+        std::error_code error;
+        if (!std::filesystem::is_directory(path, error)) {
+            if (!std::filesystem::exists(path, error))
+                return makeError(ErrorCode::FileNotFound, "The bot file or folder " + inQuotes(path.string()) + " does not exist.");
+            builder.addFile(path);
+            continue;
+        }
+        std::vector<std::filesystem::path> files;
+        for (auto it = std::filesystem::recursive_directory_iterator(path, error);
+             !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error))
+            if (it->is_regular_file(error))
+                files.push_back(it->path());
+        if (error)
+            return makeError(ErrorCode::IoError, "The bot folder " + inQuotes(path.string()) + " could not be listed.", error.message());
+        // Sorted by name so that update files ("z_update.aiml") come last and win over what they replace.
+        std::sort(files.begin(), files.end());
+        for (const std::filesystem::path& file : files)
+            builder.addFile(file);
+    }
+    return std::move(builder).build();
+}
+
 Result<LoadedBot> loadBotFolder(const std::filesystem::path& folder)
 {
     std::error_code error;
     if (!std::filesystem::is_directory(folder, error))
         return makeError(ErrorCode::FileNotFound, "The bot folder " + inQuotes(folder.string()) + " does not exist.");
-    std::vector<std::filesystem::path> files;
-    for (auto it = std::filesystem::recursive_directory_iterator(folder, error); !error && it != std::filesystem::recursive_directory_iterator();
-         it.increment(error))
-        if (it->is_regular_file(error))
-            files.push_back(it->path());
-    if (error)
-        return makeError(ErrorCode::IoError, "The bot folder " + inQuotes(folder.string()) + " could not be listed.", error.message());
-    // Sorted by name so that update files ("z_update.aiml") come last and win over what they replace.
-    std::sort(files.begin(), files.end());
-    BotBuilder builder;
-    for (const std::filesystem::path& file : files)
-        builder.addFile(file);
-    return std::move(builder).build();
+    return loadBot(std::span(&folder, 1));
 }
 
 LoadedBot loadBotFiles(std::span<const std::filesystem::path> aimlFiles)

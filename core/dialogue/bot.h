@@ -87,6 +87,10 @@ private:
 /// extension). FileNotFound when the folder does not exist.
 Result<LoadedBot> loadBotFolder(const std::filesystem::path& folder);
 
+/// Loads a bot from folders (as loadBotFolder() reads one) and files (their kind told by their
+/// extension), in the order given. FileNotFound naming the first path that does not exist.
+Result<LoadedBot> loadBot(std::span<const std::filesystem::path> paths);
+
 /// Loads a list of AIML files (no sets, maps or substitutions besides what is built in).
 LoadedBot loadBotFiles(std::span<const std::filesystem::path> aimlFiles);
 

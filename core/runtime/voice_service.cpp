@@ -26,16 +26,25 @@ Result<int> VoiceService::activateAction(const std::string& character, const std
 {
     if (m_stage->findCharacter(character) < 0)
         return makeError(ErrorCode::NotFound, "There is no character \"" + character + "\" to speak.");
-    const Tick now = m_sound->now();
     const std::optional<scenario::SpeechLine> line = findLine(*m_stage, character, speech);
     if (!line) // the paper's scripts name recorded sound files
         return m_sound->play(speech, volume, character);
 
-    const std::string where = character + "'s line \"" + speech + "\"";
-    auto spoken = m_sound->lineAudio(*line);
+    auto said = say(character, *line, volume);
+    if (!said)
+        return said.error();
+    return said->sound;
+}
+
+Result<VoiceService::Said> VoiceService::say(const std::string& character, const scenario::SpeechLine& line,
+                                             double volume)
+{
+    const Tick now = m_sound->now();
+    const std::string where = character + "'s line \"" + line.name + "\"";
+    auto spoken = m_sound->lineAudio(line);
     if (!spoken)
         return makeError(spoken.error().code, where + ", " + spoken.error().message);
-    auto performed = performSpeech(*m_stage, character, line->name, speech::visemeCues(spoken->timing),
+    auto performed = performSpeech(*m_stage, character, line.name, speech::visemeCues(spoken->timing),
                                    speech::gestureCues(spoken->text, spoken->timing), now);
     if (!performed)
         return makeError(performed.error().code, where + ": " + performed.error().message);
@@ -45,7 +54,8 @@ Result<int> VoiceService::activateAction(const std::string& character, const std
         for (const std::string& gesture : performed->unknownGestures)
             m_warnings.push_back(where + ": " + character + " cannot play the gesture \"" + gesture + "\".");
     }
-    return m_sound->playClip(speechSoundName(character, speech), spoken->clip, now, volume, character);
+    const int sound = m_sound->playClip(speechSoundName(character, line.name), spoken->clip, now, volume, character);
+    return Said{sound, spoken->clip->duration()};
 }
 
 bool VoiceService::stop(const std::string& character, const std::string& speech)

@@ -25,6 +25,14 @@ public:
     /// sound file of that name. Returns the sound's activation id. Errors: no such character; a
     /// line whose audio cannot be read or whose text cannot be spoken; no line and no such file.
     Result<int> activateAction(const std::string& character, const std::string& speech, double volume = 1.0);
+    /// What say() started: the sound's activation id and how long the line lasts.
+    struct Said {
+        int sound = 0;
+        double seconds = 0;
+    };
+    /// `character` says `line` from now, as activateAction() says a line of its own (a
+    /// conversation's answers are lines made on the spot). Errors as activateAction()'s.
+    Result<Said> say(const std::string& character, const scenario::SpeechLine& line, double volume = 1.0);
     /// Stops the character's line (its sound and its face) now; false when it does not play.
     bool stop(const std::string& character, const std::string& speech);
     bool isPlaying(const std::string& character, const std::string& speech) const;

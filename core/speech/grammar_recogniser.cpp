@@ -4,7 +4,9 @@
 #include <limits>
 #include <set>
 
+#include "runtime/sound.h"
 #include "speech/espeak_voice.h"
+#include "speech/resample.h"
 #include "speech/jsgf.h"
 #include "util/text.h"
 
@@ -81,6 +83,14 @@ double scoreWithin(const SphinxDecoding& decoding, int first, int last)
 }
 
 } // namespace
+
+Result<std::vector<std::int16_t>> readRecording(const std::filesystem::path& path)
+{
+    auto sound = runtime::loadSound(path);
+    if (!sound)
+        return sound.error();
+    return dithered16(resampled((*sound)->samples, (*sound)->rate, kSphinxRate));
+}
 
 Result<GrammarRecogniser> GrammarRecogniser::open(std::string_view jsgf, const RecogniserOptions& options)
 {

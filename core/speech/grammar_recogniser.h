@@ -13,6 +13,7 @@
 // listed. Grammars that import others are not taken (pocketsphinx cannot read them from text).
 
 #include <cstdint>
+#include <filesystem>
 #include <span>
 #include <string>
 #include <string_view>
@@ -55,6 +56,9 @@ struct Recognition {
 
     bool understood() const { return verdict == Verdict::Understood; }
 };
+
+/// A recording (WAV, FLAC, OGG at any rate) as the samples recognise() takes. Errors name the file.
+Result<std::vector<std::int16_t>> readRecording(const std::filesystem::path& path);
 
 class GrammarRecogniser {
 public:

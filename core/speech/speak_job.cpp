@@ -52,6 +52,22 @@ bool isBml(std::string_view text)
     return text.starts_with("<bml") || text.starts_with("<?xml");
 }
 
+std::string spokenWords(std::string_view text)
+{
+    if (isBml(text)) {
+        auto block = parseBml(text);
+        if (!block)
+            return std::string(text);
+        std::string words;
+        for (const BmlBehavior& behavior : block->behaviors)
+            if (behavior.kind == BmlBehaviorKind::Speech)
+                words += (words.empty() ? "" : " ") + behavior.text;
+        return words;
+    }
+    auto tagged = parseTaggedText(text);
+    return tagged ? std::move(tagged->text) : std::string(text);
+}
+
 Result<void> SpeakJob::validate() const
 {
     if (isBml(text)) {

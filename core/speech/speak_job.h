@@ -28,6 +28,10 @@ std::vector<std::pair<std::size_t, std::size_t>> sentenceRanges(std::string_view
 /// space) rather than tagged text.
 bool isBml(std::string_view text);
 
+/// The words `text` says, for a transcript: tagged text without its tags, a BML block's speeches
+/// in order; the text as it is when it reads as neither.
+std::string spokenWords(std::string_view text);
+
 struct SpeakJob final : Job {
     static constexpr const char* SpeakingStage = "Speaking";
 
