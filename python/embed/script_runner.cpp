@@ -3,6 +3,7 @@
 
 #include "script_runner.h"
 
+#include "runtime/interaction_service.h"
 #include "runtime/voice_service.h"
 
 #include "interpreter.h"
@@ -76,6 +77,8 @@ core::Result<void> ScriptRunner::run(const std::string& source, const std::strin
         if (sound) {
             globals["voiceService"] = py::cast(std::make_shared<core::runtime::VoiceService>(service->sharedStage(), sound));
             globals["sndService"] = py::cast(sound);
+            globals["interactionService"] =
+                py::cast(std::make_shared<core::runtime::InteractionService>(service->sharedStage(), sound));
         }
         py::object code = builtins.attr("compile")(source, fileName, "exec");
         builtins.attr("exec")(code, globals);

@@ -2,7 +2,8 @@
 // ScriptRunner: runs the paper's Python scripts (§4.5) inside the studio and `thespis-cli run`,
 // with the same `thespis` module python3 imports built in. A script sees `animService` (also
 // `anim`): the AnimationService of the stage it plays on, `voiceService` (also `sndService`):
-// the sound service on the same clock, when one is given, and `thespis`. Its output goes to a
+// the sound service on the same clock, when one is given, `interactionService` (a character
+// conversing, on the same stage and clock) and `thespis`. Its output goes to a
 // sink (the studio's console, the terminal); an exception ends it with its traceback written
 // there and an error naming the file and line. stop(), from any thread, ends a running script:
 // its waits return at once and Python code gets KeyboardInterrupt.

@@ -13,6 +13,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "anim/quat.h"
+#include "motion/gaze_target.h"
 
 namespace pybind11::detail {
 
@@ -124,6 +125,9 @@ auto withoutGil(Work&& work)
 /// Fills the `_thespis` module (module.cpp's extension and the embedded one).
 void defineModule(py::module_& m);
 
+/// A gaze target from Python: "camera", "Antigone", "Antigone:l_radiocarpal", or three numbers (bind_runtime.cpp).
+core::motion::GazeTarget gazeTarget(const py::object& target);
+
 void bindErrors(py::module_& m);
 void bindFrames(py::module_& m); // FrameLayout, TimeDomain, Blendable (bind_anim.cpp)
 void bindAnim(py::module_& m);   // curves, masks, clips, modifiers, schedules
@@ -139,5 +143,6 @@ void bindRuntime(py::module_& m);  // thespis.runtime: clocks, the Stage, the an
 void bindMotion(py::module_& m);   // thespis.motion: postures, the posture PCA, idle motion, the filter
 void bindSpeech(py::module_& m);   // thespis.speech: tagged text, espeak-ng speech, visemes, Insert
 void bindBml(py::module_& m);      // thespis.bml: BML blocks read and realised on the Stage
+void bindDialogue(py::module_& m); // thespis.dialogue: AIML bots, conversations, listening, the interaction service
 
 } // namespace thespis::python

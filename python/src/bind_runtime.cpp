@@ -54,17 +54,6 @@ std::shared_ptr<AnimationService> makeService(std::shared_ptr<Stage> stage, std:
     return std::make_shared<AnimationService>(std::move(stage), std::move(clock));
 }
 
-// A gaze target from Python: "camera", "Antigone", "Antigone:l_radiocarpal", or three numbers.
-GazeTarget gazeTarget(const py::object& target)
-{
-    if (py::isinstance<py::str>(target))
-        return unwrap(core::motion::parseGazeTarget(target.cast<std::string>()));
-    const auto xyz = target.cast<std::vector<double>>();
-    if (xyz.size() != 3)
-        throw py::value_error("A gaze target point has three coordinates (x, y, z), not " + std::to_string(xyz.size()) + ".");
-    return {GazeTarget::Kind::Point, {xyz[0], xyz[1], xyz[2]}, {}, {}};
-}
-
 py::object gazeStateObject(const std::optional<core::motion::GazeState>& state)
 {
     if (!state)
@@ -186,6 +175,18 @@ void bindTrack(Class& c, Track track, const std::string& suffix)
 }
 
 } // namespace
+
+// A gaze target from Python: "camera", "Antigone", "Antigone:l_radiocarpal", or three numbers.
+core::motion::GazeTarget gazeTarget(const py::object& target)
+{
+    if (py::isinstance<py::str>(target))
+        return unwrap(core::motion::parseGazeTarget(target.cast<std::string>()));
+    const auto xyz = target.cast<std::vector<double>>();
+    if (xyz.size() != 3)
+        throw py::value_error("A gaze target point has three coordinates (x, y, z), not " + std::to_string(xyz.size()) + ".");
+    return {core::motion::GazeTarget::Kind::Point, {xyz[0], xyz[1], xyz[2]}, {}, {}};
+}
+
 
 void bindRuntime(py::module_& m)
 {

@@ -26,6 +26,7 @@ void defineModule(py::module_& m)
     bindMotion(m);
     bindSpeech(m);
     bindBml(m);
+    bindDialogue(m);
     bindAr(m);
 }
 

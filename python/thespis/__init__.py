@@ -18,7 +18,9 @@ undoable scenario edits (each returns an ``Edit``: ``apply(scenario)``, ``invers
 ``thespis.speech`` speaks tagged text with espeak-ng (audio, word and phoneme timing, visemes
 weighted by the coarticulation dominance curve) and inserts it into a scenario; ``thespis.bml``
 reads BML blocks and realises them on the Stage (speech, gestures, faceLexemes, head nods, gaze),
-and the animation service's ``gaze_body`` / ``stopGaze`` turn a character's eyes and head.
+and the animation service's ``gaze_body`` / ``stopGaze`` turn a character's eyes and head;
+``thespis.dialogue`` loads AIML bots, converses, listens for what a bot can answer and lets a
+character of the stage converse (``InteractionService``, a script's ``interactionService``).
 
 Errors from the core raise ``FileNotFoundError``, ``thespis.FormatError`` (a ``ValueError``:
 not our format, malformed data naming the line or field, or a newer version), ``ValueError``
@@ -36,7 +38,7 @@ if "_thespis" in _sys.builtin_module_names:
 else:
     from . import _thespis
 from ._thespis import *  # noqa: F401,F403  (the public API is the compiled module's)
-from ._thespis import __version__, ar, bml, bvh, edit, face, hanim, lighting, motion, render, runtime, scene, speech  # noqa: F401
+from ._thespis import __version__, ar, bml, bvh, dialogue, edit, face, hanim, lighting, motion, render, runtime, scene, speech  # noqa: F401
 from ._thespis import Cancelled, FormatError  # noqa: F401
 
 AnimationService, Stage = runtime.AnimationService, runtime.Stage
@@ -45,7 +47,7 @@ SoundService, VoiceService = runtime.SoundService, runtime.VoiceService
 
 # The compiled submodules are attributes of _thespis; registering them also makes
 # `import thespis.edit` (and `from thespis.scene import ...`) work.
-for _name in ("ar", "bml", "bvh", "edit", "face", "hanim", "lighting", "motion", "render", "runtime", "scene", "speech"):
+for _name in ("ar", "bml", "bvh", "dialogue", "edit", "face", "hanim", "lighting", "motion", "render", "runtime", "scene", "speech"):
     _sys.modules[f"{__name__}.{_name}"] = getattr(_thespis, _name)
 del _name
 
