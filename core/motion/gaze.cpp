@@ -293,10 +293,8 @@ void GazeController::apply(double t, const Vec3d& target, std::span<float> body,
 {
     if (m_finished)
         return;
-    // The same time again (a paused view drawn anew, the target moved) shows where the gaze
-    // goes, as a time going back or jumping does.
     const double dt = m_last ? t - *m_last : 0;
-    const bool settle = dt < 0 || dt > kLongestStep || (m_last && dt == 0);
+    const bool settle = dt < 0 || dt > kLongestStep;
     m_last = t;
 
     // The chain as the other layers posed it: orientations, and positions up to the base.

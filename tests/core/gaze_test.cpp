@@ -298,22 +298,6 @@ TEST_F(GazeTest, ACharacterLooksAnotherInTheEyesAsHeWalksPast)
     EXPECT_LT(worst, 1.0) << "degrees from Ben's eyes";
 }
 
-TEST_F(GazeTest, PausedTheViewDrawnAgainShowsWhereTheGazeGoes)
-{
-    // The transport paused at 1 s, a script turns Ann toward a point: the view, drawn again at the
-    // same time, shows her looking there rather than frozen where the gaze began.
-    motion::GazeSettings settings;
-    settings.saccades = false;
-    const Vec3d target = around(40, 10);
-    ASSERT_TRUE(stage.gaze("Ann", {runtime::GazeTarget::Kind::Point, target, {}, {}}, settings, core::secondsToTicks(1)));
-    stage.evaluate(core::secondsToTicks(1), poses);
-    const Look started = lookOf(poses.characters[0], rig);
-    EXPECT_GT(angleBetween(started.direction, target - started.eyes), 20.0) << "a shift takes time while playing";
-    stage.evaluate(core::secondsToTicks(1), poses);
-    const Look shown = lookOf(poses.characters[0], rig);
-    EXPECT_LT(angleBetween(shown.direction, target - shown.eyes), 1.0);
-}
-
 TEST_F(GazeTest, LettingGoGivesThePoseBack)
 {
     const Look rest = restLook();
