@@ -11,12 +11,9 @@
 #include <xmmintrin.h>
 #endif
 
-namespace thespis::core::anim::simd {
+#include "anim/simd_types.h"
 
-using F4 = float __attribute__((vector_size(16)));
-using I4 = int __attribute__((vector_size(16)));
-using F8 = float __attribute__((vector_size(32))); // see "Eight lanes" below
-using I8 = int __attribute__((vector_size(32)));
+namespace thespis::core::anim::simd {
 
 /// Unaligned load and store of a whole vector, and a vector of one value (F4 unless told).
 template <class V = F4>

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string_view>
 
+#include "anim/quat4.h"
 #include "motion/blink_synthesizer.h"
 #include "scene/fap.h"
 
@@ -60,18 +61,19 @@ void sinCos(double x, double& sine, double& cosine)
     cosine = 1 - x2 * 0.5 * (1 - x2 * (1. / 12) * (1 - x2 * (1. / 30) * (1 - x2 * (1. / 56) * (1 - x2 * (1. / 90) * (1 - x2 * (1. / 132))))));
 }
 
-Quatd heading(double degrees)
+// Turns about the up (y) and across (x) axes, as anim/quat4.h's quaternions.
+anim::simd::F4 heading(double degrees)
 {
     double sine = 0, cosine = 1;
     sinCos(degrees * kDegree / 2, sine, cosine);
-    return {0, sine, 0, cosine};
+    return anim::simd::F4{0, float(sine), 0, float(cosine)};
 }
 
-Quatd pitch(double degrees)
+anim::simd::F4 pitch(double degrees)
 {
     double sine = 0, cosine = 1;
     sinCos(degrees * kDegree / 2, sine, cosine);
-    return {sine, 0, 0, cosine};
+    return anim::simd::F4{float(sine), 0, 0, float(cosine)};
 }
 
 // |(a, b)|: std::hypot guards against overflow no angle here needs, at many times the cost.
@@ -181,8 +183,10 @@ Result<GazeRig> GazeRig::create(const anim::Skeleton& skeleton, std::optional<Ve
 
 GazeController::GazeController(GazeRig rig, GazeSettings settings)
     : m_rig(std::move(rig)), m_settings(settings), m_saccades(settings.seed),
-      m_stretches(m_rig.path.size() + 1), m_locals(m_rig.path.size()), m_orientations(m_rig.path.size())
+      m_stretches(m_rig.path.size() + 1), m_orientations(m_rig.path.size())
 {
+    for (const GazeRig::Link& link : m_rig.path)
+        m_offsets.push_back(anim::quat4::vector(link.offset));
 }
 
 void GazeController::setSettings(const GazeSettings& settings)
@@ -251,8 +255,9 @@ bool GazeController::moveEyes(double t, bool settle, double goalHeading, double 
     const double wasHeading = m_goalHeading + (m_eyeJump.fromHeading) * (1 - shown);
     const double wasPitch = m_goalPitch + (m_eyeJump.fromPitch) * (1 - shown);
     // How far the goal moved as seen: a change of heading counts less the higher or lower it looks.
-    const double moved = norm((goalHeading - m_goalHeading) * std::cos(0.5 * (goalPitch + m_goalPitch) * kDegree),
-                              goalPitch - m_goalPitch);
+    double sine = 0, cosine = 1;
+    sinCos(0.5 * (goalPitch + m_goalPitch) * kDegree, sine, cosine);
+    const double moved = norm((goalHeading - m_goalHeading) * cosine, goalPitch - m_goalPitch);
     // A jump under way goes on to the goal, wherever it moves; a new one would start from rest.
     if (!settle && moved > kEyeJump && shown >= 1) {
         m_eyeJump = Saccade{t, 0, wasHeading - goalHeading, wasPitch - goalPitch, 0, 0};
@@ -314,38 +319,38 @@ void GazeController::apply(double t, const Vec3d& target, std::span<float> body,
     // orientation in the base's frame, which the turns below need). Above the base, the head's
     // position is summed per stretch between turning joints (m_stretches[s]: the links after the
     // s-th turning joint), for the turns rotate each stretch as one: the turned head is then
-    // Σ turn_s · stretch_s, without walking the chain again.
-    Vec3d basePosition, headInBase;
-    Quatd base{0, 0, 0, 1}, inBase{0, 0, 0, 1};
-    std::fill(m_stretches.begin(), m_stretches.end(), Vec3d{});
+    // Σ turn_s · stretch_s, without walking the chain again. In float SIMD (anim/quat4.h): the
+    // frames are float, and the chain is most of a frame's work.
+    using namespace anim::quat4;
+    F4 basePosition{}, headInBase{}, base = identity(), inBase = identity();
+    std::fill(m_stretches.begin(), m_stretches.end(), F4{});
     std::size_t stretch = 0;
     for (std::size_t i = 0; i < links; ++i) {
         const GazeRig::Link& link = m_rig.path[i];
-        const anim::Quat& q = anim::rotationAt(std::span<const float>(body), link.joint);
-        m_locals[i] = {q.x, q.y, q.z, q.w};
-        const Vec3d offset = link.translation >= 0 ? Vec3d{body[std::size_t(link.translation)],
-                                                           body[std::size_t(link.translation) + 1],
-                                                           body[std::size_t(link.translation) + 2]}
-                                                   : link.offset;
+        const F4 local = load(anim::rotationAt(std::span<const float>(body), link.joint));
+        const F4 offset = link.translation >= 0 ? F4{body[std::size_t(link.translation)],
+                                                     body[std::size_t(link.translation) + 1],
+                                                     body[std::size_t(link.translation) + 2], 0}
+                                                : m_offsets[i];
         if (i <= baseLink) {
-            basePosition = basePosition + anim::rotate(base, offset);
-            base = base * m_locals[i];
+            basePosition += rotate(base, offset);
+            base = multiply(base, local);
         } else {
-            const Vec3d step = anim::rotate(inBase, offset);
-            headInBase = headInBase + step;
-            m_stretches[stretch] = m_stretches[stretch] + step;
-            inBase = inBase * m_locals[i];
+            const F4 step = rotate(inBase, offset);
+            headInBase += step;
+            m_stretches[stretch] += step;
+            inBase = multiply(inBase, local);
             stretch += link.part >= 0 ? 1 : 0;
         }
         m_orientations[i] = inBase;
     }
-    const Quatd toBase = anim::conjugate(base), headOrientation = inBase;
-    const Vec3d targetInBase = anim::rotate(toBase, target - basePosition);
+    const Vec3d targetInBase = toVec3d(rotate(conjugate(base), vector(target) - basePosition));
+    const Quatd headOrientation = toQuatd(inBase);
 
     std::array<double, kGazeBodyParts> headingGoal{}, pitchGoal{};
     if (!m_released) {
         double totalHeading = 0, totalPitch = 0;
-        anglesOf(targetInBase - (headInBase + anim::rotate(headOrientation, m_rig.eyes)), totalHeading, totalPitch);
+        anglesOf(targetInBase - (toVec3d(headInBase) + anim::rotate(headOrientation, m_rig.eyes)), totalHeading, totalPitch);
         totalHeading += s.offsetHeading;
         totalPitch += s.offsetPitch;
         shareShift(totalHeading, s.eyes.heading, {s.back.heading, s.chest.heading, s.neck.heading}, active,
@@ -362,9 +367,9 @@ void GazeController::apply(double t, const Vec3d& target, std::span<float> body,
     // cosine a part will do. Every link turns with the last turning joint at or below it, so only
     // the turning joints' local rotations change.
     int part = -1;
-    Quatd headingStep{0, 0, 0, 1}, pitchStep{0, 0, 0, 1}, headingSoFar{0, 0, 0, 1}, pitchSoFar{0, 0, 0, 1};
-    Quatd turn{0, 0, 0, 1}; // of the last turning joint so far
-    Vec3d turnedHead = m_stretches[0];
+    F4 headingStep = identity(), pitchStep = identity(), headingSoFar = identity(), pitchSoFar = identity();
+    F4 turn = identity(); // of the last turning joint so far
+    F4 turnedHead = m_stretches[0];
     stretch = 0;
     for (std::size_t i = baseLink + 1; i < links; ++i) {
         const GazeRig::Link& link = m_rig.path[i];
@@ -376,18 +381,17 @@ void GazeController::apply(double t, const Vec3d& target, std::span<float> body,
             headingStep = heading(link.share * m_state.heading[p]);
             pitchStep = pitch(link.share * m_state.pitch[p]);
         }
-        const Quatd parent = turn * m_orientations[i - 1]; // the link below, turned
-        headingSoFar = headingSoFar * headingStep;
-        pitchSoFar = pitchSoFar * pitchStep;
-        turn = headingSoFar * pitchSoFar;
-        const Quatd local = anim::conjugate(parent) * (turn * m_orientations[i]); // unit times unit
-        anim::rotationAt(body, link.joint) = {float(local.x), float(local.y), float(local.z), float(local.w)};
-        turnedHead = turnedHead + anim::rotate(turn, m_stretches[++stretch]);
+        const F4 parent = multiply(turn, m_orientations[i - 1]); // the link below, turned
+        headingSoFar = multiply(headingSoFar, headingStep);
+        pitchSoFar = multiply(pitchSoFar, pitchStep);
+        turn = multiply(headingSoFar, pitchSoFar);
+        anim::rotationAt(body, link.joint) = toQuat(multiply(conjugate(parent), multiply(turn, m_orientations[i]))); // unit times unit
+        turnedHead += rotate(turn, m_stretches[++stretch]);
     }
 
     // The eyes: toward the target from where the turned head holds them.
-    const Quatd head = turn * headOrientation;
-    const Vec3d turnedEyes = turnedHead + anim::rotate(head, m_rig.eyes);
+    const Quatd head = toQuatd(turn) * headOrientation;
+    const Vec3d turnedEyes = toVec3d(turnedHead) + anim::rotate(head, m_rig.eyes);
     const auto fap = [&face](int number) -> float& { return face[std::size_t(scene::fapChannel(number))]; };
     double eyeHeading = 0, eyePitch = 0;
     if (m_released) {

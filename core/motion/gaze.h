@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "anim/quat.h"
+#include "anim/simd_types.h"
 #include "anim/skeleton.h"
 #include "motion/saccades.h"
 #include "util/error.h"
@@ -140,8 +141,9 @@ private:
     Saccade m_eyeJump;                        // to the goal, from where the eyes were
     std::optional<double> m_blinkStart;
     bool m_fixating = false;
-    std::vector<anim::Vec3d> m_stretches;      // the head's position summed per stretch (allocated once)
-    std::vector<anim::Quatd> m_locals, m_orientations;
+    // The chain's links' offsets, the head's position summed per stretch and the links'
+    // orientations in the base's frame (apply(); allocated once).
+    std::vector<anim::simd::F4> m_offsets, m_stretches, m_orientations;
 };
 
 } // namespace thespis::core::motion
