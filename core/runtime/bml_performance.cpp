@@ -18,6 +18,7 @@ using speech::BmlBehavior;
 using speech::BmlBehaviorKind;
 using speech::BmlPoint;
 constexpr std::size_t kStart = std::size_t(BmlPoint::Start), kEnd = std::size_t(BmlPoint::End);
+constexpr double kReplaceFade = 0.2; // seconds: what a replaced block still plays fades out over this
 
 } // namespace
 
@@ -77,12 +78,14 @@ Result<BmlPerformance> BmlRealizer::perform(const std::string& character, const 
         start = std::max(start, played.end);
     if (block.composition == speech::BmlComposition::Replace) {
         for (const auto& [track, name] : played.actions)
-            (void)stage.cutOffAction(character, track, name, at, 0.2);
+            (void)stage.cutOffAction(character, track, name, at, kReplaceFade);
         for (const std::string& sound : played.sounds)
             if (m_sound)
                 m_sound->stop(sound);
         if (played.gaze)
             (void)stage.stopGaze(character, at);
+        if (played.pointing)
+            (void)stage.stopPointing(character, at, kReplaceFade);
         played = {};
     }
 
@@ -132,6 +135,12 @@ Result<BmlPerformance> BmlRealizer::perform(const std::string& character, const 
             g.params.weight = planned.weight;
             if (auto ok = play(b, Track::Body, name, g, startOf(times)); !ok)
                 return ok.error();
+            if (b.kind == BmlBehaviorKind::Pointing) {
+                // The entry's arm, aimed at the target with the entry's fades.
+                if (auto ok = stage.point(character, planned.target, planned.hand, planned.weight, startOf(times), length); !ok)
+                    return speech::bmlBehaviorError(ok.error().code, b, ok.error().message);
+                played.pointing = true;
+            }
             break;
         }
         case BmlBehaviorKind::Head: {

@@ -65,7 +65,7 @@ private:
         double end = 0;
         std::vector<std::pair<Track, std::string>> actions; // to stop on replace
         std::vector<std::string> sounds;
-        bool gaze = false;
+        bool gaze = false, pointing = false;
     };
     std::shared_ptr<Stage> m_stage;
     std::shared_ptr<SoundService> m_sound;

@@ -485,6 +485,7 @@ void Stage::resetLive()
     const std::lock_guard lock(m_mutex);
     for (Performer& performer : m_performers) {
         performer.gaze.reset();
+        performer.pointing.reset();
         performer.authoredCue = -1; // the scenario's gaze action playing starts again
         for (TrackState* s : {&performer.body, &performer.face}) {
             for (auto& [name, activation] : s->latest)
@@ -587,6 +588,7 @@ void Stage::evaluate(Tick t, PoseSet& out)
         play(m_faceEnabled, performer.face, out.characters[i].face);
     }
     applyGazes(seconds, out);
+    applyPointing(seconds, out);
 }
 
 anim::Placement Stage::placement(std::size_t performer) const

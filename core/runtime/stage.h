@@ -29,6 +29,7 @@
 #include "anim/frame_cache.h"
 #include "motion/gaze.h"
 #include "motion/gaze_target.h"
+#include "motion/pointing.h"
 #include "runtime/pose_set.h"
 #include "scenario/scenario_runtime.h"
 #include "speech/speech_plan.h"
@@ -139,6 +140,16 @@ public:
     Result<bool> stopGaze(const std::string& character, Tick at);
     /// What the character's gaze does now; nullopt when none is on.
     Result<std::optional<motion::GazeState>> gazeState(const std::string& character) const;
+    /// Aims the character's arm (motion/pointing.h) at `target` from `at` for `seconds`, as far
+    /// as `weight` (a curve over those seconds: the pointing gesture's fades) says: what BML's
+    /// <pointing> adds to its gesture. Turned after the gaze layer, on the pose the body shows; a
+    /// new pointing replaces the one on. Errors: no such character, one without that arm, a
+    /// target character or joint that does not exist.
+    Result<void> point(const std::string& character, const GazeTarget& target, motion::PointingHand hand,
+                       anim::Curve weight, Tick at, double seconds);
+    /// Fades the pointing out over `fadeSeconds` from `at` (as its gesture is cut off). False
+    /// when none is on.
+    Result<bool> stopPointing(const std::string& character, Tick at, double fadeSeconds);
     /// Where the camera is in the scene (the viewport's, a render's, AR's tracked camera), which
     /// "camera" targets look at; none: such a gaze waits for one.
     void setCameraPosition(std::optional<anim::Vec3d> position);
@@ -188,13 +199,24 @@ private:
         int liveCount = 0, layeredCount = 0;     // live actions in `live` and `layered`
         std::vector<float> scratch, coverage;    // a frame and its coverage, for 2 and 3
     };
+    /// A gaze or pointing target with its character and joint found on this stage.
+    struct StageTarget {
+        GazeTarget target;
+        int character = -1, joint = -1; // of a Joint target (−1 joint: between its eyes)
+    };
     struct GazeSlot {
         motion::GazeController controller;
-        GazeTarget target;
-        int targetCharacter = -1, targetJoint = -1; // of a Joint target (−1 joint: its eyes)
+        StageTarget target;
         double start = 0;
         std::optional<double> release;
         bool authored = false; // set by a gaze action of the scenario, not by gaze()
+    };
+    struct PointSlot {
+        StageTarget target;
+        std::vector<motion::PointingArm> arms;
+        anim::Curve weight;
+        double start = 0, end = 0;
+        double cutAt = 0, cutFade = 0; // stopPointing(): fading out from cutAt, gone at cutAt + cutFade
     };
     struct Performer {
         std::string name;
@@ -202,6 +224,7 @@ private:
         anim::Skeleton skeleton;
         std::optional<motion::GazeRig> gazeRig; // none without a head joint
         std::optional<GazeSlot> gaze;
+        std::optional<PointSlot> pointing;
         int authoredCue = -1; // the scenario's gaze action playing (CharacterRuntime::gaze), or −1
     };
 
@@ -231,9 +254,13 @@ private:
                      double start, bool authored);
     /// Starts the scenario's gaze action playing at `seconds`, or lets go of the one that ended.
     void followAuthoredGaze(Performer& performer, std::span<const scenario::GazeCue> cues, double seconds);
-    /// Where a gaze target is in the scene now, from the poses in `out`; none for the camera
-    /// when none is known.
-    std::optional<anim::Vec3d> targetPosition(const GazeSlot& gaze, const PoseSet& out) const;
+    /// Finds a target's character and joint for `performer` to `verb` ("look at", "point at").
+    Result<StageTarget> findTarget(const Performer& performer, const GazeTarget& target, std::string_view verb) const;
+    /// Where a target is in the scene now, from the poses in `out`; none for the camera when
+    /// none is known.
+    std::optional<anim::Vec3d> targetPosition(const StageTarget& target, const PoseSet& out) const;
+    /// The pointing layer over the poses of every character (runtime/stage_pointing.cpp).
+    void applyPointing(double seconds, PoseSet& out);
     /// Where the performer stands: its runtime character's placement (none for one added by hand).
     anim::Placement placement(std::size_t performer) const;
 

@@ -1,43 +1,21 @@
-// The Stage's gaze layer (stage.h): per character, a motion::GazeController that turns the pose
-// every other layer made toward a target that may move every frame — a point, a joint of
-// another character (between its eyes by default), or the camera.
+// The Stage's layers that turn a finished pose toward a target that may move every frame — a
+// point, a joint of another character (between its eyes by default), or the camera (stage.h):
+// per character, a motion::GazeController (eyes, head and body), then a pointing arm
+// (motion/pointing.h) over it.
 
-#include <array>
-
+#include "anim/joint_transform.h"
 #include "runtime/stage.h"
 
 namespace thespis::core::runtime {
 
 namespace {
 
+using anim::jointTransform;
 using anim::Quatd;
 using anim::Vec3d;
 
 Vec3d toDouble(const anim::Vec3& v) { return {v.x, v.y, v.z}; }
 Quatd toDouble(const anim::Quat& q) { return {q.x, q.y, q.z, q.w}; }
-
-// A joint's position and orientation in a body frame (before placement), from its ancestors
-// alone: no allocation.
-void jointTransform(const anim::Skeleton& skeleton, std::span<const float> body, int joint, Vec3d& position,
-                    Quatd& orientation)
-{
-    std::array<int, 128> chain{};
-    std::size_t depth = 0;
-    for (int j = joint; j >= 0 && depth < chain.size(); j = skeleton.joint(j).parent)
-        chain[depth++] = j;
-    position = {};
-    orientation = {0, 0, 0, 1};
-    while (depth-- > 0) {
-        const int j = chain[depth];
-        Vec3d offset = skeleton.joint(j).offset;
-        if (const int element = skeleton.translationElement(j); element >= 0) {
-            const std::size_t t = skeleton.frameLayout()->floatOffset(element);
-            offset = {body[t], body[t + 1], body[t + 2]};
-        }
-        position = position + anim::rotate(orientation, offset);
-        orientation = orientation * toDouble(anim::rotationAt(body, j));
-    }
-}
 
 Vec3d placed(const anim::Placement& placement, const Vec3d& p)
 {
@@ -61,6 +39,31 @@ Result<void> Stage::gaze(const std::string& character, const GazeTarget& target,
     return aim(**performer, target, settings, ticksToSeconds(at), false);
 }
 
+Result<Stage::StageTarget> Stage::findTarget(const Performer& p, const GazeTarget& target, std::string_view verb) const
+{
+    const std::string& character = p.name;
+    const std::string what = "\"" + character + "\" cannot " + std::string(verb) + " ";
+    StageTarget found{target, -1, -1};
+    if (target.kind != GazeTarget::Kind::Joint)
+        return found;
+    for (std::size_t i = 0; i < m_performers.size(); ++i)
+        if (m_performers[i].name == target.character)
+            found.character = int(i);
+    if (found.character < 0)
+        return makeError(ErrorCode::NotFound, what + "\"" + target.character + "\": there is no such character.");
+    const Performer& other = m_performers[std::size_t(found.character)];
+    if (!target.joint.empty()) {
+        found.joint = other.skeleton.find(target.joint);
+        if (found.joint < 0)
+            return makeError(ErrorCode::NotFound, what + target.character + "'s \"" + target.joint + "\": " +
+                                                      target.character + " has no such joint.");
+    } else if (!other.gazeRig) {
+        return makeError(ErrorCode::InvalidArgument,
+                         what + target.character + "'s eyes: " + target.character + " has no head joint.");
+    }
+    return found;
+}
+
 Result<void> Stage::aim(Performer& p, const GazeTarget& target, const motion::GazeSettings& settings, double start,
                         bool authored)
 {
@@ -68,34 +71,15 @@ Result<void> Stage::aim(Performer& p, const GazeTarget& target, const motion::Ga
     if (!p.gazeRig)
         return makeError(ErrorCode::InvalidArgument,
                          "\"" + character + "\" cannot look at anything: its skeleton has no head joint (skullbase).");
-    int targetCharacter = -1, targetJoint = -1;
-    if (target.kind == GazeTarget::Kind::Joint) {
-        for (std::size_t i = 0; i < m_performers.size(); ++i)
-            if (m_performers[i].name == target.character)
-                targetCharacter = int(i);
-        if (targetCharacter < 0)
-            return makeError(ErrorCode::NotFound, "\"" + character + "\" cannot look at \"" + target.character +
-                                                      "\": there is no such character.");
-        const Performer& other = m_performers[std::size_t(targetCharacter)];
-        if (!target.joint.empty()) {
-            targetJoint = other.skeleton.find(target.joint);
-            if (targetJoint < 0)
-                return makeError(ErrorCode::NotFound, "\"" + character + "\" cannot look at " + target.character +
-                                                          "'s \"" + target.joint + "\": " + target.character +
-                                                          " has no such joint.");
-        } else if (!other.gazeRig) {
-            return makeError(ErrorCode::InvalidArgument, "\"" + character + "\" cannot look " + target.character +
-                                                             " in the eyes: " + target.character + " has no head joint.");
-        }
-    }
+    auto found = findTarget(p, target, "look at");
+    if (!found)
+        return found.error();
     if (p.gaze) {
         p.gaze->controller.setSettings(settings);
     } else {
-        p.gaze.emplace(GazeSlot{motion::GazeController(*p.gazeRig, settings), {}, -1, -1, 0, {}, false});
+        p.gaze.emplace(GazeSlot{motion::GazeController(*p.gazeRig, settings), {}, 0, {}, false});
     }
-    p.gaze->target = target;
-    p.gaze->targetCharacter = targetCharacter;
-    p.gaze->targetJoint = targetJoint;
+    p.gaze->target = *found;
     p.gaze->start = start;
     p.gaze->release.reset();
     p.gaze->authored = authored;
@@ -161,22 +145,22 @@ std::optional<anim::Vec3d> Stage::cameraPosition() const
     return m_camera;
 }
 
-std::optional<Vec3d> Stage::targetPosition(const GazeSlot& gaze, const PoseSet& out) const
+std::optional<Vec3d> Stage::targetPosition(const StageTarget& target, const PoseSet& out) const
 {
-    switch (gaze.target.kind) {
-    case GazeTarget::Kind::Point: return gaze.target.point;
+    switch (target.target.kind) {
+    case GazeTarget::Kind::Point: return target.target.point;
     case GazeTarget::Kind::Camera: return m_camera;
     case GazeTarget::Kind::Joint: break;
     }
-    const auto i = std::size_t(gaze.targetCharacter);
+    const auto i = std::size_t(target.character);
     if (i >= out.characters.size())
         return std::nullopt;
     const Performer& other = m_performers[i];
     const CharacterPose& pose = out.characters[i];
     Vec3d position;
     Quatd orientation;
-    if (gaze.targetJoint >= 0) {
-        jointTransform(other.skeleton, pose.body, gaze.targetJoint, position, orientation);
+    if (target.joint >= 0) {
+        jointTransform(other.skeleton, pose.body, target.joint, position, orientation);
     } else {
         const int head = other.gazeRig->path.back().joint;
         jointTransform(other.skeleton, pose.body, head, position, orientation);
@@ -196,13 +180,70 @@ void Stage::applyGazes(double seconds, PoseSet& out)
         GazeSlot& gaze = *performer.gaze;
         if (gaze.release && seconds >= *gaze.release)
             gaze.controller.release();
-        const std::optional<Vec3d> target = targetPosition(gaze, out);
+        const std::optional<Vec3d> target = targetPosition(gaze.target, out);
         if (!target && !gaze.release)
             continue; // a camera not known yet
         CharacterPose& pose = out.characters[i];
         gaze.controller.apply(seconds, target ? unplaced(pose.placement, *target) : Vec3d{}, pose.body, pose.face);
         if (gaze.controller.finished())
             performer.gaze.reset();
+    }
+}
+
+Result<void> Stage::point(const std::string& character, const GazeTarget& target, motion::PointingHand hand,
+                          anim::Curve weight, Tick at, double seconds)
+{
+    const std::lock_guard lock(m_mutex);
+    auto performer = find(character);
+    if (!performer)
+        return performer.error();
+    Performer& p = **performer;
+    auto arms = motion::pointingArms(p.skeleton, hand);
+    if (!arms)
+        return makeError(arms.error().code, "\"" + character + "\" cannot point: " + arms.error().message);
+    auto found = findTarget(p, target, "point at");
+    if (!found)
+        return found.error();
+    const double start = ticksToSeconds(at);
+    const double end = start + std::max(seconds, 0.0);
+    p.pointing = PointSlot{*found, std::move(arms).value(), std::move(weight), start, end, end, 0};
+    return {};
+}
+
+Result<bool> Stage::stopPointing(const std::string& character, Tick at, double fadeSeconds)
+{
+    const std::lock_guard lock(m_mutex);
+    auto performer = find(character);
+    if (!performer)
+        return performer.error();
+    std::optional<PointSlot>& pointing = (*performer)->pointing;
+    if (!pointing)
+        return false;
+    pointing->cutAt = std::min(pointing->end, ticksToSeconds(at));
+    pointing->cutFade = std::max(fadeSeconds, 0.0);
+    return true;
+}
+
+void Stage::applyPointing(double seconds, PoseSet& out)
+{
+    for (std::size_t i = 0; i < m_performers.size() && i < out.characters.size(); ++i) {
+        Performer& performer = m_performers[i];
+        if (!performer.pointing || seconds < performer.pointing->start)
+            continue;
+        const PointSlot& pointing = *performer.pointing;
+        if (seconds >= std::min(pointing.end, pointing.cutAt + pointing.cutFade)) {
+            performer.pointing.reset();
+            continue;
+        }
+        const std::optional<Vec3d> target = targetPosition(pointing.target, out);
+        if (!target)
+            continue; // a camera not known yet
+        CharacterPose& pose = out.characters[i];
+        double weight = pointing.weight.evaluate(seconds - pointing.start, pointing.end - pointing.start);
+        if (seconds > pointing.cutAt)
+            weight *= std::max(0.0, 1 - (seconds - pointing.cutAt) / std::max(pointing.cutFade, 1e-9));
+        for (const motion::PointingArm& arm : pointing.arms)
+            motion::aimArm(performer.skeleton, arm, pose.body, unplaced(pose.placement, *target), weight);
     }
 }
 

@@ -49,6 +49,16 @@ Result<void> prepare(const BmlBehavior& b, const std::map<std::string, SpeechTim
                                     "the character can play).");
         planned.gesture = name;
         planned.entry = *entry;
+        if (b.kind == BmlBehaviorKind::Pointing) {
+            auto target = motion::parseGazeTarget(b.target);
+            if (!target)
+                return bmlBehaviorError(target.error().code, b, target.error().message);
+            auto hand = motion::parsePointingHand(b.mode);
+            if (!hand)
+                return bmlBehaviorError(hand.error().code, b, hand.error().message);
+            planned.target = *target;
+            planned.hand = *hand;
+        }
         return {};
     }
     case BmlBehaviorKind::FaceLexeme: {

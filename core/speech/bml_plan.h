@@ -17,6 +17,7 @@
 #include "motion/gaze.h"
 #include "motion/gaze_target.h"
 #include "motion/head_gesture.h"
+#include "motion/pointing.h"
 #include "speech/bml.h"
 #include "util/error.h"
 
@@ -59,7 +60,8 @@ struct BmlPlanned {
     BmlGestureEntry entry;                    ///< its timing
     motion::HeadGestureOptions head;          ///< Head (duration: its length)
     std::vector<std::pair<int, double>> faps; ///< FaceLexeme: FAP number → value, amount applied
-    motion::GazeTarget target;                ///< Gaze
+    motion::GazeTarget target;                ///< Gaze, Pointing
+    motion::PointingHand hand = motion::PointingHand::Right; ///< Pointing: BML's mode
     motion::GazeSettings gaze;                ///< Gaze: the defaults given with its influence and offset
     /// Gaze: lets go at its relax point when the block constrains it, else at its end when the
     /// block constrains that; otherwise it holds.

@@ -1,12 +1,14 @@
 // The BML realizer (runtime/bml_performance.h) on the demo: Creon says a BML block in which a
 // beat gesture's stroke falls on a word, a nod follows the stroke, his brows rise over the speech
 // and he looks at Antigone — each at the time its sync references give from espeak-ng's timing,
-// as seen in the poses the Stage gives; blocks composed; errors named with line and column.
+// as seen in the poses the Stage gives; his pointing finger on its target; blocks composed;
+// errors named with line and column.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "motion/pointing.h"
 #include "runtime/bml_performance.h"
 #include "runtime/clock.h"
 #include "runtime/sound.h"
@@ -115,6 +117,60 @@ TEST(BmlRealizer, BehavioursPlayAtTheirSyncPointsOnTheSpeechsWords)
     EXPECT_FALSE(*d.stage->isPlaying(d.creon, runtime::Track::Body, "bml1:g1", secondsToTicks(word + 0.5)));
 }
 
+// The point where the arm's line meets the target, in the body frame the pose is in.
+core::anim::Vec3d inBodyFrame(const core::anim::Placement& placement, const core::anim::Vec3d& p)
+{
+    const core::anim::Quatd r{placement.rotation.x, placement.rotation.y, placement.rotation.z, placement.rotation.w};
+    const core::anim::Vec3d t{placement.translation.x, placement.translation.y, placement.translation.z};
+    return core::anim::rotate(core::anim::conjugate(r), p - t);
+}
+
+TEST(BmlRealizer, PointingAimsTheArmAtItsTargetThroughTheStroke)
+{
+    // A point in front of Creon at his chest's height, which his right-arm gesture does not point
+    // at by itself (the demo's gesticon has no pointing entry: his "greet" wave stands for one,
+    // as the lexicon's POINT → "point").
+    const core::anim::Vec3d target{0.2, 1.2, 2.5};
+    const auto perform = [&](const char* behaviour, std::string& creon) {
+        Demo d = demo();
+        creon = d.creon;
+        auto greet = d.stage->actionTemplate(creon, runtime::Track::Body, "greet");
+        EXPECT_TRUE(greet && *greet);
+        EXPECT_TRUE(d.stage->defineAction(creon, runtime::Track::Body, "point", **greet));
+        const std::string xml = std::string("<bml id=\"b\">") + behaviour + "</bml>";
+        auto block = speech::parseBml(xml);
+        EXPECT_TRUE(block) << block.error().message;
+        runtime::BmlRealizer realizer(d.stage, d.sound);
+        auto performed = realizer.perform(d.creon, *block, {}, secondsToTicks(1.0));
+        EXPECT_TRUE(performed) << performed.error().message;
+        return std::make_pair(d, performed ? *performed : runtime::BmlPerformance{});
+    };
+    std::string creon;
+    auto [pointing, performance] = perform("<pointing id=\"p\" target=\"0.2 1.2 2.5\" mode=\"RIGHT_HAND\"/>", creon);
+    auto [gestureOnly, unused] = perform("<gesture id=\"p\" lexeme=\"POINT\"/>", creon);
+    auto skeleton = pointing.stage->skeleton(creon);
+    ASSERT_TRUE(skeleton);
+    auto arms = core::motion::pointingArms(*skeleton, core::motion::PointingHand::Right);
+    ASSERT_TRUE(arms) << arms.error().message;
+    ASSERT_EQ(arms->size(), 1u);
+    EXPECT_EQ(skeleton->joint(arms->front().tip).name, "r_radiocarpal") << "a rig without fingers aims its wrist";
+    const auto error = [&](runtime::Stage& stage, double t) {
+        const runtime::CharacterPose pose = poseAt(stage, t);
+        return core::motion::pointingError(*skeleton, arms->front(), pose.body, inBodyFrame(pose.placement, target));
+    };
+    // From its ready point to its relax point the fingertip is on the line from the shoulder to
+    // the target; the same entry played as a gesture points elsewhere.
+    const double ready = eventTime(performance, "p:ready"), relax = eventTime(performance, "p:relax");
+    ASSERT_LT(ready, relax);
+    for (const double t : {ready, 0.5 * (ready + relax), relax})
+        EXPECT_LT(error(*pointing.stage, t), 1.0) << "at " << t << " s";
+    EXPECT_GT(error(*gestureOnly.stage, 0.5 * (ready + relax)), 10.0) << "the entry alone must not point there";
+    // The aim comes and goes with the gesture: none before it starts or after it ends.
+    const double end = eventTime(performance, "p:end");
+    EXPECT_EQ(poseAt(*pointing.stage, end + 0.1).body, poseAt(*gestureOnly.stage, end + 0.1).body);
+    EXPECT_EQ(poseAt(*pointing.stage, 0.9).body, poseAt(*gestureOnly.stage, 0.9).body);
+}
+
 TEST(BmlRealizer, WhatCannotPlayIsNamedWithItsLineAndColumn)
 {
     Demo d = demo();
@@ -132,6 +188,12 @@ TEST(BmlRealizer, WhatCannotPlayIsNamedWithItsLineAndColumn)
     EXPECT_NE(fails("<bml id=\"b\"><faceLexeme id=\"f\" lexeme=\"WIGGLE_EARS\"/></bml>").find("WIGGLE_EARS"),
               std::string::npos);
     EXPECT_NE(fails("<bml id=\"b\"><gaze id=\"z\" target=\"Ismene\"/></bml>").find("Ismene"), std::string::npos);
+    auto greet = d.stage->actionTemplate(d.creon, runtime::Track::Body, "greet");
+    ASSERT_TRUE(greet && *greet);
+    ASSERT_TRUE(d.stage->defineAction(d.creon, runtime::Track::Body, "point", **greet)); // a pointing entry
+    EXPECT_NE(fails("<bml id=\"b\"><pointing id=\"p\" target=\"Antigone:l_tail\"/></bml>").find("l_tail"), std::string::npos);
+    EXPECT_NE(fails("<bml id=\"b\"><pointing id=\"p\" target=\"camera\" mode=\"THIRD_HAND\"/></bml>").find("THIRD_HAND"),
+              std::string::npos);
     const std::string cycle =
         fails("<bml id=\"b\"><head id=\"a\" lexeme=\"NOD\" start=\"c:end\"/><head id=\"c\" lexeme=\"NOD\" start=\"a:end\"/></bml>");
     EXPECT_NE(cycle.find("→"), std::string::npos) << cycle;
