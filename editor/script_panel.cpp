@@ -250,18 +250,21 @@ void ScriptPanel::run()
     if (m_audio)
         m_audio->addSource(m_sound);
     auto sound = m_sound;
+    m_interaction = std::make_shared<core::runtime::InteractionService>(m_stage, m_sound);
+    auto interaction = m_interaction;
+    emit interactionServiceChanged();
     m_status->setText(tr("Running…"));
     append(tr("— Run at %1 s —").arg(core::ticksToSeconds(m_clock->now()), 0, 'f', 2) + QLatin1Char('\n'), false);
     const std::string source = m_editor->toPlainText().toStdString();
     const std::string fileName = (m_shown > 0 ? m_choice->itemText(m_shown) : QStringLiteral("script")).toStdString() + ".py";
     m_fileName = QString::fromStdString(fileName);
-    m_worker = std::thread([this, source, fileName, service, sound] {
+    m_worker = std::thread([this, source, fileName, service, sound, interaction] {
         const auto sink = [this](script::Stream stream, std::string_view text) {
             const QString line = QString::fromUtf8(text.data(), qsizetype(text.size()));
             QMetaObject::invokeMethod(this, [this, line, stream] { append(line, stream == script::Stream::Err); },
                                       Qt::QueuedConnection);
         };
-        const core::Result<void> result = m_runner->run(source, fileName, service, sink, sound);
+        const core::Result<void> result = m_runner->run(source, fileName, service, sink, sound, interaction);
         QMetaObject::invokeMethod(this, [this, result] { onFinished(result); }, Qt::QueuedConnection);
     });
     updateButtons();

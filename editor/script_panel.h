@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "runtime/clock.h"
+#include "runtime/interaction_service.h"
 #include "runtime/sound.h"
 #include "runtime/stage.h"
 #include "util/error.h"
@@ -57,6 +58,9 @@ public:
     void setAssets(const core::scenario::Assets& assets);
     /// The sound service of the script running or run last (null before the first run).
     std::shared_ptr<core::runtime::SoundService> soundService() const { return m_sound; }
+    /// The interactionService of the script running or run last (null before the first run): a
+    /// character a script hands to a conversation goes on conversing there after it ends.
+    std::shared_ptr<core::runtime::InteractionService> interactionService() const { return m_interaction; }
 
     QString source() const;
     /// Puts the user's text in the editor (as if typed: it is not the scenario's).
@@ -83,6 +87,8 @@ signals:
     /// The script called stop_player(): the view should pause.
     void pauseRequested();
     void runningChanged(bool running);
+    /// A run made a new interactionService() (before the script starts).
+    void interactionServiceChanged();
     /// The script ended: `message` is empty when it ran to its end, else why not.
     void finished(const QString& message);
 
@@ -112,6 +118,7 @@ private:
     std::shared_ptr<core::runtime::ExternalClock> m_clock;
     std::unique_ptr<script::ScriptRunner> m_runner; // made at the first Run (it starts Python)
     std::shared_ptr<core::runtime::SoundService> m_sound;
+    std::shared_ptr<core::runtime::InteractionService> m_interaction;
     core::scenario::Assets m_assets{"."};
     QPointer<StageAudio> m_audio;
     std::thread m_worker;

@@ -1,5 +1,7 @@
 #include "runtime/interaction_service.h"
 
+#include <filesystem>
+
 #include "dialogue/bot_grammar.h"
 #include "scenario/scenario_runtime.h"
 #include "speech/bml.h"
@@ -33,6 +35,14 @@ std::string answeredAt(const dialogue::Answer& answer)
 InteractionService::InteractionService(std::shared_ptr<Stage> stage, std::shared_ptr<SoundService> sound)
     : m_stage(stage), m_sound(sound), m_voice(stage, sound), m_bml(stage, sound)
 {
+}
+
+Result<dialogue::LoadedBot> InteractionService::loadBot(std::span<const std::string> names) const
+{
+    std::vector<std::filesystem::path> paths;
+    for (const std::string& name : names)
+        paths.push_back(m_sound->assets().path(name));
+    return dialogue::loadBot(paths);
 }
 
 Result<void> InteractionService::converse(const std::string& character, std::shared_ptr<const dialogue::Bot> bot,

@@ -15,10 +15,12 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "dialogue/bot.h"
 #include "dialogue/conversation.h"
 #include "motion/gaze_target.h"
 #include "runtime/bml_performance.h"
@@ -52,6 +54,11 @@ class InteractionService {
 public:
     InteractionService(std::shared_ptr<Stage> stage, std::shared_ptr<SoundService> sound);
 
+    /// The bot in the scenario's files `names` (AIML files or bot folders as dialogue::loadBot
+    /// reads them, named as the scenario names its assets: "dialogue/antigone/antigone.aiml").
+    /// FileNotFound naming the first that is not there; what of them does not read is in its
+    /// problems.
+    Result<dialogue::LoadedBot> loadBot(std::span<const std::string> names) const;
     /// Hands `character` to a conversation with `bot` from now (a new one, or continuing `state`,
     /// saved by saveState()): it looks at the visitor and listens. Errors: no such character; a
     /// voice that does not validate; a state that does not read (naming its field).

@@ -57,6 +57,8 @@ public:
                  const std::string& owner = {});
     /// The sound file's samples (read once, then kept). Errors name the file.
     Result<std::shared_ptr<const SoundClip>> load(const std::string& sound);
+    /// Where its sounds (and the scenario's other files a script names) are found.
+    const scenario::Assets& assets() const { return m_assets; }
     /// The clock's time: what "now" is for play().
     Tick now() const { return m_clock->now(); }
     /// A speech line's audio and timing: its sound file with the timing it keeps, else its text

@@ -50,7 +50,8 @@ ScriptRunner::~ScriptRunner() { stop(); }
 
 core::Result<void> ScriptRunner::run(const std::string& source, const std::string& fileName,
                                      std::shared_ptr<core::runtime::AnimationService> service, const OutputSink& sink,
-                                     std::shared_ptr<core::runtime::SoundService> sound)
+                                     std::shared_ptr<core::runtime::SoundService> sound,
+                                     std::shared_ptr<core::runtime::InteractionService> interaction)
 {
     GilHolder gil;
     {
@@ -77,8 +78,9 @@ core::Result<void> ScriptRunner::run(const std::string& source, const std::strin
         if (sound) {
             globals["voiceService"] = py::cast(std::make_shared<core::runtime::VoiceService>(service->sharedStage(), sound));
             globals["sndService"] = py::cast(sound);
-            globals["interactionService"] =
-                py::cast(std::make_shared<core::runtime::InteractionService>(service->sharedStage(), sound));
+            if (!interaction)
+                interaction = std::make_shared<core::runtime::InteractionService>(service->sharedStage(), sound);
+            globals["interactionService"] = py::cast(interaction);
         }
         py::object code = builtins.attr("compile")(source, fileName, "exec");
         builtins.attr("exec")(code, globals);

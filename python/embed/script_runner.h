@@ -19,6 +19,7 @@
 #include <string_view>
 
 #include "runtime/animation_service.h"
+#include "runtime/interaction_service.h"
 #include "runtime/sound.h"
 #include "util/error.h"
 
@@ -37,9 +38,13 @@ public:
     /// Runs `source` to its end in the calling thread. `fileName` names it in tracebacks.
     /// Errors: the script raised (message "S.py, line N: NameError: …"), or was stopped
     /// (Cancelled).
+    /// With `sound`, the script gets voiceService, sndService and interactionService: the one
+    /// given (the studio's, whose Conversation dock goes on with whom a script handed over),
+    /// else one of its own.
     core::Result<void> run(const std::string& source, const std::string& fileName,
                            std::shared_ptr<core::runtime::AnimationService> service, const OutputSink& sink,
-                           std::shared_ptr<core::runtime::SoundService> sound = nullptr);
+                           std::shared_ptr<core::runtime::SoundService> sound = nullptr,
+                           std::shared_ptr<core::runtime::InteractionService> interaction = nullptr);
     /// Ends the script running in run(), if any (any thread).
     void stop();
     bool isRunning() const { return m_running; }

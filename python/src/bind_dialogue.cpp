@@ -27,6 +27,14 @@ struct PyBot {
     std::vector<std::string> problems;
 };
 
+PyBot pyBot(dialogue::LoadedBot loaded)
+{
+    PyBot bot{std::move(loaded.bot), {}};
+    for (const dialogue::LoadProblem& problem : loaded.problems)
+        bot.problems.push_back(dialogue::describe(problem));
+    return bot;
+}
+
 py::dict answerDict(const dialogue::Answer& answer)
 {
     py::list matched;
@@ -77,13 +85,7 @@ void bindDialogue(py::module_& m)
             "The JSGF grammar the recogniser listens with: what the bot can answer.");
     d.def(
         "load",
-        [](const std::vector<std::filesystem::path>& paths) {
-            dialogue::LoadedBot loaded = unwrap(dialogue::loadBot(paths));
-            PyBot bot{std::move(loaded.bot), {}};
-            for (const dialogue::LoadProblem& problem : loaded.problems)
-                bot.problems.push_back(dialogue::describe(problem));
-            return bot;
-        },
+        [](const std::vector<std::filesystem::path>& paths) { return pyBot(unwrap(dialogue::loadBot(paths))); },
         "paths"_a,
         "Loads a bot from folders (Rosie's layout: aiml, sets, maps, substitutions, system) and AIML files. Raises "
         "thespis.FileNotFoundError for a path that does not exist; problems inside files are in Bot.problems.");
@@ -126,6 +128,16 @@ void bindDialogue(py::module_& m)
                  return std::make_shared<runtime::InteractionService>(service->sharedStage(), sound);
              }),
              "service"_a, "sound"_a)
+        .def(
+            "load_bot",
+            [](const runtime::InteractionService& s, const py::args& names) {
+                std::vector<std::string> list;
+                for (const py::handle& name : names)
+                    list.push_back(py::str(name));
+                return pyBot(unwrap(s.loadBot(list)));
+            },
+            "Loads a bot from the scenario's files (AIML files or bot folders, named as the scenario names its "
+            "assets: \"dialogue/antigone/antigone.aiml\"), as thespis.dialogue.load does from paths.")
         .def(
             "converse",
             [](runtime::InteractionService& s, const std::string& character, const PyBot& bot, const py::object& visitor,

@@ -1,12 +1,13 @@
 """The paper's §4.5 script (resources/scripts/antigone_creon.py) from python3, on the demo
 scenario: it runs as written and plays the same poses as when it was recorded (golden poses at
 chosen times while it runs and after, tests/data/golden/antigone_creon_poses.json;
-THESPIS_UPDATE_GOLDEN=1 rewrites it). Poses are taken as the clock passes each time, as a
+THESPIS_UPDATE_GOLDEN=1 rewrites it); after the act Antigone takes the visitor's questions. Poses are taken as the clock passes each time, as a
 player or `thespis-cli run` would show them."""
 
 import json
 import os
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -35,15 +36,18 @@ def run_script():
     clock.set_jump_hook(record)
     sound = thespis.SoundService(demo_scenario().parent, clock)
     voice = thespis.VoiceService(service.stage, sound)
+    interaction = thespis.dialogue.InteractionService(service, sound)
     exec(compile(SCRIPT.read_text(), str(SCRIPT), "exec"),
-         {"animService": service, "anim": service, "voiceService": voice, "sndService": sound})
+         {"animService": service, "anim": service, "voiceService": voice, "sndService": sound,
+          "interactionService": interaction})
     record(service.now(), float("inf"))
     service.stop_player()
-    return service, poses, sound
+    return SimpleNamespace(service=service, poses=poses, sound=sound, interaction=interaction, clock=clock)
 
 
 def test_the_script_plays_the_recorded_poses():
-    service, poses, sound = run_script()
+    run = run_script()
+    service, poses = run.service, run.poses
     if os.environ.get("THESPIS_UPDATE_GOLDEN"):
         GOLDEN.write_text(json.dumps(poses, indent=0) + "\n")
     golden = json.loads(GOLDEN.read_text())
@@ -59,7 +63,8 @@ def test_the_script_plays_the_recorded_poses():
 
 
 def test_creon_and_antigone_say_their_lines_in_two_voices():
-    service, _, sound = run_script()
+    run = run_script()
+    service, sound = run.service, run.sound
     # Creon speaks from the start, Antigone after him, until the script's end.
     creon = sound.mix(0.5, 1.0)
     assert np.abs(creon).max() > 0.05
@@ -68,3 +73,29 @@ def test_creon_and_antigone_say_their_lines_in_two_voices():
     assert np.abs(antigone).max() > 0.05
     # Both are gone once she has finished.
     assert np.abs(sound.mix(end + 1.0, 0.5)).max() == 0.0
+
+
+def test_after_the_act_antigone_takes_questions():
+    run = run_script()
+    service, sound, interaction = run.service, run.sound, run.interaction
+    assert interaction.conversing("Antigone") and not interaction.conversing("Creon")
+    service.set_camera_position([0.3, 1.6, 2.5])  # the visitor
+    start = service.now() + 0.5
+    run.clock.set_time(start)
+    said = interaction.hear("Antigone", "who is Creon")
+    assert said["answer"]["words"].startswith("Creon is my uncle"), said
+    assert said["answer"]["matched"][0]["file"].endswith("antigone.aiml")
+    # She says it aloud with her lips, her body moving on without a jump from the act's motion.
+    assert np.abs(sound.mix(said["start"] + 0.5, 0.5)).max() > 0.05
+    visemes = []  # the weights of the 14 visemes, after FAPs 1 … 68 in a face frame
+    previous = None
+    for t in np.arange(start - 0.5, said["end"], 1 / 30):
+        body = service.evaluate_body("Antigone", t)
+        if previous is not None:
+            # No joint turns faster than the gaze's head at its top speed (200°/s; 250°/s moves a
+            # unit quaternion's components by at most 2 sin(250°/30/4) = 0.073 in a frame).
+            assert np.abs(body - previous).max() < 0.073, f"a jump at {t:.2f} s"
+        previous = body
+        visemes.append(np.asarray(service.evaluate_face("Antigone", t)[68:82]).max())
+    assert max(visemes) > 0.5 and min(visemes) < 0.1, "her lips move as she answers, not before"
+    assert service.gaze_state("Antigone") is not None, "her eyes on the visitor"

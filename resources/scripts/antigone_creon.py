@@ -6,6 +6,8 @@
 # translation), spoken by espeak-ng: unlike the paper's script, which played recorded voices with
 # no face, the face plays here, and the lips move with the words. Creon's wave ("creon_wrk") is
 # the greeting tagged on his first word; and, beyond the paper, the two look at each other.
+# At the end Antigone is handed to the interaction service (§5.3): she takes the visitor's
+# questions from her bot (dialogue/antigone), typed or spoken in the studio's Conversation dock.
 
 # global variables
 Antigone = "Antigone"
@@ -36,3 +38,9 @@ voiceService.activateAction(Antigone, "AntigoneSpeech.Cam01CreonP3", 1.0)
 animService.waitUntilActionFinished_face(Antigone, "speech AntigoneSpeech.Cam01CreonP3", -0.3)
 animService.activateAction_body(Antigone, "antigone_idle")
 print("Antigone answered Creon at", round(animService.now(), 2), "s")
+
+# the act is over: Antigone takes the visitor's questions, looking at them (the camera), her idle
+# motion playing on under her answers
+bot = interactionService.load_bot("dialogue/antigone/antigone.aiml")
+interactionService.converse(Antigone, bot)
+print("Antigone takes questions: type or say them in the Conversation dock")

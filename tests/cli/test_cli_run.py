@@ -95,6 +95,9 @@ def test_a_script_kept_in_the_scenario_runs_by_name(tmp_path):
     result = run("run", DEMO, "--script", "antigone_creon")
     assert result.returncode == 0, result.stderr
     assert "Antigone answered Creon at" in result.stdout
+    # After the act she is handed to the interaction service with her bot, found among the
+    # scenario's files.
+    assert "Antigone takes questions" in result.stdout
     info = run("info", DEMO)
     assert "Script 'antigone_creon'" in info.stdout
     missing = run("run", DEMO, "--script", "monologue")
