@@ -34,7 +34,8 @@ def poses(scenario, base_dir):
 def test_the_demo_plays_from_its_package_and_imports_byte_identical(tmp_path):
     calls = []
     result = thespis.export_package(DEMO, tmp_path / "demo.thespkg", progress=lambda done, total: calls.append(total))
-    assert [e.name for e in result.entries] == ["demo.thespis", "motion/cmu_standing.idle", "motion/cmu_postures.pca"]
+    assert [e.name for e in result.entries] == ["demo.thespis", "motion/cmu_standing.idle", "motion/cmu_postures.pca",
+                                              "dialogue/antigone/antigone.aiml"]
     assert 0 < result.package_bytes < result.content_bytes and calls
     package = thespis.open_package(tmp_path / "demo.thespkg")
     assert package.scenario_entry == "demo.thespis" and package.writer.startswith("Thespis ")

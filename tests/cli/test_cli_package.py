@@ -77,7 +77,8 @@ def export_and_import(scenario, tmp_path):
 def test_the_demo_travels_in_a_package(tmp_path):
     manifest, folder = export_and_import(DEMO, tmp_path)
     names = [entry["name"] for entry in manifest["entries"]]
-    assert names == ["demo.thespis", "motion/cmu_standing.idle", "motion/cmu_postures.pca"]
+    assert names == ["demo.thespis", "motion/cmu_standing.idle", "motion/cmu_postures.pca",
+                     "dialogue/antigone/antigone.aiml"]
     for name in names[1:]:
         assert (folder / name).read_bytes() == (DEMO.parent / name).read_bytes()
 

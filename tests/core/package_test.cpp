@@ -184,8 +184,10 @@ TEST(Package, TheDemoTravelsWhole)
     std::vector<std::string> names;
     for (const PackageFile& file : job.plan.files)
         names.push_back(file.name);
-    // Both characters' idle clips name one database: it goes in once.
-    EXPECT_EQ(names, (std::vector<std::string>{"motion/cmu_standing.idle", "motion/cmu_postures.pca"}));
+    // Both characters' idle clips name one database: it goes in once. The paper's script names
+    // Antigone's bot, which she takes questions with after the act.
+    EXPECT_EQ(names, (std::vector<std::string>{"motion/cmu_standing.idle", "motion/cmu_postures.pca",
+                                               "dialogue/antigone/antigone.aiml"}));
     roundTrip(*scenario, Assets::besideFile(demo), "demo");
 }
 

@@ -92,16 +92,18 @@ void PackageStudioTest::exportOpenAndSaveAPackage()
     const core::scenario::Scenario original = m_window->document()->scenario();
     const QString package = m_dir.filePath(QStringLiteral("antigone.thespkg"));
 
-    // File ▸ Export ▸ Package…: the dialog lists the scenario and its two motion files.
+    // File ▸ Export ▸ Package…: the dialog lists the scenario, its two motion files and the bot
+    // its script hands Antigone to.
     bool exported = false;
     whenModal<editor::ExportPackageDialog>([&](editor::ExportPackageDialog* dialog) {
         QTableWidget* table = dialog->contentsTable();
-        QCOMPARE(table->rowCount(), 3);
+        QCOMPARE(table->rowCount(), 4);
         QCOMPARE(table->item(0, 0)->text(), QStringLiteral("demo.thespis"));
         QCOMPARE(table->item(1, 0)->text(), QStringLiteral("motion/cmu_standing.idle"));
         QVERIFY(table->item(1, 2)->text().contains(QStringLiteral("idle.database")));
         QCOMPARE(table->item(2, 0)->text(), QStringLiteral("motion/cmu_postures.pca"));
         QVERIFY(!table->item(2, 1)->text().isEmpty());
+        QCOMPARE(table->item(3, 0)->text(), QStringLiteral("dialogue/antigone/antigone.aiml"));
         QVERIFY(dialog->exportButton()->isEnabled());
         saveScreenshot(dialog, QStringLiteral("package_export_dialog.png"));
         dialog->setOutput(m_dir.filePath(QStringLiteral("antigone")));
@@ -118,7 +120,7 @@ void PackageStudioTest::exportOpenAndSaveAPackage()
     QVERIFY(exported);
     auto opened = core::scenario::Package::open(package.toStdString());
     QVERIFY2(opened, opened ? "" : opened.error().message.c_str());
-    QCOMPARE(int((*opened)->manifest().entries.size()), 3);
+    QCOMPARE(int((*opened)->manifest().entries.size()), 4);
 
     // File ▸ Open on the package: the scenario plays from it, the window named by it.
     QVERIFY(m_window->openScenario(package));
@@ -137,7 +139,7 @@ void PackageStudioTest::exportOpenAndSaveAPackage()
     QVERIFY(QDir().mkpath(m_dir.filePath(QStringLiteral("saved"))));
     QVERIFY(m_window->saveAs(saved));
     QVERIFY(m_window->document()->packagePath().isEmpty());
-    for (const char* name : {"motion/cmu_standing.idle", "motion/cmu_postures.pca"})
+    for (const char* name : {"motion/cmu_standing.idle", "motion/cmu_postures.pca", "dialogue/antigone/antigone.aiml"})
         QCOMPARE(bytesOf(m_dir.filePath(QStringLiteral("saved/") + QLatin1String(name))),
                  bytesOf(QStringLiteral(THESPIS_RESOURCES "/") + QLatin1String(name)));
     auto reloaded = core::scenario::loadScenario(saved.toStdString());
