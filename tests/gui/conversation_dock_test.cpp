@@ -213,6 +213,8 @@ void ConversationDockTest::theDemosBotAnswersATypedQuestionWithVoiceLipsAndGaze(
     auto* demoButton = panel()->findChild<QPushButton*>(QStringLiteral("loadDemoBot"));
     QVERIFY(demoButton && demoButton->isVisible());
     loadAndListen([&] { QTest::mouseClick(demoButton, Qt::LeftButton); });
+    if (QTest::currentTestFailed())
+        return;
     QVERIFY2(panel()->botSummary().startsWith(QStringLiteral("“antigone”: ")) && panel()->botSummary().contains(QStringLiteral("categories")),
              qPrintable(panel()->botSummary()));
     QVERIFY(panel()->problems()->isHidden());
@@ -256,6 +258,8 @@ void ConversationDockTest::theDemosBotAnswersATypedQuestionWithVoiceLipsAndGaze(
     QTRY_VERIFY_WITH_TIMEOUT(std::any_of(mixed.begin(), mixed.end(), [](const QList<QVariant>& block) { return block.at(2).toFloat() > 0.05f; }),
                              5000);
     checkSpokenOnTheStage();
+    if (QTest::currentTestFailed())
+        return;
 }
 
 void ConversationDockTest::aRecordingIsHeardWithItsConfidenceAndAnswered()
@@ -263,6 +267,8 @@ void ConversationDockTest::aRecordingIsHeardWithItsConfidenceAndAnswered()
     // The cards bot, from Load Bot Folder… as a user picks it.
     answerFileDialog(QFileInfo(cardsBot()).absolutePath(), {QStringLiteral("cards")});
     loadAndListen([&] { QTest::mouseClick(panel()->findChild<QPushButton*>(QStringLiteral("loadBotFolder")), Qt::LeftButton); });
+    if (QTest::currentTestFailed())
+        return;
     QVERIFY2(panel()->botSummary().startsWith(QStringLiteral("“cards”: 3 categories, 2 sets")), qPrintable(panel()->botSummary()));
 
     // Hear a Recording…: pocketsphinx's own "ten of clubs", through the bot's grammar.
@@ -279,6 +285,8 @@ void ConversationDockTest::aRecordingIsHeardWithItsConfidenceAndAnswered()
     QCOMPARE(lineText(0, ConversationTranscript::DetailColumn),
              placeOf(cardsBot() + QStringLiteral("/cards.aiml"), QStringLiteral("<set>rank</set> OF <set>suit</set>")));
     checkSpokenOnTheStage();
+    if (QTest::currentTestFailed())
+        return;
 
     // Push-to-talk lets go of 16 kHz samples: the same path (here from a recording, for there is
     // no microphone).
@@ -301,6 +309,8 @@ void ConversationDockTest::speechTheGrammarDoesNotCoverIsNotUnderstood()
 {
     // A card called to the demo's bot: nothing of hers sounds like it.
     loadAndListen([&] { panel()->loadBot({QFileInfo(antigoneAiml()).absolutePath()}); });
+    if (QTest::currentTestFailed())
+        return;
     panel()->hearRecording(cardsRecording("001.wav"));
     QTRY_VERIFY_WITH_TIMEOUT(!panel()->isAnswering(), 30000);
     QVERIFY2(panel()->heard().startsWith(QStringLiteral("Not understood — confidence ")), qPrintable(panel()->heard()));
@@ -312,6 +322,8 @@ void ConversationDockTest::speechTheGrammarDoesNotCoverIsNotUnderstood()
 void ConversationDockTest::handBackAndTheConversationsState()
 {
     loadAndListen([&] { panel()->loadBot({QFileInfo(antigoneAiml()).absolutePath()}); });
+    if (QTest::currentTestFailed())
+        return;
     QTemporaryDir folder;
     QVERIFY(folder.isValid());
 
