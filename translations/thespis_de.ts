@@ -9,6 +9,17 @@
     </message>
 </context>
 <context>
+    <name>Microphone</name>
+    <message>
+        <source>There is no microphone.</source>
+        <translation>Es gibt kein Mikrofon.</translation>
+    </message>
+    <message>
+        <source>The microphone “%1” did not open (Qt Multimedia error %2).</source>
+        <translation>Das Mikrofon „%1“ ließ sich nicht öffnen (Qt-Multimedia-Fehler %2).</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Thespis Studio: author and preview virtual humans. Opens SCENARIO, or the built-in demo.</source>
@@ -1470,6 +1481,429 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     </message>
 </context>
 <context>
+    <name>thespis::editor::ConversationPanel</name>
+    <message>
+        <source>The character the visitor talks to</source>
+        <translation>Die Figur, mit der der Besucher spricht</translation>
+    </message>
+    <message>
+        <source>Converse</source>
+        <translation>Gespräch führen</translation>
+    </message>
+    <message>
+        <source>Hand the character to the conversation from the playhead: it looks at the visitor and answers. Hand Back gives it to the scenario again; nothing it plays stops.</source>
+        <translation>Die Figur ab dem Abspielkopf dem Gespräch übergeben: Sie sieht den Besucher an und antwortet. „Zurückgeben“ gibt sie wieder dem Szenario; nichts, was sie spielt, hält an.</translation>
+    </message>
+    <message>
+        <source>Speak answers</source>
+        <translation>Antworten sprechen</translation>
+    </message>
+    <message>
+        <source>Answers are spoken with face, gestures and gaze; off, they are only written in the transcript. Chosen before Converse.</source>
+        <translation>Antworten werden mit Gesicht, Gesten und Blick gesprochen; ausgeschaltet stehen sie nur im Protokoll. Vor „Gespräch führen“ zu wählen.</translation>
+    </message>
+    <message>
+        <source>No bot loaded.</source>
+        <translation>Kein Bot geladen.</translation>
+    </message>
+    <message>
+        <source>Load Bot Folder…</source>
+        <translation>Bot-Ordner laden…</translation>
+    </message>
+    <message>
+        <source>A folder of AIML, sets, maps, substitutions and properties (Rosie’s lib/ layout or flat)</source>
+        <translation>Ein Ordner mit AIML, Sets, Maps, Ersetzungen und Eigenschaften (im lib/-Aufbau von Rosie oder flach)</translation>
+    </message>
+    <message>
+        <source>Load AIML Files…</source>
+        <translation>AIML-Dateien laden…</translation>
+    </message>
+    <message>
+        <source>One or more .aiml files (and .set, .map, … files, told by their extension)</source>
+        <translation>Eine oder mehrere .aiml-Dateien (und .set-, .map-, …-Dateien, nach ihrer Endung erkannt)</translation>
+    </message>
+    <message>
+        <source>What the bot’s files had wrong, by file:line:column; the rest loaded</source>
+        <translation>Was in den Dateien des Bots falsch war, nach Datei:Zeile:Spalte; der Rest wurde geladen</translation>
+    </message>
+    <message>
+        <source>The JSGF grammar the recogniser listens with — what the bot can answer — shows here once a bot is loaded.</source>
+        <translation>Die JSGF-Grammatik, mit der die Erkennung zuhört – was der Bot beantworten kann –, erscheint hier, sobald ein Bot geladen ist.</translation>
+    </message>
+    <message>
+        <source>Transcript</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <source>Listening Grammar</source>
+        <translation>Hörgrammatik</translation>
+    </message>
+    <message>
+        <source>What the visitor says (Return sends)</source>
+        <translation>Was der Besucher sagt (Eingabetaste sendet)</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Senden</translation>
+    </message>
+    <message>
+        <source>Hold to Talk</source>
+        <translation>Gedrückt halten zum Sprechen</translation>
+    </message>
+    <message>
+        <source>Hold while the visitor speaks into the microphone (or hold Space on the button); let go to hear it</source>
+        <translation>Gedrückt halten, während der Besucher ins Mikrofon spricht (oder die Leertaste auf der Schaltfläche halten); loslassen, um es zu hören</translation>
+    </message>
+    <message>
+        <source>Hear a Recording…</source>
+        <translation>Aufnahme anhören…</translation>
+    </message>
+    <message>
+        <source>What the visitor says, from a sound file (WAV, FLAC, OGG), recognised as the microphone would be</source>
+        <translation>Was der Besucher sagt, aus einer Audiodatei (WAV, FLAC, OGG), erkannt wie vom Mikrofon</translation>
+    </message>
+    <message>
+        <source>Save State…</source>
+        <translation>Zustand speichern…</translation>
+    </message>
+    <message>
+        <source>Keep what the visitor told the bot (its predicates, the history) in a JSON file</source>
+        <translation>Was der Besucher dem Bot erzählt hat (seine Prädikate, den Verlauf), in einer JSON-Datei aufbewahren</translation>
+    </message>
+    <message>
+        <source>Load State…</source>
+        <translation>Zustand laden…</translation>
+    </message>
+    <message>
+        <source>Converse from a saved state: the bot remembers what it was told</source>
+        <translation>Von einem gespeicherten Zustand aus weitersprechen: Der Bot erinnert sich, was ihm erzählt wurde</translation>
+    </message>
+    <message>
+        <source>No bot loaded yet</source>
+        <translation>Noch kein Bot geladen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Load Bot Folder</source>
+        <translation>Bot-Ordner laden</translation>
+    </message>
+    <message>
+        <source>Load AIML Files</source>
+        <translation>AIML-Dateien laden</translation>
+    </message>
+    <message>
+        <source>AIML files (*.aiml);;Bot files (*.aiml *.set *.map *.substitution *.properties *.pdefaults);;All files (*)</source>
+        <translation>AIML-Dateien (*.aiml);;Bot-Dateien (*.aiml *.set *.map *.substitution *.properties *.pdefaults);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Hear a Recording</source>
+        <translation>Aufnahme anhören</translation>
+    </message>
+    <message>
+        <source>Sound files (*.wav *.flac *.ogg)</source>
+        <translation>Audiodateien (*.wav *.flac *.ogg)</translation>
+    </message>
+    <message>
+        <source>Save Conversation State</source>
+        <translation>Gesprächszustand speichern</translation>
+    </message>
+    <message>
+        <source>Conversation state (*.json)</source>
+        <translation>Gesprächszustand (*.json)</translation>
+    </message>
+    <message>
+        <source>Load Conversation State</source>
+        <translation>Gesprächszustand laden</translation>
+    </message>
+    <message>
+        <source>%1 left the conversation: the scenario was closed.</source>
+        <translation>%1 hat das Gespräch verlassen: Das Szenario wurde geschlossen.</translation>
+    </message>
+    <message>
+        <source>Load “%1”</source>
+        <translation>„%1“ laden</translation>
+    </message>
+    <message>
+        <source>Load the bot shipped with the demo: %1</source>
+        <translation>Den mit der Demo gelieferten Bot laden: %1</translation>
+    </message>
+    <message>
+        <source>%1 converses on, in the rebuilt scenario.</source>
+        <translation>%1 spricht im neu aufgebauten Szenario weiter.</translation>
+    </message>
+    <message>
+        <source>%1 left the conversation: the character is gone.</source>
+        <translation>%1 hat das Gespräch verlassen: Die Figur gibt es nicht mehr.</translation>
+    </message>
+    <message>
+        <source>The bot is still being prepared: wait, or cancel it first.</source>
+        <translation>Der Bot wird noch vorbereitet: Warten Sie oder brechen Sie zuerst ab.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 and %n more</source>
+        <translation>
+            <numerusform>%1 und %n weitere</numerusform>
+            <numerusform>%1 und %n weitere</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not listening</source>
+        <translation>Hört nicht zu</translation>
+    </message>
+    <message>
+        <source>Cancelled: the recogniser was not opened. Type what the visitor says.</source>
+        <translation>Abgebrochen: Die Erkennung wurde nicht geöffnet. Tippen Sie, was der Besucher sagt.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n word(s) not in the dictionary, pronounced by espeak-ng.</source>
+        <translation>
+            <numerusform>%n Wort nicht im Wörterbuch, von espeak-ng ausgesprochen.</numerusform>
+            <numerusform>%n Wörter nicht im Wörterbuch, von espeak-ng ausgesprochen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Pronounced by espeak-ng:</source>
+        <translation>Von espeak-ng ausgesprochen:</translation>
+    </message>
+    <message>
+        <source>The recogniser listens for what the bot can answer (opened in %1 s).</source>
+        <translation>Die Erkennung hört auf das, was der Bot beantworten kann (geöffnet in %1 s).</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>Abgebrochen</translation>
+    </message>
+    <message>
+        <source>Cancelled: the bot was not changed.</source>
+        <translation>Abgebrochen: Der Bot wurde nicht geändert.</translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1”: %n categories</source>
+        <translation>
+            <numerusform>„%1“: %n Kategorie</numerusform>
+            <numerusform>„%1“: %n Kategorien</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n set(s)</source>
+        <translation>
+            <numerusform>, %n Set</numerusform>
+            <numerusform>, %n Sets</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n map(s)</source>
+        <translation>
+            <numerusform>, %n Map</numerusform>
+            <numerusform>, %n Maps</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Loaded in %1 s</source>
+        <translation>Geladen in %1 s</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n pattern(s) to listen for</source>
+        <translation>
+            <numerusform>%n Muster, auf das gehört wird</numerusform>
+            <numerusform>%n Muster, auf die gehört wird</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source> (%n left out)</source>
+        <translation>
+            <numerusform> (%n ausgelassen)</numerusform>
+            <numerusform> (%n ausgelassen)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n word(s); wildcards stand for %1 of them.</source>
+        <translation>
+            <numerusform>, %n Wort; Platzhalter stehen für %1 davon.</numerusform>
+            <numerusform>, %n Wörter; Platzhalter stehen für %1 davon.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing to listen for: %1 Type what the visitor says.</source>
+        <translation>Nichts, worauf zu hören wäre: %1 Tippen Sie, was der Besucher sagt.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Loaded %n categories in %1 s.</source>
+        <translation>
+            <numerusform>%n Kategorie in %1 s geladen.</numerusform>
+            <numerusform>%n Kategorien in %1 s geladen.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n problem(s) in its files: the rest loaded.</source>
+        <translation>
+            <numerusform>%n Problem in seinen Dateien: Der Rest wurde geladen.</numerusform>
+            <numerusform>%n Probleme in seinen Dateien: Der Rest wurde geladen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Bot loaded</source>
+        <translation>Bot geladen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Bot “%1” loaded: %n categories.</source>
+        <translation>
+            <numerusform>Bot „%1“ geladen: %n Kategorie.</numerusform>
+            <numerusform>Bot „%1“ geladen: %n Kategorien.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 converses with the new bot.</source>
+        <translation>%1 spricht mit dem neuen Bot.</translation>
+    </message>
+    <message>
+        <source>Load a bot first: it is what the character answers with.</source>
+        <translation>Laden Sie zuerst einen Bot: Mit ihm antwortet die Figur.</translation>
+    </message>
+    <message>
+        <source>Open a scenario and choose the character who converses.</source>
+        <translation>Öffnen Sie ein Szenario und wählen Sie die Figur, die das Gespräch führt.</translation>
+    </message>
+    <message>
+        <source>%1 converses with the visitor (%2).</source>
+        <translation>%1 spricht mit dem Besucher (%2).</translation>
+    </message>
+    <message>
+        <source>%1 is handed back to the scenario.</source>
+        <translation>%1 ist dem Szenario zurückgegeben.</translation>
+    </message>
+    <message>
+        <source>Answering…</source>
+        <translation>Antwortet…</translation>
+    </message>
+    <message>
+        <source>Cancelled: the character was told nothing.</source>
+        <translation>Abgebrochen: Der Figur wurde nichts gesagt.</translation>
+    </message>
+    <message>
+        <source>Heard: “%1” — confidence %2</source>
+        <translation>Gehört: „%1“ – Konfidenz %2</translation>
+    </message>
+    <message>
+        <source>Not understood — confidence %1; nothing of the grammar fits.</source>
+        <translation>Nicht verstanden – Konfidenz %1; nichts aus der Grammatik passt.</translation>
+    </message>
+    <message>
+        <source>Not understood — confidence %1; nearest: “%2”.</source>
+        <translation>Nicht verstanden – Konfidenz %1; am nächsten: „%2“.</translation>
+    </message>
+    <message>
+        <source>heard, confidence %1</source>
+        <translation>gehört, Konfidenz %1</translation>
+    </message>
+    <message>
+        <source>Typed: “%1”</source>
+        <translation>Getippt: „%1“</translation>
+    </message>
+    <message>
+        <source>typed</source>
+        <translation>getippt</translation>
+    </message>
+    <message>
+        <source>Nothing was heard: hold the button while the visitor speaks.</source>
+        <translation>Nichts gehört: Halten Sie die Schaltfläche gedrückt, während der Besucher spricht.</translation>
+    </message>
+    <message>
+        <source>Nothing to save: no character converses.</source>
+        <translation>Nichts zu speichern: Keine Figur führt ein Gespräch.</translation>
+    </message>
+    <message>
+        <source>Saved</source>
+        <translation>Gespeichert</translation>
+    </message>
+    <message>
+        <source>What the visitor told the bot is in “%1”.</source>
+        <translation>Was der Besucher dem Bot erzählt hat, steht in „%1“.</translation>
+    </message>
+    <message>
+        <source>%1 converses on from “%2”.</source>
+        <translation>%1 spricht ab „%2“ weiter.</translation>
+    </message>
+    <message>
+        <source>Loaded</source>
+        <translation>Geladen</translation>
+    </message>
+    <message>
+        <source>The conversation goes on from “%1”.</source>
+        <translation>Das Gespräch geht ab „%1“ weiter.</translation>
+    </message>
+    <message>
+        <source>Hand Back</source>
+        <translation>Zurückgeben</translation>
+    </message>
+    <message>
+        <source>Listening… %1 s — let go when the visitor is done.</source>
+        <translation>Hört zu… %1 s – loslassen, wenn der Besucher fertig ist.</translation>
+    </message>
+    <message>
+        <source>No microphone found — type what the visitor says, or use “Hear a Recording…”.</source>
+        <translation>Kein Mikrofon gefunden – tippen Sie, was der Besucher sagt, oder nutzen Sie „Aufnahme anhören…“.</translation>
+    </message>
+    <message>
+        <source>Microphone: %1. Load a bot to talk to.</source>
+        <translation>Mikrofon: %1. Laden Sie einen Bot, mit dem gesprochen wird.</translation>
+    </message>
+    <message>
+        <source>Microphone: %1. Hold to Talk works once the recogniser is open.</source>
+        <translation>Mikrofon: %1. „Gedrückt halten zum Sprechen“ geht, sobald die Erkennung geöffnet ist.</translation>
+    </message>
+    <message>
+        <source>Microphone: %1. Hold “Hold to Talk” while the visitor speaks.</source>
+        <translation>Mikrofon: %1. Halten Sie „Gedrückt halten zum Sprechen“, während der Besucher spricht.</translation>
+    </message>
+    <message>
+        <source>Ready to listen</source>
+        <translation>Bereit zum Zuhören</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::ConversationTranscript</name>
+    <message>
+        <source>Who</source>
+        <translation>Wer</translation>
+    </message>
+    <message>
+        <source>Said</source>
+        <translation>Gesagt</translation>
+    </message>
+    <message>
+        <source>Spoken (s)</source>
+        <translation>Gesprochen (s)</translation>
+    </message>
+    <message>
+        <source>Visitor</source>
+        <translation>Besucher</translation>
+    </message>
+    <message>
+        <source>(not understood)</source>
+        <translation>(nicht verstanden)</translation>
+    </message>
+    <message>
+        <source>learned</source>
+        <translation>gelernt</translation>
+    </message>
+    <message>
+        <source>not spoken</source>
+        <translation>nicht gesprochen</translation>
+    </message>
+    <message>
+        <source>(no answer: no category matched)</source>
+        <translation>(keine Antwort: keine Kategorie passte)</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::CurvePanel</name>
     <message>
         <source>Weight</source>
@@ -2279,6 +2713,58 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source>Change Filter Band</source>
         <translation>Filterband ändern</translation>
+    </message>
+    <message>
+        <source>Speech plays it at its own speed and holds its stroke while the words last</source>
+        <translation>Die Sprache spielt sie in ihrem eigenen Tempo und hält ihren Schlag, solange die Wörter dauern</translation>
+    </message>
+    <message>
+        <source>Speech stretches or shrinks it to its words</source>
+        <translation>Die Sprache dehnt oder staucht sie auf ihre Wörter</translation>
+    </message>
+    <message>
+        <source>No stroke marked: speech fits the gesture as a whole</source>
+        <translation>Kein Schlag markiert: Die Sprache passt die Geste als Ganzes ein</translation>
+    </message>
+    <message>
+        <source>The stroke, %1 s into the clip, falls on the first stressed word of its words</source>
+        <translation>Der Schlag, %1 s im Clip, fällt auf das erste betonte ihrer Wörter</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Holds</source>
+        <translation>Hält</translation>
+    </message>
+    <message>
+        <source>Stroke (s)</source>
+        <translation>Schlag (s)</translation>
+    </message>
+    <message>
+        <source>Words longer than the gesture: hold its stroke (checked) or stretch it (unchecked)</source>
+        <translation>Wörter länger als die Geste: ihren Schlag halten (angekreuzt) oder sie dehnen (nicht angekreuzt)</translation>
+    </message>
+    <message>
+        <source>Where the gesture&apos;s stroke is in its clip, in seconds: speech puts it on the stressed word</source>
+        <translation>Wo der Schlag der Geste in ihrem Clip liegt, in Sekunden: Die Sprache legt ihn auf das betonte Wort</translation>
+    </message>
+    <message>
+        <source>Hold Gesture Stroke</source>
+        <translation>Schlag der Geste halten</translation>
+    </message>
+    <message>
+        <source>Stretch Gesture to Its Words</source>
+        <translation>Geste auf ihre Wörter dehnen</translation>
+    </message>
+    <message>
+        <source>A stroke is a number of seconds into the clip (below 0: none).</source>
+        <translation>Ein Schlag ist eine Anzahl Sekunden im Clip (unter 0: keiner).</translation>
+    </message>
+    <message>
+        <source>Mark Gesture Stroke</source>
+        <translation>Schlag der Geste markieren</translation>
     </message>
 </context>
 <context>
@@ -4544,6 +5030,10 @@ Führen Sie die Skripte des Szenarios nur aus, wenn Sie der Herkunft dieser Date
     <message>
         <source>Speech</source>
         <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>Conversation</source>
+        <translation>Gespräch</translation>
     </message>
 </context>
 <context>

@@ -73,6 +73,86 @@
     </message>
 </context>
 <context>
+    <name>thespis::editor::ConversationPanel</name>
+    <message numerus="yes">
+        <source>%1 and %n more</source>
+        <translation>
+            <numerusform>%1 and %n more</numerusform>
+            <numerusform>%1 and %n more</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n word(s) not in the dictionary, pronounced by espeak-ng.</source>
+        <translation>
+            <numerusform>%n word not in the dictionary, pronounced by espeak-ng.</numerusform>
+            <numerusform>%n words not in the dictionary, pronounced by espeak-ng.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1”: %n categories</source>
+        <translation>
+            <numerusform>“%1”: %n category</numerusform>
+            <numerusform>“%1”: %n categories</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n set(s)</source>
+        <translation>
+            <numerusform>, %n set</numerusform>
+            <numerusform>, %n sets</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n map(s)</source>
+        <translation>
+            <numerusform>, %n map</numerusform>
+            <numerusform>, %n maps</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n pattern(s) to listen for</source>
+        <translation>
+            <numerusform>%n pattern to listen for</numerusform>
+            <numerusform>%n patterns to listen for</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source> (%n left out)</source>
+        <translation>
+            <numerusform> (%n left out)</numerusform>
+            <numerusform> (%n left out)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n word(s); wildcards stand for %1 of them.</source>
+        <translation>
+            <numerusform>, %n word; wildcards stand for %1 of them.</numerusform>
+            <numerusform>, %n words; wildcards stand for %1 of them.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Loaded %n categories in %1 s.</source>
+        <translation>
+            <numerusform>Loaded %n category in %1 s.</numerusform>
+            <numerusform>Loaded %n categories in %1 s.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n problem(s) in its files: the rest loaded.</source>
+        <translation>
+            <numerusform>%n problem in its files: the rest loaded.</numerusform>
+            <numerusform>%n problems in its files: the rest loaded.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Bot “%1” loaded: %n categories.</source>
+        <translation>
+            <numerusform>Bot “%1” loaded: %n category.</numerusform>
+            <numerusform>Bot “%1” loaded: %n categories.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::CurvePanel</name>
     <message numerus="yes">
         <source>Move %n Curve Key(s)</source>

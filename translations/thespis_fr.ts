@@ -9,6 +9,17 @@
     </message>
 </context>
 <context>
+    <name>Microphone</name>
+    <message>
+        <source>There is no microphone.</source>
+        <translation>Il n&apos;y a pas de microphone.</translation>
+    </message>
+    <message>
+        <source>The microphone “%1” did not open (Qt Multimedia error %2).</source>
+        <translation>Le microphone « %1 » ne s&apos;est pas ouvert (erreur Qt Multimedia %2).</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Thespis Studio: author and preview virtual humans. Opens SCENARIO, or the built-in demo.</source>
@@ -1470,6 +1481,429 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     </message>
 </context>
 <context>
+    <name>thespis::editor::ConversationPanel</name>
+    <message>
+        <source>The character the visitor talks to</source>
+        <translation>Le personnage auquel le visiteur parle</translation>
+    </message>
+    <message>
+        <source>Converse</source>
+        <translation>Converser</translation>
+    </message>
+    <message>
+        <source>Hand the character to the conversation from the playhead: it looks at the visitor and answers. Hand Back gives it to the scenario again; nothing it plays stops.</source>
+        <translation>Confier le personnage à la conversation à partir de la tête de lecture : il regarde le visiteur et répond. « Rendre » le rend au scénario ; rien de ce qu&apos;il joue ne s&apos;arrête.</translation>
+    </message>
+    <message>
+        <source>Speak answers</source>
+        <translation>Dire les réponses</translation>
+    </message>
+    <message>
+        <source>Answers are spoken with face, gestures and gaze; off, they are only written in the transcript. Chosen before Converse.</source>
+        <translation>Les réponses sont dites avec le visage, les gestes et le regard ; sinon elles ne sont écrites que dans la transcription. À choisir avant « Converser ».</translation>
+    </message>
+    <message>
+        <source>No bot loaded.</source>
+        <translation>Aucun bot chargé.</translation>
+    </message>
+    <message>
+        <source>Load Bot Folder…</source>
+        <translation>Charger un dossier de bot…</translation>
+    </message>
+    <message>
+        <source>A folder of AIML, sets, maps, substitutions and properties (Rosie’s lib/ layout or flat)</source>
+        <translation>Un dossier d’AIML, d’ensembles, de tables, de substitutions et de propriétés (disposition lib/ de Rosie ou à plat)</translation>
+    </message>
+    <message>
+        <source>Load AIML Files…</source>
+        <translation>Charger des fichiers AIML…</translation>
+    </message>
+    <message>
+        <source>One or more .aiml files (and .set, .map, … files, told by their extension)</source>
+        <translation>Un ou plusieurs fichiers .aiml (et .set, .map, …, reconnus à leur extension)</translation>
+    </message>
+    <message>
+        <source>What the bot’s files had wrong, by file:line:column; the rest loaded</source>
+        <translation>Ce qui n’allait pas dans les fichiers du bot, par fichier:ligne:colonne ; le reste est chargé</translation>
+    </message>
+    <message>
+        <source>The JSGF grammar the recogniser listens with — what the bot can answer — shows here once a bot is loaded.</source>
+        <translation>La grammaire JSGF avec laquelle la reconnaissance écoute – ce à quoi le bot sait répondre – s’affiche ici une fois un bot chargé.</translation>
+    </message>
+    <message>
+        <source>Transcript</source>
+        <translation>Transcription</translation>
+    </message>
+    <message>
+        <source>Listening Grammar</source>
+        <translation>Grammaire d&apos;écoute</translation>
+    </message>
+    <message>
+        <source>What the visitor says (Return sends)</source>
+        <translation>Ce que dit le visiteur (Entrée envoie)</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Envoyer</translation>
+    </message>
+    <message>
+        <source>Hold to Talk</source>
+        <translation>Maintenir pour parler</translation>
+    </message>
+    <message>
+        <source>Hold while the visitor speaks into the microphone (or hold Space on the button); let go to hear it</source>
+        <translation>Maintenir pendant que le visiteur parle dans le microphone (ou maintenir Espace sur le bouton) ; relâcher pour l’entendre</translation>
+    </message>
+    <message>
+        <source>Hear a Recording…</source>
+        <translation>Écouter un enregistrement…</translation>
+    </message>
+    <message>
+        <source>What the visitor says, from a sound file (WAV, FLAC, OGG), recognised as the microphone would be</source>
+        <translation>Ce que dit le visiteur, depuis un fichier son (WAV, FLAC, OGG), reconnu comme le serait le microphone</translation>
+    </message>
+    <message>
+        <source>Save State…</source>
+        <translation>Enregistrer l&apos;état…</translation>
+    </message>
+    <message>
+        <source>Keep what the visitor told the bot (its predicates, the history) in a JSON file</source>
+        <translation>Garder ce que le visiteur a dit au bot (ses prédicats, l’historique) dans un fichier JSON</translation>
+    </message>
+    <message>
+        <source>Load State…</source>
+        <translation>Charger l&apos;état…</translation>
+    </message>
+    <message>
+        <source>Converse from a saved state: the bot remembers what it was told</source>
+        <translation>Converser depuis un état enregistré : le bot se souvient de ce qu’on lui a dit</translation>
+    </message>
+    <message>
+        <source>No bot loaded yet</source>
+        <translation>Aucun bot chargé pour l’instant</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Load Bot Folder</source>
+        <translation>Charger un dossier de bot</translation>
+    </message>
+    <message>
+        <source>Load AIML Files</source>
+        <translation>Charger des fichiers AIML</translation>
+    </message>
+    <message>
+        <source>AIML files (*.aiml);;Bot files (*.aiml *.set *.map *.substitution *.properties *.pdefaults);;All files (*)</source>
+        <translation>Fichiers AIML (*.aiml);;Fichiers de bot (*.aiml *.set *.map *.substitution *.properties *.pdefaults);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Hear a Recording</source>
+        <translation>Écouter un enregistrement</translation>
+    </message>
+    <message>
+        <source>Sound files (*.wav *.flac *.ogg)</source>
+        <translation>Fichiers son (*.wav *.flac *.ogg)</translation>
+    </message>
+    <message>
+        <source>Save Conversation State</source>
+        <translation>Enregistrer l&apos;état de la conversation</translation>
+    </message>
+    <message>
+        <source>Conversation state (*.json)</source>
+        <translation>État de conversation (*.json)</translation>
+    </message>
+    <message>
+        <source>Load Conversation State</source>
+        <translation>Charger l&apos;état de la conversation</translation>
+    </message>
+    <message>
+        <source>%1 left the conversation: the scenario was closed.</source>
+        <translation>%1 a quitté la conversation : le scénario a été fermé.</translation>
+    </message>
+    <message>
+        <source>Load “%1”</source>
+        <translation>Charger « %1 »</translation>
+    </message>
+    <message>
+        <source>Load the bot shipped with the demo: %1</source>
+        <translation>Charger le bot livré avec la démo : %1</translation>
+    </message>
+    <message>
+        <source>%1 converses on, in the rebuilt scenario.</source>
+        <translation>%1 poursuit la conversation dans le scénario reconstruit.</translation>
+    </message>
+    <message>
+        <source>%1 left the conversation: the character is gone.</source>
+        <translation>%1 a quitté la conversation : le personnage n&apos;existe plus.</translation>
+    </message>
+    <message>
+        <source>The bot is still being prepared: wait, or cancel it first.</source>
+        <translation>Le bot est encore en préparation : attendez, ou annulez d&apos;abord.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 and %n more</source>
+        <translation>
+            <numerusform>%1 et %n autre</numerusform>
+            <numerusform>%1 et %n autres</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not listening</source>
+        <translation>N&apos;écoute pas</translation>
+    </message>
+    <message>
+        <source>Cancelled: the recogniser was not opened. Type what the visitor says.</source>
+        <translation>Annulé : la reconnaissance n&apos;a pas été ouverte. Tapez ce que dit le visiteur.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n word(s) not in the dictionary, pronounced by espeak-ng.</source>
+        <translation>
+            <numerusform>%n mot absent du dictionnaire, prononcé par espeak-ng.</numerusform>
+            <numerusform>%n mots absents du dictionnaire, prononcés par espeak-ng.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Pronounced by espeak-ng:</source>
+        <translation>Prononcés par espeak-ng :</translation>
+    </message>
+    <message>
+        <source>The recogniser listens for what the bot can answer (opened in %1 s).</source>
+        <translation>La reconnaissance écoute ce à quoi le bot sait répondre (ouverte en %1 s).</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>Annulé</translation>
+    </message>
+    <message>
+        <source>Cancelled: the bot was not changed.</source>
+        <translation>Annulé : le bot n&apos;a pas changé.</translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1”: %n categories</source>
+        <translation>
+            <numerusform>« %1 » : %n catégorie</numerusform>
+            <numerusform>« %1 » : %n catégories</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n set(s)</source>
+        <translation>
+            <numerusform>, %n ensemble</numerusform>
+            <numerusform>, %n ensembles</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n map(s)</source>
+        <translation>
+            <numerusform>, %n table</numerusform>
+            <numerusform>, %n tables</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Loaded in %1 s</source>
+        <translation>Chargé en %1 s</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n pattern(s) to listen for</source>
+        <translation>
+            <numerusform>%n motif à écouter</numerusform>
+            <numerusform>%n motifs à écouter</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source> (%n left out)</source>
+        <translation>
+            <numerusform> (%n laissé de côté)</numerusform>
+            <numerusform> (%n laissés de côté)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n word(s); wildcards stand for %1 of them.</source>
+        <translation>
+            <numerusform>, %n mot ; les jokers en remplacent %1.</numerusform>
+            <numerusform>, %n mots ; les jokers en remplacent %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing to listen for: %1 Type what the visitor says.</source>
+        <translation>Rien à écouter : %1 Tapez ce que dit le visiteur.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Loaded %n categories in %1 s.</source>
+        <translation>
+            <numerusform>%n catégorie chargée en %1 s.</numerusform>
+            <numerusform>%n catégories chargées en %1 s.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n problem(s) in its files: the rest loaded.</source>
+        <translation>
+            <numerusform>%n problème dans ses fichiers : le reste est chargé.</numerusform>
+            <numerusform>%n problèmes dans ses fichiers : le reste est chargé.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Bot loaded</source>
+        <translation>Bot chargé</translation>
+    </message>
+    <message numerus="yes">
+        <source>Bot “%1” loaded: %n categories.</source>
+        <translation>
+            <numerusform>Bot « %1 » chargé : %n catégorie.</numerusform>
+            <numerusform>Bot « %1 » chargé : %n catégories.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 converses with the new bot.</source>
+        <translation>%1 converse avec le nouveau bot.</translation>
+    </message>
+    <message>
+        <source>Load a bot first: it is what the character answers with.</source>
+        <translation>Chargez d&apos;abord un bot : c&apos;est avec lui que le personnage répond.</translation>
+    </message>
+    <message>
+        <source>Open a scenario and choose the character who converses.</source>
+        <translation>Ouvrez un scénario et choisissez le personnage qui converse.</translation>
+    </message>
+    <message>
+        <source>%1 converses with the visitor (%2).</source>
+        <translation>%1 converse avec le visiteur (%2).</translation>
+    </message>
+    <message>
+        <source>%1 is handed back to the scenario.</source>
+        <translation>%1 est rendu(e) au scénario.</translation>
+    </message>
+    <message>
+        <source>Answering…</source>
+        <translation>Répond…</translation>
+    </message>
+    <message>
+        <source>Cancelled: the character was told nothing.</source>
+        <translation>Annulé : on n&apos;a rien dit au personnage.</translation>
+    </message>
+    <message>
+        <source>Heard: “%1” — confidence %2</source>
+        <translation>Entendu : « %1 » – confiance %2</translation>
+    </message>
+    <message>
+        <source>Not understood — confidence %1; nothing of the grammar fits.</source>
+        <translation>Pas compris – confiance %1 ; rien de la grammaire ne convient.</translation>
+    </message>
+    <message>
+        <source>Not understood — confidence %1; nearest: “%2”.</source>
+        <translation>Pas compris – confiance %1 ; le plus proche : « %2 ».</translation>
+    </message>
+    <message>
+        <source>heard, confidence %1</source>
+        <translation>entendu, confiance %1</translation>
+    </message>
+    <message>
+        <source>Typed: “%1”</source>
+        <translation>Tapé : « %1 »</translation>
+    </message>
+    <message>
+        <source>typed</source>
+        <translation>tapé</translation>
+    </message>
+    <message>
+        <source>Nothing was heard: hold the button while the visitor speaks.</source>
+        <translation>Rien entendu : maintenez le bouton pendant que le visiteur parle.</translation>
+    </message>
+    <message>
+        <source>Nothing to save: no character converses.</source>
+        <translation>Rien à enregistrer : aucun personnage ne converse.</translation>
+    </message>
+    <message>
+        <source>Saved</source>
+        <translation>Enregistré</translation>
+    </message>
+    <message>
+        <source>What the visitor told the bot is in “%1”.</source>
+        <translation>Ce que le visiteur a dit au bot est dans « %1 ».</translation>
+    </message>
+    <message>
+        <source>%1 converses on from “%2”.</source>
+        <translation>%1 reprend la conversation depuis « %2 ».</translation>
+    </message>
+    <message>
+        <source>Loaded</source>
+        <translation>Chargé</translation>
+    </message>
+    <message>
+        <source>The conversation goes on from “%1”.</source>
+        <translation>La conversation reprend depuis « %1 ».</translation>
+    </message>
+    <message>
+        <source>Hand Back</source>
+        <translation>Rendre</translation>
+    </message>
+    <message>
+        <source>Listening… %1 s — let go when the visitor is done.</source>
+        <translation>À l’écoute… %1 s – relâchez quand le visiteur a fini.</translation>
+    </message>
+    <message>
+        <source>No microphone found — type what the visitor says, or use “Hear a Recording…”.</source>
+        <translation>Aucun microphone trouvé – tapez ce que dit le visiteur, ou utilisez « Écouter un enregistrement… ».</translation>
+    </message>
+    <message>
+        <source>Microphone: %1. Load a bot to talk to.</source>
+        <translation>Microphone : %1. Chargez un bot à qui parler.</translation>
+    </message>
+    <message>
+        <source>Microphone: %1. Hold to Talk works once the recogniser is open.</source>
+        <translation>Microphone : %1. « Maintenir pour parler » marche une fois la reconnaissance ouverte.</translation>
+    </message>
+    <message>
+        <source>Microphone: %1. Hold “Hold to Talk” while the visitor speaks.</source>
+        <translation>Microphone : %1. Maintenez « Maintenir pour parler » pendant que le visiteur parle.</translation>
+    </message>
+    <message>
+        <source>Ready to listen</source>
+        <translation>Prêt à écouter</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::ConversationTranscript</name>
+    <message>
+        <source>Who</source>
+        <translation>Qui</translation>
+    </message>
+    <message>
+        <source>Said</source>
+        <translation>Dit</translation>
+    </message>
+    <message>
+        <source>Spoken (s)</source>
+        <translation>Dit à (s)</translation>
+    </message>
+    <message>
+        <source>Visitor</source>
+        <translation>Visiteur</translation>
+    </message>
+    <message>
+        <source>(not understood)</source>
+        <translation>(pas compris)</translation>
+    </message>
+    <message>
+        <source>learned</source>
+        <translation>appris</translation>
+    </message>
+    <message>
+        <source>not spoken</source>
+        <translation>non dit</translation>
+    </message>
+    <message>
+        <source>(no answer: no category matched)</source>
+        <translation>(pas de réponse : aucune catégorie ne correspond)</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Source</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::CurvePanel</name>
     <message>
         <source>Weight</source>
@@ -2279,6 +2713,58 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source>Change Filter Band</source>
         <translation>Changer la bande du filtre</translation>
+    </message>
+    <message>
+        <source>Speech plays it at its own speed and holds its stroke while the words last</source>
+        <translation>La parole la joue à sa propre vitesse et tient son temps fort tant que durent les mots</translation>
+    </message>
+    <message>
+        <source>Speech stretches or shrinks it to its words</source>
+        <translation>La parole l’étire ou la resserre sur ses mots</translation>
+    </message>
+    <message>
+        <source>No stroke marked: speech fits the gesture as a whole</source>
+        <translation>Aucun temps fort marqué : la parole ajuste le geste en entier</translation>
+    </message>
+    <message>
+        <source>The stroke, %1 s into the clip, falls on the first stressed word of its words</source>
+        <translation>Le temps fort, à %1 s dans le clip, tombe sur le premier mot accentué de ses mots</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>aucun</translation>
+    </message>
+    <message>
+        <source>Holds</source>
+        <translation>Tient</translation>
+    </message>
+    <message>
+        <source>Stroke (s)</source>
+        <translation>Temps fort (s)</translation>
+    </message>
+    <message>
+        <source>Words longer than the gesture: hold its stroke (checked) or stretch it (unchecked)</source>
+        <translation>Mots plus longs que le geste : tenir son temps fort (coché) ou l’étirer (non coché)</translation>
+    </message>
+    <message>
+        <source>Where the gesture&apos;s stroke is in its clip, in seconds: speech puts it on the stressed word</source>
+        <translation>Où est le temps fort du geste dans son clip, en secondes : la parole le place sur le mot accentué</translation>
+    </message>
+    <message>
+        <source>Hold Gesture Stroke</source>
+        <translation>Tenir le temps fort du geste</translation>
+    </message>
+    <message>
+        <source>Stretch Gesture to Its Words</source>
+        <translation>Étirer le geste sur ses mots</translation>
+    </message>
+    <message>
+        <source>A stroke is a number of seconds into the clip (below 0: none).</source>
+        <translation>Un temps fort est un nombre de secondes dans le clip (sous 0 : aucun).</translation>
+    </message>
+    <message>
+        <source>Mark Gesture Stroke</source>
+        <translation>Marquer le temps fort du geste</translation>
     </message>
 </context>
 <context>
@@ -4544,6 +5030,10 @@ N’exécutez les scripts du scénario que si vous faites confiance à la proven
     <message>
         <source>Speech</source>
         <translation>Parole</translation>
+    </message>
+    <message>
+        <source>Conversation</source>
+        <translation>Conversation</translation>
     </message>
 </context>
 <context>

@@ -37,6 +37,7 @@ class Autosaver;
 class MessagesPanel;
 class ScriptPanel;
 class ClipLibraryPanel;
+class ConversationPanel;
 class CurvePanel;
 class BakePanel;
 class PostureChartPanel;
@@ -93,6 +94,7 @@ public:
     editor::GesticonPanel* gesticon() const { return m_gesticon; }
     editor::FacePosePanel* facePose() const { return m_facePose; }
     editor::SpeechPanel* speech() const { return m_speech; }
+    editor::ConversationPanel* conversation() const { return m_conversation; }
     editor::StageAudio* audio() const { return m_audio; }
     editor::SegmentPanel* segments() const { return m_segments; }
     editor::BakePanel* bakePanel() const { return m_bake; }
@@ -178,6 +180,7 @@ private:
     editor::GesticonPanel* m_gesticon = nullptr;
     editor::FacePosePanel* m_facePose = nullptr;
     editor::SpeechPanel* m_speech = nullptr;
+    editor::ConversationPanel* m_conversation = nullptr;
     editor::StageAudio* m_audio = nullptr; // child: what the studio plays aloud
     editor::SegmentPanel* m_segments = nullptr;
     editor::BakePanel* m_bake = nullptr;

@@ -21,6 +21,7 @@
 #include "editor/ar_preview_panel.h"
 #include "editor/bake_panel.h"
 #include "editor/clip_library_panel.h"
+#include "editor/conversation_panel.h"
 #include "editor/curve_panel.h"
 #include "editor/face_pose_panel.h"
 #include "editor/gesticon_panel.h"
@@ -235,6 +236,14 @@ void MainWindow::createEditorDocks()
         if (!m_clock->isPlaying())
             m_clock->play();
     });
+    // The visitor talks to a character (paper §5.3); the demo's bot is offered when shipped.
+    m_conversation = new editor::ConversationPanel(this);
+    m_conversation->setSession(m_session, m_audio);
+    m_conversation->setDefaultBot(shippedResource(QCoreApplication::applicationDirPath(), QStringLiteral("dialogue/antigone")));
+    connect(m_conversation, &editor::ConversationPanel::playRequested, this, [this] {
+        if (!m_clock->isPlaying())
+            m_clock->play();
+    });
     m_segments = new editor::SegmentPanel(this);
     m_bake = new editor::BakePanel(this);
     m_postureChart = new editor::PostureChartPanel(this);
@@ -269,6 +278,8 @@ void MainWindow::createEditorDocks()
     tabifyDockWidget(bakeDock, faceDock);
     QDockWidget* speechDock = dock(tr("Speech"), QStringLiteral("speechDock"), m_speech, Qt::RightDockWidgetArea);
     tabifyDockWidget(faceDock, speechDock);
+    QDockWidget* conversationDock = dock(tr("Conversation"), QStringLiteral("conversationDock"), m_conversation, Qt::RightDockWidgetArea);
+    tabifyDockWidget(speechDock, conversationDock);
     propertiesDock->raise();
     QDockWidget* libraryDock = dock(tr("Clip Library"), QStringLiteral("clipLibraryDock"), m_library, Qt::LeftDockWidgetArea);
     tabifyDockWidget(m_outlineDock, libraryDock);
