@@ -3,11 +3,11 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
-#include <QLineEdit>
 
 #include <algorithm>
 
 #include "editor/qt_conversions.h"
+#include "editor/target_choice.h"
 
 namespace thespis::editor {
 
@@ -15,12 +15,8 @@ GazeProperties::GazeProperties(QWidget* parent) : QGroupBox(tr("Looks at"), pare
 {
     setObjectName(QStringLiteral("gazeProperties"));
     auto* form = new QFormLayout(this);
-    m_target = new QComboBox(this);
+    m_target = new TargetChoice(this);
     m_target->setObjectName(QStringLiteral("gazeTarget"));
-    m_target->setEditable(true);
-    m_target->setInsertPolicy(QComboBox::NoInsert);
-    m_target->setToolTip(tr("The camera, a character (its eyes), a joint of one (\"Creon:r_radiocarpal\") or a "
-                            "point in metres (\"0.5 1.6 2\")"));
     m_influence = new QComboBox(this);
     m_influence->setObjectName(QStringLiteral("gazeInfluence"));
     m_influence->addItem(tr("The eyes alone"), QStringLiteral("EYES"));
@@ -45,8 +41,7 @@ GazeProperties::GazeProperties(QWidget* parent) : QGroupBox(tr("Looks at"), pare
     form->addRow(tr("Away by:"), m_offset);
     form->addRow(tr("Toward:"), m_direction);
 
-    connect(m_target, &QComboBox::activated, this, &GazeProperties::emitEdit);
-    connect(m_target->lineEdit(), &QLineEdit::editingFinished, this, &GazeProperties::emitEdit);
+    connect(m_target, &TargetChoice::targetChosen, this, &GazeProperties::emitEdit);
     connect(m_influence, &QComboBox::activated, this, &GazeProperties::emitEdit);
     connect(m_offset, &QDoubleSpinBox::valueChanged, this, &GazeProperties::emitEdit);
     connect(m_direction, &QComboBox::activated, this, &GazeProperties::emitEdit);
@@ -60,21 +55,7 @@ void GazeProperties::show(const core::scenario::Scenario& scenario, int characte
         return;
     m_refreshing = true;
     m_shown = *gaze;
-    m_target->clear();
-    m_target->addItem(tr("The camera (the viewer)"), QStringLiteral("camera"));
-    for (int c = 0; c < int(scenario.characters.size()); ++c) {
-        if (c == character)
-            continue;
-        const QString name = fromUtf8(scenario.characters[std::size_t(c)].name);
-        m_target->addItem(tr("%1's eyes").arg(name), name);
-        m_target->addItem(tr("%1's right hand").arg(name), name + QStringLiteral(":r_radiocarpal"));
-        m_target->addItem(tr("%1's left hand").arg(name), name + QStringLiteral(":l_radiocarpal"));
-    }
-    const QString target = fromUtf8(gaze->target);
-    if (const int known = m_target->findData(target); known >= 0)
-        m_target->setCurrentIndex(known);
-    else
-        m_target->setEditText(target);
+    m_target->showTargets(scenario, character, gaze->target);
     m_influence->setCurrentIndex(std::max(0, m_influence->findData(fromUtf8(gaze->influence).toUpper())));
     m_offset->setValue(gaze->offsetAngle);
     m_direction->setCurrentIndex(std::max(0, m_direction->findData(fromUtf8(gaze->offsetDirection).toUpper())));
@@ -90,9 +71,7 @@ void GazeProperties::emitEdit()
     if (m_refreshing)
         return;
     core::scenario::GazeSpec gaze;
-    // A target picked from the list is its data; one typed is what was typed.
-    const int picked = m_target->findText(m_target->currentText());
-    gaze.target = (picked >= 0 ? m_target->itemData(picked).toString() : m_target->currentText().trimmed()).toStdString();
+    gaze.target = m_target->target();
     gaze.influence = m_influence->currentData().toString().toStdString();
     gaze.offsetAngle = m_offset->value();
     if (gaze.offsetAngle > 0)

@@ -15,6 +15,8 @@ class QDoubleSpinBox;
 
 namespace thespis::editor {
 
+class TargetChoice;
+
 class GazeProperties : public QGroupBox {
     Q_OBJECT
 public:
@@ -24,7 +26,7 @@ public:
     void show(const core::scenario::Scenario& scenario, int character,
               const std::optional<core::scenario::GazeSpec>& gaze, bool editable);
 
-    QComboBox* targetChoice() const { return m_target; }
+    TargetChoice* targetChoice() const { return m_target; }
     QComboBox* influenceChoice() const { return m_influence; }
     QDoubleSpinBox* offsetEdit() const { return m_offset; }
     QComboBox* directionChoice() const { return m_direction; }
@@ -36,7 +38,7 @@ signals:
 private:
     void emitEdit();
 
-    QComboBox* m_target = nullptr;    ///< editable: a typed point or "Name:joint" is taken as is
+    TargetChoice* m_target = nullptr;
     QComboBox* m_influence = nullptr;
     QDoubleSpinBox* m_offset = nullptr;
     QComboBox* m_direction = nullptr;

@@ -20,6 +20,7 @@
 #include "editor/document.h"
 #include "editor/gaze_properties.h"
 #include "editor/idle_properties.h"
+#include "editor/pointing_properties.h"
 #include "editor/qt_conversions.h"
 #include "scene/face_mask.h"
 
@@ -162,6 +163,12 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent)
     connect(m_gaze, &GazeProperties::gazeEditRequested, this, [this](const core::scenario::GazeSpec& gaze) {
         editAction(tr("Change Gaze"), [&](ActionSpec& spec) { spec.gaze = gaze; });
     });
+    m_pointing = new PointingProperties(actionPage);
+    form->addRow(m_pointing);
+    connect(m_pointing, &PointingProperties::pointingEditRequested, this,
+            [this](const std::optional<core::scenario::PointingSpec>& pointing) {
+                editAction(tr("Change Pointing"), [&](ActionSpec& spec) { spec.pointing = pointing; });
+            });
     m_pages->addWidget(actionPage);
     m_characterPage = new CharacterProperties(m_pages);
     m_pages->addWidget(m_characterPage);
@@ -380,6 +387,7 @@ void PropertiesPanel::showAction()
     // A gaze action plays no clip: what it looks at replaces what blends a clip.
     const bool gaze = layer.kind == core::scenario::LayerKind::Gaze;
     m_gaze->show(scenario, m_action->character, gaze ? spec.gaze : std::nullopt, editable);
+    m_pointing->show(scenario, m_action->character, spec.pointing, layer.kind == core::scenario::LayerKind::Body, editable);
     for (QWidget* clipField : {static_cast<QWidget*>(m_clip), static_cast<QWidget*>(m_placement),
                                static_cast<QWidget*>(m_repeat), static_cast<QWidget*>(m_rootMotion),
                                static_cast<QWidget*>(m_mode), static_cast<QWidget*>(m_mask),

@@ -27,6 +27,7 @@ class CharacterProperties;
 class Document;
 class BlinkProperties;
 class GazeProperties;
+class PointingProperties;
 class IdleProperties;
 
 class PropertiesPanel : public QWidget {
@@ -47,6 +48,7 @@ public:
     BlinkProperties* blinkProperties() const { return m_blinks; }
     /// What an action of a gaze layer looks at.
     GazeProperties* gazeProperties() const { return m_gaze; }
+    PointingProperties* pointingProperties() const { return m_pointing; }
 
     QLineEdit* nameEdit() const { return m_name; }
     QComboBox* clipChoice() const { return m_clip; }
@@ -95,6 +97,7 @@ private:
     IdleProperties* m_idle = nullptr;
     BlinkProperties* m_blinks = nullptr;
     GazeProperties* m_gaze = nullptr;
+    PointingProperties* m_pointing = nullptr;
     QLabel* m_maskLabel = nullptr;
     QFormLayout* m_form = nullptr;
 };

@@ -117,6 +117,28 @@ def wave_clip(name, waves, wave_period):
     return clip(name, 30, WAVE_JOINTS, sample, duration)
 
 
+POINT_JOINTS = ["r_shoulder", "r_elbow", "r_radiocarpal"]
+
+
+def point_clip(name, hold):
+    """The right arm rises forward, almost straight, and holds for `hold` seconds before it comes
+    down: the shape of a pointing gesture, which BML's <pointing> (the Stage's pointing layer)
+    turns at the shoulder toward its target."""
+    rise = 0.5
+    duration = rise + hold + rise
+
+    def sample(t):
+        up = smooth(t / rise) * smooth((duration - t) / rise)
+        rotations = [
+            mul(rx(-70.0 * up), rz(-15.0 * up)),  # the upper arm forward and a little out
+            rx(-12.0 * up),                       # the elbow nearly straight
+            rx(8.0 * up),                         # the hand in line with the forearm
+        ]
+        return [c for q in rotations for c in q]
+
+    return clip(name, 30, POINT_JOINTS, sample, duration)
+
+
 NOD_JOINTS = ["vc4", "skullbase"]
 
 
@@ -180,7 +202,7 @@ def modifier(kind, **params):
 
 
 def action(name, clip_name, start, weight, scale=None, mask=None, mode="normalized", modifiers=()):
-    out = {"schema": "Action.3", "name": name, "clip": clip_name, "start": ticks(start)}
+    out = {"schema": "Action.4", "name": name, "clip": clip_name, "start": ticks(start)}
     if modifiers:
         out["modifiers"] = list(modifiers)
     out["weight"] = weight
@@ -229,6 +251,7 @@ def scenario():
             idle_synthesizer("creon_idle", seed=1),
             wave_clip("wave", waves=3, wave_period=0.6),
             nod_clip("nod", nods=2, nod_period=0.8, degrees=12.0),
+            point_clip("point", hold=1.0),
             blink_clip("blink", period=3.2, at=0.4),
             expression_clip("stern", 3, 0.6, 3.0),
         ],
@@ -257,6 +280,8 @@ def scenario():
             # the elbow's bend for unnatural (43°); from PC 30 it keeps it within 10°.
             gesture("greet", "wave", "rightArm", 0.4, 0.5, dependent_joint_filter=True, filter_band=(30, 40)),
             gesture("agree", "nod", "head", 0.25, 0.25),
+            # BML's POINT: <pointing target="Antigone"/> aims it at her.
+            gesture("point", "point", "rightArm", 0.3, 0.4),
         ],
         # What the paper's script has him say (voiceService.activateAction): not on the timeline.
         "speech": [
@@ -302,8 +327,8 @@ def scenario():
     }
     return {
         "format": "thespis-scenario",
-        "version": 10,
-        "schema": "Scenario.10",
+        "version": 11,
+        "schema": "Scenario.11",
         "name": "Antigone, act 1 (demo)",
         "duration": ticks(12.0),
         "masks": [

@@ -1863,6 +1863,14 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>Ready to listen</source>
         <translation>Bereit zum Zuhören</translation>
     </message>
+    <message>
+        <source>the script&apos;s bot</source>
+        <translation>der Bot des Skripts</translation>
+    </message>
+    <message>
+        <source>%1 takes questions: the script handed the conversation over.</source>
+        <translation>%1 beantwortet Fragen: Das Skript hat das Gespräch übergeben.</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::ConversationTranscript</name>
@@ -2504,10 +2512,6 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <translation>Blickt auf</translation>
     </message>
     <message>
-        <source>The camera, a character (its eyes), a joint of one (&quot;Creon:r_radiocarpal&quot;) or a point in metres (&quot;0.5 1.6 2&quot;)</source>
-        <translation>Die Kamera, eine Figur (ihre Augen), ein Gelenk einer Figur („Creon:r_radiocarpal“) oder ein Punkt in Metern („0.5 1.6 2“)</translation>
-    </message>
-    <message>
         <source>The eyes alone</source>
         <translation>Nur die Augen</translation>
     </message>
@@ -2574,22 +2578,6 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source>Toward:</source>
         <translation>Richtung:</translation>
-    </message>
-    <message>
-        <source>The camera (the viewer)</source>
-        <translation>Die Kamera (der Betrachter)</translation>
-    </message>
-    <message>
-        <source>%1&apos;s eyes</source>
-        <translation>Augen von %1</translation>
-    </message>
-    <message>
-        <source>%1&apos;s right hand</source>
-        <translation>Rechte Hand von %1</translation>
-    </message>
-    <message>
-        <source>%1&apos;s left hand</source>
-        <translation>Linke Hand von %1</translation>
     </message>
 </context>
 <context>
@@ -3420,6 +3408,37 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     </message>
 </context>
 <context>
+    <name>thespis::editor::PointingProperties</name>
+    <message>
+        <source>Points at</source>
+        <translation>Zeigt auf</translation>
+    </message>
+    <message>
+        <source>Aims the gesture&apos;s arm at a target while the action plays (BML&apos;s &lt;pointing&gt;)</source>
+        <translation>Richtet den Arm der Geste auf ein Ziel, solange die Aktion spielt (BMLs &lt;pointing&gt;)</translation>
+    </message>
+    <message>
+        <source>Right hand</source>
+        <translation>Rechte Hand</translation>
+    </message>
+    <message>
+        <source>Left hand</source>
+        <translation>Linke Hand</translation>
+    </message>
+    <message>
+        <source>Both hands</source>
+        <translation>Beide Hände</translation>
+    </message>
+    <message>
+        <source>Target:</source>
+        <translation>Ziel:</translation>
+    </message>
+    <message>
+        <source>With:</source>
+        <translation>Mit:</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::PostureChartPanel</name>
     <message>
         <source>The character whose posture at the playhead is charted</source>
@@ -3736,6 +3755,10 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     <message>
         <source>Change Gaze</source>
         <translation>Blick ändern</translation>
+    </message>
+    <message>
+        <source>Change Pointing</source>
+        <translation>Zeigen ändern</translation>
     </message>
 </context>
 <context>
@@ -4360,6 +4383,29 @@ Oder ein BML-Block:
             <numerusform>BML von %1 s bis %2 s eingefügt: %n Sprechtext, %3 Geste(n), %4 Kopfgeste(n), %5 Gesichtslexem(e), %6 Blick(e).</numerusform>
             <numerusform>BML von %1 s bis %2 s eingefügt: %n Sprechtexte, %3 Geste(n), %4 Kopfgeste(n), %5 Gesichtslexem(e), %6 Blick(e).</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::TargetChoice</name>
+    <message>
+        <source>The camera, a character (its eyes), a joint of one (&quot;Creon:r_radiocarpal&quot;) or a point in metres (&quot;0.5 1.6 2&quot;)</source>
+        <translation>Die Kamera, eine Figur (ihre Augen), ein Gelenk einer Figur („Creon:r_radiocarpal“) oder ein Punkt in Metern („0.5 1.6 2“)</translation>
+    </message>
+    <message>
+        <source>The camera (the viewer)</source>
+        <translation>Die Kamera (der Betrachter)</translation>
+    </message>
+    <message>
+        <source>%1&apos;s eyes</source>
+        <translation>Augen von %1</translation>
+    </message>
+    <message>
+        <source>%1&apos;s right hand</source>
+        <translation>Rechte Hand von %1</translation>
+    </message>
+    <message>
+        <source>%1&apos;s left hand</source>
+        <translation>Linke Hand von %1</translation>
     </message>
 </context>
 <context>

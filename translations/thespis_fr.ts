@@ -1863,6 +1863,14 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>Ready to listen</source>
         <translation>Prêt à écouter</translation>
     </message>
+    <message>
+        <source>the script&apos;s bot</source>
+        <translation>le bot du script</translation>
+    </message>
+    <message>
+        <source>%1 takes questions: the script handed the conversation over.</source>
+        <translation>%1 répond aux questions : le script a passé la main à la conversation.</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::ConversationTranscript</name>
@@ -2504,10 +2512,6 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <translation>Regarde</translation>
     </message>
     <message>
-        <source>The camera, a character (its eyes), a joint of one (&quot;Creon:r_radiocarpal&quot;) or a point in metres (&quot;0.5 1.6 2&quot;)</source>
-        <translation>La caméra, un personnage (ses yeux), une articulation d’un personnage (« Creon:r_radiocarpal ») ou un point en mètres (« 0.5 1.6 2 »)</translation>
-    </message>
-    <message>
         <source>The eyes alone</source>
         <translation>Les yeux seuls</translation>
     </message>
@@ -2574,22 +2578,6 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source>Toward:</source>
         <translation>Vers :</translation>
-    </message>
-    <message>
-        <source>The camera (the viewer)</source>
-        <translation>La caméra (le spectateur)</translation>
-    </message>
-    <message>
-        <source>%1&apos;s eyes</source>
-        <translation>Les yeux de %1</translation>
-    </message>
-    <message>
-        <source>%1&apos;s right hand</source>
-        <translation>La main droite de %1</translation>
-    </message>
-    <message>
-        <source>%1&apos;s left hand</source>
-        <translation>La main gauche de %1</translation>
     </message>
 </context>
 <context>
@@ -3420,6 +3408,37 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     </message>
 </context>
 <context>
+    <name>thespis::editor::PointingProperties</name>
+    <message>
+        <source>Points at</source>
+        <translation>Montre du doigt</translation>
+    </message>
+    <message>
+        <source>Aims the gesture&apos;s arm at a target while the action plays (BML&apos;s &lt;pointing&gt;)</source>
+        <translation>Pointe le bras du geste vers une cible pendant que l’action joue (&lt;pointing&gt; de BML)</translation>
+    </message>
+    <message>
+        <source>Right hand</source>
+        <translation>Main droite</translation>
+    </message>
+    <message>
+        <source>Left hand</source>
+        <translation>Main gauche</translation>
+    </message>
+    <message>
+        <source>Both hands</source>
+        <translation>Les deux mains</translation>
+    </message>
+    <message>
+        <source>Target:</source>
+        <translation>Cible :</translation>
+    </message>
+    <message>
+        <source>With:</source>
+        <translation>Avec :</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::PostureChartPanel</name>
     <message>
         <source>The character whose posture at the playhead is charted</source>
@@ -3736,6 +3755,10 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     <message>
         <source>Change Gaze</source>
         <translation>Changer le regard</translation>
+    </message>
+    <message>
+        <source>Change Pointing</source>
+        <translation>Changer le pointage</translation>
     </message>
 </context>
 <context>
@@ -4360,6 +4383,29 @@ Ou un bloc BML :
             <numerusform>BML inséré de %1 s à %2 s : %n réplique, %3 geste(s), %4 geste(s) de tête, %5 lexème(s) facial(aux), %6 regard(s).</numerusform>
             <numerusform>BML inséré de %1 s à %2 s : %n répliques, %3 geste(s), %4 geste(s) de tête, %5 lexème(s) facial(aux), %6 regard(s).</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::TargetChoice</name>
+    <message>
+        <source>The camera, a character (its eyes), a joint of one (&quot;Creon:r_radiocarpal&quot;) or a point in metres (&quot;0.5 1.6 2&quot;)</source>
+        <translation>La caméra, un personnage (ses yeux), une articulation d’un personnage (« Creon:r_radiocarpal ») ou un point en mètres (« 0.5 1.6 2 »)</translation>
+    </message>
+    <message>
+        <source>The camera (the viewer)</source>
+        <translation>La caméra (le spectateur)</translation>
+    </message>
+    <message>
+        <source>%1&apos;s eyes</source>
+        <translation>Les yeux de %1</translation>
+    </message>
+    <message>
+        <source>%1&apos;s right hand</source>
+        <translation>La main droite de %1</translation>
+    </message>
+    <message>
+        <source>%1&apos;s left hand</source>
+        <translation>La main gauche de %1</translation>
     </message>
 </context>
 <context>

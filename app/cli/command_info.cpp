@@ -122,6 +122,10 @@ int runInfo(const CommandSpec& spec, const ParsedArguments& arguments)
                                 action.clip.c_str(), core::ticksToSeconds(action.start), modeName(action.mode),
                                 action.mask.empty() ? "" : ", mask '", action.mask.c_str(), action.mask.empty() ? "" : "'",
                                 placementName(action.placement));
+            for (const scenario::ActionSpec& action : layer.actions)
+                if (action.pointing)
+                    std::printf("    action '%s' points at '%s' (%s)\n", action.name.c_str(),
+                                action.pointing->target.c_str(), action.pointing->hand.c_str());
         }
     }
     if (document->lighting.probe.empty())

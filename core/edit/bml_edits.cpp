@@ -160,6 +160,8 @@ Result<BmlInsertion> insertBml(const Scenario& scenario, const scenario::Scenari
             if (planned.length() > 0 && planned.entry.seconds > 0)
                 action.modifiers.insert(action.modifiers.begin(), stretchTo(planned.length(), planned.entry.seconds));
             action.weight = planned.weight;
+            if (b.kind == BmlBehaviorKind::Pointing) // the Stage aims the entry's arm while it plays
+                action.pointing = scenario::PointingSpec{b.target, motion::pointingHandName(planned.hand)};
             gestures.push_back(std::move(action));
             break;
         }

@@ -3,7 +3,8 @@
 // realizer plays it (speech/bml_plan.h), from the playhead:
 //  - each speech as a speech line with its visemes (edit::insertSpeech);
 //  - gestures and pointing as their gesticon entries' actions, stretched from their start to
-//    their end with ready … relax as fades, on the "Gestures" body layer;
+//    their end with ready … relax as fades, on the "Gestures" body layer; a pointing one keeps
+//    its target and hand (ActionSpec::pointing), so that the Stage aims its arm;
 //  - head nods, shakes and tilts as keyframed clips ("head NOD") on the additive "Head" body layer;
 //  - faceLexemes as clips of their FAPs ("faceLexeme RAISE_BROWS") on the additive "Face lexemes"
 //    face layer;

@@ -49,6 +49,16 @@ Result<PointingHand> parsePointingHand(std::string_view mode)
                      "mode \"" + std::string(mode) + "\" is no hand to point with (RIGHT_HAND, LEFT_HAND, BOTH_HANDS).");
 }
 
+const char* pointingHandName(PointingHand hand)
+{
+    switch (hand) {
+    case PointingHand::Left: return "LEFT_HAND";
+    case PointingHand::Both: return "BOTH_HANDS";
+    case PointingHand::Right: break;
+    }
+    return "RIGHT_HAND";
+}
+
 Result<std::vector<PointingArm>> pointingArms(const anim::Skeleton& skeleton, PointingHand hand)
 {
     std::vector<PointingArm> arms;

@@ -22,6 +22,9 @@ enum class PointingHand { Right, Left, Both };
 /// Reads BML's mode, any case; empty is the right hand. InvalidArgument names what does not read.
 Result<PointingHand> parsePointingHand(std::string_view mode);
 
+/// The mode that parsePointingHand() reads as `hand`: "RIGHT_HAND", "LEFT_HAND", "BOTH_HANDS".
+const char* pointingHandName(PointingHand hand);
+
 /// One arm that points: the joint that turns and the joint whose end aims.
 struct PointingArm {
     int shoulder = -1; ///< the H-Anim shoulder (l_ or r_shoulder)

@@ -158,6 +158,9 @@ Result<void> Stage::setRuntime(scenario::ScenarioRuntime runtime)
         m_performers[i].authoredCue = -1;
         if (m_performers[i].gaze && m_performers[i].gaze->authored)
             m_performers[i].gaze->release = 0.0;
+        m_performers[i].authoredPointing = -1;
+        if (m_performers[i].pointing && m_performers[i].pointing->authored)
+            m_performers[i].pointing.reset();
         cacheAuthored(m_performers[i].body);
         cacheAuthored(m_performers[i].face);
     }
@@ -486,7 +489,8 @@ void Stage::resetLive()
     for (Performer& performer : m_performers) {
         performer.gaze.reset();
         performer.pointing.reset();
-        performer.authoredCue = -1; // the scenario's gaze action playing starts again
+        performer.authoredCue = -1; // the scenario's gaze and pointing actions playing start again
+        performer.authoredPointing = -1;
         for (TrackState* s : {&performer.body, &performer.face}) {
             for (auto& [name, activation] : s->latest)
                 if (activation.schedule)

@@ -217,6 +217,7 @@ private:
         anim::Curve weight;
         double start = 0, end = 0;
         double cutAt = 0, cutFade = 0; // stopPointing(): fading out from cutAt, gone at cutAt + cutFade
+        bool authored = false;         // set by a pointing action of the scenario, not by point()
     };
     struct Performer {
         std::string name;
@@ -226,6 +227,7 @@ private:
         std::optional<GazeSlot> gaze;
         std::optional<PointSlot> pointing;
         int authoredCue = -1; // the scenario's gaze action playing (CharacterRuntime::gaze), or −1
+        int authoredPointing = -1; // the scenario's pointing action playing (CharacterRuntime::pointing), or −1
     };
 
     static void fillLibrary(Performer& performer, scenario::CharacterRuntime& character);
@@ -259,8 +261,10 @@ private:
     /// Where a target is in the scene now, from the poses in `out`; none for the camera when
     /// none is known.
     std::optional<anim::Vec3d> targetPosition(const StageTarget& target, const PoseSet& out) const;
-    /// The pointing layer over the poses of every character (runtime/stage_pointing.cpp).
+    /// The pointing layer over the poses of every character (runtime/stage_gaze.cpp).
     void applyPointing(double seconds, PoseSet& out);
+    /// Starts the scenario's pointing action playing at `seconds`, or ends the one that ended.
+    void followAuthoredPointing(Performer& performer, std::span<const scenario::PointingCue> cues, double seconds);
     /// Where the performer stands: its runtime character's placement (none for one added by hand).
     anim::Placement placement(std::size_t performer) const;
 

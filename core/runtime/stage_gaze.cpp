@@ -27,6 +27,18 @@ Vec3d unplaced(const anim::Placement& placement, const Vec3d& p)
     return anim::rotate(anim::conjugate(toDouble(placement.rotation)), p - toDouble(placement.translation));
 }
 
+// The index of the cue playing at `seconds` (the latest started that has not ended), or −1;
+// `cues` are in start order.
+template <class Cue>
+int cuePlaying(std::span<const Cue> cues, double seconds)
+{
+    int now = -1;
+    for (std::size_t k = 0; k < cues.size() && cues[k].start <= seconds; ++k)
+        if (seconds < cues[k].end)
+            now = int(k);
+    return now;
+}
+
 } // namespace
 
 Result<void> Stage::gaze(const std::string& character, const GazeTarget& target, const motion::GazeSettings& settings,
@@ -88,11 +100,7 @@ Result<void> Stage::aim(Performer& p, const GazeTarget& target, const motion::Ga
 
 void Stage::followAuthoredGaze(Performer& performer, std::span<const scenario::GazeCue> cues, double seconds)
 {
-    // The cue playing now: the latest started that has not ended.
-    int now = -1;
-    for (std::size_t k = 0; k < cues.size() && cues[k].start <= seconds; ++k)
-        if (seconds < cues[k].end)
-            now = int(k);
+    const int now = cuePlaying(cues, seconds);
     if (now == performer.authoredCue)
         return;
     performer.authoredCue = now;
@@ -206,8 +214,28 @@ Result<void> Stage::point(const std::string& character, const GazeTarget& target
         return found.error();
     const double start = ticksToSeconds(at);
     const double end = start + std::max(seconds, 0.0);
-    p.pointing = PointSlot{*found, std::move(arms).value(), std::move(weight), start, end, end, 0};
+    p.pointing = PointSlot{*found, std::move(arms).value(), std::move(weight), start, end, end, 0, false};
     return {};
+}
+
+void Stage::followAuthoredPointing(Performer& performer, std::span<const scenario::PointingCue> cues, double seconds)
+{
+    const int now = cuePlaying(cues, seconds);
+    if (now == performer.authoredPointing)
+        return;
+    performer.authoredPointing = now;
+    if (now < 0) {
+        if (performer.pointing && performer.pointing->authored)
+            performer.pointing.reset();
+        return;
+    }
+    const scenario::PointingCue& cue = cues[std::size_t(now)];
+    // The runtime checked the target and the arms on the scenario's rig; a target this stage
+    // cannot find leaves the arm as it is.
+    auto arms = motion::pointingArms(performer.skeleton, cue.hand);
+    auto found = findTarget(performer, cue.target, "point at");
+    if (arms && found)
+        performer.pointing = PointSlot{*found, std::move(arms).value(), cue.weight, cue.start, cue.end, cue.end, 0, true};
 }
 
 Result<bool> Stage::stopPointing(const std::string& character, Tick at, double fadeSeconds)
@@ -228,6 +256,8 @@ void Stage::applyPointing(double seconds, PoseSet& out)
 {
     for (std::size_t i = 0; i < m_performers.size() && i < out.characters.size(); ++i) {
         Performer& performer = m_performers[i];
+        if (i < m_runtime.characters.size())
+            followAuthoredPointing(performer, m_runtime.characters[i].pointing, seconds);
         if (!performer.pointing || seconds < performer.pointing->start)
             continue;
         const PointSlot& pointing = *performer.pointing;

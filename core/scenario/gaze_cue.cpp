@@ -7,17 +7,26 @@
 
 namespace thespis::core::scenario {
 
+Result<motion::GazeTarget> readStageTarget(const char* field, const std::string& target, const Scenario& scenario)
+{
+    auto read = motion::parseGazeTarget(target);
+    if (!read)
+        return makeError(ErrorCode::InvalidSchedule, std::string(field) + ": " + read.error().message);
+    if (read->kind == motion::GazeTarget::Kind::Joint && !scenario.findCharacter(read->character))
+        return makeError(ErrorCode::InvalidSchedule, std::string(field) + ": the scenario has no character named " +
+                                                         inQuotes(read->character) + ".");
+    return read;
+}
+
 Result<GazeCue> readGazeCue(const GazeSpec& gaze, const Scenario& scenario)
 {
     const auto invalid = [](const char* field, const std::string& what) {
         return makeError(ErrorCode::InvalidSchedule, std::string(field) + ": " + what);
     };
     GazeCue cue;
-    auto target = motion::parseGazeTarget(gaze.target);
+    auto target = readStageTarget("gaze.target", gaze.target, scenario);
     if (!target)
-        return invalid("gaze.target", target.error().message);
-    if (target->kind == motion::GazeTarget::Kind::Joint && !scenario.findCharacter(target->character))
-        return invalid("gaze.target", "the scenario has no character named " + inQuotes(target->character) + ".");
+        return target.error();
     cue.target = *target;
     auto influence = motion::parseGazeInfluence(gaze.influence);
     if (!influence)

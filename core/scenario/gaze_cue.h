@@ -9,6 +9,10 @@
 
 namespace thespis::core::scenario {
 
+/// `target` read as a gaze or pointing target of `scenario`. InvalidSchedule naming `field` for
+/// one that does not read or names no character of the scenario.
+Result<motion::GazeTarget> readStageTarget(const char* field, const std::string& target, const Scenario& scenario);
+
 /// The cue of `gaze` (start and end left at 0). InvalidSchedule naming the field
 /// ("gaze.target: the scenario has no character named "Ismene".") for a target that does not read
 /// or names no character of `scenario`, an influence or an offset direction that does not read.

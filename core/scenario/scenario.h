@@ -128,6 +128,15 @@ struct GazeSpec {
     bool operator==(const GazeSpec&) const = default;
 };
 
+/// Where a body action's gesture points (format 11): BML's <pointing target mode> put on the
+/// timeline. While the action plays, the Stage aims the hand's arm (motion/pointing.h) at
+/// `target`, as far as the action's weight says.
+struct PointingSpec {
+    std::string target = "camera";        ///< as GazeSpec::target
+    std::string hand = "RIGHT_HAND";      ///< RIGHT_HAND, LEFT_HAND, BOTH_HANDS
+    bool operator==(const PointingSpec&) const = default;
+};
+
 /// A gaze action lasts this long before its modifiers (a time stretch gives it its length).
 inline constexpr double kGazeActionSeconds = 1.0;
 
@@ -135,6 +144,7 @@ struct ActionSpec {
     std::string name;
     std::string clip;                     ///< name of a ClipAsset of the character (none on a gaze layer)
     std::optional<GazeSpec> gaze;         ///< on a gaze layer, and only there
+    std::optional<PointingSpec> pointing; ///< on a body layer, and only there
     Tick start = 0;
     std::vector<ModifierSpec> modifiers;
     anim::Curve weight;

@@ -32,7 +32,8 @@ enum Version : int {
     FaceMappingTable = 8,    ///< a character's own face mapping table file ("faceMapping")
     Speech = 9,              ///< characters' speech lines; dominance weight curves
     Gaze = 10,               ///< gaze layers, whose actions look at a target
-    Current = Gaze,
+    Pointing = 11,           ///< body actions that point their gesture's arm at a target
+    Current = Pointing,
 };
 } // namespace format
 

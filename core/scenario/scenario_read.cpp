@@ -169,14 +169,29 @@ GazeSpec readGaze(const json& value, const std::string& path)
     return gaze;
 }
 
+// {"target": "Antigone", "hand": "LEFT_HAND"}: the hand optional. Whether they read is the
+// runtime's to check, as for a gaze.
+PointingSpec readPointing(const json& value, const std::string& path)
+{
+    ObjectReader r(value, path, "");
+    PointingSpec pointing;
+    pointing.target = r.name("target");
+    pointing.hand = r.string("hand", false, pointing.hand);
+    if (!r.extra().empty())
+        fail(path + "." + r.extra().begin().key(), "unknown member of a pointing (known: target, hand)");
+    return pointing;
+}
+
 ActionSpec readAction(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Action.3");
+    ObjectReader r(value, path, "Action.4");
     ActionSpec a;
     a.name = r.name();
     if (const json* gaze = r.find("gaze"))
         a.gaze = readGaze(*gaze, r.fieldPath("gaze"));
     a.clip = a.gaze ? r.string("clip", false) : r.name("clip"); // a gaze action plays no clip
+    if (const json* pointing = r.find("pointing"))
+        a.pointing = readPointing(*pointing, r.fieldPath("pointing"));
     a.start = r.ticks("start", true);
     const json& modifiers = r.array("modifiers", false);
     for (std::size_t i = 0; i < modifiers.size(); ++i)
@@ -513,7 +528,7 @@ NamedMask readMask(const json& value, const std::string& path)
 
 Scenario readScenario(const json& document)
 {
-    ObjectReader r(document, "", "Scenario.10");
+    ObjectReader r(document, "", "Scenario.11");
     r.find("format");  // checked before
     r.find("version");
     Scenario scenario;

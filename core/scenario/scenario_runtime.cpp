@@ -17,6 +17,7 @@
 #include "anim/modifiers.h"
 #include "motion/idle_motion.h"
 #include "scenario/action_modifier.h"
+#include "scenario/action_placement.h"
 #include "scenario/gaze_cue.h"
 #include "scenario/runtime_gestures.h"
 #include "scenario/scenario_character.h"
@@ -363,6 +364,12 @@ private:
             }
         }
 
+        if (spec.pointing && layer.kind != LayerKind::Body)
+            problem(ErrorCode::InvalidSchedule, where + ", pointing: only an action of a body layer points.");
+        else if (spec.pointing)
+            if (auto cue = readPointingCue(*spec.pointing, m_scenario, runtime.skeleton); !cue)
+                problem(cue.error().code, where + ", " + cue.error().message);
+
         // Modifiers, in order: the first wraps the clip.
         for (std::size_t m = 0; source && m < spec.modifiers.size(); ++m) {
             auto wrapped = applyModifier(source, spec.modifiers[m], runtime.skeleton, layer.kind,
@@ -413,51 +420,6 @@ private:
             return nullptr;
         }
         return gazeSpanClip();
-    }
-
-    // Where each action of a body layer plays (ActionSpec::placement): in start order, an action
-    // starting at the character's place (and heading) or where the layer's previous action leaves
-    // the body at its start is moved on the floor so that its first frame's root stands there.
-    static void placeActions(const Layer& layer, std::vector<std::optional<anim::BlendingAction>>& actions)
-    {
-        std::vector<std::size_t> order(actions.size());
-        for (std::size_t a = 0; a < order.size(); ++a)
-            order[a] = a;
-        std::stable_sort(order.begin(), order.end(),
-                         [&](std::size_t a, std::size_t b) { return layer.actions[a].start < layer.actions[b].start; });
-        const anim::BlendingAction* previous = nullptr;
-        std::vector<float> frame;
-        // The root's place on the floor and heading in a source's frame at `seconds`.
-        const auto rootAt = [&](const anim::BlendablePtr& source, double seconds) {
-            const anim::RootElements root = anim::rootElements(*source->layout());
-            frame.assign(source->layout()->floatCount(), 0.0f);
-            source->evaluate(seconds, frame);
-            const anim::Vec3 at{frame[root.translation], 0.0f, frame[root.translation + 2]};
-            const double facing = root.rotation >= 0 ? anim::heading(anim::rotationAt(std::span<const float>(frame), root.rotation)) : 0.0;
-            return std::pair{at, facing};
-        };
-        for (std::size_t a : order) {
-            std::optional<anim::BlendingAction>& action = actions[a];
-            if (!action)
-                continue;
-            const Placement placement = layer.actions[a].placement;
-            if (placement != Placement::World && anim::rootElements(*action->source->layout()).valid) {
-                const anim::TimeDomain domain = action->source->domain();
-                const auto [from, fromHeading] = rootAt(action->source, domain.start);
-                anim::Vec3 to;
-                double toHeading = 0;
-                if (placement == Placement::Continue && previous) {
-                    const anim::TimeDomain before = previous->source->domain();
-                    const double local = std::clamp(before.start + action->start - previous->start, before.start, before.end);
-                    std::tie(to, toHeading) = rootAt(previous->source, local);
-                }
-                const anim::FloorMove move = anim::FloorMove::onto(from, fromHeading, to, toHeading);
-                const auto shift = move.apply(anim::Vec3{});
-                if (auto placed = anim::GlobalTransform::create(action->source, move.rotation(), shift))
-                    action->source = std::move(placed).value();
-            }
-            previous = &*action;
-        }
     }
 
     // Every clip with face values on the face layout (the Stage's face actions), shared with the
@@ -669,6 +631,8 @@ private:
                 addGazeCues(layer, *schedule, runtime.actionIds.back(), m_scenario, runtime.gaze);
                 continue;
             }
+            if (body)
+                addPointingCues(layer, *schedule, runtime.actionIds.back(), m_scenario, runtime.skeleton, runtime.pointing);
             bool& first = body ? firstBody : firstFace;
             anim::BlendingAction nested;
             nested.name = layer.name;

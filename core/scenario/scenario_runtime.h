@@ -18,6 +18,7 @@
 #include "anim/skeleton.h"
 #include "motion/gaze_target.h"
 #include "scenario/clip_file.h"
+#include "scenario/pointing_cue.h"
 #include "scenario/scenario.h"
 #include "util/error.h"
 
@@ -61,6 +62,8 @@ struct CharacterRuntime {
     std::vector<SpeechLine> speech;
     /// What its gaze layers that play look at, by start.
     std::vector<GazeCue> gaze;
+    /// Where its body layers that play point (format 11), by start.
+    std::vector<PointingCue> pointing;
     std::shared_ptr<anim::BlendingSchedule> body;       ///< every body layer, nested
     std::shared_ptr<anim::BlendingSchedule> face;       ///< every face layer (MPEG-4 FAPs), nested
     std::vector<std::shared_ptr<anim::BlendingSchedule>> layers; ///< per Layer, same order

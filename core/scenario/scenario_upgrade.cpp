@@ -147,6 +147,19 @@ static Result<void> upgradeV9toV10(nlohmann::json& document)
     return {};
 }
 
+// 10 → 11: body actions may point their gesture's arm at a target ("pointing"); nothing else
+// changed, so only the scenario's and the actions' schemas are new.
+static Result<void> upgradeV10toV11(nlohmann::json& document)
+{
+    renameSchema(document, "Scenario.10", "Scenario.11");
+    forEachIn(document, "characters", [](nlohmann::json& character) {
+        forEachIn(character, "layers", [](nlohmann::json& layer) {
+            forEachIn(layer, "actions", [](nlohmann::json& action) { renameSchema(action, "Action.3", "Action.4"); });
+        });
+    });
+    return {};
+}
+
 std::span<const UpgradeStep> upgradeSteps()
 {
     static constexpr UpgradeStep steps[] = {
@@ -159,6 +172,7 @@ std::span<const UpgradeStep> upgradeSteps()
         {format::Blinks, "face mapping tables", &upgradeV7toV8},
         {format::FaceMappingTable, "speech lines", &upgradeV8toV9},
         {format::Speech, "gaze layers", &upgradeV9toV10},
+        {format::Gaze, "pointing actions", &upgradeV10toV11},
     };
     return steps;
 }

@@ -147,7 +147,7 @@ ojson writeModifier(const ModifierSpec& m)
 ojson writeAction(const ActionSpec& a)
 {
     ojson out = ojson::object();
-    out["schema"] = "Action.3";
+    out["schema"] = "Action.4";
     out["name"] = a.name;
     if (!a.clip.empty() || !a.gaze)
         out["clip"] = a.clip;
@@ -161,6 +161,8 @@ ojson writeAction(const ActionSpec& a)
             gaze["offsetDirection"] = a.gaze->offsetDirection;
         out["gaze"] = std::move(gaze);
     }
+    if (a.pointing)
+        out["pointing"] = ojson{{"target", a.pointing->target}, {"hand", a.pointing->hand}};
     out["start"] = a.start;
     if (!a.modifiers.empty()) {
         ojson modifiers = ojson::array();
@@ -437,7 +439,7 @@ ojson writeScenario(const Scenario& scenario)
     ojson out = ojson::object();
     out["format"] = FormatName;
     out["version"] = int(format::Current);
-    out["schema"] = "Scenario.10";
+    out["schema"] = "Scenario.11";
     out["name"] = scenario.name;
     out["duration"] = scenario.duration;
     ojson masks = ojson::array();

@@ -213,6 +213,19 @@ void bindDocument(py::module_& m)
             return "<thespis.GazeSpec at '" + g.target + "' (" + g.influence + ")>";
         });
 
+    py::class_<core::scenario::PointingSpec>(m, "PointingSpec",
+                                             "Where a body action's gesture points its arm (format 11).")
+        .def(py::init([](std::string target, std::string hand) {
+                 return core::scenario::PointingSpec{std::move(target), std::move(hand)};
+             }),
+             "target"_a = "camera", "hand"_a = "RIGHT_HAND")
+        .def_readwrite("target", &core::scenario::PointingSpec::target, "As GazeSpec.target.")
+        .def_readwrite("hand", &core::scenario::PointingSpec::hand, "RIGHT_HAND, LEFT_HAND or BOTH_HANDS.")
+        .def("__eq__", [](const core::scenario::PointingSpec& a, const core::scenario::PointingSpec& b) { return a == b; })
+        .def("__repr__", [](const core::scenario::PointingSpec& p) {
+            return "<thespis.PointingSpec at '" + p.target + "' (" + p.hand + ")>";
+        });
+
     py::class_<ActionSpec> action(m, "ActionSpec", "An action of a layer: which clip, when (ticks), how it blends.");
     action
         .def(py::init([](std::string name, std::string clipName, core::Tick start) {
@@ -226,6 +239,8 @@ void bindDocument(py::module_& m)
         .def_readwrite("name", &ActionSpec::name)
         .def_readwrite("clip", &ActionSpec::clip, "Name of a ClipAsset of the character.")
         .def_readwrite("gaze", &ActionSpec::gaze, "On a gaze layer: what it looks at (a GazeSpec); None elsewhere.")
+        .def_readwrite("pointing", &ActionSpec::pointing,
+                       "On a body layer: where its gesture's arm points (a PointingSpec); None when it does not.")
         .def_readwrite("start", &ActionSpec::start, "Start time in ticks (thespis.TICKS_PER_SECOND per second).")
         .def_property(
             "start_seconds", [](const ActionSpec& a) { return core::ticksToSeconds(a.start); },

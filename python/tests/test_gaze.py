@@ -115,3 +115,16 @@ def test_bml_goes_on_the_timeline_and_a_gaze_layer_plays_from_the_scenario():
 
 def gaze_layer(scenario):
     return next(layer for layer in scenario.characters[0].layers if layer.name == "Gaze")
+
+
+def test_a_bml_pointing_keeps_its_target_on_the_timeline():
+    scenario = thespis.load_scenario(demo_scenario())
+    runtime = thespis.build_runtime(scenario, demo_scenario().parent)
+    said = thespis.speech.speak('<bml id="b2"><pointing id="p1" target="Antigone" mode="LEFT_HAND"/></bml>')
+    thespis.speech.insert_bml(scenario, runtime, "Creon", said, at=2.0).apply(scenario)
+    creon = next(c for c in scenario.characters if c.name == "Creon")
+    point = next(layer for layer in creon.layers if layer.name == "Gestures").actions[-1]
+    assert point.clip == "point" and point.pointing == thespis.PointingSpec("Antigone", "LEFT_HAND")
+    # Saved and read back it points the same.
+    again = next(c for c in thespis.parse_scenario(thespis.serialize_scenario(scenario)).characters if c.name == "Creon")
+    assert next(layer for layer in again.layers if layer.name == "Gestures").actions[-1].pointing == point.pointing

@@ -187,7 +187,7 @@ def test_missing_scenario_file(tmp_path):
 
 def test_demo_lists_gestures_and_markers(demo):
     creon = demo.find_character("Creon")
-    assert [g.name for g in creon.gestures] == ["greet", "agree"]
+    assert [g.name for g in creon.gestures] == ["greet", "agree", "point"]
     greet = creon.find_gesture("greet")
     assert greet == creon.gestures[0]
     assert (greet.clip, greet.mask) == ("wave", "rightArm")

@@ -75,6 +75,20 @@ def test_speak_bml_puts_every_behaviour_on_its_layer(tmp_path):
     assert cli("validate", out).strip() != ""
 
 
+def test_speak_bml_keeps_where_a_pointing_gesture_points(tmp_path):
+    block = tmp_path / "point.xml"
+    block.write_text('<bml id="show"><pointing id="p1" target="Antigone" mode="RIGHT_HAND"/></bml>')
+    out = tmp_path / "pointed.thespis"
+    said = cli("speak", RESOURCES / "demo.thespis", "--character", "Creon", "--bml", block, "--at", 1.5,
+               "--scenario-out", out)
+    assert "1 gesture(s)" in said
+    point = layers_of(out, "Creon")["Gestures"]["actions"][-1]
+    assert point["clip"] == "point" and point["start"] == int(1.5 * TICKS)
+    assert point["pointing"] == {"target": "Antigone", "hand": "RIGHT_HAND"}
+    assert "action 'p1 point' points at 'Antigone' (RIGHT_HAND)" in cli("info", out)
+    assert cli("validate", out).strip() != ""
+
+
 def test_bml_errors_name_the_line_and_column(tmp_path):
     block = tmp_path / "bad.xml"
     block.write_text('<bml id="b">\n  <gesture id="g1" lexeme="JUGGLE"/>\n</bml>\n')

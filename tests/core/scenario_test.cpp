@@ -616,7 +616,7 @@ TEST(ScenarioIo, UnknownFieldWithAnEmptyNameSurvives)
 TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 {
     const std::string text = serializeScenario(Scenario{});
-    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 10,\n  \"schema\": \"Scenario.10\"", 0), 0u)
+    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 11,\n  \"schema\": \"Scenario.11\"", 0), 0u)
         << text;
     auto back = parseScenario(text);
     ASSERT_TRUE(back.ok());
@@ -629,12 +629,12 @@ TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 TEST(ScenarioIo, RefusesNewerVersion)
 {
     json doc = minimalDocument();
-    doc["version"] = 11;
+    doc["version"] = 12;
     auto result = parseJson(doc);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error().code, ErrorCode::NewerVersion);
     EXPECT_EQ(result.error().message,
-              "This scenario was saved by a newer Thespis (format 11). Update Thespis to open it.");
+              "This scenario was saved by a newer Thespis (format 12). Update Thespis to open it.");
 
     doc["version"] = 18446744073709551615ull;
     result = parseJson(doc);
@@ -774,7 +774,7 @@ TEST(ScenarioIo, MalformedFieldsAreNamed)
         {"layer not an object", [&](json& d) { d["characters"][0]["layers"][0] = 7; },
          "characters[0].layers[0]: expected an object"},
         {"wrong schema", [&](json& d) { action(d)["schema"] = "Action.7"; },
-         "characters[0].layers[0].actions[0].schema: expected \"Action.3\""},
+         "characters[0].layers[0].actions[0].schema: expected \"Action.4\""},
         {"unknown placement", [&](json& d) { action(d)["placement"] = "elsewhere"; },
          "characters[0].layers[0].actions[0].placement: expected \"world\", \"character\" or \"continue\""},
         {"root motion not a flag", [&](json& d) { action(d)["modifiers"][0]["rootMotion"] = 1; },

@@ -163,7 +163,7 @@ TEST(SpeechPlan, UnknownGesturesAreNamedWithTheirPlace)
     auto inserted = core::edit::insertSpeech(scenario, 0, lineOf(job, 0), job.visemeCues, job.gestureCues);
     ASSERT_FALSE(inserted.ok());
     EXPECT_EQ(inserted.error().message,
-              "line 1, column 7: the gesture \"juggle\" is not in Creon's gesticon (it has: greet, agree).");
+              "line 1, column 7: the gesture \"juggle\" is not in Creon's gesticon (it has: greet, agree, point).");
 }
 
 TEST(SpeechPlan, InsertIsOneStepThatUndoes)

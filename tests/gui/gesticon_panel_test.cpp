@@ -127,7 +127,7 @@ void GesticonPanelTest::listsEachCharactersGestures()
 
     QCOMPARE(panel.currentCharacter(), 0);
     QCOMPARE(panel.characterCombo()->currentText(), QStringLiteral("Creon"));
-    QCOMPARE(model.rowCount(), 2);
+    QCOMPARE(model.rowCount(), 3);
     QCOMPARE(model.columnCount(), 9);
     QCOMPARE(model.headerData(GesticonModel::MaskColumn, Qt::Horizontal).toString(), QStringLiteral("Body part"));
     QCOMPARE(cell(model, 0, GesticonModel::NameColumn), QStringLiteral("greet"));
@@ -147,7 +147,10 @@ void GesticonPanelTest::listsEachCharactersGestures()
              Qt::Unchecked);
     QVERIFY(model.flags(model.index(1, GesticonModel::FilterColumn)) & Qt::ItemIsUserCheckable);
     QVERIFY(model.flags(model.index(1, GesticonModel::NameColumn)) & Qt::ItemIsEditable);
-    QCOMPARE(model.clipNames(), QStringList({"creon_idle", "wave", "nod", "blink", "stern"}));
+    QCOMPARE(cell(model, 2, GesticonModel::NameColumn), QStringLiteral("point")); // BML's POINT
+    QCOMPARE(cell(model, 2, GesticonModel::ClipColumn), QStringLiteral("point"));
+    QCOMPARE(cell(model, 2, GesticonModel::MaskColumn), QStringLiteral("rightArm"));
+    QCOMPARE(model.clipNames(), QStringList({"creon_idle", "wave", "nod", "point", "blink", "stern"}));
     QCOMPARE(model.maskNames(), QStringList({"head", "leftArm", "rightArm"}));
     // The first gesture is selected, so Preview / Rename / Remove have something to act on.
     QCOMPARE(panel.selectedRows(), QList<int>{0});
@@ -174,33 +177,35 @@ void GesticonPanelTest::everyEditIsOneUndoStepAndUndoAllRestores()
     QVERIFY(QTest::qWaitForWindowExposed(&panel));
     GesticonModel& model = *panel.model();
     const auto gestures = [&] { return document->scenario().characters[0].gestures; };
+    const int n = model.rowCount(); // the demo's gestures: greet, agree, point
+    QCOMPARE(n, 3);
 
     // Add: the first clip, the whole body, a unique name; selected.
     panel.addGesture();
     QCOMPARE(undo.count(), 1);
     QCOMPARE(undo.text(0), QStringLiteral("Add Gesture"));
-    QCOMPARE(model.rowCount(), 3);
-    QCOMPARE(gestures()[2].name, std::string("gesture"));
-    QCOMPARE(gestures()[2].clip, std::string("creon_idle"));
-    QVERIFY(gestures()[2].mask.empty());
-    QCOMPARE(cell(model, 2, GesticonModel::MaskColumn), QStringLiteral("Whole body"));
-    QCOMPARE(panel.selectedRows(), QList<int>{2});
+    QCOMPARE(model.rowCount(), n + 1);
+    QCOMPARE(gestures()[n].name, std::string("gesture"));
+    QCOMPARE(gestures()[n].clip, std::string("creon_idle"));
+    QVERIFY(gestures()[n].mask.empty());
+    QCOMPARE(cell(model, n, GesticonModel::MaskColumn), QStringLiteral("Whole body"));
+    QCOMPARE(panel.selectedRows(), QList<int>{n});
     panel.addGesture();
     QCOMPARE(undo.count(), 2);
-    QCOMPARE(gestures()[3].name, std::string("gesture 2"));
-    QCOMPARE(panel.selectedRows(), QList<int>{3});
+    QCOMPARE(gestures()[n + 1].name, std::string("gesture 2"));
+    QCOMPARE(panel.selectedRows(), QList<int>{n + 1});
 
     // Rename through the model: one step.
-    QVERIFY(model.setData(model.index(2, GesticonModel::NameColumn), QStringLiteral("beckon")));
+    QVERIFY(model.setData(model.index(n, GesticonModel::NameColumn), QStringLiteral("beckon")));
     QCOMPARE(undo.count(), 3);
     QCOMPARE(undo.text(2), QStringLiteral("Rename Gesture"));
-    QCOMPARE(gestures()[2].name, std::string("beckon"));
-    QCOMPARE(cell(model, 2, GesticonModel::NameColumn), QStringLiteral("beckon"));
+    QCOMPARE(gestures()[n].name, std::string("beckon"));
+    QCOMPARE(cell(model, n, GesticonModel::NameColumn), QStringLiteral("beckon"));
 
     // Renaming to a name the character has is refused: nothing changes, the message says why.
     const core::scenario::Scenario beforeRefusal = document->scenario();
     QSignalSpy failed(&model, &GesticonModel::editFailed);
-    QVERIFY(!model.setData(model.index(2, GesticonModel::NameColumn), QStringLiteral("greet")));
+    QVERIFY(!model.setData(model.index(n, GesticonModel::NameColumn), QStringLiteral("greet")));
     QCOMPARE(failed.count(), 1);
     QVERIFY(document->scenario() == beforeRefusal);
     QCOMPARE(undo.count(), 3);
@@ -208,8 +213,8 @@ void GesticonPanelTest::everyEditIsOneUndoStepAndUndoAllRestores()
     QVERIFY(panel.findChild<QLabel*>(QStringLiteral("gesticonMessage"))->isVisible());
     saveScreenshot(&panel, QStringLiteral("gesticon_panel_refused.png"));
     // A clip the character does not have and a mask the scenario does not have are refused too.
-    QVERIFY(!model.setData(model.index(2, GesticonModel::ClipColumn), QStringLiteral("antigone_idle")));
-    QVERIFY(!model.setData(model.index(2, GesticonModel::MaskColumn), QStringLiteral("tail")));
+    QVERIFY(!model.setData(model.index(n, GesticonModel::ClipColumn), QStringLiteral("antigone_idle")));
+    QVERIFY(!model.setData(model.index(n, GesticonModel::MaskColumn), QStringLiteral("tail")));
     QVERIFY(document->scenario() == beforeRefusal);
     QCOMPARE(undo.count(), 3);
 
@@ -249,57 +254,57 @@ void GesticonPanelTest::everyEditIsOneUndoStepAndUndoAllRestores()
     QCOMPARE(undo.count(), 7);
 
     // Clip and body part.
-    QVERIFY(model.setData(model.index(3, GesticonModel::ClipColumn), QStringLiteral("nod")));
-    QVERIFY(model.setData(model.index(3, GesticonModel::MaskColumn), QStringLiteral("head")));
-    QCOMPARE(gestures()[3].clip, std::string("nod"));
-    QCOMPARE(gestures()[3].mask, std::string("head"));
+    QVERIFY(model.setData(model.index(n + 1, GesticonModel::ClipColumn), QStringLiteral("nod")));
+    QVERIFY(model.setData(model.index(n + 1, GesticonModel::MaskColumn), QStringLiteral("head")));
+    QCOMPARE(gestures()[n + 1].clip, std::string("nod"));
+    QCOMPARE(gestures()[n + 1].mask, std::string("head"));
     QCOMPARE(undo.count(), 9);
 
     // How speech fits it to its words: held at its stroke, marked 0.4 s into the clip; "none" below 0.
-    QCOMPARE(cell(model, 3, GesticonModel::StrokeColumn), QStringLiteral("none"));
-    QVERIFY(model.setData(model.index(3, GesticonModel::HoldColumn), Qt::Checked, Qt::CheckStateRole));
-    QVERIFY(model.setData(model.index(3, GesticonModel::StrokeColumn), 0.4));
-    QVERIFY(gestures()[3].hold);
-    QCOMPARE(gestures()[3].stroke, 0.4);
+    QCOMPARE(cell(model, n + 1, GesticonModel::StrokeColumn), QStringLiteral("none"));
+    QVERIFY(model.setData(model.index(n + 1, GesticonModel::HoldColumn), Qt::Checked, Qt::CheckStateRole));
+    QVERIFY(model.setData(model.index(n + 1, GesticonModel::StrokeColumn), 0.4));
+    QVERIFY(gestures()[n + 1].hold);
+    QCOMPARE(gestures()[n + 1].stroke, 0.4);
     QCOMPARE(undo.text(10), QStringLiteral("Mark Gesture Stroke"));
-    QVERIFY(model.setData(model.index(3, GesticonModel::StrokeColumn), -0.5));
-    QCOMPARE(gestures()[3].stroke, -1.0);
-    QVERIFY(!model.setData(model.index(3, GesticonModel::StrokeColumn), QStringLiteral("soon")));
+    QVERIFY(model.setData(model.index(n + 1, GesticonModel::StrokeColumn), -0.5));
+    QCOMPARE(gestures()[n + 1].stroke, -1.0);
+    QVERIFY(!model.setData(model.index(n + 1, GesticonModel::StrokeColumn), QStringLiteral("soon")));
     for (int i = 0; i < 3; ++i)
         undo.undo();
     QCOMPARE(undo.count(), 12);
-    QVERIFY(!gestures()[3].hold);
+    QVERIFY(!gestures()[n + 1].hold);
 
     // Remove two selected gestures: one step.
     panel.table()->clearSelection();
-    panel.table()->selectionModel()->select(model.index(2, 0),
+    panel.table()->selectionModel()->select(model.index(n, 0),
                                             QItemSelectionModel::Select | QItemSelectionModel::Rows);
-    panel.table()->selectionModel()->select(model.index(3, 0),
+    panel.table()->selectionModel()->select(model.index(n + 1, 0),
                                             QItemSelectionModel::Select | QItemSelectionModel::Rows);
-    QCOMPARE(panel.selectedRows(), QList<int>({2, 3}));
+    QCOMPARE(panel.selectedRows(), QList<int>({n, n + 1}));
     panel.removeSelected();
     QCOMPARE(undo.count(), 10); // the undone hold and stroke edits are gone from the stack
     // "Remove 2 Gestures" once thespis_en.ts has the plural forms of the new strings.
     QVERIFY2(undo.text(9).startsWith(QStringLiteral("Remove 2 Gesture")), qPrintable(undo.text(8)));
-    QCOMPARE(model.rowCount(), 2);
-    QCOMPARE(gestures().size(), std::size_t(2));
+    QCOMPARE(model.rowCount(), n);
+    QCOMPARE(gestures().size(), std::size_t(n));
     QCOMPARE(gestures()[0].name, std::string("greet"));
     QCOMPARE(gestures()[1].name, std::string("agree"));
-    QCOMPARE(panel.selectedRows(), QList<int>{1}); // the row before the removed ones
+    QCOMPARE(panel.selectedRows(), QList<int>{n - 1}); // the row before the removed ones
 
     // Undo brings the removed rows back, then undo everything: the document as it was.
     undo.undo();
-    QCOMPARE(model.rowCount(), 4);
-    QCOMPARE(cell(model, 2, GesticonModel::NameColumn), QStringLiteral("beckon"));
+    QCOMPARE(model.rowCount(), n + 2);
+    QCOMPARE(cell(model, n, GesticonModel::NameColumn), QStringLiteral("beckon"));
     while (undo.canUndo())
         undo.undo();
     QVERIFY(document->scenario() == original);
-    QCOMPARE(model.rowCount(), 2);
+    QCOMPARE(model.rowCount(), n);
     QCOMPARE(cell(model, 0, GesticonModel::FadeInColumn), QStringLiteral("0.40"));
     QVERIFY(!document->isModified());
     while (undo.canRedo())
         undo.redo();
-    QCOMPARE(gestures().size(), std::size_t(2));
+    QCOMPARE(gestures().size(), std::size_t(n));
     QCOMPARE(gestures()[0].fadeIn, core::secondsToTicks(0.75));
 }
 

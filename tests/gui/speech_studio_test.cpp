@@ -22,6 +22,8 @@
 
 #include "editor/document.h"
 #include "editor/gaze_properties.h"
+#include "editor/pointing_properties.h"
+#include "editor/target_choice.h"
 #include "editor/properties_panel.h"
 #include "editor/playback_clock.h"
 #include "editor/session.h"
@@ -61,6 +63,7 @@ private slots:
     void visemeTableEditsAndRefuses();
     void badTagsAreNamedWithLineAndColumn();
     void bmlInsertsSpeechGesturesAndAGazeWithItsTargetPicker();
+    void aBmlPointingKeepsItsTargetWhichThePropertiesEdit();
 
 private:
     editor::SpeechPanel* panel() { return m_window->speech(); }
@@ -313,6 +316,55 @@ void SpeechStudioTest::bmlInsertsSpeechGesturesAndAGazeWithItsTargetPicker()
     QCOMPARE(document.scenario().characters[std::size_t(creon)].layers[std::size_t(gazeLayer)].actions[0].gaze->target,
              std::string("camera"));
 
+    document.undoStack()->undo();
+    document.undoStack()->undo();
+    QVERIFY(document.scenario() == original);
+}
+
+void SpeechStudioTest::aBmlPointingKeepsItsTargetWhichThePropertiesEdit()
+{
+    editor::Document& document = *m_window->document();
+    const auto original = document.scenario();
+    const int creon = characterIndex(document, "Creon");
+    panel()->setCurrentCharacter(creon);
+    m_window->clock()->seek(core::secondsToTicks(3.0));
+    panel()->setText(QStringLiteral("<bml id=\"b2\"><pointing id=\"p1\" target=\"Antigone\"/></bml>"));
+    panel()->insert();
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isBusy(), 20000);
+    QVERIFY2(panel()->message().contains(QStringLiteral("1 gesture")), qPrintable(panel()->message()));
+
+    // Selected, the pointing gesture shows where it points; Creon's arm is out toward Antigone.
+    const auto& layers = document.scenario().characters[std::size_t(creon)].layers;
+    const int gestures = int(std::find_if(layers.begin(), layers.end(), [](const auto& l) { return l.name == "Gestures"; }) -
+                             layers.begin());
+    QVERIFY(gestures < int(layers.size()));
+    const int action = int(layers[std::size_t(gestures)].actions.size()) - 1;
+    QCOMPARE(layers[std::size_t(gestures)].actions[std::size_t(action)].clip, std::string("point"));
+    m_window->timeline()->selectActions({{creon, gestures, action}});
+    editor::PointingProperties* pointing = m_window->properties()->pointingProperties();
+    QTRY_VERIFY(pointing->isVisible());
+    QVERIFY(pointing->isChecked());
+    QCOMPARE(pointing->targetChoice()->currentData().toString(), QStringLiteral("Antigone"));
+    QCOMPARE(pointing->handChoice()->currentData().toString(), QStringLiteral("RIGHT_HAND"));
+    QVERIFY(!m_window->properties()->gazeProperties()->isVisible());
+    m_window->clock()->seek(core::secondsToTicks(4.0)); // the arm held out
+    raiseDock(m_window->properties());
+    QTest::qWait(200);
+    saveScreenshot(m_window.get(), QStringLiteral("studio_bml_pointing.png"));
+
+    // The left hand instead, then no pointing: each one undo step.
+    const int left = pointing->handChoice()->findData(QStringLiteral("LEFT_HAND"));
+    pointing->handChoice()->setCurrentIndex(left);
+    emit pointing->handChoice()->activated(left);
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Change Pointing"));
+    const auto pointOf = [&] {
+        return document.scenario().characters[std::size_t(creon)].layers[std::size_t(gestures)].actions[std::size_t(action)].pointing;
+    };
+    QCOMPARE(pointOf()->hand, std::string("LEFT_HAND"));
+    pointing->setChecked(false);
+    QVERIFY(!pointOf());
+    document.undoStack()->undo();
+    QCOMPARE(pointOf()->hand, std::string("LEFT_HAND"));
     document.undoStack()->undo();
     document.undoStack()->undo();
     QVERIFY(document.scenario() == original);
