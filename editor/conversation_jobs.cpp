@@ -18,19 +18,23 @@ std::string LoadBotJob::title() const { return "Loading the bot"; }
 
 core::Result<void> LoadBotJob::validate() const
 {
-    if (paths.empty())
+    if (paths.empty() && !given)
         return core::makeError(core::ErrorCode::InvalidArgument, "Choose a bot folder or AIML files to load.");
     return {};
 }
 
 core::Result<void> LoadBotJob::run(core::JobContext& context)
 {
-    context.beginStage("Reading the bot's files");
     auto start = std::chrono::steady_clock::now();
-    auto read = core::dialogue::loadBot(paths);
-    if (!read)
-        return read.error();
-    loaded = std::move(read).value();
+    if (given) {
+        loaded.bot = given;
+    } else {
+        context.beginStage("Reading the bot's files");
+        auto read = core::dialogue::loadBot(paths);
+        if (!read)
+            return read.error();
+        loaded = std::move(read).value();
+    }
     loadSeconds = secondsSince(start);
     if (context.stopRequested())
         return core::cancelledError(title());

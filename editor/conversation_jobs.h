@@ -29,6 +29,8 @@ namespace thespis::editor {
 /// grammar its recogniser will listen with, for the grammar inspector.
 struct LoadBotJob final : core::Job {
     std::vector<std::filesystem::path> paths;
+    /// A bot loaded already (one a script handed over): only its grammar is made.
+    std::shared_ptr<const core::dialogue::Bot> given;
 
     // After run():
     core::dialogue::LoadedBot loaded;

@@ -373,6 +373,42 @@ void ConversationPanel::loadBot(const QStringList& paths)
     updateEnabled();
 }
 
+bool ConversationPanel::takeOver(const std::shared_ptr<core::runtime::InteractionService>& from)
+{
+    if (!from || from == m_service || !m_document || !m_service || m_prepare->isRunning())
+        return false;
+    const auto& characters = m_document->scenario().characters;
+    for (int c = 0; c < int(characters.size()); ++c) {
+        const std::string& name = characters[std::size_t(c)].name;
+        std::shared_ptr<const core::dialogue::Bot> bot = from->bot(name);
+        auto state = from->saveState(name);
+        if (!bot || !state)
+            continue;
+        // The script's service lets go first: both turn the same character's gaze.
+        syncClock();
+        from->handBack(name);
+        if (isConversing())
+            handBack();
+        m_bot = std::move(bot);
+        m_recogniser.reset();
+        m_botName = tr("the script's bot");
+        setCurrentCharacter(c);
+        if (!startConversing(*state, tr("%1 takes questions: the script handed the conversation over.").arg(fromUtf8(name))))
+            return false;
+        // Its listening grammar and recogniser, as for a bot loaded here.
+        auto job = std::make_unique<LoadBotJob>();
+        job->given = m_bot;
+        m_preparing = Preparing::Bot;
+        if (auto started = m_prepare->start(std::move(job)); !started)
+            m_progress->failed(started.error());
+        else
+            m_progress->started();
+        updateEnabled();
+        return true;
+    }
+    return false;
+}
+
 void ConversationPanel::onPrepared(const core::Result<void>& result)
 {
     const bool cancelled = !result && result.error().code == core::ErrorCode::Cancelled;
@@ -412,7 +448,9 @@ void ConversationPanel::onPrepared(const core::Result<void>& result)
         updateEnabled();
         return;
     }
-    const std::string who = m_conversing;
+    // A new bot restarts the conversation; the bot a script handed over goes on with it.
+    const bool newBot = job->loaded.bot != m_bot;
+    const std::string who = newBot ? m_conversing : std::string();
     if (!who.empty()) {
         m_service->handBack(who);
         m_conversing.clear();

@@ -89,6 +89,11 @@ public:
     bool isBusy() const;
     bool isAnswering() const;
 
+    /// Continues here the conversation of the first character that `from` (a script's service)
+    /// converses with: the character, the bot and what the visitor told it move to this dock,
+    /// whose recogniser then opens for that bot. False when `from` converses with no one.
+    bool takeOver(const std::shared_ptr<core::runtime::InteractionService>& from);
+
     /// Hands the chosen character to the conversation / gives it back.
     bool converse();
     void handBack();

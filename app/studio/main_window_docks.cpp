@@ -121,6 +121,13 @@ void MainWindow::createScriptDock()
     m_script->setTrustCheck([this] { return confirmScriptTrust(); });
     connect(m_script, &editor::ScriptPanel::finished, this, [this](const QString& message) {
         statusBar()->showMessage(message.isEmpty() ? tr("The script ran to its end.") : tr("Script: %1").arg(message), 8000);
+        // A script that hands a character to a conversation (the demo's act ends so) goes on in
+        // the Conversation dock, where the visitor types or speaks.
+        if (m_conversation->takeOver(m_script->interactionService()))
+            if (auto* dock = qobject_cast<QDockWidget*>(m_conversation->parentWidget())) {
+                dock->show();
+                dock->raise();
+            }
     });
 #endif
 }

@@ -51,6 +51,7 @@ public:
 
     const ConversationState& state() const { return m_state; }
     const Bot& bot() const { return *m_bot; }
+    const std::shared_ptr<const Bot>& sharedBot() const { return m_bot; }
     /// Categories learned in this conversation (<learn>/<learnf>), with their file given as "learned".
     const std::vector<Category>& learnedCategories() const { return m_learned.categories; }
     void setLimits(const ConversationLimits& limits) { m_limits = limits; }

@@ -86,6 +86,13 @@ bool InteractionService::conversing(const std::string& character) const
     return find(character) != nullptr;
 }
 
+std::shared_ptr<const dialogue::Bot> InteractionService::bot(const std::string& character) const
+{
+    const std::lock_guard lock(m_mutex);
+    const Visit* visit = find(character);
+    return visit ? visit->conversation.sharedBot() : nullptr;
+}
+
 Result<void> InteractionService::visitorSpeaks(const std::string& character)
 {
     const std::lock_guard lock(m_mutex);

@@ -68,6 +68,8 @@ public:
     /// when it was not conversing.
     bool handBack(const std::string& character);
     bool conversing(const std::string& character) const;
+    /// The bot `character` converses with; null when it does not.
+    std::shared_ptr<const dialogue::Bot> bot(const std::string& character) const;
 
     /// The visitor started speaking: the character listens visibly (its eyes on the visitor as a
     /// listener's, a small nod).

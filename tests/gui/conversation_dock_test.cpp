@@ -35,6 +35,7 @@
 #include "editor/conversation_transcript.h"
 #include "editor/document.h"
 #include "editor/playback_clock.h"
+#include "editor/script_panel.h"
 #include "editor/session.h"
 #include "editor/stage_audio.h"
 #include "editor/translations.h"
@@ -97,6 +98,7 @@ private slots:
     void speechTheGrammarDoesNotCoverIsNotUnderstood();
     void handBackAndTheConversationsState();
     void aBadAimlFileIsNamedWithItsLine();
+    void aScriptsHandOverGoesOnInTheDock();
 
 private:
     editor::ConversationPanel* panel() { return m_window->conversation(); }
@@ -397,6 +399,45 @@ void ConversationDockTest::aBadAimlFileIsNamedWithItsLine()
     QTRY_VERIFY_WITH_TIMEOUT(!panel()->isAnswering(), 20000);
     QCOMPARE(lineText(0, ConversationTranscript::DetailColumn), QStringLiteral("bad.aiml:2"));
     saveScreenshot(panel(), QStringLiteral("conversation_bad_aiml.png"));
+}
+
+void ConversationDockTest::aScriptsHandOverGoesOnInTheDock()
+{
+    // The demo's script ends so: Antigone is handed to a conversation with her bot. The script
+    // tells her its name first; the dock takes her over with what she was told.
+    auto* script = m_window->findChild<editor::ScriptPanel*>();
+    QVERIFY(script);
+    script->setSource(QStringLiteral(
+        "bot = interactionService.load_bot('dialogue/antigone/antigone.aiml')\n"
+        "interactionService.converse('Antigone', bot)\n"
+        "print(interactionService.hear('Antigone', 'My name is Haemon')['answer']['text'])\n"));
+    script->run();
+    QTRY_VERIFY_WITH_TIMEOUT(!script->isRunning(), 30000);
+    QVERIFY2(script->output().indexOf(QStringLiteral("Error")) < 0, qPrintable(script->output()));
+    QTRY_VERIFY_WITH_TIMEOUT(panel()->isConversing(), 5000);
+    QCOMPARE(panel()->currentCharacter(), m_antigone);
+    QVERIFY(!script->interactionService()->conversing("Antigone"));
+    QVERIFY(panel()->interactionService()->conversing("Antigone"));
+    QCOMPARE(panel()->converseButton()->text(), QStringLiteral("Hand Back"));
+    QVERIFY(panel()->isVisible());
+    // Its grammar is made and the recogniser opened, as for a bot loaded in the dock.
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isBusy(), 60000);
+    QVERIFY2(panel()->isListening(), qPrintable(panel()->message()));
+    QVERIFY(panel()->grammarView()->toPlainText().contains(QStringLiteral("public <utterance>")));
+    // The transcript says so, among its events.
+    QCOMPARE(panel()->transcript()->findItems(QStringLiteral("Antigone takes questions: the script handed the conversation over."),
+                                              Qt::MatchExactly, ConversationTranscript::SaidColumn).size(),
+             qsizetype(1));
+
+    // The visitor asks on in the dock: she answers, and remembers what the script's visitor said.
+    QTest::keyClicks(panel()->input(), QStringLiteral("What is my name?"));
+    QTest::mouseClick(panel()->sendButton(), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isAnswering(), 20000);
+    QCOMPARE(lineText(1, ConversationTranscript::SaidColumn), QStringLiteral("What is my name?"));
+    QVERIFY2(lineText(0, ConversationTranscript::SaidColumn).contains(QStringLiteral("Haemon")),
+             qPrintable(lineText(0, ConversationTranscript::SaidColumn)));
+    saveScreenshot(m_window.get(), QStringLiteral("studio_conversation_after_script.png"));
+    panel()->handBack();
 }
 
 QTEST_MAIN(ConversationDockTest)
