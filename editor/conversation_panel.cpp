@@ -485,7 +485,9 @@ void ConversationPanel::onPrepared(const core::Result<void>& result)
                                 tr(" (%n left out)", nullptr, int(grammar.patternsSkipped)) +
                                 tr(", %n word(s); wildcards stand for %1 of them.", nullptr, int(grammar.words.size()))
                                     .arg(grammar.wildcardWords.size()));
-        m_grammarLabel->setToolTip(QString());
+        m_grammarLabel->setToolTip(tr("The recogniser listens with the same language as a graph of %1 states and %2 word arcs.")
+                                       .arg(grammar.graph.states)
+                                       .arg(grammar.graph.wordArcs()));
         QString notes;
         for (const std::string& note : grammar.notes)
             notes += QStringLiteral("// ") + fromUtf8(note) + QLatin1Char('\n');

@@ -1871,6 +1871,10 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
         <source>%1 takes questions: the script handed the conversation over.</source>
         <translation>%1 beantwortet Fragen: Das Skript hat das Gespräch übergeben.</translation>
     </message>
+    <message>
+        <source>The recogniser listens with the same language as a graph of %1 states and %2 word arcs.</source>
+        <translation>Die Spracherkennung hört dieselbe Sprache als Graph mit %1 Zuständen und %2 Wortkanten.</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::ConversationTranscript</name>

@@ -1871,6 +1871,10 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
         <source>%1 takes questions: the script handed the conversation over.</source>
         <translation>%1 répond aux questions : le script a passé la main à la conversation.</translation>
     </message>
+    <message>
+        <source>The recogniser listens with the same language as a graph of %1 states and %2 word arcs.</source>
+        <translation>La reconnaissance écoute le même langage sous forme de graphe de %1 états et %2 arcs de mots.</translation>
+    </message>
 </context>
 <context>
     <name>thespis::editor::ConversationTranscript</name>

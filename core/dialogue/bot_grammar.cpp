@@ -81,7 +81,7 @@ Result<speech::GrammarRecogniser> listenFor(const Bot& bot, const ListeningOptio
     auto grammar = makeListeningGrammar(grammarSourceOf(bot), listening);
     if (!grammar)
         return grammar.error();
-    return speech::GrammarRecogniser::open(grammar->jsgf, recognising);
+    return speech::GrammarRecogniser::open(grammar->graph, recognising);
 }
 
 } // namespace thespis::core::dialogue

@@ -4,8 +4,10 @@
 #include <array>
 #include <memory>
 #include <set>
+#include <span>
 #include <unordered_map>
 
+#include "dialogue/listening_tree.h"
 #include "util/text.h"
 
 namespace thespis::core::dialogue {
@@ -94,16 +96,10 @@ std::pair<char32_t, std::size_t> decode(std::string_view text)
     return {c, length};
 }
 
-// One step of a pattern as the grammar's tree keeps it.
-// Inner wildcards (neither first nor last in their pattern) are copied once each: their loop is
-// the shorter <few>.
-enum class Step { Word, Set, Any, MaybeAny, Few, MaybeFew };
-using Key = std::pair<Step, std::string>;
-
-struct Node {
-    std::map<Key, std::unique_ptr<Node>> children;
-    bool end = false;
-};
+using listening::Forest;
+using listening::Key;
+using listening::Node;
+using listening::Step;
 
 std::string stepText(const Key& key)
 {
@@ -112,8 +108,6 @@ std::string stepText(const Key& key)
     case Step::Set: return "<" + key.second + ">";
     case Step::Any: return "<any>";
     case Step::MaybeAny: return "[<any>]";
-    case Step::Few: return "<few>";
-    case Step::MaybeFew: return "[<few>]";
     }
     return {};
 }
@@ -153,6 +147,9 @@ public:
         if (!isGrammarName(m_options.grammarName))
             return makeError(ErrorCode::InvalidArgument, "A grammar's name is letters, digits, _ and dots, not "
                                                              + inQuotes(m_options.grammarName) + ".");
+        if (!(m_options.wildcardWordWeight > 0 && m_options.wildcardWordWeight <= 1))
+            return makeError(ErrorCode::InvalidArgument, "A wildcard word's weight is a probability in (0, 1], not "
+                                                             + std::to_string(m_options.wildcardWordWeight) + ".");
         makeSets();
         makeWildcardWords();
         for (std::size_t p = 0; p < m_source.patterns.size(); ++p)
@@ -273,21 +270,43 @@ private:
         }
         if (std::all_of(steps.begin(), steps.end(), [](const Key& k) { return k.first == Step::MaybeAny; }))
             return skip(p, "it has no word that must be said");
-        // A wildcard that ends a pattern is written once for all of them: "(what is | tell me
-        // about) <any>" rather than a copy of the word loop after each.
-        for (std::size_t i = 1; i + 1 < steps.size(); ++i)
-            if (steps[i].first == Step::Any || steps[i].first == Step::MaybeAny) {
-                steps[i].first = steps[i].first == Step::Any ? Step::Few : Step::MaybeFew;
-                m_usesInnerWildcard = true;
+        addSteps(m_trees.utterance, steps, 1);
+        ++m_grammar.patternsUsed;
+    }
+
+    static bool isWildcard(const Key& step) { return step.first == Step::Any || step.first == Step::MaybeAny; }
+
+    // `steps` into `forest`, split at the first step that is not the last and is a set or a
+    // wildcard (from `wildFrom` on: a pattern's leading wildcard is its first step); the rest
+    // goes to the tails. A wildcard that ends them is written once for all: "(what is | tell me
+    // about) <any>" rather than a copy of the word loop after each.
+    void addSteps(Forest& forest, std::span<Key> steps, std::size_t wildFrom)
+    {
+        std::size_t split = 0;
+        while (split + 1 < steps.size() && !(steps[split].first == Step::Set || (split >= wildFrom && isWildcard(steps[split]))))
+            ++split;
+        if (split + 1 < steps.size()) {
+            const Key& at = steps[split];
+            if (at.first == Step::Set) {
+                insert(forest.thenSet[at.second], steps.first(split));
+                return addSteps(m_trees.setTails[at.second], steps.subspan(split + 1), 0);
             }
-        Node* node = &m_plain;
-        if (steps.back().first == Step::Any || steps.back().first == Step::MaybeAny) {
-            node = steps.back().first == Step::Any ? &m_thenAny : &m_thenMaybeAny;
-            steps.pop_back();
-            m_usesWildcard = true;
+            m_usesInnerWildcard = true;
+            insert(at.first == Step::Any ? forest.thenFew : forest.thenMaybeFew, steps.first(split));
+            return addSteps(m_trees.tails, steps.subspan(split + 1), 0);
         }
+        if (isWildcard(steps.back())) {
+            m_usesWildcard = true;
+            return insert(steps.back().first == Step::Any ? forest.thenAny : forest.thenMaybeAny, steps.first(steps.size() - 1));
+        }
+        insert(forest.plain, steps);
+    }
+
+    void insert(Node& root, std::span<Key> steps)
+    {
+        Node* node = &root;
         for (Key& step : steps) {
-            m_usesWildcard = m_usesWildcard || step.first == Step::Any || step.first == Step::MaybeAny;
+            m_usesWildcard = m_usesWildcard || isWildcard(step);
             if (step.first == Step::Word)
                 m_words.insert(step.second);
             auto& child = node->children[std::move(step)];
@@ -296,19 +315,17 @@ private:
             node = child.get();
         }
         node->end = true;
-        ++m_grammar.patternsUsed;
     }
 
-    ListeningGrammar write()
+    // The alternatives of `forest`, each followed by what its tree leads to.
+    static void writeForest(const Forest& forest, std::string& out)
     {
-        std::string& out = m_grammar.jsgf;
-        out = "#JSGF V1.0;\ngrammar " + m_options.grammarName + ";\n\npublic <utterance> =";
         bool first = true;
         const auto alternative = [&] {
             out += first ? "\n    " : "\n  | ";
             first = false;
         };
-        for (const auto& [key, child] : m_plain.children) {
+        for (const auto& [key, child] : forest.plain.children) {
             alternative();
             out += stepText(key);
             if (!child->children.empty()) {
@@ -316,7 +333,8 @@ private:
                 writeRest(*child, out);
             }
         }
-        for (const auto& [prefixes, wildcard] : {std::pair{&m_thenAny, "<any>"}, std::pair{&m_thenMaybeAny, "[<any>]"}}) {
+        for (const auto& [prefixes, then] : {std::pair{&forest.thenAny, "<any>"}, std::pair{&forest.thenMaybeAny, "[<any>]"},
+                                             std::pair{&forest.thenFew, "<few> <tails>"}, std::pair{&forest.thenMaybeFew, "[<few>] <tails>"}}) {
             if (prefixes->children.empty() && !prefixes->end)
                 continue;
             alternative();
@@ -324,9 +342,32 @@ private:
                 writeRest(*prefixes, out);
                 out += ' ';
             }
-            out += wildcard;
+            out += then;
+        }
+        for (const auto& [rule, prefixes] : forest.thenSet) {
+            alternative();
+            if (!prefixes.children.empty()) {
+                writeRest(prefixes, out);
+                out += ' ';
+            }
+            out += "<" + rule + "> <then_" + rule + ">";
         }
         out += ";\n";
+    }
+
+    ListeningGrammar write()
+    {
+        std::string& out = m_grammar.jsgf;
+        out = "#JSGF V1.0;\ngrammar " + m_options.grammarName + ";\n\npublic <utterance> =";
+        writeForest(m_trees.utterance, out);
+        if (m_usesInnerWildcard) {
+            out += "\n<tails> =";
+            writeForest(m_trees.tails, out);
+        }
+        for (const auto& [rule, tails] : m_trees.setTails) {
+            out += "\n<then_" + rule + "> =";
+            writeForest(tails, out);
+        }
         if (m_usesWildcard) {
             out += "\n<any> = <word> [<any>];\n<word> = " + joinedAlternatives(m_grammar.wildcardWords) + ";\n";
             m_words.insert(m_grammar.wildcardWords.begin(), m_grammar.wildcardWords.end());
@@ -345,8 +386,13 @@ private:
             for (const std::string& phrase : phrases)
                 for (const std::string& w : speakableWords(phrase))
                     m_words.insert(w);
+            m_trees.setPhrases[rule] = phrases;
         }
         m_grammar.words.assign(m_words.begin(), m_words.end());
+        m_trees.anyWords = m_grammar.wildcardWords;
+        m_trees.fewWords = m_grammar.innerWildcardWords;
+        m_trees.wildcardWordWeight = m_options.wildcardWordWeight;
+        m_grammar.graph = listening::wordGraphOf(m_trees);
         return std::move(m_grammar);
     }
 
@@ -363,7 +409,7 @@ private:
     ListeningGrammar m_grammar;
     std::map<std::string, std::pair<std::string, std::vector<std::string>>> m_setRules; ///< set → rule, phrases
     std::set<std::string> m_usedSets, m_words, m_noted;
-    Node m_plain, m_thenAny, m_thenMaybeAny; ///< patterns by their last step: a word or set, <any>, [<any>]
+    listening::Trees m_trees;
     bool m_usesWildcard = false, m_usesInnerWildcard = false;
 };
 

@@ -14,6 +14,11 @@
 // patterns and sets use most, then the vocabulary's order. Every other wildcard costs a copy of
 // its loop, so those inside patterns are <few>: the first `maxInnerWildcardWords` of them.
 //
+// The recogniser listens with the same language as a word graph (speech/word_graph.h) in which
+// patterns share their endings as well as their beginnings, and each wildcard's loop and each
+// set is one copy for all the patterns that go on alike after it: pocketsphinx's own
+// compilation of the JSGF copies every reference and makes millions of arcs of a large bot.
+//
 // Words are made speakable: lower case ASCII; numbers spelled ("42" → "forty two"); accented
 // Latin letters without their accents ("café" → "cafe"); punctuation splits words (apostrophes
 // between letters stay: "don't"); anything else is dropped. Each token changed or dropped is
@@ -25,6 +30,7 @@
 #include <string_view>
 #include <vector>
 
+#include "speech/word_graph.h"
 #include "util/error.h"
 
 namespace thespis::core::dialogue {
@@ -48,10 +54,16 @@ struct ListeningOptions {
     std::size_t maxWildcardWords = 2000;
     /// Words in the loop of wildcards inside patterns (each is a copy of it in pocketsphinx).
     std::size_t maxInnerWildcardWords = 50;
+    /// Probability of each word a wildcard hears, against 1 for a pattern's own words: below 1
+    /// the recogniser prefers a pattern's words to a wildcard's when both fit the sound.
+    float wildcardWordWeight = 0.01f;
 };
 
 struct ListeningGrammar {
-    std::string jsgf;                       ///< JSGF V1.0, public rule <utterance>
+    std::string jsgf;                       ///< JSGF V1.0, public rule <utterance>: for people
+    /// The same language as a word graph: what the recogniser listens with (JSGF this large
+    /// takes pocketsphinx minutes and gigabytes to compile).
+    speech::WordGraph graph;
     std::vector<std::string> words;         ///< every word it uses, sorted
     std::vector<std::string> wildcardWords; ///< the words of <any>, most used first
     std::size_t wildcardWordsLeftOut = 0;   ///< vocabulary words the cap left out

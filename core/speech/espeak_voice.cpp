@@ -106,8 +106,16 @@ std::vector<std::string> languagesOf(const espeak_VOICE& voice)
 // (identifier) more reliably than by language: the voice asked for is looked up among those
 // installed — by name, identifier or any of its languages ("en", "en-gb") — and selected by its
 // identifier. A "+variant" suffix ("en-us+f3") picks a variant of it.
+// The voice selectVoice() last selected (under espeakMutex).
+std::string& selectedVoice()
+{
+    static std::string voice;
+    return voice;
+}
+
 Result<void> selectVoice(const std::string& voice)
 {
+    selectedVoice().clear();
     const std::size_t plus = voice.find('+');
     const std::string base = lowercase(voice.substr(0, plus));
     const std::string variant = plus == std::string::npos ? std::string{} : voice.substr(plus);
@@ -116,8 +124,10 @@ Result<void> selectVoice(const std::string& voice)
         const bool match = ((*v)->name && lowercase((*v)->name) == base)
                            || ((*v)->identifier && lowercase((*v)->identifier) == base)
                            || std::find(languages.begin(), languages.end(), base) != languages.end();
-        if (match && (*v)->identifier && espeak_SetVoiceByName(((*v)->identifier + variant).c_str()) == EE_OK)
+        if (match && (*v)->identifier && espeak_SetVoiceByName(((*v)->identifier + variant).c_str()) == EE_OK) {
+            selectedVoice() = voice;
             return {};
+        }
     }
     return makeError(ErrorCode::NotFound, "There is no espeak-ng voice " + inQuotes(voice)
                                               + "; English voices installed: " + voiceNames(listVoicesLocked()) + ".");
@@ -353,8 +363,11 @@ Result<std::vector<std::string>> phonemesOf(std::string_view word, const std::st
     std::lock_guard lock(espeakMutex());
     if (auto ready = ensureInitialised(); !ready)
         return ready.error();
-    if (auto selected = selectVoice(voice); !selected)
-        return selected.error();
+    // Selecting a voice reads every voice file: a grammar's thousands of words are transcribed in
+    // the voice already selected.
+    if (selectedVoice() != voice)
+        if (auto selected = selectVoice(voice); !selected)
+            return selected.error();
     std::vector<std::string> out;
     // With a separator (a space, bits 8–15) espeak-ng spaces the phonemes rather than the words.
     for (std::string_view mnemonic : transcribedWords(std::string(word), int(' ') << 8)) {

@@ -1,7 +1,9 @@
 #include "speech/grammar_recogniser.h"
 
 #include <algorithm>
+#include <functional>
 #include <limits>
+#include <map>
 #include <set>
 
 #include "runtime/sound.h"
@@ -35,9 +37,9 @@ Result<std::vector<std::string>> grammarTokens(std::string_view jsgf)
 }
 
 // Gives every token its pronunciations: CMUdict's (looked up in lower case), or espeak-ng's,
-// which are returned as "word: PHONES" for people to check.
+// which are listed as "word: PHONES" for people to check. `count`: token → how many it has.
 Result<std::vector<std::string>> addPronunciations(SphinxDecoder& decoder, const std::vector<std::string>& tokens,
-                                                   const RecogniserOptions& options)
+                                                   const RecogniserOptions& options, std::map<std::string, std::size_t>& count)
 {
     std::set<std::string, std::less<>> keys;
     for (const std::string& token : tokens)
@@ -60,6 +62,7 @@ Result<std::vector<std::string>> addPronunciations(SphinxDecoder& decoder, const
             espeakPronounced.push_back(token + ": " + joined(*phones));
             pronunciations.push_back(std::move(*phones));
         }
+        count[token] = pronunciations.size();
         for (std::size_t p = 0; p < pronunciations.size(); ++p) {
             const std::string name = p == 0 ? token : token + "(" + std::to_string(p + 1) + ")";
             if (auto added = decoder.addWord(name, joined(pronunciations[p])); !added)
@@ -67,6 +70,26 @@ Result<std::vector<std::string>> addPronunciations(SphinxDecoder& decoder, const
         }
     }
     return espeakPronounced;
+}
+
+// `graph` with an arc for each of its words' other pronunciations ("word(2)") beside the word's:
+// pocketsphinx's own adding of them (-fsgusealtpron) walks every arc for every such word.
+WordGraph withEveryPronunciation(const WordGraph& graph, const std::map<std::string, std::size_t>& count)
+{
+    WordGraph out = graph;
+    std::vector<std::vector<int>> others(graph.words.size());
+    for (std::size_t w = 0; w < graph.words.size(); ++w) {
+        const auto found = count.find(graph.words[w]);
+        for (std::size_t p = 2; found != count.end() && p <= found->second; ++p) {
+            others[w].push_back(int(out.words.size()));
+            out.words.push_back(graph.words[w] + "(" + std::to_string(p) + ")");
+        }
+    }
+    for (const WordGraph::Arc& arc : graph.arcs)
+        if (arc.word != WordGraph::kEmpty)
+            for (const int other : others[std::size_t(arc.word)])
+                out.arcs.push_back({arc.from, arc.to, other, arc.weight});
+    return out;
 }
 
 // The acoustic score of frames [first, last] in `decoding`; a segment partly inside counts in
@@ -97,14 +120,34 @@ Result<GrammarRecogniser> GrammarRecogniser::open(std::string_view jsgf, const R
     auto tokens = grammarTokens(jsgf);
     if (!tokens)
         return tokens.error();
+    return open(std::move(*tokens), options,
+                [&](SphinxDecoder& decoder, const Pronunciations&) { return decoder.addGrammar(kGrammarSearch, jsgf); });
+}
+
+Result<GrammarRecogniser> GrammarRecogniser::open(const WordGraph& graph, const RecogniserOptions& options)
+{
+    if (auto checked = checkWordGraph(graph); !checked)
+        return checked.error();
+    std::vector<std::string> tokens = graph.words;
+    std::sort(tokens.begin(), tokens.end());
+    tokens.erase(std::unique(tokens.begin(), tokens.end()), tokens.end());
+    return open(std::move(tokens), options, [&](SphinxDecoder& decoder, const Pronunciations& count) {
+        return decoder.addWordGraph(kGrammarSearch, withEveryPronunciation(graph, count));
+    });
+}
+
+Result<GrammarRecogniser> GrammarRecogniser::open(std::vector<std::string> tokens, const RecogniserOptions& options,
+                                                  const std::function<Result<void>(SphinxDecoder&, const Pronunciations&)>& addGrammar)
+{
     auto grammar = SphinxDecoder::open(options.model, SphinxDecoder::Mode::Listen);
     if (!grammar)
         return grammar.error();
-    auto espeakPronounced = addPronunciations(*grammar, *tokens, options);
+    Pronunciations count;
+    auto espeakPronounced = addPronunciations(*grammar, tokens, options, count);
     if (!espeakPronounced)
         return espeakPronounced.error();
     grammar->setPruning(options.beam, options.wordBeam, options.maxActiveHmms);
-    if (auto compiled = grammar->addGrammar(kGrammarSearch, jsgf); !compiled)
+    if (auto compiled = addGrammar(*grammar, count); !compiled)
         return compiled.error();
     auto phoneLoop = SphinxDecoder::open(options.model, SphinxDecoder::Mode::Listen);
     if (!phoneLoop)
@@ -114,7 +157,7 @@ Result<GrammarRecogniser> GrammarRecogniser::open(std::string_view jsgf, const R
         return made.error();
     GrammarRecogniser recogniser(std::move(*grammar), std::move(*phoneLoop));
     recogniser.m_options = options;
-    recogniser.m_words = std::move(*tokens);
+    recogniser.m_words = std::move(tokens);
     recogniser.m_espeakPronounced = std::move(*espeakPronounced);
     return recogniser;
 }

@@ -14,6 +14,8 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <span>
 #include <string>
 #include <string_view>
@@ -66,6 +68,9 @@ public:
     /// pocketsphinx-en-us), the grammar unreadable (line and column) or importing others, a
     /// word neither the dictionary nor espeak-ng can pronounce, pocketsphinx failing to compile it.
     static Result<GrammarRecogniser> open(std::string_view jsgf, const RecogniserOptions& options = {});
+    /// The same for a grammar given as a graph of words (word_graph.h): for grammars too large
+    /// for pocketsphinx to compile from JSGF. Errors as above, and a graph that is not one.
+    static Result<GrammarRecogniser> open(const WordGraph& graph, const RecogniserOptions& options = {});
 
     /// Words of the grammar the dictionary lacks, pronounced by espeak-ng: "word: AA B …".
     const std::vector<std::string>& espeakPronounced() const { return m_espeakPronounced; }
@@ -80,6 +85,9 @@ public:
 
 private:
     GrammarRecogniser(SphinxDecoder grammar, SphinxDecoder phoneLoop) : m_grammar(std::move(grammar)), m_phoneLoop(std::move(phoneLoop)) {}
+    using Pronunciations = std::map<std::string, std::size_t>; ///< token → how many it has
+    static Result<GrammarRecogniser> open(std::vector<std::string> tokens, const RecogniserOptions& options,
+                                          const std::function<Result<void>(SphinxDecoder&, const Pronunciations&)>& addGrammar);
     Result<void> feedBoth(std::span<const std::int16_t> samples, bool wholeUtterance);
 
     SphinxDecoder m_grammar, m_phoneLoop;

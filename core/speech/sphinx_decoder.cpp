@@ -2,6 +2,8 @@
 
 #include <pocketsphinx.h>
 #include <sphinxbase/err.h>
+#include <sphinxbase/fsg_model.h>
+#include <sphinxbase/glist.h>
 
 #include <cassert>
 #include <type_traits>
@@ -190,6 +192,44 @@ Result<void> SphinxDecoder::addGrammar(const std::string& name, std::string_view
     const std::string grammar(jsgf);
     if (ps_set_jsgf_string(m_decoder.get(), name.c_str(), grammar.c_str()) < 0)
         return makeError(ErrorCode::Internal, "pocketsphinx could not compile a grammar.", grammar.substr(0, 4096));
+    return {};
+}
+
+Result<void> SphinxDecoder::addWordGraph(const std::string& name, const WordGraph& graph)
+{
+    if (auto checked = checkWordGraph(graph); !checked)
+        return checked;
+    ps_decoder_t* ps = m_decoder.get();
+    logmath_t* logmath = ps_get_logmath(ps);
+    const float languageWeight = cmd_ln_float32_r(ps_get_config(ps), "-lw");
+    fsg_model_t* fsg = fsg_model_init(name.c_str(), logmath, languageWeight, graph.states);
+    fsg->start_state = graph.start;
+    fsg->final_state = graph.end;
+    std::vector<int> wordIds;
+    wordIds.reserve(graph.words.size());
+    for (const std::string& word : graph.words)
+        wordIds.push_back(fsg_model_word_add(fsg, word.c_str()));
+    for (const WordGraph::Arc& arc : graph.arcs) {
+        // As pocketsphinx reads a grammar file's probabilities: scaled by the language weight.
+        const auto logp = std::int32_t(logmath_log(logmath, arc.weight) * languageWeight);
+        if (arc.word == WordGraph::kEmpty)
+            fsg_model_null_trans_add(fsg, arc.from, arc.to, logp);
+        else
+            fsg_model_trans_add(fsg, arc.from, arc.to, logp, wordIds[std::size_t(arc.word)]);
+    }
+    // The search follows one empty arc at a time: it needs every chain of them as one arc.
+    glist_free(fsg_model_null_trans_closure(fsg, nullptr));
+    // The graph says every pronunciation it wants: pocketsphinx adding the others would walk
+    // every arc for each word that has some.
+    cmd_ln_t* config = ps_get_config(ps);
+    const bool alternatives = cmd_ln_boolean_r(config, "-fsgusealtpron");
+    cmd_ln_set_boolean_r(config, "-fsgusealtpron", FALSE);
+    const int added = ps_set_fsg(ps, name.c_str(), fsg);
+    cmd_ln_set_boolean_r(config, "-fsgusealtpron", alternatives ? TRUE : FALSE);
+    fsg_model_free(fsg); // the search keeps its own reference
+    if (added < 0)
+        return makeError(ErrorCode::Internal, "pocketsphinx could not take a grammar of " + std::to_string(graph.states)
+                                                  + " states and " + std::to_string(graph.arcs.size()) + " arcs.");
     return {};
 }
 

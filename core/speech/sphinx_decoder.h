@@ -20,6 +20,7 @@
 #include <string_view>
 #include <vector>
 
+#include "speech/word_graph.h"
 #include "util/error.h"
 
 struct ps_decoder_s; // pocketsphinx.h
@@ -93,6 +94,11 @@ public:
     /// Compiles the JSGF grammar `jsgf` (its first public rule, as pocketsphinx takes it) as the
     /// search `name`, with the current beams. Error: it does not compile (a word not added, …).
     Result<void> addGrammar(const std::string& name, std::string_view jsgf);
+    /// The same for a grammar given as a graph of words (every word added), which has an arc for
+    /// each pronunciation it listens for ("word(2)": only where the graph says it). Errors: the
+    /// graph is not one (an arc off its states, a weight outside (0, 1]), pocketsphinx does not
+    /// take it.
+    Result<void> addWordGraph(const std::string& name, const WordGraph& graph);
     /// Adds the search `name` that hears any sequence of the model's context-independent phones:
     /// the best the model can say of any sound, to compare a grammar's path with.
     Result<void> addPhoneLoop(const std::string& name);

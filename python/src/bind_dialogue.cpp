@@ -80,9 +80,11 @@ void bindDialogue(py::module_& m)
             [](const PyBot& b) {
                 auto grammar = unwrap(dialogue::makeListeningGrammar(dialogue::grammarSourceOf(*b.bot)));
                 return py::dict("jsgf"_a = grammar.jsgf, "words"_a = grammar.words, "notes"_a = grammar.notes,
-                                "patterns_used"_a = grammar.patternsUsed, "patterns_skipped"_a = grammar.patternsSkipped);
+                                "patterns_used"_a = grammar.patternsUsed, "patterns_skipped"_a = grammar.patternsSkipped,
+                                "graph_states"_a = grammar.graph.states, "graph_word_arcs"_a = grammar.graph.wordArcs());
             },
-            "The JSGF grammar the recogniser listens with: what the bot can answer.");
+            "What the recogniser listens for (what the bot can answer) as JSGF, and the size of the word graph it "
+            "listens with (the same language).");
     d.def(
         "load",
         [](const std::vector<std::filesystem::path>& paths) { return pyBot(unwrap(dialogue::loadBot(paths))); },

@@ -48,6 +48,7 @@ def test_a_real_recording_is_heard_through_the_bots_grammar():
     bot = thespis.dialogue.load([CARDS_BOT])
     grammar = bot.grammar()
     assert grammar["jsgf"].startswith("#JSGF") and "clubs" in grammar["words"]
+    assert 0 < grammar["graph_states"] and len(grammar["words"]) <= grammar["graph_word_arcs"]
     heard = thespis.dialogue.Recogniser(bot).recognise_file(CARDS / "003.wav")
     assert heard["understood"] and heard["text"] == "seven of clubs", heard
     assert [w for w, _, _ in heard["words"]] == ["seven", "of", "clubs"]

@@ -2,6 +2,7 @@
 // (core/dialogue/listening_grammar.h), read back with the JSGF reader and compiled by pocketsphinx.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 
@@ -73,19 +74,36 @@ TEST(ListeningGrammar, AcceptsEveryPatternsLiteralFormAndLittleElse)
     EXPECT_EQ(grammar->patternsUsed, source.patterns.size());
     EXPECT_EQ(grammar->patternsSkipped, 0u);
     const speech::JsgfSet set = readBack(*grammar);
+    const speech::WordGraph& graph = grammar->graph;
+    // The JSGF text and the word graph the recogniser listens with say the same language.
+    const auto accepts = [&](const std::vector<std::string>& sentence) {
+        const bool inJsgf = set.accepts(sentence);
+        EXPECT_EQ(graph.accepts(sentence), inJsgf) << thespis::core::joined(sentence);
+        return inJsgf;
+    };
     for (const auto& pattern : source.patterns) {
-        EXPECT_TRUE(set.accepts(thespis::test::literalForm(source, pattern, "bob"))) << grammar->jsgf;
-        EXPECT_TRUE(set.accepts(thespis::test::literalForm(source, pattern, "the weather")));
+        EXPECT_TRUE(accepts(thespis::test::literalForm(source, pattern, "bob"))) << grammar->jsgf;
+        EXPECT_TRUE(accepts(thespis::test::literalForm(source, pattern, "the weather")));
     }
-    EXPECT_TRUE(set.accepts(words("what is your favourite ice cream")));
-    EXPECT_TRUE(set.accepts(words("thank you")));
-    EXPECT_TRUE(set.accepts(words("bob thank you anna")));
-    EXPECT_FALSE(set.accepts(words("what is")));
-    EXPECT_FALSE(set.accepts(words("hello bob")));
-    EXPECT_FALSE(set.accepts(words("what is zebra")));
-    EXPECT_FALSE(set.accepts(words("is nice")));
-    EXPECT_TRUE(set.accepts(words("is anna bob here")));
-    EXPECT_NE(grammar->jsgf.find("is <few> here"), std::string::npos) << grammar->jsgf;
+    EXPECT_TRUE(accepts(words("what is your favourite ice cream")));
+    EXPECT_TRUE(accepts(words("what is your favourite colour")));
+    EXPECT_TRUE(accepts(words("thank you")));
+    EXPECT_TRUE(accepts(words("bob thank you anna")));
+    EXPECT_TRUE(accepts(words("bob anna thank you")));
+    EXPECT_FALSE(accepts(words("what is")));
+    EXPECT_FALSE(accepts(words("what is your favourite ice")));
+    EXPECT_FALSE(accepts(words("hello bob")));
+    EXPECT_FALSE(accepts(words("what is zebra")));
+    EXPECT_FALSE(accepts(words("is nice")));
+    EXPECT_FALSE(accepts(words("thank")));
+    EXPECT_FALSE(accepts(words("hello there there")));
+    EXPECT_TRUE(accepts(words("is anna bob here")));
+    EXPECT_TRUE(accepts(words("anna bob is nice")));
+    // Patterns that end alike share their ending: "what is your name" and "my name is bob" end
+    // in one state; the graph has far fewer states than the patterns have words.
+    EXPECT_LT(graph.states, 40);
+    EXPECT_NE(grammar->jsgf.find("is <few> <tails>"), std::string::npos) << grammar->jsgf;
+    EXPECT_NE(grammar->jsgf.find("<tails> =\n    here;"), std::string::npos) << grammar->jsgf;
     // One public rule; shared beginnings, and one loop for the wildcards that end patterns.
     EXPECT_EQ(set.grammars[0].publicRules().size(), 1u);
     EXPECT_NE(grammar->jsgf.find("| what is your (favourite <set_thing> | name)\n"), std::string::npos) << grammar->jsgf;
@@ -93,6 +111,35 @@ TEST(ListeningGrammar, AcceptsEveryPatternsLiteralFormAndLittleElse)
     EXPECT_EQ(grammar->words, (std::vector<std::string>{"anna", "bob", "colour", "cream", "favourite", "hello", "here", "ice",
                                                         "is", "my", "name", "nice", "thank", "the", "there", "weather",
                                                         "what", "you", "your"}));
+}
+
+TEST(ListeningGrammar, InnerWildcardsShareOneWordLoopAndWhatFollowsThem)
+{
+    dialogue::GrammarSource source;
+    source.patterns = {{word("is"), star(), word("here")},
+                       {word("where"), star(), word("go"), star(), word("now")},
+                       {word("tell"), maybeStar(), word("me")}};
+    source.vocabulary = {"bob", "anna"};
+    auto grammar = dialogue::makeListeningGrammar(source);
+    ASSERT_TRUE(grammar) << describe(grammar.error());
+    const speech::JsgfSet set = readBack(*grammar);
+    const speech::WordGraphWalker graph(grammar->graph);
+    for (const char* sentence : {"is bob here", "where anna go bob now", "where bob anna go bob now", "tell me", "tell anna me",
+                                 "is bob go anna now", "where bob here"}) {
+        EXPECT_TRUE(set.accepts(words(sentence))) << sentence << "\n" << grammar->jsgf;
+        EXPECT_TRUE(graph.accepts(words(sentence))) << sentence;
+    }
+    for (const char* sentence : {"is here", "where go now", "where bob go now", "tell", "is bob", "bob here"}) {
+        EXPECT_FALSE(set.accepts(words(sentence))) << sentence << "\n" << grammar->jsgf;
+        EXPECT_FALSE(graph.accepts(words(sentence))) << sentence;
+    }
+    // One copy of the inner wildcards' loop for the three patterns: each of its words is one arc.
+    const auto arcsSaying = [&](const std::string& w) {
+        const auto id = std::find(grammar->graph.words.begin(), grammar->graph.words.end(), w) - grammar->graph.words.begin();
+        return std::count_if(grammar->graph.arcs.begin(), grammar->graph.arcs.end(), [&](const auto& arc) { return arc.word == id; });
+    };
+    EXPECT_EQ(arcsSaying("bob"), 1);
+    EXPECT_EQ(arcsSaying("anna"), 1);
 }
 
 TEST(ListeningGrammar, MakesTokensSpeakableAndSaysWhatChanged)
@@ -158,9 +205,14 @@ TEST(ListeningGrammar, PatternsWithNothingCertainToSayAreLeftOut)
     auto badName = dialogue::makeListeningGrammar(source, {.grammarName = "two words"});
     ASSERT_FALSE(badName);
     EXPECT_EQ(badName.error().code, ErrorCode::InvalidArgument);
+    for (const float weight : {0.0f, -0.5f, 1.5f}) {
+        auto badWeight = dialogue::makeListeningGrammar(source, {.wildcardWordWeight = weight});
+        ASSERT_FALSE(badWeight) << weight;
+        EXPECT_NE(badWeight.error().message.find("weight"), std::string::npos) << badWeight.error().message;
+    }
 }
 
-TEST(ListeningGrammar, ARosieSizedSourceIsAcceptedWholeAndCompilesInPocketsphinx)
+TEST(ListeningGrammar, ARosieSizedSourceIsAcceptedWholeAndPocketsphinxTakesItsGraph)
 {
     const speech::SphinxModel model = speech::SphinxModel::installed();
     const dialogue::GrammarSource source = thespis::test::largeGrammarSource(model.dictionary.string(), 12000, 3000);
@@ -175,8 +227,12 @@ TEST(ListeningGrammar, ARosieSizedSourceIsAcceptedWholeAndCompilesInPocketsphinx
     const speech::JsgfSet set = readBack(*grammar);
     ASSERT_FALSE(set.grammars.empty());
     const std::string& someWord = grammar->innerWildcardWords.back(); // in both loops
-    for (const auto& pattern : source.patterns)
-        ASSERT_TRUE(set.accepts(thespis::test::literalForm(source, pattern, someWord)));
+    const speech::WordGraphWalker graph(grammar->graph);
+    for (const auto& pattern : source.patterns) {
+        const std::vector<std::string> sentence = thespis::test::literalForm(source, pattern, someWord);
+        ASSERT_TRUE(set.accepts(sentence));
+        ASSERT_TRUE(graph.accepts(sentence)) << thespis::core::joined(sentence);
+    }
     const auto checked = Clock::now();
 
     auto decoder = speech::SphinxDecoder::open(model, speech::SphinxDecoder::Mode::Listen);
@@ -187,12 +243,13 @@ TEST(ListeningGrammar, ARosieSizedSourceIsAcceptedWholeAndCompilesInPocketsphinx
     for (const auto& [w, phones] : *pronunciations)
         ASSERT_TRUE(decoder->addWord(w, thespis::core::joined(phones.front())));
     const auto added = Clock::now();
-    auto compiled = decoder->addGrammar("rosie", grammar->jsgf);
+    auto compiled = decoder->addWordGraph("rosie", grammar->graph);
     ASSERT_TRUE(compiled) << describe(compiled.error());
     const auto done = Clock::now();
     const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-    std::cout << "12000 patterns, 3000 words: JSGF " << grammar->jsgf.size() / 1024 << " KiB made in "
+    std::cout << "12000 patterns, 3000 words: JSGF " << grammar->jsgf.size() / 1024 << " KiB and a graph of "
+              << grammar->graph.states << " states, " << grammar->graph.wordArcs() << " word arcs made in "
               << ms(began, generated) << " ms; every literal form accepted in " << ms(generated, checked)
-              << " ms; words added in " << ms(checked, added) << " ms; pocketsphinx compiled it in " << ms(added, done)
+              << " ms; words added in " << ms(checked, added) << " ms; pocketsphinx took the graph in " << ms(added, done)
               << " ms\n";
 }

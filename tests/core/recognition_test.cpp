@@ -104,9 +104,11 @@ thespis::core::dialogue::GrammarSource botSource()
     return source;
 }
 
-speech::GrammarRecogniser openRecogniser(const std::string& jsgf, const speech::RecogniserOptions& options = {})
+// A JSGF grammar's text or a word graph.
+template <typename Grammar>
+speech::GrammarRecogniser openRecogniser(const Grammar& grammar, const speech::RecogniserOptions& options = {})
 {
-    auto recogniser = speech::GrammarRecogniser::open(jsgf, options);
+    auto recogniser = speech::GrammarRecogniser::open(grammar, options);
     if (!recogniser) {
         ADD_FAILURE() << describe(recogniser.error());
         std::abort();
@@ -186,7 +188,7 @@ TEST(GrammarRecogniser, EspeakSpeechOfADialoguesGrammarIsRecognised)
     const auto source = botSource();
     auto grammar = thespis::core::dialogue::makeListeningGrammar(source);
     ASSERT_TRUE(grammar) << describe(grammar.error());
-    speech::GrammarRecogniser recogniser = openRecogniser(grammar->jsgf);
+    speech::GrammarRecogniser recogniser = openRecogniser(grammar->graph);
     // Two voices other than one accent: American and British English, at their own rates.
     const std::vector<speech::VoiceSettings> voices = {{"en-us", 160}, {"gmw/en", 150}};
     const std::vector<std::string> wildcardWords = {"music", "the weather", "paris", "chocolate"};
@@ -217,7 +219,7 @@ TEST(GrammarRecogniser, AWordMissingFromCmudictIsPronouncedByEspeakAndHeard)
 {
     auto grammar = thespis::core::dialogue::makeListeningGrammar(botSource());
     ASSERT_TRUE(grammar) << describe(grammar.error());
-    speech::GrammarRecogniser recogniser = openRecogniser(grammar->jsgf);
+    speech::GrammarRecogniser recogniser = openRecogniser(grammar->graph);
     ASSERT_EQ(recogniser.espeakPronounced().size(), 1u);
     EXPECT_EQ(recogniser.espeakPronounced()[0].substr(0, 9), "zorblax: ");
     std::cout << "espeak-ng's pronunciation: " << recogniser.espeakPronounced()[0] << "\n";
@@ -233,7 +235,7 @@ TEST(GrammarRecogniser, RejectsSentencesTheDialogueCannotAnswer)
 {
     auto grammar = thespis::core::dialogue::makeListeningGrammar(botSource());
     ASSERT_TRUE(grammar) << describe(grammar.error());
-    speech::GrammarRecogniser recogniser = openRecogniser(grammar->jsgf);
+    speech::GrammarRecogniser recogniser = openRecogniser(grammar->graph);
     int rejected = 0, sentences = 0;
     for (const char* unrelated : {"the quick brown fox jumps over the lazy dog",
                                   "please submit your expense reports before friday",
@@ -270,4 +272,14 @@ TEST(GrammarRecogniser, ErrorsNameWhatIsWrong)
     auto noPublic = speech::GrammarRecogniser::open("#JSGF V1.0;\ngrammar g;\n<a> = hello;\n");
     ASSERT_FALSE(noPublic);
     EXPECT_NE(noPublic.error().message.find("no public rule"), std::string::npos) << noPublic.error().message;
+
+    speech::WordGraph graph{.states = 2, .start = 0, .end = 1, .words = {"hello"}, .arcs = {{0, 1, 0}}};
+    ASSERT_TRUE(speech::GrammarRecogniser::open(graph));
+    graph.arcs.push_back({1, 2, 0});
+    auto offTheGraph = speech::GrammarRecogniser::open(graph);
+    ASSERT_FALSE(offTheGraph);
+    EXPECT_EQ(offTheGraph.error().code, ErrorCode::InvalidArgument);
+    EXPECT_NE(offTheGraph.error().message.find("arc 2"), std::string::npos) << offTheGraph.error().message;
+    graph.arcs.back() = {1, 0, 1};
+    EXPECT_FALSE(speech::GrammarRecogniser::open(graph)) << "a word the graph does not have";
 }
