@@ -62,6 +62,7 @@ class JobRunner;
 class Microphone;
 class Session;
 class StageAudio;
+struct LoadBotJob;
 struct TurnJob;
 
 class ConversationPanel : public QWidget {
@@ -141,6 +142,8 @@ private:
     bool startConversing(const std::string& state = {}, const QString& note = {});
     void startTurn(std::unique_ptr<TurnJob> job);
     void onPrepared(const core::Result<void>& result);
+    void showBot(const LoadBotJob& job);                        // conversation_bot_view.cpp
+    void showPronounced(const std::vector<std::string>& guessed); // conversation_bot_view.cpp
     void onTurn(const core::Result<void>& result);
     void showTurn(const TurnJob& job);
     void addEvent(const QString& text);
