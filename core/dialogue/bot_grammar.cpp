@@ -10,15 +10,6 @@ namespace thespis::core::dialogue {
 
 namespace {
 
-// The words of a phrase as a set or property writes them.
-std::vector<std::string> wordsOf(std::string_view phrase)
-{
-    std::vector<std::string> words;
-    for (const std::string_view word : splitWords(phrase))
-        words.emplace_back(word);
-    return words;
-}
-
 // The name in `<set>name</set>` or `<bot name="name"/>`; empty when `token` is neither.
 std::string_view elementName(std::string_view token, std::string_view open, std::string_view close)
 {

@@ -107,7 +107,7 @@ private:
         const int entry = m_graph.states++;
         std::map<std::pair<int, std::string>, int> prefixes; // the phrases share their beginnings
         for (const std::string& phrase : m_trees.setPhrases.at(rule)) {
-            const std::vector<std::string> words = splitOnSpaces(phrase);
+            const std::vector<std::string> words = wordsOf(phrase);
             int state = entry;
             for (std::size_t w = 0; w + 1 < words.size(); ++w) {
                 const auto [next, isNew] = prefixes.try_emplace({state, words[w]}, m_graph.states);
@@ -144,14 +144,6 @@ private:
             case Step::Any: arc(state, loopTo(m_trees.anyWords, to)); break;
             }
         }
-    }
-
-    static std::vector<std::string> splitOnSpaces(const std::string& phrase)
-    {
-        std::vector<std::string> words;
-        for (const std::string_view word : splitWords(phrase))
-            words.emplace_back(word);
-        return words;
     }
 
     const Trees& m_trees;

@@ -137,6 +137,14 @@ std::vector<std::string_view> splitWords(std::string_view text)
     return words;
 }
 
+std::vector<std::string> wordsOf(std::string_view text)
+{
+    std::vector<std::string> words;
+    for (const std::string_view word : splitWords(text))
+        words.emplace_back(word);
+    return words;
+}
+
 std::string collapseSpaces(std::string_view text)
 {
     std::string out;

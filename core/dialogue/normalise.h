@@ -43,6 +43,8 @@ std::string matchForm(std::string_view text, bool upper = true);
 
 /// The words of a text whose words are separated by single spaces (matchForm's result).
 std::vector<std::string_view> splitWords(std::string_view text);
+/// The same words as strings of their own.
+std::vector<std::string> wordsOf(std::string_view text);
 
 /// Runs of white space made one space, ends trimmed.
 std::string collapseSpaces(std::string_view text);
