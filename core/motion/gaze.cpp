@@ -25,6 +25,10 @@ constexpr double kEyeJump = 2;         // degrees the eyes' goal moves in one st
 constexpr double kOnGoal = 0.05;       // degrees: close enough to stop
 constexpr double kShifting = 1;        // degrees from its goal a part is still shifting (not just following)
 constexpr double kShrunkEyeRange = 0.75; // of the eyes' range left at the head's top speed
+// Of the eyes' range a shift is planned with: turning the body moves the eyes as well as turning
+// them (a near target is then seen at a steeper angle than planned), and the rest of the range is
+// what lets them still reach it instead of stopping short at their limit.
+constexpr double kEyesPlannedRange = 0.85;
 
 constexpr std::array<std::string_view, 3> kBack = {"vl5", "vl3", "vl1"};
 constexpr std::array<std::string_view, 3> kChest = {"vt10", "vt6", "vt1"};
@@ -353,9 +357,9 @@ void GazeController::apply(double t, const Vec3d& target, std::span<float> body,
         anglesOf(targetInBase - (toVec3d(headInBase) + anim::rotate(headOrientation, m_rig.eyes)), totalHeading, totalPitch);
         totalHeading += s.offsetHeading;
         totalPitch += s.offsetPitch;
-        shareShift(totalHeading, s.eyes.heading, {s.back.heading, s.chest.heading, s.neck.heading}, active,
+        shareShift(totalHeading, s.eyes.heading * kEyesPlannedRange, {s.back.heading, s.chest.heading, s.neck.heading}, active,
                    s.headAlignment, headingGoal);
-        shareShift(totalPitch, s.eyes.pitch, {s.back.pitch, s.chest.pitch, s.neck.pitch}, active, s.headAlignment,
+        shareShift(totalPitch, s.eyes.pitch * kEyesPlannedRange, {s.back.pitch, s.chest.pitch, s.neck.pitch}, active, s.headAlignment,
                    pitchGoal);
     }
     moveParts(t, settle ? 0 : dt, settle, headingGoal, pitchGoal);

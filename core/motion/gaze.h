@@ -6,9 +6,10 @@
 //
 // - Parts and limits, SmartBody's defaults: eyes ±35° pitch / ±40° heading, neck (with the head)
 //   ±45° / ±90°, chest ±6° / ±15°, back ±15° / ±30°. BML's influence says which parts take part.
-// - Who turns how far: the eyes take what they can; the head takes at least its alignment share
-//   of the shift (Pejsa et al.'s head alignment) and whatever the eyes cannot reach; the chest and
-//   back share what is left beyond the eyes' and head's limits.
+// - Who turns how far: the eyes take what they can (planned with 85 % of their range: the rest
+//   is kept for the parallax of a near target as the body turns); the head takes at least its
+//   alignment share of the shift (Pejsa et al.'s head alignment) and whatever the eyes cannot
+//   reach; the chest and back share what is left beyond the eyes' and head's limits.
 // - How: the eyes lead with a saccade (Eyes Alive's 25 ms + 2.4 ms per degree, minimum-jerk); the
 //   head follows after its latency, then the chest and back, each speeding up with its
 //   acceleration to at most its top speed and slowing down so as to stop on its goal: no

@@ -311,8 +311,8 @@ TEST(ArSession, TheCharacterLooksAtTheTrackedCamera)
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
     EXPECT_GE(checked, 10);
-    // The issue asks for 3°; on a loaded machine (a sanitizer build, frames caught up several at a
-    // time) one settled frame measures 3.1°.
-    EXPECT_LT(worst, 3.5) << "degrees between his eyes' direction and the camera";
+    // With the eyes planned to their full range, frames settled with the camera almost overhead
+    // measured 3.1°: turning the back moved the eyes, which then needed more than their range.
+    EXPECT_LT(worst, 3.0) << "degrees between his eyes' direction and the camera";
     EXPECT_LT(worstCamera, 0.5) << "the tracked camera, in world metres (the board's scale makes 1 m 6 cm)";
 }
