@@ -19,11 +19,13 @@
 #include <cmath>
 
 #include "edit/document_edits.h"
+#include "editor/bml_lexicon_box.h"
 #include "editor/character_choice.h"
 #include "editor/document.h"
 #include "editor/gesticon_model.h"
 #include "editor/playback_clock.h"
 #include "editor/qt_conversions.h"
+#include "editor/text_button.h"
 #include "editor/session.h"
 #include "util/tick.h"
 
@@ -191,16 +193,6 @@ private:
     GesticonModel* m_model;
 };
 
-QToolButton* textButton(const QString& text, const QString& tip, const QString& objectName, QWidget* parent)
-{
-    auto* button = new QToolButton(parent);
-    button->setText(text);
-    button->setToolTip(tip);
-    button->setObjectName(objectName);
-    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    return button;
-}
-
 } // namespace
 
 GesticonPanel::GesticonPanel(QWidget* parent) : QWidget(parent), m_model(new GesticonModel(this))
@@ -253,6 +245,8 @@ GesticonPanel::GesticonPanel(QWidget* parent) : QWidget(parent), m_model(new Ges
     m_playing->hide();
     layout->addWidget(m_playing);
     layout->addLayout(buttons);
+    m_lexicon = new BmlLexiconBox(this);
+    layout->addWidget(m_lexicon);
 
     m_message = new QLabel(this);
     m_message->setObjectName(QStringLiteral("gesticonMessage"));
@@ -267,6 +261,7 @@ GesticonPanel::GesticonPanel(QWidget* parent) : QWidget(parent), m_model(new Ges
     connect(m_characters, &QComboBox::currentIndexChanged, this, [this](int index) {
         stopPreview();
         m_model->setCharacter(index);
+        m_lexicon->setCharacter(index);
         showMessage({});
         if (m_model->rowCount() > 0)
             selectRow(0);
@@ -288,6 +283,7 @@ GesticonPanel::GesticonPanel(QWidget* parent) : QWidget(parent), m_model(new Ges
             compareFilter();
     });
     connect(m_model, &GesticonModel::editFailed, this, &GesticonPanel::showMessage);
+    connect(m_lexicon, &BmlLexiconBox::message, this, &GesticonPanel::showMessage);
     connect(m_model, &GesticonModel::editSucceeded, this, [this] { showMessage({}); });
     // Keep the current gesture selected across resets (undo of a removal, another character…).
     connect(m_model, &QAbstractItemModel::modelAboutToBeReset, this, [this] {
@@ -317,6 +313,7 @@ void GesticonPanel::setDocument(Document* document)
         disconnect(m_document, nullptr, this, nullptr);
     m_document = document;
     m_model->setDocument(document);
+    m_lexicon->setDocument(document);
     if (m_document)
         // Any edit ends a preview: what it shows is no longer the document plus the gesture. Queued,
         // so that whoever shows the edited document has rebuilt from it first.
@@ -384,6 +381,7 @@ void GesticonPanel::selectRow(int row)
 void GesticonPanel::refreshCharacters()
 {
     m_model->setCharacter(fillCharacterChoice(m_characters, m_document));
+    m_lexicon->setCharacter(m_model->character());
     if (m_model->rowCount() > 0)
         selectRow(0);
     updateActions();

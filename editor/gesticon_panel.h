@@ -14,6 +14,8 @@
 //
 // Before / After plays the gesture twice from the same time: without the dependent-joint filter
 // (paper §4.4), then with it, a line above the buttons saying which one plays.
+//
+// Below, the character's BML lexemes (BmlLexiconBox): which gesture BML's <gesture lexeme> plays.
 
 #include <QPointer>
 #include <QWidget>
@@ -30,6 +32,7 @@ class QToolButton;
 
 namespace thespis::editor {
 
+class BmlLexiconBox;
 class Document;
 class GesticonModel;
 class Session;
@@ -50,6 +53,8 @@ public:
     QComboBox* characterCombo() const { return m_characters; }
     QToolButton* previewButton() const { return m_preview; }
     QToolButton* compareButton() const { return m_compare; }
+    /// The character's BML lexemes, below the gestures.
+    BmlLexiconBox* lexiconBox() const { return m_lexicon; }
     /// What plays in a Before / After preview ("Before: …", "After: …"), empty otherwise.
     QString playing() const;
     /// The text of the message line (the last refused edit or failed preview), empty when none.
@@ -105,6 +110,7 @@ private:
     QToolButton* m_compare = nullptr;
     QLabel* m_message = nullptr;
     QLabel* m_playing = nullptr;
+    BmlLexiconBox* m_lexicon = nullptr;
     QString m_keptSelection; // the current gesture's name across a model reset
 
     // The preview playing, if any.

@@ -245,7 +245,7 @@ def mask(name, weights, default=0.0):
 def scenario():
     creon = {
         # Creon stands on the left, turned towards Antigone.
-        "schema": "Character.6", "name": "Creon", "skeleton": "hanim-25", "position": [-0.55, 0.0, 0.0],
+        "schema": "Character.7", "name": "Creon", "skeleton": "hanim-25", "position": [-0.55, 0.0, 0.0],
         "heading": 25.0,
         "clips": [
             idle_synthesizer("creon_idle", seed=1),
@@ -292,7 +292,7 @@ def scenario():
         ],
     }
     antigone = {
-        "schema": "Character.6", "name": "Antigone", "skeleton": "hanim-25", "position": [0.55, 0.0, 0.0],
+        "schema": "Character.7", "name": "Antigone", "skeleton": "hanim-25", "position": [0.55, 0.0, 0.0],
         "heading": -25.0,
         "clips": [
             idle_synthesizer("antigone_idle", seed=2),
@@ -327,8 +327,8 @@ def scenario():
     }
     return {
         "format": "thespis-scenario",
-        "version": 11,
-        "schema": "Scenario.11",
+        "version": 12,
+        "schema": "Scenario.12",
         "name": "Antigone, act 1 (demo)",
         "duration": ticks(12.0),
         "masks": [

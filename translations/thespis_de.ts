@@ -1027,6 +1027,80 @@ veraltet: passt nicht mehr zum Körper oder zu seinen Segmentmarkierungen — un
     </message>
 </context>
 <context>
+    <name>thespis::editor::BmlLexiconBox</name>
+    <message>
+        <source>BML lexemes</source>
+        <translation>BML-Lexeme</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add a lexeme playing the character&apos;s first gesture</source>
+        <translation>Ein Lexem hinzufügen, das die erste Geste der Figur spielt</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the selected lexeme</source>
+        <translation>Das ausgewählte Lexem entfernen</translation>
+    </message>
+    <message>
+        <source>Reset to Defaults</source>
+        <translation>Auf Standard zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Give the character the default lexemes again (BEAT, NOD and AGREE: agree; WAVE and GREET: greet; POINT: point)</source>
+        <translation>Der Figur wieder die Standard-Lexeme geben (BEAT, NOD und AGREE: agree; WAVE und GREET: greet; POINT: point)</translation>
+    </message>
+    <message>
+        <source>Add BML Lexeme</source>
+        <translation>BML-Lexem hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove BML Lexeme</source>
+        <translation>BML-Lexem entfernen</translation>
+    </message>
+    <message>
+        <source>Reset BML Lexemes</source>
+        <translation>BML-Lexeme zurücksetzen</translation>
+    </message>
+    <message>
+        <source>(the character&apos;s own)</source>
+        <translation>(eigene der Figur)</translation>
+    </message>
+    <message>
+        <source>(the defaults)</source>
+        <translation>(Standard)</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::BmlLexiconModel</name>
+    <message>
+        <source>The character has no gesture named “%1”: BML&apos;s %2 plays no gesture through this row.</source>
+        <translation>Die Figur hat keine Geste namens „%1“: BMLs %2 spielt über diese Zeile keine Geste.</translation>
+    </message>
+    <message>
+        <source>Lexeme</source>
+        <translation>Lexem</translation>
+    </message>
+    <message>
+        <source>Gesture</source>
+        <translation>Geste</translation>
+    </message>
+    <message>
+        <source>Rename BML Lexeme</source>
+        <translation>BML-Lexem umbenennen</translation>
+    </message>
+    <message>
+        <source>Set BML Lexeme</source>
+        <translation>BML-Lexem setzen</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::CharacterDialog</name>
     <message>
         <source>Add Character</source>

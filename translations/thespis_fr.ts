@@ -1027,6 +1027,80 @@ obsolète : ne correspond plus au corps ou à ses étiquettes de segments — é
     </message>
 </context>
 <context>
+    <name>thespis::editor::BmlLexiconBox</name>
+    <message>
+        <source>BML lexemes</source>
+        <translation>Lexèmes BML</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Ajouter</translation>
+    </message>
+    <message>
+        <source>Add a lexeme playing the character&apos;s first gesture</source>
+        <translation>Ajouter un lexème jouant le premier geste du personnage</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Remove the selected lexeme</source>
+        <translation>Supprimer le lexème sélectionné</translation>
+    </message>
+    <message>
+        <source>Reset to Defaults</source>
+        <translation>Rétablir les valeurs par défaut</translation>
+    </message>
+    <message>
+        <source>Give the character the default lexemes again (BEAT, NOD and AGREE: agree; WAVE and GREET: greet; POINT: point)</source>
+        <translation>Redonner au personnage les lexèmes par défaut (BEAT, NOD et AGREE : agree ; WAVE et GREET : greet ; POINT : point)</translation>
+    </message>
+    <message>
+        <source>Add BML Lexeme</source>
+        <translation>Ajouter un lexème BML</translation>
+    </message>
+    <message>
+        <source>Remove BML Lexeme</source>
+        <translation>Supprimer un lexème BML</translation>
+    </message>
+    <message>
+        <source>Reset BML Lexemes</source>
+        <translation>Rétablir les lexèmes BML</translation>
+    </message>
+    <message>
+        <source>(the character&apos;s own)</source>
+        <translation>(propres au personnage)</translation>
+    </message>
+    <message>
+        <source>(the defaults)</source>
+        <translation>(par défaut)</translation>
+    </message>
+</context>
+<context>
+    <name>thespis::editor::BmlLexiconModel</name>
+    <message>
+        <source>The character has no gesture named “%1”: BML&apos;s %2 plays no gesture through this row.</source>
+        <translation>Le personnage n’a pas de geste nommé « %1 » : le %2 de BML ne joue aucun geste par cette ligne.</translation>
+    </message>
+    <message>
+        <source>Lexeme</source>
+        <translation>Lexème</translation>
+    </message>
+    <message>
+        <source>Gesture</source>
+        <translation>Geste</translation>
+    </message>
+    <message>
+        <source>Rename BML Lexeme</source>
+        <translation>Renommer un lexème BML</translation>
+    </message>
+    <message>
+        <source>Set BML Lexeme</source>
+        <translation>Définir un lexème BML</translation>
+    </message>
+</context>
+<context>
     <name>thespis::editor::CharacterDialog</name>
     <message>
         <source>Add Character</source>

@@ -119,7 +119,8 @@ Result<BmlInsertion> insertBml(const Scenario& scenario, const scenario::Scenari
         return speech::BmlGestureEntry{playable->second.played().source->domain().duration(),
                                        ticksToSeconds(gesture->fadeIn), ticksToSeconds(gesture->fadeOut)};
     };
-    auto plan = speech::planBml(block, timings, gesticon, options.lexicon);
+    auto plan = speech::planBml(block, timings, gesticon,
+                                options.lexicon ? *options.lexicon : speech::BmlLexicon::of(who.bmlLexicon));
     if (!plan)
         return plan.error();
 

@@ -13,6 +13,7 @@
 // The block's composition does not apply: the timeline places it at the playhead.
 
 #include <map>
+#include <optional>
 #include <string>
 
 #include "edit/scenario_edit.h"
@@ -36,7 +37,8 @@ struct BmlInsertion {
 struct BmlInsertOptions {
     speech::VoiceSettings voice;          ///< the speeches were said with it (kept on their lines)
     speech::VisemeSet visemes = speech::mpeg4Visemes();
-    speech::BmlLexicon lexicon = speech::BmlLexicon::defaults();
+    /// The gesture lexemes' table; nullopt: the character's own (Character::bmlLexicon).
+    std::optional<speech::BmlLexicon> lexicon;
 };
 
 /// `spoken` holds each speech's utterance by behaviour id (SpeakJob's bmlSpeech); `runtime` is

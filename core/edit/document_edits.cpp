@@ -631,8 +631,19 @@ Result<Edit> replaceGesture(const Scenario& scenario, const CharacterItemPath& p
         return invalid("There is no such gesture.");
     if (auto ok = checkGesture(scenario, path.character, value, path.index); !ok)
         return ok.error();
-    return Edit(GestureChange{path, scenario.characters[std::size_t(path.character)].gestures[std::size_t(path.index)],
-                              std::move(value)});
+    const Character& who = scenario.characters[std::size_t(path.character)];
+    const Gesture& before = who.gestures[std::size_t(path.index)];
+    Edit edit(GestureChange{path, before, value});
+    // A renamed gesture keeps the lexemes of the character's own BML lexicon that it played.
+    if (who.bmlLexicon && before.name != value.name) {
+        auto rows = who.bmlLexicon;
+        for (auto& [lexeme, entry] : *rows)
+            if (entry == before.name)
+                entry = value.name;
+        if (rows != who.bmlLexicon)
+            edit.add(BmlLexiconChange{path.character, who.bmlLexicon, std::move(rows)});
+    }
+    return edit;
 }
 
 Result<Edit> removeGesture(const Scenario& scenario, const CharacterItemPath& path)

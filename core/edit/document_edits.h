@@ -111,7 +111,7 @@ Result<Edit> removeMask(const scenario::Scenario& scenario, int index);
 
 Result<Edit> addGesture(const scenario::Scenario& scenario, int character, scenario::Gesture gesture);
 /// Replaces a gesture (validated as addGesture: a unique name, a clip of the character, a mask
-/// of the scenario).
+/// of the scenario). Renamed, it keeps the rows of the character's own BML lexicon that name it.
 Result<Edit> replaceGesture(const scenario::Scenario& scenario, const CharacterItemPath& gesture,
                             scenario::Gesture value);
 Result<Edit> removeGesture(const scenario::Scenario& scenario, const CharacterItemPath& gesture);

@@ -126,6 +126,14 @@ Result<void> applyChange(Scenario& s, const Change& change)
                                          + std::to_string(c.character) + ").");
                 character->bake = c.after;
                 return {};
+            } else if constexpr (std::is_same_v<C, BmlLexiconChange>) {
+                Character* character = characterAt(s, c.character);
+                if (!character || character->bmlLexicon != c.before)
+                    return makeError(ErrorCode::InvalidArgument,
+                                     "The edit does not fit the document (BML lexicon of character "
+                                         + std::to_string(c.character) + ").");
+                character->bmlLexicon = c.after;
+                return {};
             } else {
                 static_assert(std::is_same_v<C, SegmentTagsChange>);
                 Character* character = characterAt(s, c.character);
@@ -166,8 +174,8 @@ bool samePlaceReplace(const Change& a, const Change& b)
                 return true;
             else if constexpr (std::is_same_v<C, ScriptsChange>)
                 return false; // each save of a script is a step of its own
-            else if constexpr (std::is_same_v<C, CharacterBakeChange>)
-                return false; // a bake is one step of its own, whatever follows it
+            else if constexpr (std::is_same_v<C, CharacterBakeChange> || std::is_same_v<C, BmlLexiconChange>)
+                return false; // a bake, a change of the lexicon: one step of its own, whatever follows it
             else
                 return first.at == second.at && first.before && first.after && second.before && second.after;
         },
@@ -296,6 +304,8 @@ RuntimeScope Edit::runtimeScope() const
             character = gesture->at.character;
         else if (const auto* clip = std::get_if<ClipChange>(&change))
             character = clip->at.character;
+        else if (const auto* lexicon = std::get_if<BmlLexiconChange>(&change))
+            character = lexicon->character; // its runtime's table, and the warnings about it
         else if (const auto* whole = std::get_if<CharacterChange>(&change)) {
             if (!whole->before || !whole->after || whole->before->name != whole->after->name) {
                 scope.everything = true;

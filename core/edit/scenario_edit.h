@@ -2,8 +2,8 @@
 // Edit: a reversible change to a scenario document (STYLE.md §5), the one way editors and
 // scripts change a Scenario. An edit is a list of changes, each inserting, removing or replacing
 // one element of one of the scenario's lists (a character, an action of a layer, a layer, a mask,
-// a marker, a gesture, a clip) or replacing a character's segment tags or bake file, the light, the
-// scripts or the AR section. Each change keeps the value before
+// a marker, a gesture, a clip) or replacing a character's segment tags, bake file or BML lexicon,
+// the light, the scripts or the AR section. Each change keeps the value before
 // and after, so an edit is undone by applying its inverse, and a drag's many small edits of the
 // same elements merge into one.
 //
@@ -13,6 +13,7 @@
 // undone, so the scenario is left exactly as it was.
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <variant>
@@ -74,6 +75,14 @@ struct CharacterBakeChange {
     bool operator==(const CharacterBakeChange&) const = default;
 };
 
+/// Replaces a character's BML lexicon (Character::bmlLexicon; nullopt: the defaults). Never
+/// merges: each change of the table is its own undo step.
+struct BmlLexiconChange {
+    int character = 0;
+    std::optional<std::map<std::string, std::string>> before, after;
+    bool operator==(const BmlLexiconChange&) const = default;
+};
+
 /// Inserts, removes or replaces a whole character (format 3: its body, placement and the rest).
 using CharacterChange = ListChange<scenario::Character, int>;
 
@@ -99,10 +108,11 @@ struct ArChange {
 
 using Change = std::variant<ActionChange, LayerChange, MaskChange, MarkerChange, GestureChange, ClipChange,
                             SegmentTagsChange, CharacterBakeChange, CharacterChange, LightingChange, ScriptsChange,
-                            ArChange>;
+                            ArChange, BmlLexiconChange>;
 
 /// What an edit changes of a scenario's runtime (its schedules): nothing (the light, markers,
-/// scripts, segment tags, bakes, the AR placement), some characters' (their actions, layers, clips, gestures, or the
+/// scripts, segment tags, bakes, the AR placement), some characters' (their actions, layers, clips, gestures, BML
+/// lexicons, or the
 /// character replaced under the same name), or everything (characters added, removed or renamed,
 /// the masks every character may use).
 struct RuntimeScope {

@@ -67,7 +67,10 @@ Result<BmlPerformance> BmlRealizer::perform(const std::string& character, const 
         const ActionTemplate& g = gestures[name] = std::move(**found);
         return speech::BmlGestureEntry{g.source->domain().duration(), g.fadeIn, g.fadeOut};
     }};
-    auto plan = speech::planBml(block, timings, gesticon, options.lexicon, options.gaze);
+    auto lexicon = options.lexicon ? Result<speech::BmlLexicon>(*options.lexicon) : stage.bmlLexicon(character);
+    if (!lexicon)
+        return lexicon.error();
+    auto plan = speech::planBml(block, timings, gesticon, *lexicon, options.gaze);
     if (!plan)
         return plan.error();
 

@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,8 @@ namespace thespis::core::runtime {
 
 struct BmlOptions {
     speech::VoiceSettings voice;
-    speech::BmlLexicon lexicon = speech::BmlLexicon::defaults();
+    /// The gesture lexemes' table; nullopt: the character's own on the stage (Stage::bmlLexicon).
+    std::optional<speech::BmlLexicon> lexicon;
     motion::GazeSettings gaze; ///< what a <gaze> does beyond its target, influence and offset
     /// Speeches already spoken, by behaviour id (the others are synthesised with `voice`).
     std::shared_ptr<const std::map<std::string, speech::Utterance>> spoken;

@@ -242,6 +242,16 @@ Result<anim::Skeleton> Stage::skeleton(const std::string& character) const
     return (*performer)->skeleton;
 }
 
+Result<speech::BmlLexicon> Stage::bmlLexicon(const std::string& character) const
+{
+    const std::lock_guard lock(m_mutex);
+    auto performer = find(character);
+    if (!performer)
+        return performer.error();
+    const auto index = std::size_t(*performer - m_performers.data());
+    return index < m_runtime.characters.size() ? m_runtime.characters[index].bmlLexicon : speech::BmlLexicon::defaults();
+}
+
 Result<Stage::Performer*> Stage::find(const std::string& character)
 {
     for (Performer& p : m_performers)

@@ -89,6 +89,9 @@ public:
     int findCharacter(const std::string& name) const;
     /// The character's skeleton (what its body frames are laid out on).
     Result<anim::Skeleton> skeleton(const std::string& character) const;
+    /// The character's BML gesture lexemes → gestures (CharacterRuntime::bmlLexicon): the
+    /// defaults for a character added by hand.
+    Result<speech::BmlLexicon> bmlLexicon(const std::string& character) const;
 
     /// Names (or renames) an action the character can play on a track.
     Result<void> defineAction(const std::string& character, Track track, const std::string& action,

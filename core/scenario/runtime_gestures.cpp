@@ -36,4 +36,17 @@ void buildGestures(const Scenario& scenario, const Character& character, const B
     }
 }
 
+void buildBmlLexicon(const Character& character, CharacterRuntime& runtime)
+{
+    runtime.bmlLexicon = speech::BmlLexicon::of(character.bmlLexicon);
+    if (!character.bmlLexicon)
+        return;
+    for (const auto& [lexeme, entry] : *character.bmlLexicon)
+        if (!character.findGesture(entry)) {
+            runtime.warnings.push_back("Character \"" + character.name + "\", BML lexicon, " + lexeme
+                                       + ": the character has no gesture named \"" + entry + "\" to play it.");
+            runtime.warningClips.resize(runtime.warnings.size());
+        }
+}
+
 } // namespace thespis::core::scenario

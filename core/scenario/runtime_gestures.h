@@ -1,6 +1,6 @@
 #pragma once
 // The gesticon of a character's runtime: every gesture built as the actions that play it live
-// (with and without the dependent-joint filter), for the Stage's library.
+// (with and without the dependent-joint filter), for the Stage's library, and its BML lexicon.
 
 #include <functional>
 #include <optional>
@@ -23,5 +23,11 @@ using BuildGestureAction =
 /// with its filter on is then left out, with a warning.
 void buildGestures(const Scenario& scenario, const Character& character, const BuildGestureAction& build,
                    bool basesReadable, CharacterRuntime& runtime);
+
+/// Sets runtime.bmlLexicon from the character's (or the defaults). A row of the character's own
+/// naming no gesture of it is a warning, not an error: it only
+/// matters once BML names its lexeme, and the planner then says that nothing plays it; the rest of
+/// the scenario plays (and removing a gesture must not stop it).
+void buildBmlLexicon(const Character& character, CharacterRuntime& runtime);
 
 } // namespace thespis::core::scenario

@@ -263,6 +263,9 @@ struct Character {
     std::vector<Layer> layers;
     std::vector<Gesture> gestures;     ///< format 2
     std::vector<SpeechLine> speech;    ///< format 9
+    /// BML gesture lexemes → names of its gestures (format 12; speech/bml_lexicon.h): the table a
+    /// <gesture lexeme="BEAT"> is looked up in. nullopt: the defaults (speech::BmlLexicon::defaults()).
+    std::optional<std::map<std::string, std::string>> bmlLexicon;
     nlohmann::json extra = nlohmann::json::object();
     bool operator==(const Character&) const = default;
 

@@ -33,7 +33,8 @@ enum Version : int {
     Speech = 9,              ///< characters' speech lines; dominance weight curves
     Gaze = 10,               ///< gaze layers, whose actions look at a target
     Pointing = 11,           ///< body actions that point their gesture's arm at a target
-    Current = Pointing,
+    BmlLexicon = 12,         ///< a character's own BML lexicon (gesture lexemes → gestures)
+    Current = BmlLexicon,
 };
 } // namespace format
 

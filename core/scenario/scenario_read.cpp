@@ -8,6 +8,7 @@
 #include "lighting/probe.h"
 #include "scenario/scenario_json.h"
 #include "scenario/scenario_object_reader.h"
+#include "util/text.h"
 
 namespace thespis::core::scenario::detail {
 
@@ -435,9 +436,31 @@ SpeechLine readSpeechLine(const json& value, const std::string& path)
     return line;
 }
 
+// {"BEAT": "agree", "POINT": "point"}: BML lexemes and the gestures that play them. A lexeme is
+// the same in any case, so two rows may not differ only by it; whether a gesture of that name
+// exists is the runtime's to check (a warning), as a row only matters once BML names its lexeme.
+std::map<std::string, std::string> readBmlLexicon(const json& value, const std::string& path)
+{
+    if (!value.is_object())
+        fail(path, "expected an object of BML lexemes and gesture names, found " + describeValue(value));
+    std::map<std::string, std::string> rows;
+    std::map<std::string, std::string> byUpperCase;
+    for (const auto& [lexeme, entry] : value.items()) {
+        const std::string at = path + "." + lexeme;
+        if (lexeme.empty())
+            fail(path, "a lexeme must not be empty");
+        if (!entry.is_string() || entry.get_ref<const std::string&>().empty())
+            fail(at, "expected the name of a gesture of the character, found " + describeValue(entry));
+        if (const auto [other, added] = byUpperCase.emplace(uppercase(lexeme), lexeme); !added)
+            fail(at, "the lexeme " + quote(other->second) + " is the same in another case");
+        rows[lexeme] = entry.get<std::string>();
+    }
+    return rows;
+}
+
 Character readCharacter(const json& value, const std::string& path)
 {
-    ObjectReader r(value, path, "Character.6");
+    ObjectReader r(value, path, "Character.7");
     Character character;
     character.name = r.name();
     character.skeleton = r.string("skeleton", false, "hanim-loa1");
@@ -490,6 +513,8 @@ Character readCharacter(const json& value, const std::string& path)
             fail(indexed(r.fieldPath("gestures"), i) + ".name",
                  "another gesture of this character is already named " + quote(character.gestures.back().name));
     }
+    if (const json* lexicon = r.find("bmlLexicon"))
+        character.bmlLexicon = readBmlLexicon(*lexicon, r.fieldPath("bmlLexicon"));
     names.clear();
     const json& speech = r.array("speech", false);
     for (std::size_t i = 0; i < speech.size(); ++i) {
@@ -528,7 +553,7 @@ NamedMask readMask(const json& value, const std::string& path)
 
 Scenario readScenario(const json& document)
 {
-    ObjectReader r(document, "", "Scenario.11");
+    ObjectReader r(document, "", "Scenario.12");
     r.find("format");  // checked before
     r.find("version");
     Scenario scenario;

@@ -571,6 +571,8 @@ private:
                 problem(ErrorCode::InvalidSchedule, where + ": fade times must not be negative.");
         }
 
+        buildBmlLexicon(character, runtime);
+
         Context ctx{character, sources, {}};
         buildFaceClips(ctx, runtime, who);
         if (errors.size() == before)

@@ -20,6 +20,7 @@
 #include "scenario/clip_file.h"
 #include "scenario/pointing_cue.h"
 #include "scenario/scenario.h"
+#include "speech/bml_lexicon.h"
 #include "util/error.h"
 
 namespace thespis::core::scenario {
@@ -60,6 +61,9 @@ struct CharacterRuntime {
     std::map<std::string, GestureActions> gestures;
     /// The character's speech lines: what scripts say with voiceService.activateAction.
     std::vector<SpeechLine> speech;
+    /// Its BML gesture lexemes → gestures (Character::bmlLexicon, else the defaults), which BML
+    /// played on the Stage looks gestures up in.
+    speech::BmlLexicon bmlLexicon;
     /// What its gaze layers that play look at, by start.
     std::vector<GazeCue> gaze;
     /// Where its body layers that play point (format 11), by start.

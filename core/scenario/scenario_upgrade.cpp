@@ -160,6 +160,16 @@ static Result<void> upgradeV10toV11(nlohmann::json& document)
     return {};
 }
 
+// 11 → 12: characters may keep their own BML lexicon ("bmlLexicon", optional: without one a
+// character has the defaults, as every character had before); only the scenario's and the
+// characters' schemas are new.
+static Result<void> upgradeV11toV12(nlohmann::json& document)
+{
+    renameSchema(document, "Scenario.11", "Scenario.12");
+    forEachIn(document, "characters", [](nlohmann::json& character) { renameSchema(character, "Character.6", "Character.7"); });
+    return {};
+}
+
 std::span<const UpgradeStep> upgradeSteps()
 {
     static constexpr UpgradeStep steps[] = {
@@ -173,6 +183,7 @@ std::span<const UpgradeStep> upgradeSteps()
         {format::FaceMappingTable, "speech lines", &upgradeV8toV9},
         {format::Speech, "gaze layers", &upgradeV9toV10},
         {format::Gaze, "pointing actions", &upgradeV10toV11},
+        {format::Pointing, "BML lexicons", &upgradeV11toV12},
     };
     return steps;
 }

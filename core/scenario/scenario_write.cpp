@@ -269,7 +269,7 @@ ojson writeClip(const ClipAsset& clip)
 ojson writeCharacter(const Character& character)
 {
     ojson out = ojson::object();
-    out["schema"] = "Character.6";
+    out["schema"] = "Character.7";
     out["name"] = character.name;
     out["skeleton"] = character.skeleton;
     // Written only when set, so that scenarios without models stay as they were.
@@ -326,6 +326,12 @@ ojson writeCharacter(const Character& character)
             gestures.push_back(std::move(entry));
         }
         out["gestures"] = std::move(gestures);
+    }
+    if (character.bmlLexicon) {
+        ojson lexicon = ojson::object();
+        for (const auto& [lexeme, entry] : *character.bmlLexicon)
+            lexicon[lexeme] = entry;
+        out["bmlLexicon"] = std::move(lexicon);
     }
     if (!character.speech.empty()) {
         ojson speech = ojson::array();
@@ -439,7 +445,7 @@ ojson writeScenario(const Scenario& scenario)
     ojson out = ojson::object();
     out["format"] = FormatName;
     out["version"] = int(format::Current);
-    out["schema"] = "Scenario.11";
+    out["schema"] = "Scenario.12";
     out["name"] = scenario.name;
     out["duration"] = scenario.duration;
     ojson masks = ojson::array();

@@ -101,24 +101,6 @@ Result<void> prepare(const BmlBehavior& b, const std::map<std::string, SpeechTim
 
 } // namespace
 
-BmlLexicon BmlLexicon::defaults()
-{
-    return {{{"BEAT", "agree"}, {"NOD", "agree"}, {"AGREE", "agree"}, {"WAVE", "greet"}, {"GREET", "greet"},
-             {"POINT", "point"}}};
-}
-
-std::string BmlLexicon::entryFor(const std::string& lexeme, const std::vector<std::string>& gesticon) const
-{
-    const std::string wanted = uppercase(lexeme);
-    for (const std::string& g : gesticon)
-        if (uppercase(g) == wanted)
-            return g;
-    if (const auto row = gestures.find(wanted); row != gestures.end())
-        if (std::find(gesticon.begin(), gesticon.end(), row->second) != gesticon.end())
-            return row->second;
-    return {};
-}
-
 Error bmlBehaviorError(ErrorCode code, const BmlBehavior& behavior, const std::string& what)
 {
     return makeError(code, "line " + std::to_string(behavior.line) + ", column " + std::to_string(behavior.column) +

@@ -19,20 +19,10 @@
 #include "motion/head_gesture.h"
 #include "motion/pointing.h"
 #include "speech/bml.h"
+#include "speech/bml_lexicon.h"
 #include "util/error.h"
 
 namespace thespis::core::speech {
-
-/// BML gesture lexemes (BEAT, POINT, WAVE …) → entries of a character's gesticon. A lexeme that
-/// names an entry (in any case) needs no row.
-struct BmlLexicon {
-    std::map<std::string, std::string> gestures;
-    /// Rows for the shipped gesticons: BEAT, NOD and AGREE → "agree"; WAVE and GREET → "greet";
-    /// POINT → "point".
-    static BmlLexicon defaults();
-    /// The entry of `gesticon` (its gestures' names) that plays `lexeme`; empty when none does.
-    std::string entryFor(const std::string& lexeme, const std::vector<std::string>& gesticon) const;
-};
 
 /// What planning needs of a gesticon entry: its motion's length and fades, in seconds.
 struct BmlGestureEntry {

@@ -75,7 +75,8 @@ void bindBml(py::module_& m)
           "xml"_a, "The block as the realizer reads it, written back as BML.");
     b.def("face_lexemes", &speech::faceLexemeNames, "The faceLexemes the face shows (RAISE_BROWS, …).");
     b.def("default_lexicon", [] { return core::speech::BmlLexicon::defaults().gestures; },
-          "Gesture lexemes → gesticon entries used when the character's gesticon has no entry of the lexeme's name.");
+          "Gesture lexemes → gesticon entries of a character that keeps no BML lexicon of its own "
+          "(Character.bml_lexicon is None).");
 
     py::class_<Realizer>(b, "Realizer", "Realises BML blocks for the characters of an animation service's stage.")
         .def(py::init<std::shared_ptr<runtime::AnimationService>, std::shared_ptr<runtime::SoundService>>(),
@@ -88,9 +89,11 @@ void bindBml(py::module_& m)
                 const speech::BmlBlock block = unwrap(speech::parseBml(xml));
                 runtime::BmlOptions options;
                 options.voice = {.voice = voice, .wordsPerMinute = rate, .pitch = pitch};
-                if (lexicon)
+                if (lexicon) { // rows over the character's own
+                    options.lexicon = unwrap(r.service().sharedStage()->bmlLexicon(character));
                     for (const auto& [lexeme, entry] : *lexicon)
-                        options.lexicon.gestures[lexeme] = entry;
+                        options.lexicon->set(lexeme, entry);
+                }
                 options.gaze.saccades = saccades;
                 const core::Tick start = at ? core::secondsToTicks(*at) : r.service().now();
                 runtime::BmlPerformance performed = [&] {
@@ -121,6 +124,7 @@ void bindBml(py::module_& m)
             "character"_a, "xml"_a, "voice"_a = "en-us", "rate"_a = 175, "pitch"_a = 50, "at"_a = py::none(),
             "lexicon"_a = py::none(), "saccades"_a = true, "on_event"_a = py::none(),
             "Plays the block for `character` from `at` (default: now) and returns its start, end and events "
+            "(`lexicon`: {lexeme: gesture} rows over the character's own BML lexicon, Character.bml_lexicon) "
             "[(seconds, \"g1:stroke\"), …]. With `on_event`, waits through the block calling on_event(name, seconds) "
             "as the clock reaches each (\"bml1:start\", \"s1:t1\", …, \"bml1:end\").");
 }

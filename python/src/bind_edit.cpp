@@ -14,6 +14,7 @@
 #include "bind_common.h"
 #include "edit/content_edits.h"
 #include "edit/document_edits.h"
+#include "edit/lexicon_edits.h"
 #include "edit/gaze_edits.h"
 #include "edit/scenario_edit.h"
 #include "errors.h"
@@ -90,6 +91,8 @@ std::string describeEdit(const edit::Edit& e)
                     return "scripts";
                 else if constexpr (std::is_same_v<C, edit::ArChange>)
                     return "ar";
+                else if constexpr (std::is_same_v<C, edit::BmlLexiconChange>)
+                    return "bml lexicon";
                 else {
                     std::string element = std::is_same_v<C, edit::ActionChange>    ? "action"
                                           : std::is_same_v<C, edit::LayerChange>   ? "layer"
@@ -367,6 +370,36 @@ void bindEdit(py::module_& m)
         },
         "scenario"_a, "character"_a, "path"_a,
         "Sets a character's bake file (relative to the scenario's folder; '' = no bake, unshadowed transfer).");
+
+    // ---- BML lexicons (lexicon_edits.h)
+    e.def("bml_lexicon_rows", [](const Scenario& scenario, int character) {
+            if (character < 0 || std::size_t(character) >= scenario.characters.size())
+                throw py::index_error("There is no character " + std::to_string(character) + ".");
+            return edit::bmlLexiconRows(scenario.characters[std::size_t(character)]);
+        },
+        "scenario"_a, "character"_a,
+        "The rows of a character's BML lexicon (lexeme → gesture): its own, else the defaults whose gestures it has.");
+    e.def(
+        "set_bml_lexicon",
+        [](const Scenario& scenario, int character, std::optional<std::map<std::string, std::string>> rows) {
+            return unwrap(edit::setBmlLexicon(scenario, character, std::move(rows)));
+        },
+        "scenario"_a, "character"_a, "rows"_a,
+        "Sets a character's whole BML lexicon ({lexeme: gesture}; lexemes kept in upper case); None = back to "
+        "the defaults. Each row must name a gesture of the character.");
+    e.def(
+        "set_bml_lexeme",
+        [](const Scenario& scenario, int character, const std::string& lexeme, std::optional<std::string> gesture) {
+            return unwrap(edit::setBmlLexeme(scenario, character, lexeme, std::move(gesture)));
+        },
+        "scenario"_a, "character"_a, "lexeme"_a, "gesture"_a,
+        "Sets the row of `lexeme` of a character's BML lexicon to `gesture`, or removes it (None).");
+    e.def(
+        "rename_bml_lexeme",
+        [](const Scenario& scenario, int character, const std::string& lexeme, const std::string& to) {
+            return unwrap(edit::renameBmlLexeme(scenario, character, lexeme, to));
+        },
+        "scenario"_a, "character"_a, "lexeme"_a, "to"_a, "Gives a row of a character's BML lexicon another lexeme.");
 
     // ---- Characters, layers, clips and the light (content_edits.h)
     e.def("new_character", &edit::newCharacter, "name"_a, "model"_a = "", "skeleton"_a = "hanim-25",

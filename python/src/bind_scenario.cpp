@@ -378,6 +378,10 @@ void bindDocument(py::module_& m)
     defList(character, "layers", &Character::layers, "The character's layers (a copy).");
     defList(character, "gestures", &Character::gestures, "The character's gesture database (a copy).");
     defList(character, "speech", &Character::speech, "The lines the character says (format 9; a copy).");
+    character.def_readwrite("bml_lexicon", &Character::bmlLexicon,
+                            "Its BML gesture lexemes → gesture names ({'BEAT': 'agree', …}, format 12; a copy), which "
+                            "BML's <gesture lexeme> is looked up in; None = the defaults "
+                            "(thespis.bml.default_lexicon()).");
     character.def(
         "find_gesture",
         [](const Character& c, const std::string& name) -> std::optional<Gesture> {

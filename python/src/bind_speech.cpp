@@ -192,20 +192,29 @@ void bindSpeech(py::module_& m)
     s.def(
         "insert_bml",
         [](const core::scenario::Scenario& scenario, const core::scenario::ScenarioRuntime& runtime,
-           const std::string& character, const speech::SpeakJob& spoken, double at) {
+           const std::string& character, const speech::SpeakJob& spoken, double at,
+           std::optional<std::map<std::string, std::string>> lexicon) {
             if (!spoken.bml)
                 throw py::value_error("This speech was tagged text, not BML: use insert().");
             core::edit::BmlInsertOptions options;
             options.voice = spoken.voice;
             options.visemes = spoken.visemes;
+            if (lexicon) { // rows over the character's own
+                const int who = speakerIndex(scenario, character);
+                options.lexicon = speech::BmlLexicon::of(scenario.characters[std::size_t(who)].bmlLexicon);
+                for (const auto& [lexeme, entry] : *lexicon)
+                    options.lexicon->set(lexeme, entry);
+            }
             return unwrap(core::edit::insertBml(scenario, runtime, speakerIndex(scenario, character), *spoken.bml,
                                                 spoken.bmlSpeech, options, core::secondsToTicks(at)))
                 .edit;
         },
-        "scenario"_a, "runtime"_a, "character"_a, "speech"_a, "at"_a = 0.0,
+        "scenario"_a, "runtime"_a, "character"_a, "speech"_a, "at"_a = 0.0, "lexicon"_a = py::none(),
         "The Edit that puts a BML block spoken by speak() on the character from `at` seconds as the studio's "
         "Insert does: speeches with their visemes, gestures on 'Gestures', head gestures on 'Head', faceLexemes on "
-        "'Face lexemes', gaze on the 'Gaze' gaze layer. `runtime` is the scenario's (the gestures' lengths).");
+        "'Face lexemes', gaze on the 'Gaze' gaze layer. `runtime` is the scenario's (the gestures' lengths). "
+        "Gesture lexemes are looked up in the character's BML lexicon (Character.bml_lexicon), with the rows of "
+        "`lexicon` ({lexeme: gesture}) over it when given.");
 
     py::class_<speech::LipSyncJob, std::shared_ptr<speech::LipSyncJob>>(
         s, "Alignment", "A recording lip-synced by thespis.speech.align(): its words and phonemes in time.")

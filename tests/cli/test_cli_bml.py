@@ -145,3 +145,30 @@ def test_close_ups_show_the_eyes_looking_left_right_and_into_the_camera(tmp_path
         pupils[name] = centroid_x(seen, PUPIL) - centroid_x(seen, SCLERA)
     assert abs(pupils["camera"]) < 2.0, pupils
     assert pupils["left"] > 3.0 and pupils["right"] < -3.0, pupils
+
+
+def test_speak_bml_looks_lexemes_up_in_the_characters_own_lexicon(tmp_path):
+    """Creon keeps a BML lexicon of his own (format 12) in which BEAT is his greet: speak --bml
+    puts greet on the timeline for it, where the demo's defaults put agree."""
+    block = tmp_path / "beat.xml"
+    block.write_text('<bml id="b"><gesture id="g1" lexeme="BEAT"/></bml>')
+    document = json.loads((RESOURCES / "demo.thespis").read_text())
+    for character in document["characters"]:  # the demo's files, found from the copies' folder
+        for clip in character["clips"]:
+            if "idle" in clip:
+                clip["idle"]["database"] = str(RESOURCES / clip["idle"]["database"])
+    document["postureBases"] = str(RESOURCES / document["postureBases"])
+    defaults = tmp_path / "defaults.thespis"
+    defaults.write_text(json.dumps(document))
+    creon = next(c for c in document["characters"] if c["name"] == "Creon")
+    creon["bmlLexicon"] = {"BEAT": "greet"}
+    own = tmp_path / "own.thespis"
+    own.write_text(json.dumps(document))
+
+    def inserted(scenario):
+        out = tmp_path / ("out_" + scenario.name)
+        cli("speak", scenario, "--character", "Creon", "--bml", block, "--scenario-out", out)
+        return layers_of(out, "Creon")["Gestures"]["actions"][-1]["name"]
+
+    assert inserted(defaults) == "g1 agree"
+    assert inserted(own) == "g1 greet"

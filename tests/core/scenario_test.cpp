@@ -616,7 +616,7 @@ TEST(ScenarioIo, UnknownFieldWithAnEmptyNameSurvives)
 TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 {
     const std::string text = serializeScenario(Scenario{});
-    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 11,\n  \"schema\": \"Scenario.11\"", 0), 0u)
+    EXPECT_EQ(text.rfind("{\n  \"format\": \"thespis-scenario\",\n  \"version\": 12,\n  \"schema\": \"Scenario.12\"", 0), 0u)
         << text;
     auto back = parseScenario(text);
     ASSERT_TRUE(back.ok());
@@ -629,12 +629,12 @@ TEST(ScenarioIo, WriterPutsFormatAndVersionFirst)
 TEST(ScenarioIo, RefusesNewerVersion)
 {
     json doc = minimalDocument();
-    doc["version"] = 12;
+    doc["version"] = 13;
     auto result = parseJson(doc);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error().code, ErrorCode::NewerVersion);
     EXPECT_EQ(result.error().message,
-              "This scenario was saved by a newer Thespis (format 12). Update Thespis to open it.");
+              "This scenario was saved by a newer Thespis (format 13). Update Thespis to open it.");
 
     doc["version"] = 18446744073709551615ull;
     result = parseJson(doc);

@@ -14,14 +14,19 @@
 #include <QLabel>
 #include <QScrollBar>
 #include <QSignalSpy>
+#include <QToolButton>
+#include <QTableView>
 #include <QTableWidget>
 #include <QTest>
 #include <QUndoStack>
 
 #include <cmath>
 
+#include "editor/bml_lexicon_box.h"
+#include "editor/bml_lexicon_model.h"
 #include "editor/document.h"
 #include "editor/gaze_properties.h"
+#include "editor/gesticon_panel.h"
 #include "editor/pointing_properties.h"
 #include "editor/target_choice.h"
 #include "editor/properties_panel.h"
@@ -64,6 +69,7 @@ private slots:
     void badTagsAreNamedWithLineAndColumn();
     void bmlInsertsSpeechGesturesAndAGazeWithItsTargetPicker();
     void aBmlPointingKeepsItsTargetWhichThePropertiesEdit();
+    void aLexemeRowEditedInTheGesticonDockChangesWhatBmlInserts();
 
 private:
     editor::SpeechPanel* panel() { return m_window->speech(); }
@@ -365,6 +371,86 @@ void SpeechStudioTest::aBmlPointingKeepsItsTargetWhichThePropertiesEdit()
     QVERIFY(!pointOf());
     document.undoStack()->undo();
     QCOMPARE(pointOf()->hand, std::string("LEFT_HAND"));
+    document.undoStack()->undo();
+    document.undoStack()->undo();
+    QVERIFY(document.scenario() == original);
+}
+
+void SpeechStudioTest::aLexemeRowEditedInTheGesticonDockChangesWhatBmlInserts()
+{
+    editor::Document& document = *m_window->document();
+    const auto original = document.scenario();
+    const int creon = characterIndex(document, "Creon");
+    const auto gestures = [&] {
+        const auto& layers = document.scenario().characters[std::size_t(creon)].layers;
+        const auto found = std::find_if(layers.begin(), layers.end(), [](const auto& l) { return l.name == "Gestures"; });
+        return found == layers.end() ? std::vector<core::scenario::ActionSpec>() : found->actions;
+    };
+    const auto insertBeat = [&] {
+        raiseDock(panel());
+        panel()->setCurrentCharacter(creon);
+        panel()->setText(QStringLiteral("<bml id=\"b3\"><gesture id=\"g1\" lexeme=\"BEAT\"/></bml>"));
+        panel()->insert();
+        QTRY_VERIFY_WITH_TIMEOUT(!panel()->isBusy(), 20000);
+        QVERIFY2(panel()->message().contains(QStringLiteral("1 gesture")), qPrintable(panel()->message()));
+    };
+
+    // Creon keeps the defaults: BEAT plays "agree".
+    editor::GesticonPanel* gesticon = m_window->gesticon();
+    raiseDock(gesticon);
+    gesticon->setCurrentCharacter(creon);
+    editor::BmlLexiconBox* box = gesticon->lexiconBox();
+    editor::BmlLexiconModel* model = box->model();
+    QTRY_VERIFY(box->isVisible());
+    const int beat = model->rowOf(QStringLiteral("BEAT"));
+    QVERIFY(beat >= 0);
+    const QModelIndex entry = model->index(beat, editor::BmlLexiconModel::GestureColumn);
+    QCOMPARE(entry.data().toString(), QStringLiteral("agree"));
+    QCOMPARE(box->findChild<QLabel*>(QStringLiteral("bmlLexiconState"))->text(), QStringLiteral("(the defaults)"));
+    QVERIFY(!box->resetButton()->isEnabled());
+
+    // BEAT → greet, picked in the Gesture column's combo: one undo step.
+    const int steps = document.undoStack()->count();
+    box->table()->setCurrentIndex(entry);
+    box->table()->edit(entry);
+    QComboBox* combo = nullptr;
+    QTRY_VERIFY((combo = box->table()->viewport()->findChild<QComboBox*>()) != nullptr);
+    QCOMPARE(combo->currentText(), QStringLiteral("agree"));
+    const int greet = combo->findText(QStringLiteral("greet"));
+    QVERIFY(greet >= 0);
+    combo->setCurrentIndex(greet);
+    emit combo->activated(greet);
+    QCOMPARE(document.undoStack()->count(), steps + 1);
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Set BML Lexeme"));
+    QCOMPARE(document.scenario().characters[std::size_t(creon)].bmlLexicon->at("BEAT"), std::string("greet"));
+    QCOMPARE(model->index(model->rowOf(QStringLiteral("BEAT")), 1).data().toString(), QStringLiteral("greet"));
+    QCOMPARE(box->findChild<QLabel*>(QStringLiteral("bmlLexiconState"))->text(), QStringLiteral("(the character's own)"));
+    QVERIFY(box->resetButton()->isEnabled());
+    QTest::qWait(100);
+    saveScreenshot(gesticon, QStringLiteral("gesticon_bml_lexemes.png"));
+
+    // The Speech dock's Insert now puts Creon's greet on the timeline for BEAT.
+    insertBeat();
+    QCOMPARE(gestures().back().name, std::string("g1 greet"));
+    QCOMPARE(gestures().back().clip, std::string("wave"));
+
+    // Undo both: the document is the demo again, and BEAT inserts "agree".
+    document.undoStack()->undo();
+    document.undoStack()->undo();
+    QVERIFY(document.scenario() == original);
+    QCOMPARE(model->index(model->rowOf(QStringLiteral("BEAT")), 1).data().toString(), QStringLiteral("agree"));
+    insertBeat();
+    QCOMPARE(gestures().back().name, std::string("g1 agree"));
+    document.undoStack()->undo();
+
+    // Add a row, then Reset to Defaults: one step each.
+    raiseDock(gesticon);
+    box->addButton()->click();
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Add BML Lexeme"));
+    QVERIFY(document.scenario().characters[std::size_t(creon)].bmlLexicon->contains("LEXEME"));
+    box->resetButton()->click();
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Reset BML Lexemes"));
+    QVERIFY(!document.scenario().characters[std::size_t(creon)].bmlLexicon);
     document.undoStack()->undo();
     document.undoStack()->undo();
     QVERIFY(document.scenario() == original);
