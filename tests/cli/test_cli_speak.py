@@ -1,4 +1,4 @@
-"""Speech end to end through thespis-cli (issue 32): a character says tagged text with `speak`,
+"""Speech end to end through thespis-cli (issues 32, 33): a character says tagged text with `speak`,
 the line goes into the scenario with its visemes, close-ups show the lips shut on the "m" of
 "hmm" and open on "ah" (saved under <build>/test-artifacts/speech/ for people to look at), and
 `play --audio` puts the line's audio where it is on the timeline.
@@ -95,3 +95,29 @@ def test_play_puts_the_lines_audio_where_it_is_on_the_timeline(tmp_path):
 
     assert loudness(0.0, 0.95) < 50, "silence before the line"
     assert loudness(1.0, 1.8) > 500, "the line from 1 s"
+
+
+def test_a_tagged_gesture_lands_on_the_gestures_layer_spanning_its_words(tmp_path):
+    """Issue 33: `speak --text` with a body gesture tagged round "my good friend" puts the
+    gesticon's greet on Creon's Gestures layer, fading in before "my" and out after "friend"."""
+    spoken = tmp_path / "spoken.thespis"
+    out = cli("speak", RESOURCES / "demo.thespis", "--character", "Creon", "--text",
+              'Listen, <begin_gesture id="g1" anim="greet"/>my good friend<end_gesture id="g1"/> today.',
+              "--at", 0.5, "--out", tmp_path / "greet.wav", "--scenario-out", spoken)
+    assert "1 body gestures" in out, out
+    creon = next(c for c in json.loads(spoken.read_text())["characters"] if c["name"] == "Creon")
+    layer = next(layer for layer in creon["layers"] if layer["name"] == "Gestures")
+    [action] = layer["actions"]
+    greet = next(g for g in creon["gestures"] if g["name"] == "greet")
+    assert action["name"] == "g1 greet" and action["clip"] == greet["clip"]
+    line = creon["speech"][-1]
+    words = {w["text"]: (line["start"] + w["start"] * TICKS, line["start"] + w["end"] * TICKS) for w in line["words"]}
+    clip = next(c for c in creon["clips"] if c["name"] == greet["clip"])
+    [stretch] = [m for m in action["modifiers"] if m["kind"] == "timeStretch"]
+    length = (len(clip["frames"]) - 1) / clip["frameRate"] * stretch["factor"] * TICKS
+    frame = TICKS / 30
+    assert abs(action["start"] - (words["my"][0] - greet["fadeIn"])) <= frame
+    assert abs(action["start"] + length - (words["friend"][1] + greet["fadeOut"])) <= frame
+    assert action["weight"]["fadeIn"] == pytest.approx(greet["fadeIn"] / TICKS)
+    assert action["weight"]["fadeOut"] == pytest.approx(greet["fadeOut"] / TICKS)
+    assert any(m["kind"] == "dependentJointFilter" for m in action["modifiers"]), "the entry's band filters it"
