@@ -14,6 +14,7 @@
 #include "runtime/stage.h"
 #include "scenario/scenario_io.h"
 #include "scenario/scenario_runtime.h"
+#include "scenario_formats.h"
 #include "test_support.h"
 #include "util/file_io.h"
 
@@ -27,20 +28,6 @@ using Rows = std::map<std::string, std::string>;
 namespace edit = core::edit;
 namespace runtime = core::runtime;
 namespace speech = core::speech;
-
-Scenario golden(int version)
-{
-    auto s = loadScenario(testData("formats/v" + std::to_string(version) + "/scenario.thespis"));
-    EXPECT_TRUE(s) << core::describe(s.error());
-    return s ? std::move(s).value() : Scenario{};
-}
-
-std::string refused(const json& document)
-{
-    auto result = parseScenario(document.dump());
-    EXPECT_FALSE(result.ok());
-    return result ? std::string() : result.error().message;
-}
 
 Scenario demo()
 {
@@ -68,7 +55,7 @@ speech::BmlBlock block(const std::string& behaviours)
 
 // The gesture action insertBml puts on Creon's timeline for `behaviours` (one gesture), by name.
 std::string insertedGesture(const Scenario& document, const std::string& behaviours,
-                            const edit::BmlInsertOptions& options = {})
+                            edit::BmlInsertOptions options = edit::BmlInsertOptions())
 {
     auto built = buildRuntime(document, resources());
     EXPECT_TRUE(built) << core::describe(built.error());
@@ -110,13 +97,13 @@ constexpr const char* kBeat = "<gesture id=\"g1\" lexeme=\"BEAT\"/>";
 
 TEST(ScenarioBmlLexicon, TheGoldenFileKeepsOwnTablesAndVersion11HasTheDefaults)
 {
-    const Scenario v12 = golden(12);
+    const Scenario v12 = goldenScenario(12);
     ASSERT_EQ(v12.characters.size(), 2u);
     EXPECT_EQ(v12.characters[0].bmlLexicon, (Rows{{"BEAT", "stroll"}, {"WAVE", "greet"}}));
     ASSERT_TRUE(v12.characters[1].bmlLexicon) << "an empty table is a table: no rows, not the defaults";
     EXPECT_TRUE(v12.characters[1].bmlLexicon->empty());
     // Version 11 is version 12 without the tables: every character has the defaults.
-    Scenario v11 = golden(11);
+    Scenario v11 = goldenScenario(11);
     Scenario stripped = v12;
     for (Character& c : stripped.characters)
         c.bmlLexicon.reset();
@@ -132,27 +119,27 @@ TEST(ScenarioBmlLexicon, TheReaderNamesTheFieldThatIsWrong)
     const json doc = json::parse(core::readTextFile(testData("formats/v12/scenario.thespis")).value());
     json notObject = doc;
     notObject["characters"][0]["bmlLexicon"] = json::array({"BEAT"});
-    EXPECT_NE(refused(notObject).find("characters[0].bmlLexicon: expected an object of BML lexemes and gesture names"),
+    EXPECT_NE(refusedScenario(notObject).find("characters[0].bmlLexicon: expected an object of BML lexemes and gesture names"),
               std::string::npos)
-        << refused(notObject);
+        << refusedScenario(notObject);
     json number = doc;
     number["characters"][0]["bmlLexicon"]["BEAT"] = 3;
-    EXPECT_NE(refused(number).find("characters[0].bmlLexicon.BEAT: expected the name of a gesture"), std::string::npos)
-        << refused(number);
+    EXPECT_NE(refusedScenario(number).find("characters[0].bmlLexicon.BEAT: expected the name of a gesture"), std::string::npos)
+        << refusedScenario(number);
     json emptyEntry = doc;
     emptyEntry["characters"][1]["bmlLexicon"]["NOD"] = "";
-    EXPECT_NE(refused(emptyEntry).find("characters[1].bmlLexicon.NOD: expected the name of a gesture"),
+    EXPECT_NE(refusedScenario(emptyEntry).find("characters[1].bmlLexicon.NOD: expected the name of a gesture"),
               std::string::npos)
-        << refused(emptyEntry);
+        << refusedScenario(emptyEntry);
     json emptyLexeme = doc;
     emptyLexeme["characters"][0]["bmlLexicon"][""] = "greet";
-    EXPECT_NE(refused(emptyLexeme).find("characters[0].bmlLexicon: a lexeme must not be empty"), std::string::npos)
-        << refused(emptyLexeme);
+    EXPECT_NE(refusedScenario(emptyLexeme).find("characters[0].bmlLexicon: a lexeme must not be empty"), std::string::npos)
+        << refusedScenario(emptyLexeme);
     json twice = doc;
     twice["characters"][0]["bmlLexicon"]["beat"] = "greet";
-    EXPECT_NE(refused(twice).find("characters[0].bmlLexicon.beat: the lexeme \"BEAT\" is the same in another case"),
+    EXPECT_NE(refusedScenario(twice).find("characters[0].bmlLexicon.beat: the lexeme \"BEAT\" is the same in another case"),
               std::string::npos)
-        << refused(twice);
+        << refusedScenario(twice);
 }
 
 TEST(ScenarioBmlLexicon, ARowNamingNoGestureIsAWarningNotAnError)

@@ -10,6 +10,7 @@
 #include "runtime/stage.h"
 #include "scenario/scenario_io.h"
 #include "scenario/scenario_runtime.h"
+#include "scenario_formats.h"
 #include "test_support.h"
 #include "util/file_io.h"
 
@@ -20,23 +21,9 @@ using namespace core::scenario;
 using core::ErrorCode;
 using json = nlohmann::json;
 
-Scenario golden(int version)
-{
-    auto s = loadScenario(testData("formats/v" + std::to_string(version) + "/scenario.thespis"));
-    EXPECT_TRUE(s) << core::describe(s.error());
-    return s ? std::move(s).value() : Scenario{};
-}
-
 json goldenJson()
 {
     return json::parse(core::readTextFile(testData("formats/v10/scenario.thespis")).value());
-}
-
-std::string refused(const json& document)
-{
-    auto result = parseScenario(document.dump());
-    EXPECT_FALSE(result.ok());
-    return result ? std::string() : result.error().message;
 }
 
 // The demo with Creon looking at Antigone from 1 s for 2.5 s (edit::addGaze, as the studio's
@@ -64,7 +51,7 @@ std::string runtimeProblem(const Scenario& scenario)
 
 TEST(ScenarioGaze, TheGoldenFileHasAGazeLayerLookingAtTheOtherCharacter)
 {
-    const Scenario s = golden(10);
+    const Scenario s = goldenScenario(10);
     ASSERT_EQ(s.characters.size(), 2u);
     const Layer& layer = s.characters[1].layers.back();
     EXPECT_EQ(layer.kind, LayerKind::Gaze);
@@ -77,7 +64,7 @@ TEST(ScenarioGaze, TheGoldenFileHasAGazeLayerLookingAtTheOtherCharacter)
     EXPECT_EQ(look.gaze->offsetDirection, "LEFT");
     EXPECT_TRUE(look.clip.empty());
     // Version 9 reads as before: nothing in it looks anywhere.
-    for (const Character& c : golden(9).characters)
+    for (const Character& c : goldenScenario(9).characters)
         for (const Layer& l : c.layers) {
             EXPECT_NE(l.kind, LayerKind::Gaze);
             for (const ActionSpec& a : l.actions)
@@ -91,15 +78,15 @@ TEST(ScenarioGaze, TheReaderNamesTheFieldThatIsWrong)
     json& action = doc["characters"][1]["layers"][2]["actions"][0];
     json noTarget = doc;
     noTarget["characters"][1]["layers"][2]["actions"][0]["gaze"].erase("target");
-    EXPECT_NE(refused(noTarget).find("characters[1].layers[2].actions[0].gaze.target: this field is required"),
+    EXPECT_NE(refusedScenario(noTarget).find("characters[1].layers[2].actions[0].gaze.target: this field is required"),
               std::string::npos)
-        << refused(noTarget);
+        << refusedScenario(noTarget);
     json unknown = doc;
     unknown["characters"][1]["layers"][2]["actions"][0]["gaze"]["blink"] = true;
-    EXPECT_NE(refused(unknown).find("gaze.blink: unknown member of a gaze"), std::string::npos);
+    EXPECT_NE(refusedScenario(unknown).find("gaze.blink: unknown member of a gaze"), std::string::npos);
     json noClip = doc;
     noClip["characters"][1]["layers"][2]["actions"][0].erase("gaze");
-    EXPECT_NE(refused(noClip).find("actions[0].clip: this field is required"), std::string::npos);
+    EXPECT_NE(refusedScenario(noClip).find("actions[0].clip: this field is required"), std::string::npos);
     EXPECT_TRUE(action.contains("gaze"));
 }
 
@@ -160,7 +147,7 @@ TEST(ScenarioGaze, TheStageLooksFromTheActionsStartAndLetsGoAtItsEnd)
 
 TEST(ScenarioGaze, AddingAndChangingAGazeAreUndoableEdits)
 {
-    Scenario s = golden(9);
+    Scenario s = goldenScenario(9);
     auto added = core::edit::addGaze(s, 0, GazeSpec{"camera"}, core::secondsToTicks(1), 2.5);
     ASSERT_TRUE(added) << added.error().message;
     Scenario after = s;

@@ -13,6 +13,7 @@
 #include "runtime/stage.h"
 #include "scenario/scenario_io.h"
 #include "scenario/scenario_runtime.h"
+#include "scenario_formats.h"
 #include "test_support.h"
 #include "util/file_io.h"
 
@@ -23,20 +24,6 @@ using namespace core::scenario;
 using core::secondsToTicks;
 using json = nlohmann::json;
 namespace runtime = core::runtime;
-
-Scenario golden(int version)
-{
-    auto s = loadScenario(testData("formats/v" + std::to_string(version) + "/scenario.thespis"));
-    EXPECT_TRUE(s) << core::describe(s.error());
-    return s ? std::move(s).value() : Scenario{};
-}
-
-std::string refused(const json& document)
-{
-    auto result = parseScenario(document.dump());
-    EXPECT_FALSE(result.ok());
-    return result ? std::string() : result.error().message;
-}
 
 std::string runtimeProblem(const Scenario& scenario)
 {
@@ -77,14 +64,14 @@ double aimError(runtime::Stage& stage, double t)
 
 TEST(ScenarioPointing, TheGoldenFileHasAGesturePointingAtTheOtherCharactersHand)
 {
-    const Scenario s = golden(11);
+    const Scenario s = goldenScenario(11);
     const ActionSpec& wave = s.characters[0].layers[1].actions[0];
     ASSERT_TRUE(wave.pointing);
     EXPECT_EQ(wave.pointing->target, "Inline:r_radiocarpal");
     EXPECT_EQ(wave.pointing->hand, "LEFT_HAND");
     EXPECT_EQ(wave.clip, "wave");
     // Version 10 reads as before: nothing in it points.
-    for (const Character& c : golden(10).characters)
+    for (const Character& c : goldenScenario(10).characters)
         for (const Layer& l : c.layers)
             for (const ActionSpec& a : l.actions)
                 EXPECT_FALSE(a.pointing);
@@ -95,16 +82,16 @@ TEST(ScenarioPointing, TheReaderNamesTheFieldThatIsWrong)
     const json doc = json::parse(core::readTextFile(testData("formats/v11/scenario.thespis")).value());
     json noTarget = doc;
     noTarget["characters"][0]["layers"][1]["actions"][0]["pointing"].erase("target");
-    EXPECT_NE(refused(noTarget).find("characters[0].layers[1].actions[0].pointing.target: this field is required"),
+    EXPECT_NE(refusedScenario(noTarget).find("characters[0].layers[1].actions[0].pointing.target: this field is required"),
               std::string::npos)
-        << refused(noTarget);
+        << refusedScenario(noTarget);
     json unknown = doc;
     unknown["characters"][0]["layers"][1]["actions"][0]["pointing"]["finger"] = 2;
-    EXPECT_NE(refused(unknown).find("pointing.finger: unknown member of a pointing"), std::string::npos)
-        << refused(unknown);
+    EXPECT_NE(refusedScenario(unknown).find("pointing.finger: unknown member of a pointing"), std::string::npos)
+        << refusedScenario(unknown);
     json notAnObject = doc;
     notAnObject["characters"][0]["layers"][1]["actions"][0]["pointing"] = "Inline";
-    EXPECT_NE(refused(notAnObject).find("actions[0].pointing"), std::string::npos) << refused(notAnObject);
+    EXPECT_NE(refusedScenario(notAnObject).find("actions[0].pointing"), std::string::npos) << refusedScenario(notAnObject);
 }
 
 TEST(ScenarioPointing, TheRuntimeNamesAPointingThatCannotPlay)

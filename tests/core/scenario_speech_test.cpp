@@ -9,6 +9,7 @@
 #include "runtime/sound.h"
 #include "scenario/package_contents.h"
 #include "scenario/scenario_io.h"
+#include "scenario_formats.h"
 #include "test_support.h"
 
 namespace thespis::test {
@@ -17,13 +18,6 @@ namespace {
 using namespace core::scenario;
 using core::ErrorCode;
 using json = nlohmann::json;
-
-Scenario golden(int version)
-{
-    auto s = loadScenario(testData("formats/v" + std::to_string(version) + "/scenario.thespis"));
-    EXPECT_TRUE(s) << core::describe(s.error());
-    return s ? std::move(s).value() : Scenario{};
-}
 
 std::string refused(json document)
 {
@@ -39,7 +33,7 @@ std::string refused(json document)
 
 TEST(ScenarioSpeech, TheGoldenFileHasALineAndADominanceCurve)
 {
-    const Scenario s = golden(9);
+    const Scenario s = goldenScenario(9);
     ASSERT_EQ(s.characters.size(), 2u);
     ASSERT_EQ(s.characters[1].speech.size(), 1u);
     const SpeechLine& line = s.characters[1].speech[0];
@@ -62,7 +56,7 @@ TEST(ScenarioSpeech, Version8UpgradesWithoutLines)
 {
     // The version 9 golden file is the version 8 one with a line and a dominance curve on
     // "Inline": taking them back gives what the upgraded version 8 file reads as.
-    Scenario v9 = golden(9), v8 = golden(8);
+    Scenario v9 = goldenScenario(9), v8 = goldenScenario(8);
     v9.characters[1].speech.clear();
     v9.characters[1].layers[1].actions[0].weight = v8.characters[1].layers[1].actions[0].weight;
     v8.name = v9.name;
@@ -71,7 +65,7 @@ TEST(ScenarioSpeech, Version8UpgradesWithoutLines)
 
 TEST(ScenarioSpeech, TheReaderNamesWhatIsWrong)
 {
-    const json good = json::parse(serializeScenario(golden(9)));
+    const json good = json::parse(serializeScenario(goldenScenario(9)));
     json bad = good;
     bad["characters"][1]["speech"][0]["rate"] = 900;
     EXPECT_NE(refused(bad).find("characters[1].speech[0].rate"), std::string::npos) << refused(bad);
@@ -89,7 +83,7 @@ TEST(ScenarioSpeech, TheReaderNamesWhatIsWrong)
 TEST(ScenarioSpeech, ALineWithoutAStartIsKeptOffTheTimeline)
 {
     // Said by scripts (voiceService.activateAction): no start is read, none is written.
-    json document = json::parse(serializeScenario(golden(9)));
+    json document = json::parse(serializeScenario(goldenScenario(9)));
     document["characters"][1]["speech"][0].erase("start");
     auto read = parseScenario(document.dump());
     ASSERT_TRUE(read) << read.error().message;
@@ -105,7 +99,7 @@ TEST(ScenarioSpeech, ALineWithoutAStartIsKeptOffTheTimeline)
 
 TEST(ScenarioSpeech, RebasingMovesTheAudioPath)
 {
-    Scenario s = golden(9);
+    Scenario s = goldenScenario(9);
     rebasePaths(s, "/a/b", "/a");
     EXPECT_EQ(s.characters[1].speech[0].audio, "b/speech/hello.wav");
 }
@@ -119,7 +113,7 @@ TEST(ScenarioSpeech, TheLinesAudioPlaysWhereItIsOnTheTimeline)
     for (std::size_t i = 0; i < tone.size(); ++i)
         tone[i] = 0.5f * float(std::sin(2 * 3.14159265 * 440 * double(i) / 22050));
     ASSERT_TRUE(core::runtime::writeWav(folder / "speech/hello.wav", 22050, tone).ok());
-    Scenario s = golden(9);
+    Scenario s = goldenScenario(9);
     core::runtime::SoundService sound(Assets(folder), std::make_shared<core::runtime::ManualClock>());
     EXPECT_TRUE(sound.playSpeech(s).empty());
     std::vector<float> mix(48000 * 2);
