@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <tuple>
 #include <cmath>
 #include <numbers>
@@ -191,6 +192,37 @@ TEST_F(GazeTest, TheEyesLeadTheHeadFollowsWithinItsSpeedAndStopsWithoutOvershoot
     ASSERT_GE(eyesMoved, 0);
     ASSERT_GE(headMoved, 0);
     EXPECT_GE(headMoved - eyesMoved, settings.neck.latency) << "the eyes lead";
+}
+
+// Every body part keeps to its own top speed and stops on its goal: for a target behind, the
+// chest (60°/s) and back (45°/s) turn too, each after its latency, none overshooting.
+TEST_F(GazeTest, ChestAndBackTurnWithinTheirSpeedsAndStopWithoutOvershoot)
+{
+    motion::GazeSettings settings;
+    settings.saccades = false;
+    settings.influence = motion::GazeInfluence::Waist;
+    ASSERT_TRUE(stage.gaze("Ann", {runtime::GazeTarget::Kind::Point, around(150, 0), {}, {}}, settings, 0));
+    const double step = 1.0 / 240;
+    std::array<double, motion::kGazeBodyParts> previous{}, peak{}, highest{}, started{-1, -1, -1};
+    play(0, 4, step, [&](double t, const Look&) {
+        const motion::GazeState state = **stage.gazeState("Ann");
+        for (std::size_t p = 0; p < motion::kGazeBodyParts; ++p) {
+            peak[p] = std::max(peak[p], std::abs(state.heading[p] - previous[p]) / step);
+            highest[p] = std::max(highest[p], state.heading[p]);
+            if (started[p] < 0 && state.heading[p] > 0.5)
+                started[p] = t;
+            previous[p] = state.heading[p];
+        }
+    });
+    const auto back = std::size_t(motion::GazePart::Back), chest = std::size_t(motion::GazePart::Chest);
+    for (const auto& [p, limits] : {std::pair{back, settings.back}, {chest, settings.chest}}) {
+        SCOPED_TRACE(p == back ? "back" : "chest");
+        EXPECT_GT(previous[p], 0.5 * limits.heading) << "it takes part";
+        EXPECT_LE(peak[p], limits.maxSpeed * 1.02) << "degrees a second";
+        EXPECT_GT(peak[p], limits.maxSpeed * 0.3) << "it speeds up toward its top speed";
+        EXPECT_LE(highest[p], previous[p] + 0.1) << "no overshoot";
+        EXPECT_GE(started[p], limits.latency - step) << "it waits for its latency";
+    }
 }
 
 TEST_F(GazeTest, EyeJumpsLastEyesAlivesTwentyFiveMillisecondsPlusTwoPointFourADegree)
