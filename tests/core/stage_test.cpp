@@ -439,8 +439,9 @@ TEST(PoseMailbox, ADrawingThreadGetsExactlyThePosesOfEachTick)
     std::vector<PoseSet> sent;
     for (int step = 0; step <= 20; ++step) {
         const Tick t = secondsToTicks(0.3 * step);
-        if (step == 5)
+        if (step == 5) {
             ASSERT_TRUE(stage->activateAction("Antigone", Track::Body, "nod", t));
+        }
         stage->evaluate(t, poses);
         mailbox.publish(poses);
         sent.push_back(poses);
