@@ -181,7 +181,7 @@ struct MarkerTracker::State {
     // A grid the detector cannot see in a smear longer than its cells is looked for where the
     // last frame saw it: its markers drawn there, smeared, and fitted to the picture. Only
     // markers whose fit holds are kept; fewer than half the board's leave the frame missed.
-    MotionBlur placeFromLastPose(const MotionBlur& lastBlur)
+    MotionBlur placeFromLastPose()
     {
         if (charuco || !lastPose || framesSinceSeen > 0)
             return {};
@@ -321,7 +321,7 @@ TrackerEstimate MarkerTracker::estimate(const VideoFrame& frame)
     if (!s.charuco && blur.length > SynthesisSmear)
         blur = s.alignPatterns(blur);
     if (s.ids.empty())
-        blur = s.placeFromLastPose(s.lastBlur);
+        blur = s.placeFromLastPose();
     s.lastBlur = blur;
     toDetected(s.corners, s.ids, s.markers);
     s.correspondences();

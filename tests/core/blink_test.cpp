@@ -94,9 +94,11 @@ TEST(Blinks, ABlinkShutsTheEyeAndMovesOnlyTheLids)
     EXPECT_FLOAT_EQ(frame[std::size_t(fapChannel(19))] + frame[std::size_t(fapChannel(21))], 1024.0f);
     EXPECT_FLOAT_EQ(frame[std::size_t(fapChannel(20))] + frame[std::size_t(fapChannel(22))], 1024.0f);
     EXPECT_GT(frame[std::size_t(fapChannel(19))], 800.0f) << "mostly the upper lid";
-    for (std::size_t i = 0; i < frame.size(); ++i)
-        if (i < 18 || i > 21)
+    for (std::size_t i = 0; i < frame.size(); ++i) {
+        if (i < 18 || i > 21) {
             EXPECT_EQ(frame[i], 0.0f) << i;
+        }
+    }
     b.evaluate(b.starts()[3] - 0.01, frame);
     EXPECT_EQ(frame[std::size_t(fapChannel(19))], 0.0f);
 }
