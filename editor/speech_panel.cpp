@@ -252,7 +252,7 @@ void SpeechPanel::playPreview()
         previewBml(*job, name, at);
         return;
     }
-    auto performed = core::runtime::performSpeech(*m_session->stage(), name, kPreviewLine, job->visemeCues, job->gestureCues, at);
+    auto performed = core::runtime::performSpeech(*m_session->stage(), name, kPreviewLine, job->visemeCues, job->gestureBml, at);
     if (!performed) {
         m_progress->failed(performed.error());
         return;
@@ -341,7 +341,7 @@ void SpeechPanel::insertSpoken()
     // The line keeps its text, not a file: espeak-ng says it again the same way when it plays.
     auto line = core::edit::speechLine(job->text, job->voice, job->utterance.timing, {}, m_session->clock()->time());
     auto inserted = core::edit::insertSpeech(m_document->scenario(), currentCharacter(), std::move(line),
-                                             job->visemeCues, job->gestureCues);
+                                             job->visemeCues, job->gestureBml, &m_document->runtime());
     if (!inserted) {
         m_progress->failed(inserted.error());
         return;
@@ -379,7 +379,7 @@ void SpeechPanel::insertLipSync()
                                        m_session->clock()->time());
     auto inserted = core::edit::insertSpeech(m_document->scenario(), currentCharacter(), std::move(line),
                                              core::speech::visemeCues(timing, m_visemes->visemes()),
-                                             core::speech::gestureCues(*tagged, timing));
+                                             core::speech::taggedBml(*tagged, timing), &m_document->runtime());
     if (!inserted) {
         m_progress->failed(inserted.error());
         return;

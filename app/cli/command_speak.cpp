@@ -121,7 +121,7 @@ int runSpeak(const CommandSpec& spec, const ParsedArguments& arguments)
         const int inserted = insertSpeechAndSave(
             spec.name, *opened, {scenarioPath, *scenarioOut, character, at},
             core::edit::speechLine(job.text, job.voice, job.utterance.timing, out.value_or(""), 0), job.visemeCues,
-            job.gestureCues, quiet);
+            job.gestureBml, quiet);
         if (inserted != ExitOk) {
             job.discardOutput();
             return inserted;

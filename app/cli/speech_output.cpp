@@ -36,7 +36,7 @@ int applyAndSave(const std::string& command, const core::scenario::Scenario& rea
 int insertSpeechAndSave(const std::string& command, const core::scenario::OpenedScenario& opened,
                         const SpeechTarget& target, core::scenario::SpeechLine line,
                         const std::vector<core::speech::VisemeCue>& visemes,
-                        const std::vector<core::speech::GestureCue>& gestures, bool quiet)
+                        const core::speech::TaggedBml& gestures, bool quiet)
 {
     const core::scenario::Character* speaker = opened.scenario.findCharacter(target.character);
     if (!speaker) {
@@ -51,8 +51,17 @@ int insertSpeechAndSave(const std::string& command, const core::scenario::Opened
                          .lexically_relative(std::filesystem::weakly_canonical(folder))
                          .generic_string();
     line.start = core::secondsToTicks(target.at);
+    std::optional<core::scenario::ScenarioRuntime> runtime;
+    if (!gestures.empty()) { // the gestures' lengths
+        auto built = core::scenario::buildRuntime(opened.scenario, opened.assets);
+        if (!built) {
+            printError(command, built.error());
+            return ExitInvalidInput;
+        }
+        runtime = std::move(built).value();
+    }
     auto inserted = core::edit::insertSpeech(opened.scenario, int(speaker - opened.scenario.characters.data()),
-                                             std::move(line), visemes, gestures);
+                                             std::move(line), visemes, gestures, runtime ? &*runtime : nullptr);
     if (!inserted) {
         printError(command, inserted.error());
         return ExitInvalidInput;

@@ -13,6 +13,7 @@
 #include "speech/bml.h"
 #include "speech/espeak_voice.h"
 #include "speech/speech_plan.h"
+#include "speech/tagged_bml.h"
 
 namespace thespis::cli {
 
@@ -23,13 +24,14 @@ struct SpeechTarget {
     double at = 0;                   ///< seconds
 };
 
-/// Inserts `line` (its audio given as a path from the working folder, or empty) with its cues
-/// into `opened` and writes the result to target.out. Prints what was inserted unless `quiet`;
-/// returns the exit status (errors printed, naming the command).
+/// Inserts `line` (its audio given as a path from the working folder, or empty) with its viseme
+/// cues and tagged gestures (timed on the scenario's built gesticon) into `opened` and writes the
+/// result to target.out. Prints what was inserted unless `quiet`; returns the exit status (errors
+/// printed, naming the command).
 int insertSpeechAndSave(const std::string& command, const core::scenario::OpenedScenario& opened,
                         const SpeechTarget& target, core::scenario::SpeechLine line,
                         const std::vector<core::speech::VisemeCue>& visemes,
-                        const std::vector<core::speech::GestureCue>& gestures, bool quiet);
+                        const core::speech::TaggedBml& gestures, bool quiet);
 
 /// Inserts `block` (its speeches said in `spoken` with `voice`) into `opened` as the studio's
 /// Insert does (edit::insertBml) and writes the result to target.out; as insertSpeechAndSave().

@@ -6,11 +6,11 @@
 #include "edit/content_edits.h"
 #include "edit/document_edits.h"
 #include "edit/gaze_edits.h"
+#include "edit/gesture_insert.h"
 #include "edit/layer_insert.h"
 #include "edit/speech_edits.h"
 #include "anim/frame.h"
 #include "motion/head_gesture.h"
-#include "scenario/gesture_action.h"
 #include "speech/speech_plan.h"
 #include "util/text.h"
 
@@ -107,19 +107,7 @@ Result<BmlInsertion> insertBml(const Scenario& scenario, const scenario::Scenari
     std::map<std::string, speech::SpeechTiming> timings;
     for (const auto& [id, utterance] : spoken)
         timings[id] = utterance.timing;
-    speech::BmlGesticon gesticon;
-    for (const scenario::Gesture& g : who.gestures)
-        gesticon.names.push_back(g.name);
-    gesticon.entry = [&](const std::string& name) -> std::optional<speech::BmlGestureEntry> {
-        const scenario::Gesture* gesture = who.findGesture(name);
-        const auto playable = built.gestures.find(name);
-        if (!gesture || playable == built.gestures.end() || !playable->second.played().source ||
-            playable->second.played().source->domain().openEnded())
-            return std::nullopt;
-        return speech::BmlGestureEntry{playable->second.played().source->domain().duration(),
-                                       ticksToSeconds(gesture->fadeIn), ticksToSeconds(gesture->fadeOut)};
-    };
-    auto plan = speech::planBml(block, timings, gesticon,
+    auto plan = speech::planBml(block, timings, timelineGesticon(who, built),
                                 options.lexicon ? *options.lexicon : speech::BmlLexicon::of(who.bmlLexicon));
     if (!plan)
         return plan.error();
@@ -156,14 +144,12 @@ Result<BmlInsertion> insertBml(const Scenario& scenario, const scenario::Scenari
         }
         case BmlBehaviorKind::Gesture:
         case BmlBehaviorKind::Pointing: {
-            ActionSpec action = scenario::gestureAction(after, *who.findGesture(planned.gesture), startOf(planned));
-            action.name = b.id + " " + planned.gesture;
-            if (planned.length() > 0 && planned.entry.seconds > 0)
-                action.modifiers.insert(action.modifiers.begin(), stretchTo(planned.length(), planned.entry.seconds));
-            action.weight = planned.weight;
+            auto action = plannedGestureAction(after, *who.findGesture(planned.gesture), b.id, planned, at);
+            if (!action)
+                return failed(action.error());
             if (b.kind == BmlBehaviorKind::Pointing) // the Stage aims the entry's arm while it plays
-                action.pointing = scenario::PointingSpec{b.target, motion::pointingHandName(planned.hand)};
-            gestures.push_back(std::move(action));
+                action->pointing = scenario::PointingSpec{b.target, motion::pointingHandName(planned.hand)};
+            (planned.entry.face ? faces : gestures).push_back(std::move(action).value());
             break;
         }
         case BmlBehaviorKind::Head: {

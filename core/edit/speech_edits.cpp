@@ -1,11 +1,12 @@
 #include "edit/speech_edits.h"
 
 #include <algorithm>
+#include <span>
 
 #include "edit/content_edits.h"
 #include "edit/document_edits.h"
+#include "edit/gesture_insert.h"
 #include "edit/layer_insert.h"
-#include "scenario/gesture_action.h"
 #include "scene/face_mask.h"
 #include "scene/fap.h"
 #include "util/text.h"
@@ -37,14 +38,6 @@ ClipAsset visemeClip(const speech::VisemeCue& cue)
     return clip;
 }
 
-std::string gesturesOf(const scenario::Character& character)
-{
-    std::string names;
-    for (const scenario::Gesture& g : character.gestures)
-        names += (names.empty() ? "" : ", ") + g.name;
-    return names.empty() ? "none" : names;
-}
-
 } // namespace
 
 scenario::SpeechLine speechLine(const std::string& text, const speech::VoiceSettings& voice,
@@ -66,8 +59,8 @@ scenario::SpeechLine speechLine(const std::string& text, const speech::VoiceSett
 }
 
 Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, scenario::SpeechLine line,
-                                     const std::vector<speech::VisemeCue>& visemes,
-                                     const std::vector<speech::GestureCue>& gestures)
+                                     const std::vector<speech::VisemeCue>& visemes, const speech::TaggedBml& gestures,
+                                     const scenario::ScenarioRuntime* runtime)
 {
     if (!line.start)
         return invalid("A speech line inserted on the timeline needs a start.");
@@ -80,12 +73,17 @@ Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, sc
         if (cue.viseme < 1 || cue.viseme > scene::kVisemeCount || !(cue.duration > 0))
             return invalid("The viseme " + inQuotes(cue.name) + " is not one of MPEG-4's 14 the face shows.");
     const scenario::Character& speaker = scenario.characters[std::size_t(character)];
-    for (const speech::GestureCue& cue : gestures)
-        if (!speaker.findGesture(cue.animation))
-            return makeError(ErrorCode::NotFound, "line " + std::to_string(cue.line) + ", column "
-                                                      + std::to_string(cue.column) + ": the gesture "
-                                                      + inQuotes(cue.animation) + " is not in " + speaker.name
-                                                      + "'s gesticon (it has: " + gesturesOf(speaker) + ").");
+    std::optional<speech::BmlPlan> plan;
+    if (!gestures.empty()) {
+        if (!runtime || character >= int(runtime->characters.size()))
+            return invalid("Gestures are timed on the character's gesticon as built: no built scenario was given.");
+        auto planned = speech::planBml(gestures.block, gestures.speech,
+                                       timelineGesticon(speaker, runtime->characters[std::size_t(character)]),
+                                       speech::BmlLexicon::of(speaker.bmlLexicon));
+        if (!planned)
+            return planned.error();
+        plan = std::move(planned).value();
+    }
 
     SpeechInsertion result;
     Scenario after = scenario;
@@ -114,36 +112,14 @@ Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, sc
         action.mask = kSpeechMask;
         face.push_back(std::move(action));
     }
-    for (const speech::GestureCue& cue : gestures) {
-        const scenario::Gesture& gesture = *who.findGesture(cue.animation);
-        const ClipAsset* clip = who.findClip(gesture.clip);
-        const bool isFace = clip && clip->joints.empty() && !clip->scalars.empty();
-        ActionSpec action = scenario::gestureAction(after, gesture, at + secondsToTicks(cue.start));
-        action.name = cue.id + " " + cue.animation;
-        const double clipSeconds = clip && clip->frames.size() >= 2 * clip->valuesPerFrame()
-                                       ? double(clip->frames.size() / clip->valuesPerFrame() - 1) / clip->frameRate
-                                       : 0.0;
-        // A keyframed face gesture lasts as long as its words; a recorded one plays as recorded.
-        // A body gesture spans its words with its fades (speech::fitGesture).
-        if (isFace && clipSeconds > 0 && cue.end > cue.start) {
-            action.modifiers.insert(action.modifiers.begin(), stretchTo(cue.end - cue.start, clipSeconds));
-        } else if (!isFace && clipSeconds > 0) {
-            const speech::GestureFit fit = speech::fitGesture(cue, clipSeconds, ticksToSeconds(gesture.fadeIn),
-                                                              ticksToSeconds(gesture.fadeOut), {gesture.hold, gesture.stroke});
-            action.start = at + secondsToTicks(fit.start);
-            if (fit.warp.empty()) {
-                action.modifiers.insert(action.modifiers.begin(), stretchTo(fit.duration, clipSeconds));
-            } else {
-                auto curve = anim::Curve::keyframed(fit.warp);
-                if (!curve)
-                    return curve.error();
-                scenario::ModifierSpec warp{.kind = scenario::ModifierKind::TimeWarp};
-                warp.warp = std::move(curve).value();
-                warp.duration = fit.duration;
-                action.modifiers.insert(action.modifiers.begin(), std::move(warp));
-            }
-        }
-        (isFace ? face : body).push_back(std::move(action));
+    for (const speech::BmlPlanned& planned : plan ? plan->behaviors : std::span<const speech::BmlPlanned>{}) {
+        if (planned.gesture.empty())
+            continue; // the speech
+        auto action = plannedGestureAction(after, *who.findGesture(planned.gesture),
+                                           gestures.block.behaviors[planned.behavior].id, planned, at);
+        if (!action)
+            return action.error();
+        (planned.entry.face ? face : body).push_back(std::move(action).value());
     }
     if (face.empty() && body.empty())
         return invalid("There is nothing to insert: the speech has no phonemes.");

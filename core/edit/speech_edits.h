@@ -4,15 +4,17 @@
 // actions on the character's "Speech" face layer — each playing a viseme clip (one face channel
 // held at 1) stretched over its cue, weighted by the cue's dominance curve, over the Speech face
 // mask (mouth and tongue) — and the gestures of its tagged text play their gesticon entries over
-// the time of their words: face gestures on the same face layer, stretched to their words when
-// they are keyframed, body gestures on a "Gestures" body layer from their first word.
+// the time of their words, timed by the BML planner as BML's gestures are: face gestures on the
+// same face layer, body gestures on a "Gestures" body layer.
 
 #include <string>
 #include <vector>
 
 #include "edit/scenario_edit.h"
 #include "speech/espeak_voice.h"
+#include "scenario/scenario_runtime.h"
 #include "speech/speech_plan.h"
+#include "speech/tagged_bml.h"
 #include "util/tick.h"
 
 namespace thespis::core::edit {
@@ -30,12 +32,15 @@ scenario::SpeechLine speechLine(const std::string& text, const speech::VoiceSett
                                 const speech::SpeechTiming& timing, std::string audio, Tick start);
 
 /// Adds `line` to `character` (its name made unique among the character's lines) with the MPEG-4
-/// viseme cues and the gesture cues of its utterance from line.start. Creates what is missing: the
-/// viseme clips ("viseme p_b_m"), the "Speech" face mask, the layers. Errors: no such character;
-/// a gesture's animation not in its gesticon (naming the tag's line and column and the gestures
-/// it has); a locked layer.
+/// viseme cues of its utterance from line.start, and its tagged gestures as the BML planner times
+/// them (speech/tagged_bml.h: each over its words with its fades) on the character's gesticon as
+/// `runtime` has built it. Creates what is missing: the viseme clips ("viseme p_b_m"), the
+/// "Speech" face mask, the layers. Errors: no such character; gestures without `runtime`; a
+/// gesture not in its gesticon (naming the tag's line and column and the gestures it has); a
+/// locked layer.
 Result<SpeechInsertion> insertSpeech(const scenario::Scenario& scenario, int character, scenario::SpeechLine line,
                                      const std::vector<speech::VisemeCue>& visemes,
-                                     const std::vector<speech::GestureCue>& gestures);
+                                     const speech::TaggedBml& gestures = {},
+                                     const scenario::ScenarioRuntime* runtime = nullptr);
 
 } // namespace thespis::core::edit

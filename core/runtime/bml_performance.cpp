@@ -38,9 +38,6 @@ Result<BmlPerformance> BmlRealizer::perform(const std::string& character, const 
     auto skeleton = stage.skeleton(character);
     if (!skeleton)
         return skeleton.error();
-    auto bodyActions = stage.actionNames(character, Track::Body);
-    if (!bodyActions)
-        return bodyActions.error();
 
     // The speeches' audio (spoken before, or synthesised now), then the plan.
     std::map<std::string, speech::Utterance> synthesised;
@@ -60,13 +57,7 @@ Result<BmlPerformance> BmlRealizer::perform(const std::string& character, const 
         timings[b.id] = spoken[b.id]->timing;
     }
     std::map<std::string, ActionTemplate> gestures;
-    const speech::BmlGesticon gesticon{*bodyActions, [&](const std::string& name) -> std::optional<speech::BmlGestureEntry> {
-        auto found = stage.actionTemplate(character, Track::Body, name);
-        if (!found || !*found || (*found)->source->domain().openEnded())
-            return std::nullopt;
-        const ActionTemplate& g = gestures[name] = std::move(**found);
-        return speech::BmlGestureEntry{g.source->domain().duration(), g.fadeIn, g.fadeOut};
-    }};
+    const speech::BmlGesticon gesticon = stageGesticon(stage, character, gestures);
     auto lexicon = options.lexicon ? Result<speech::BmlLexicon>(*options.lexicon) : stage.bmlLexicon(character);
     if (!lexicon)
         return lexicon.error();
@@ -127,16 +118,12 @@ Result<BmlPerformance> BmlRealizer::perform(const std::string& character, const 
         }
         case BmlBehaviorKind::Gesture:
         case BmlBehaviorKind::Pointing: {
-            ActionTemplate g = gestures.at(planned.gesture);
-            const double clip = g.source->domain().duration();
-            if (length > 0 && clip > 0) {
-                auto stretched = anim::TimeStretch::create(g.source, length / clip);
-                if (!stretched)
-                    return stretched.error();
-                g.source = std::move(stretched).value();
-            }
-            g.params.weight = planned.weight;
-            if (auto ok = play(b, Track::Body, name, g, startOf(times)); !ok)
+            auto g = fittedGesture(gestures.at(planned.gesture), planned);
+            if (!g)
+                return speech::bmlBehaviorError(g.error().code, b, g.error().message);
+            if (auto ok = play(b, planned.entry.face ? Track::Face : Track::Body, name, *g,
+                               secondsToTicks(start + planned.fit.start));
+                !ok)
                 return ok.error();
             if (b.kind == BmlBehaviorKind::Pointing) {
                 // The entry's arm, aimed at the target with the entry's fades.
@@ -189,17 +176,10 @@ Result<BmlPerformance> BmlRealizer::perform(const std::string& character, const 
         performance.end = std::max(performance.end, times.at[kEnd]);
         for (std::size_t p = 0; p < speech::kBmlPointCount; ++p)
             performance.events.push_back({times.at[p], b.id + ":" + std::string(speech::bmlPointName(BmlPoint(p)))});
-        if (b.kind == BmlBehaviorKind::Speech)
-            for (const auto& [mark, offset] : b.syncMarks) {
-                const speech::SpeechTiming& timing = timings.at(b.id);
-                double when = timing.words.empty() ? 0 : timing.words.back().end;
-                for (const speech::WordTiming& w : timing.words)
-                    if (w.textBegin >= offset) {
-                        when = w.start;
-                        break;
-                    }
-                performance.events.push_back({times.at[kStart] + when, b.id + ":" + mark});
-            }
+        for (std::size_t m = 0; m < times.marks.size(); ++m) {
+            times.marks[m] += start;
+            performance.events.push_back({times.marks[m], b.id + ":" + b.syncMarks[m].first});
+        }
         performance.times.push_back(std::move(times));
     }
     performance.events.push_back({performance.start, block.id + ":start"});

@@ -59,9 +59,55 @@ speech::SpeechTiming timingOf(const scenario::SpeechLine& line, std::string_view
     return timing;
 }
 
+speech::BmlGesticon stageGesticon(const Stage& stage, const std::string& character,
+                                  std::map<std::string, ActionTemplate>& asked)
+{
+    speech::BmlGesticon gesticon;
+    for (const Track track : {Track::Body, Track::Face})
+        if (auto names = stage.actionNames(character, track))
+            gesticon.names.insert(gesticon.names.end(), names->begin(), names->end());
+    gesticon.entry = [&stage, &asked, character](const std::string& name) -> std::optional<speech::BmlGestureEntry> {
+        for (const Track track : {Track::Body, Track::Face}) {
+            auto found = stage.actionTemplate(character, track, name);
+            if (!found || !*found)
+                continue;
+            if ((*found)->source->domain().openEnded())
+                return std::nullopt;
+            const ActionTemplate& g = asked[name] = std::move(**found);
+            return speech::BmlGestureEntry{g.source->domain().duration(), g.fadeIn, g.fadeOut, g.shape,
+                                           track == Track::Face};
+        }
+        return std::nullopt;
+    };
+    return gesticon;
+}
+
+Result<ActionTemplate> fittedGesture(ActionTemplate gesture, const speech::BmlPlanned& planned)
+{
+    const speech::GestureFit& fit = planned.fit;
+    gesture.params.weight = planned.weight;
+    if (planned.entry.seconds <= 0)
+        return gesture;
+    if (fit.warp.empty()) {
+        auto stretched = anim::TimeStretch::create(gesture.source, fit.stretch);
+        if (!stretched)
+            return stretched.error();
+        gesture.source = std::move(stretched).value();
+        return gesture;
+    }
+    auto warp = anim::Curve::keyframed(fit.warp);
+    if (!warp)
+        return warp.error();
+    auto warped = anim::TimeWarp::create(gesture.source, std::move(warp).value(), fit.duration);
+    if (!warped)
+        return warped.error();
+    gesture.source = std::move(warped).value();
+    return gesture;
+}
+
 Result<SpeechPerformance> performSpeech(Stage& stage, const std::string& character, const std::string& name,
                                         const std::vector<speech::VisemeCue>& cues,
-                                        const std::vector<speech::GestureCue>& gestures, Tick at)
+                                        const speech::TaggedBml& gestures, Tick at)
 {
     if (stage.findCharacter(character) < 0)
         return makeError(ErrorCode::NotFound, "There is no character \"" + character + "\" to speak.");
@@ -82,39 +128,32 @@ Result<SpeechPerformance> performSpeech(Stage& stage, const std::string& charact
             return played.error();
         performance.visemes = int(cues.size());
     }
-    for (const speech::GestureCue& cue : gestures) {
-        if (stage.activateAction(character, Track::Face, cue.animation, at + secondsToTicks(cue.start))) {
-            ++performance.gestures;
-            continue;
-        }
-        // A body gesture spans its words with its fades, its clip fitted to them.
-        auto found = stage.actionTemplate(character, Track::Body, cue.animation);
-        if (!found || !*found) {
-            performance.unknownGestures.push_back(cue.animation);
-            continue;
-        }
-        ActionTemplate gesture = std::move(**found);
-        const anim::TimeDomain domain = gesture.source->domain();
-        const speech::GestureFit fit = speech::fitGesture(cue, domain.openEnded() ? 0 : domain.duration(),
-                                                          gesture.fadeIn, gesture.fadeOut, gesture.shape);
-        if (!domain.openEnded() && domain.duration() > 0) {
-            if (fit.warp.empty()) {
-                auto stretched = anim::TimeStretch::create(gesture.source, fit.stretch);
-                if (!stretched)
-                    return stretched.error();
-                gesture.source = std::move(stretched).value();
-            } else {
-                auto warp = anim::Curve::keyframed(fit.warp);
-                if (!warp)
-                    return warp.error();
-                auto warped = anim::TimeWarp::create(gesture.source, std::move(warp).value(), fit.duration);
-                if (!warped)
-                    return warped.error();
-                gesture.source = std::move(warped).value();
-            }
-        }
-        if (auto played = stage.playAction(character, Track::Body, cue.animation, gesture,
-                                           at + secondsToTicks(fit.start), {.fadeIn = 0});
+    if (gestures.empty())
+        return performance;
+    // Tags naming what the character cannot play are told, not played; the rest as BML's gestures.
+    std::map<std::string, ActionTemplate> templates;
+    const speech::BmlGesticon gesticon = stageGesticon(stage, character, templates);
+    speech::BmlBlock block = gestures.block;
+    std::erase_if(block.behaviors, [&](const speech::BmlBehavior& b) {
+        if (b.kind != speech::BmlBehaviorKind::Gesture || gesticon.entry(b.lexeme))
+            return false;
+        performance.unknownGestures.push_back(b.lexeme);
+        return true;
+    });
+    auto plan = speech::planBml(block, gestures.speech, gesticon, speech::BmlLexicon::defaults());
+    if (!plan)
+        return plan.error();
+    for (const speech::BmlPlanned& planned : plan->behaviors) {
+        if (planned.gesture.empty())
+            continue; // the speech
+        auto gesture = fittedGesture(templates.at(planned.gesture), planned);
+        if (!gesture)
+            return gesture.error();
+        const std::string action = name + ":" + block.behaviors[planned.behavior].id;
+        const Track track = planned.entry.face ? Track::Face : Track::Body;
+        (void)stage.removeAction(character, track, action);
+        if (auto played = stage.playAction(character, track, action, *gesture, at + secondsToTicks(planned.fit.start),
+                                           {.fadeIn = 0});
             !played)
             return played.error();
         ++performance.gestures;

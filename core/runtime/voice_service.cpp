@@ -45,7 +45,7 @@ Result<VoiceService::Said> VoiceService::say(const std::string& character, const
     if (!spoken)
         return makeError(spoken.error().code, where + ", " + spoken.error().message);
     auto performed = performSpeech(*m_stage, character, line.name, speech::visemeCues(spoken->timing),
-                                   speech::gestureCues(spoken->text, spoken->timing), now);
+                                   speech::taggedBml(spoken->text, spoken->timing), now);
     if (!performed)
         return makeError(performed.error().code, where + ": " + performed.error().message);
     {

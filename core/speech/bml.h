@@ -97,6 +97,7 @@ using BmlNaturalTiming = std::function<std::array<double, kBmlPointCount>(const 
 struct BmlTimes {
     std::string behavior;                    ///< its id
     std::array<double, kBmlPointCount> at{}; ///< seconds from the block's start, by BmlPoint
+    std::vector<double> marks;               ///< a speech's <sync> points, in its syncMarks' order
     bool operator==(const BmlTimes&) const = default;
 };
 
@@ -104,7 +105,8 @@ struct BmlTimes {
 /// references say, the others by the behaviour's natural timing — shifted when one point is
 /// constrained, stretched piecewise between two or more. A behaviour constrained by nothing
 /// starts with the block. A speech's own points are its start and end, and each <sync id> is
-/// the start of the word after it (the end of the last word when none follows); `speech` holds
+/// the end of the word it directly follows ("word<sync/>"), else the start of the word after it
+/// (the end of the last word when none follows); `speech` holds
 /// the timing of each speech's text by the speech's id. A speech ends at the later of its audio's
 /// duration and its last word's end, a wait after its duration; both have ready … stroke at their
 /// start and strokeEnd … relax at their end. `natural` is asked for the other kinds only (when it

@@ -19,13 +19,40 @@ anim::Curve fades(const Points& at)
     return anim::Curve::cubicFade(std::max(0.0, at[kReady] - at[kStart]), std::max(0.0, at[kEnd] - at[kRelax]));
 }
 
-// The points of a motion of `seconds` with `fadeIn`/`fadeOut`: stroke in the middle of the held part.
-Points phases(double seconds, double fadeIn, double fadeOut)
+// The points of a motion of `seconds` with `fadeIn`/`fadeOut`: its stroke at `stroke` seconds
+// when that falls in the held part, else in the middle of it.
+Points phases(double seconds, double fadeIn, double fadeOut, double stroke = -1)
 {
     fadeIn = std::min(fadeIn, seconds / 2);
     fadeOut = std::min(fadeOut, seconds - fadeIn);
-    const double ready = fadeIn, relax = seconds - fadeOut, stroke = (ready + relax) / 2;
+    const double ready = fadeIn, relax = seconds - fadeOut;
+    if (!(stroke >= ready && stroke <= relax))
+        stroke = (ready + relax) / 2;
     return {0, ready, stroke, stroke, stroke, relax, seconds};
+}
+
+// A gesture's times: not before its block (its fade-in then its own, over its first words), its
+// clip fitted to them.
+void placeGesture(BmlPlanned& p)
+{
+    Points& at = p.times.at;
+    double fadeIn = at[kReady] - at[kStart];
+    if (at[kStart] < 0) {
+        for (double& t : at)
+            t = std::max(t, 0.0);
+        fadeIn = std::min(std::min(p.entry.fadeIn, p.entry.seconds / 2), at[kEnd]);
+    }
+    p.weight = anim::Curve::cubicFade(std::max(0.0, fadeIn), std::max(0.0, at[kEnd] - at[kRelax]));
+    const double stroke = p.entry.shape.stroke >= 0 ? at[std::size_t(BmlPoint::Stroke)] : -1;
+    p.fit = fitGesture({at[kStart], at[kEnd], stroke}, p.entry.seconds, p.entry.shape);
+}
+
+std::string namesOf(const std::vector<std::string>& names)
+{
+    std::string out;
+    for (const std::string& name : names)
+        out += (out.empty() ? "" : ", ") + name;
+    return out.empty() ? "none" : out;
 }
 
 // Checks what `b` needs and fills what its playing takes, but its times.
@@ -43,6 +70,10 @@ Result<void> prepare(const BmlBehavior& b, const std::map<std::string, SpeechTim
         const std::string lexeme = b.kind == BmlBehaviorKind::Pointing ? std::string("POINT") : b.lexeme;
         const std::string name = b.byName ? b.lexeme : lexicon.entryFor(lexeme, gesticon.names);
         const auto entry = name.empty() || !gesticon.entry ? std::nullopt : gesticon.entry(name);
+        if (!entry && b.byName)
+            return bmlBehaviorError(ErrorCode::NotFound, b,
+                                    "the gesticon has no gesture \"" + name + "\" the character can play (it has: " +
+                                        namesOf(gesticon.names) + ").");
         if (!entry)
             return bmlBehaviorError(ErrorCode::NotFound, b,
                                     "no gesture for \"" + lexeme + "\" (the lexicon and the gesticon name none "
@@ -124,7 +155,8 @@ Result<BmlPlan> planBml(const BmlBlock& block, const std::map<std::string, Speec
         const BmlPlanned& p = *byId.at(b.id);
         switch (b.kind) {
         case BmlBehaviorKind::Gesture:
-        case BmlBehaviorKind::Pointing: return phases(p.entry.seconds, p.entry.fadeIn, p.entry.fadeOut);
+        case BmlBehaviorKind::Pointing:
+            return phases(p.entry.seconds, p.entry.fadeIn, p.entry.fadeOut, p.entry.shape.stroke);
         case BmlBehaviorKind::Head: return phases(motion::naturalHeadGestureSeconds(p.head), 0, 0);
         case BmlBehaviorKind::FaceLexeme: return phases(kBmlFaceLexemeSeconds, 0.2, 0.3);
         case BmlBehaviorKind::Gaze: {
@@ -145,8 +177,9 @@ Result<BmlPlan> planBml(const BmlBlock& block, const std::map<std::string, Speec
         BmlPlanned& p = plan.behaviors[i];
         p.times = (*resolved)[i];
         const BmlBehaviorKind kind = block.behaviors[i].kind;
-        if (kind == BmlBehaviorKind::Gesture || kind == BmlBehaviorKind::Pointing ||
-            kind == BmlBehaviorKind::FaceLexeme)
+        if (kind == BmlBehaviorKind::Gesture || kind == BmlBehaviorKind::Pointing)
+            placeGesture(p);
+        if (kind == BmlBehaviorKind::FaceLexeme)
             p.weight = fades(p.times.at);
         if (kind == BmlBehaviorKind::Head)
             p.head.duration = std::max(p.length(), 0.05);

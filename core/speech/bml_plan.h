@@ -1,8 +1,10 @@
 #pragma once
-// One planner for a <bml> block (issue 33), whoever plays it: it checks that the character can
-// play each behaviour — a gesticon entry for each gesture lexeme, a known faceLexeme and head
-// lexeme, a gaze target, influence and offset that read — and times them all (resolveBml) from
-// the speeches' TTS timing and each kind's own timing. The Stage's realizer
+// One planner for a <bml> block (issue 33), whoever plays it, and for tagged text made BML
+// (speech/tagged_bml.h): it checks that the character can play each behaviour — a gesticon entry
+// for each gesture lexeme, a known faceLexeme and head lexeme, a gaze target, influence and
+// offset that read — and times them all (resolveBml) from the speeches' TTS timing and each
+// kind's own timing. A gesture's clip is fitted to its time, its stroke where the block puts it
+// (speech::fitGesture); a gesture never starts before its block. The Stage's realizer
 // (runtime/bml_performance.h) plays the plan live; edit::insertBml puts it on the timeline.
 
 #include <array>
@@ -20,13 +22,17 @@
 #include "motion/pointing.h"
 #include "speech/bml.h"
 #include "speech/bml_lexicon.h"
+#include "speech/speech_plan.h"
 #include "util/error.h"
 
 namespace thespis::core::speech {
 
-/// What planning needs of a gesticon entry: its motion's length and fades, in seconds.
+/// What planning needs of a gesticon entry: its motion's length and fades, in seconds, how it
+/// meets a time longer or shorter than its motion, and whether it moves the face (or the body).
 struct BmlGestureEntry {
     double seconds = 0, fadeIn = 0, fadeOut = 0;
+    GestureShape shape;
+    bool face = false;
 };
 
 /// The character's gesticon as the planner sees it: its entries' names, and each one's timing
@@ -48,6 +54,7 @@ struct BmlPlanned {
     anim::Curve weight = anim::Curve::constant(1);
     std::string gesture;                      ///< Gesture, Pointing: the gesticon entry
     BmlGestureEntry entry;                    ///< its timing
+    GestureFit fit;                           ///< how its clip fills start … end
     motion::HeadGestureOptions head;          ///< Head (duration: its length)
     std::vector<std::pair<int, double>> faps; ///< FaceLexeme: FAP number → value, amount applied
     motion::GazeTarget target;                ///< Gaze, Pointing

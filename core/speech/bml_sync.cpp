@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <iterator>
 
 #include "util/text.h"
 
@@ -110,7 +111,7 @@ public:
                 return *error;
         std::vector<BmlTimes> out;
         for (int b = 0; b < m_count; ++b)
-            out.push_back({m_block.behaviors[b].id, m_at[b]});
+            out.push_back({m_block.behaviors[b].id, m_at[b], m_markAt[b]});
         return out;
     }
 
@@ -170,7 +171,10 @@ private:
             for (const auto& mark : self.syncMarks) {
                 const auto next = std::partition_point(words.begin(), words.end(),
                                                        [&](const WordTiming& w) { return w.textBegin < mark.second; });
-                m_markNatural[b].push_back(next == words.end() ? lastWordEnd : next->start);
+                if (next != words.begin() && std::prev(next)->textEnd == mark.second)
+                    m_markNatural[b].push_back(std::prev(next)->end); // right after its word: the word's end
+                else
+                    m_markNatural[b].push_back(next == words.end() ? lastWordEnd : next->start);
             }
             m_markAt[b].resize(self.syncMarks.size());
         } else if (self.kind == BmlBehaviorKind::Wait) {

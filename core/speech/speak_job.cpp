@@ -129,6 +129,7 @@ Result<void> SpeakJob::run(JobContext& context)
     utterance = {};
     visemeCues.clear();
     gestureCues.clear();
+    gestureBml = {};
     bml.reset();
     if (isBml(text))
         return runBml(context);
@@ -151,6 +152,7 @@ Result<void> SpeakJob::run(JobContext& context)
     utterance.timing.duration = utterance.duration();
     visemeCues = speech::visemeCues(utterance.timing, visemes);
     gestureCues = speech::gestureCues(tagged, utterance.timing);
+    gestureBml = taggedBml(tagged, utterance.timing);
     if (context.stopRequested())
         return cancelledError(title());
     if (!wavOutput.empty())

@@ -14,6 +14,7 @@
 #include "speech/bml.h"
 #include "speech/espeak_voice.h"
 #include "speech/speech_plan.h"
+#include "speech/tagged_bml.h"
 #include "speech/tagged_text.h"
 #include "util/job.h"
 
@@ -47,7 +48,8 @@ struct SpeakJob final : Job {
     TaggedText tagged;
     Utterance utterance;           ///< the whole speech; timing offsets into tagged.text
     std::vector<VisemeCue> visemeCues;
-    std::vector<GestureCue> gestureCues;
+    std::vector<GestureCue> gestureCues; ///< the words each tagged gesture spans
+    TaggedBml gestureBml;          ///< the tagged gestures as BML, for the planner
     /// BML: the block, and each of its speeches said, by behaviour id (the fields above stay empty).
     std::optional<BmlBlock> bml;
     std::map<std::string, Utterance> bmlSpeech;

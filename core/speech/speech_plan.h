@@ -2,9 +2,9 @@
 // From speech timing to what the face does (paper §5.2): every phoneme shows its viseme, as a
 // blending action on the face track whose weight is the coarticulation dominance curve (eq. 3)
 // over the phoneme widened by the viseme's spread, so that neighbouring visemes overlap and blend
-// (Cohen and Massaro's model: where several are active, each counts by its dominance); and every
-// gesture of tagged text spans the time its words are spoken. One plan serves the studio's
-// preview and Insert, the command line and scripts.
+// (Cohen and Massaro's model: where several are active, each counts by its dominance); and how a
+// gesture's clip fills the time the BML planner gives it. One plan serves the studio's preview
+// and Insert, the command line and scripts.
 
 #include <string>
 #include <vector>
@@ -30,7 +30,6 @@ struct VisemeCue {
 struct GestureCue {
     std::string id, animation;
     double start = 0, end = 0; ///< seconds: from its first word's start to its last word's end
-    double stress = -1;        ///< seconds: the start of the first word it spans that is stressed (−1: none)
     int line = 0, column = 0;  ///< of its tag
 };
 
@@ -39,16 +38,12 @@ struct GestureCue {
 /// the utterance. Sorted by start.
 std::vector<VisemeCue> visemeCues(const SpeechTiming& timing, const VisemeSet& set = mpeg4Visemes());
 
-/// When each gesture of `text` plays, from the timing of the words it spans (the timing of
-/// `text.text`, whose words' text offsets are into it). A gesture spanning no word (tags side by
-/// side, or around punctuation) lasts from the end of the word before it to the start of the next.
+/// The words each gesture of `text` spans, in time (the timing of `text.text`, whose words' text
+/// offsets are into it), as a person reads them; the planner times the gesture itself
+/// (speech/tagged_bml.h). A gesture spanning no word (tags side by side, or around punctuation)
+/// lasts from the end of the word before it to the start of the next.
 std::vector<GestureCue> gestureCues(const TaggedText& text, const SpeechTiming& timing);
 
-/// How a gesture plays over its words (paper §5.2: "the TTS timing information is used to plan
-/// the length of the gesture motions. A blending fade-in and fade-out is applied"): it fades in
-/// before its first word and out after its last, so that it is wholly there while the words are
-/// said, and its clip is stretched or shrunk to fill that. Never before the utterance starts: a
-/// gesture on the first words then fades in over them.
 /// How a gesture entry meets words longer or shorter than its motion (scenario.h's Gesture): its
 /// stroke, seconds into its clip (−1: none marked), and whether it holds rather than stretches.
 struct GestureShape {
@@ -56,19 +51,26 @@ struct GestureShape {
     double stroke = -1;
 };
 
+/// Where a gesture plays, as the planner (speech/bml_plan.h) times it: seconds from its block's
+/// start, fades included; `stroke` is when its stroke shows (−1: where its clip puts it).
+struct GestureSpan {
+    double start = 0, end = 0, stroke = -1;
+};
+
 struct GestureFit {
-    double start = 0;     ///< seconds from the utterance's start
+    double start = 0;     ///< seconds from the block's start
     double duration = 0;  ///< seconds, fades included
     double stretch = 1;   ///< the clip's time scale (2: twice as long)
     /// Local seconds → the clip's seconds, when the gesture is not simply stretched (a stroke to
-    /// put on its stressed word, a hold): a monotone curve through its keys. Empty: `stretch`.
+    /// put on its time, a hold): a monotone curve through its keys. Empty: `stretch`.
     std::vector<anim::CurveKey> warp;
 };
-/// With `shape`: a marked stroke falls on the start of the cue's stressed word (its first word
-/// when none is stressed), each side of it time-scaled to fit; a holding entry plays at its own
-/// speed and holds its stroke (or middle) pose for as long as the words last, scaled only where
-/// the words leave too little time.
-GestureFit fitGesture(const GestureCue& cue, double clipSeconds, double fadeIn, double fadeOut,
-                      const GestureShape& shape = {});
+
+/// How a clip of `clipSeconds` fills `span` (paper §5.2: "the TTS timing information is used to
+/// plan the length of the gesture motions"): stretched or shrunk to it; with `shape`, a marked
+/// stroke falls on the span's stroke, each side of it time-scaled to fit, and a holding entry
+/// plays at its own speed and holds its stroke (or middle) pose for as long as the span lasts,
+/// scaled only where it leaves too little time.
+GestureFit fitGesture(const GestureSpan& span, double clipSeconds, const GestureShape& shape = {});
 
 } // namespace thespis::core::speech

@@ -177,17 +177,21 @@ void bindSpeech(py::module_& m)
     s.def(
         "insert",
         [](const core::scenario::Scenario& scenario, const std::string& character, const speech::SpeakJob& spoken,
-           double at, const std::string& audio) {
+           double at, const std::string& audio, const core::scenario::ScenarioRuntime* runtime) {
             auto line = core::edit::speechLine(spoken.text, spoken.voice, spoken.utterance.timing, audio,
                                                core::secondsToTicks(at));
+            if (!spoken.gestureBml.empty() && !runtime)
+                throw py::value_error("The speech has tagged gestures: give the scenario's runtime "
+                                      "(thespis.build_runtime) for their lengths.");
             return unwrap(core::edit::insertSpeech(scenario, speakerIndex(scenario, character), std::move(line),
-                                                   spoken.visemeCues, spoken.gestureCues))
+                                                   spoken.visemeCues, spoken.gestureBml, runtime))
                 .edit;
         },
-        "scenario"_a, "character"_a, "speech"_a, "at"_a = 0.0, "audio"_a = "",
+        "scenario"_a, "character"_a, "speech"_a, "at"_a = 0.0, "audio"_a = "", "runtime"_a = nullptr,
         "The Edit that puts the speech on the character from `at` seconds as the studio's Insert does: the line "
         "(text, voice, timing, `audio` file relative to the scenario), viseme actions on its 'Speech' face layer, "
-        "tagged gestures over their words. One undo step: apply(scenario), inverse().");
+        "tagged gestures over their words, timed by the BML planner on the gesticon of `runtime` (the scenario's, "
+        "needed when the text has gestures). One undo step: apply(scenario), inverse().");
 
     s.def(
         "insert_bml",
@@ -248,7 +252,7 @@ void bindSpeech(py::module_& m)
             auto line = core::edit::speechLine(aligned.result.transcript, {}, timing,
                                                audio.empty() ? aligned.audio.string() : audio, core::secondsToTicks(at));
             return unwrap(core::edit::insertSpeech(scenario, speakerIndex(scenario, character), std::move(line),
-                                                   speech::visemeCues(timing), {}))
+                                                   speech::visemeCues(timing)))
                 .edit;
         },
         "scenario"_a, "character"_a, "alignment"_a, "at"_a = 0.0, "audio"_a = "",
@@ -260,7 +264,7 @@ void bindSpeech(py::module_& m)
         [](core::runtime::Stage& stage, const std::string& character, const speech::SpeakJob& spoken, double at,
            const std::string& name) {
             auto performed = unwrap(core::runtime::performSpeech(stage, character, name, spoken.visemeCues,
-                                                                 spoken.gestureCues, core::secondsToTicks(at)));
+                                                                 spoken.gestureBml, core::secondsToTicks(at)));
             return py::dict("action"_a = performed.action, "visemes"_a = performed.visemes,
                             "gestures"_a = performed.gestures, "unknown_gestures"_a = performed.unknownGestures);
         },

@@ -38,10 +38,20 @@ def test_creon_speaks_a_tagged_line_and_it_goes_into_the_scenario(tmp_path):
 
     scenario = thespis.load_scenario(str(demo_scenario()))
     before = thespis.serialize_scenario(scenario)
-    change = speech.insert(scenario, "Creon", said, at=1.5, audio="line.wav")
+    with pytest.raises(ValueError, match="runtime"):  # the gesture's length comes from the gesticon as built
+        speech.insert(scenario, "Creon", said, at=1.5, audio="line.wav")
+    runtime = thespis.build_runtime(scenario, demo_scenario().parent)
+    change = speech.insert(scenario, "Creon", said, at=1.5, audio="line.wav", runtime=runtime)
     change.apply(scenario)
-    line = [c for c in scenario.characters if c.name == "Creon"][0].speech[-1]
+    creon = [c for c in scenario.characters if c.name == "Creon"][0]
+    line = creon.speech[-1]
     assert line.audio == "line.wav" and line.text.startswith("Pop <begin_gesture")
+    # The nod fades in before "the" and is wholly there when the word starts.
+    agree = next(g for g in creon.gestures if g.name == "agree")
+    nod = next(layer for layer in creon.layers if layer.name == "Gestures").actions[-1]
+    assert nod.name == "g1 agree"
+    fade_in = agree.fade_in / thespis.TICKS_PER_SECOND
+    assert nod.start_seconds == pytest.approx(1.5 + said.words[1][1] - fade_in, abs=1e-3)
     change.inverse().apply(scenario)
     assert thespis.serialize_scenario(scenario) == before
 

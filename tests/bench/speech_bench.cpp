@@ -37,12 +37,17 @@ void FaceSchedule(benchmark::State& state)
         state.SkipWithError("cannot load the demo or speak");
         return;
     }
+    auto built = scenario::buildRuntime(*scenario, THESPIS_RESOURCES);
+    if (!built) {
+        state.SkipWithError("cannot build the demo");
+        return;
+    }
     for (auto _ : state) {
         const auto visemes = speech::visemeCues(job.utterance.timing);
-        const auto gestures = speech::gestureCues(job.tagged, job.utterance.timing);
+        const auto gestures = speech::taggedBml(job.tagged, job.utterance.timing);
         auto inserted = edit::insertSpeech(*scenario, 0,
                                            edit::speechLine(job.text, job.voice, job.utterance.timing, "line.wav", 0),
-                                           visemes, gestures);
+                                           visemes, gestures, &*built);
         benchmark::DoNotOptimize(inserted);
     }
     state.counters["words"] = double(job.utterance.timing.words.size());
@@ -88,7 +93,7 @@ void Live(benchmark::State& state)
     runtime::Stage stage(std::move(built).value());
     runtime::PoseSet poses = stage.makePoseSet();
     for (auto _ : state) {
-        auto performed = runtime::performSpeech(stage, "Creon", "line", job.visemeCues, job.gestureCues, 0);
+        auto performed = runtime::performSpeech(stage, "Creon", "line", job.visemeCues, job.gestureBml, 0);
         stage.evaluate(secondsToTicks(0.1), poses);
         benchmark::DoNotOptimize(performed);
         state.PauseTiming();

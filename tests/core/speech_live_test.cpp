@@ -63,7 +63,7 @@ TEST(SpeechLive, PreviewShowsTheFaceInsertPutsOnTheTimeline)
     Scenario inserted = demo();
     auto insertion = core::edit::insertSpeech(
         inserted, 0, core::edit::speechLine(job.text, job.voice, job.utterance.timing, "", secondsToTicks(at)),
-        job.visemeCues, {});
+        job.visemeCues);
     ASSERT_TRUE(insertion) << insertion.error().message;
     ASSERT_TRUE(insertion->edit.apply(inserted).ok());
     auto authored = stageOf(inserted);
@@ -177,14 +177,14 @@ TEST(SpeechGestures, ATaggedBodyGestureSpansItsWordsWithItsFades)
 
     // When each gesture must play: its words, widened by its gesticon entry's fades.
     struct Expected {
-        std::string name;
+        std::string name; // live: "LINE:ID"; on the timeline: "ID GESTURE"
         double start, end;
     };
     std::vector<Expected> expected;
     for (const speech::GestureCue& cue : job.gestureCues) {
         const auto* gesture = creon.findGesture(cue.animation);
         ASSERT_TRUE(gesture) << cue.animation;
-        expected.push_back({cue.animation, at + cue.start - core::ticksToSeconds(gesture->fadeIn),
+        expected.push_back({"welcome:" + cue.id, at + cue.start - core::ticksToSeconds(gesture->fadeIn),
                             at + cue.end + core::ticksToSeconds(gesture->fadeOut)});
         EXPECT_GT(cue.start, core::ticksToSeconds(gesture->fadeIn)) << "the test wants a gesture after the first words";
     }
@@ -193,7 +193,7 @@ TEST(SpeechGestures, ATaggedBodyGestureSpansItsWordsWithItsFades)
 
     // Live.
     auto live = stageOf(scenario);
-    ASSERT_TRUE(performSpeech(*live, creon.name, "welcome", job.visemeCues, job.gestureCues, secondsToTicks(at)));
+    ASSERT_TRUE(performSpeech(*live, creon.name, "welcome", job.visemeCues, job.gestureBml, secondsToTicks(at)));
     for (const Expected& e : expected) {
         SCOPED_TRACE("live " + e.name);
         EXPECT_NEAR(*live->actionEnd(creon.name, core::runtime::Track::Body, e.name), e.end, frame);
@@ -213,9 +213,11 @@ TEST(SpeechGestures, ATaggedBodyGestureSpansItsWordsWithItsFades)
 
     // Inserted at the same time: the timeline's actions play over the same spans.
     Scenario inserted = scenario;
+    auto runtime = core::scenario::buildRuntime(scenario, resources());
+    ASSERT_TRUE(runtime) << core::describe(runtime.error());
     auto insertion = core::edit::insertSpeech(
         inserted, 0, core::edit::speechLine(job.text, job.voice, job.utterance.timing, "", secondsToTicks(at)),
-        job.visemeCues, job.gestureCues);
+        job.visemeCues, job.gestureBml, &*runtime);
     ASSERT_TRUE(insertion) << insertion.error().message;
     EXPECT_EQ(insertion->bodyGestures, 2);
     ASSERT_TRUE(insertion->edit.apply(inserted).ok());

@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "edit/bml_edits.h"
 #include "edit/speech_edits.h"
 #include "runtime/sound.h"
 #include "runtime/stage.h"
 #include "scenario/scenario_io.h"
 #include "scene/fap.h"
+#include "speech/bml_plan.h"
 #include "speech/speak_job.h"
 #include "test_support.h"
 
@@ -62,9 +64,18 @@ struct Played {
     std::shared_ptr<core::runtime::Stage> stage;
 };
 
+// Inserted as the studio's Insert does: gestures timed on the gesticon as built.
+core::Result<core::edit::SpeechInsertion> insertedSpeech(const Scenario& scenario, const speech::SpeakJob& job, double at)
+{
+    auto runtime = core::scenario::buildRuntime(scenario, resources());
+    if (!runtime)
+        return runtime.error();
+    return core::edit::insertSpeech(scenario, 0, lineOf(job, at), job.visemeCues, job.gestureBml, &*runtime);
+}
+
 Played insertedAndPlayed(Scenario scenario, const speech::SpeakJob& job, double at)
 {
-    auto inserted = core::edit::insertSpeech(scenario, 0, lineOf(job, at), job.visemeCues, job.gestureCues);
+    auto inserted = insertedSpeech(scenario, job, at);
     EXPECT_TRUE(inserted.ok()) << (inserted.ok() ? "" : inserted.error().message);
     if (!inserted)
         return {};
@@ -160,10 +171,10 @@ TEST(SpeechPlan, UnknownGesturesAreNamedWithTheirPlace)
 {
     const speech::SpeakJob job = spoken("Hello <begin_gesture id=\"g\" anim=\"juggle\"/>there<end_gesture id=\"g\"/>.");
     Scenario scenario = demo();
-    auto inserted = core::edit::insertSpeech(scenario, 0, lineOf(job, 0), job.visemeCues, job.gestureCues);
-    ASSERT_FALSE(inserted.ok());
-    EXPECT_EQ(inserted.error().message,
-              "line 1, column 7: the gesture \"juggle\" is not in Creon's gesticon (it has: greet, agree, point).");
+    auto refused = insertedSpeech(scenario, job, 0);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().message, "line 1, column 7: gesture \"g\": the gesticon has no gesture \"juggle\" the "
+                                       "character can play (it has: greet, agree, point).");
 }
 
 TEST(SpeechPlan, InsertIsOneStepThatUndoes)
@@ -171,7 +182,7 @@ TEST(SpeechPlan, InsertIsOneStepThatUndoes)
     Scenario scenario = demo();
     const Scenario before = scenario;
     const speech::SpeakJob job = spoken("Maybe.");
-    auto inserted = core::edit::insertSpeech(scenario, 0, lineOf(job, 2), job.visemeCues, job.gestureCues);
+    auto inserted = insertedSpeech(scenario, job, 2);
     ASSERT_TRUE(inserted.ok()) << inserted.error().message;
     ASSERT_TRUE(inserted->edit.apply(scenario).ok());
     EXPECT_NE(scenario, before);
@@ -292,45 +303,101 @@ TEST(GestureFit, EspeakStressesContentWordsNotArticles)
     EXPECT_TRUE(stressed("bench"));
 }
 
+// Tagged text's gestures planned as BML's are (speech/tagged_bml.h, bml_plan.h), on a gesticon of
+// one entry named `name`.
+speech::BmlPlanned plannedTag(const speech::SpeakJob& job, const std::string& name, const speech::BmlGestureEntry& entry)
+{
+    const speech::BmlGesticon gesticon{{name}, [&](const std::string& n) {
+        return n == name ? std::optional(entry) : std::nullopt;
+    }};
+    auto plan = speech::planBml(job.gestureBml.block, job.gestureBml.speech, gesticon, speech::BmlLexicon::defaults());
+    EXPECT_TRUE(plan) << plan.error().message;
+    return plan && plan->behaviors.size() == 2 ? plan->behaviors[1] : speech::BmlPlanned{};
+}
+
 TEST(GestureFit, AMarkedStrokeFallsOnTheFirstStressedWordOfItsWords)
 {
     const speech::SpeakJob job =
         spoken("Look at <begin_gesture id=\"g1\" anim=\"point\"/>the old bench<end_gesture id=\"g1\"/> there.");
-    ASSERT_EQ(job.gestureCues.size(), 1u);
-    const speech::GestureCue& cue = job.gestureCues[0];
     const auto& words = job.utterance.timing.words;
     ASSERT_EQ(words[2].text, "the");
-    EXPECT_DOUBLE_EQ(cue.start, words[2].start);
-    EXPECT_DOUBLE_EQ(cue.stress, words[3].start) << "\"old\", not \"the\"";
+    ASSERT_EQ(words[4].text, "bench");
+    ASSERT_FALSE(words[2].stressed);
+    ASSERT_TRUE(words[3].stressed);
 
     // A 1.2 s pointing gesture with its stroke 0.8 s in: the stroke lands on "old"; both sides scaled.
-    const speech::GestureFit fit = speech::fitGesture(cue, 1.2, 0.3, 0.3, {.hold = false, .stroke = 0.8});
+    const speech::BmlPlanned planned = plannedTag(job, "point", {1.2, 0.3, 0.3, {.hold = false, .stroke = 0.8}});
+    const speech::GestureFit& fit = planned.fit;
+    EXPECT_NEAR(fit.start, words[2].start - 0.3, 1e-9) << "its fade-in ends as its first word starts";
+    EXPECT_NEAR(fit.start + fit.duration, words[4].end + 0.3, 1e-9) << "its fade-out starts as its last word ends";
     ASSERT_FALSE(fit.warp.empty());
-    EXPECT_NEAR(warpAt(fit, cue.stress - fit.start), 0.8, 1e-6);
+    EXPECT_NEAR(warpAt(fit, words[3].start - fit.start), 0.8, 1e-6) << "\"old\", not \"the\"";
     EXPECT_NEAR(warpAt(fit, 0), 0.0, 1e-9);
     EXPECT_NEAR(warpAt(fit, fit.duration), 1.2, 1e-6);
     for (double t = 0.01; t <= fit.duration; t += 0.01)
         EXPECT_GE(warpAt(fit, t), warpAt(fit, t - 0.01) - 1e-9) << "time never runs back, at " << t;
-    // Without a mark the gesture is only stretched, as before.
-    EXPECT_TRUE(speech::fitGesture(cue, 1.2, 0.3, 0.3).warp.empty());
+    // Without a mark the gesture is only stretched.
+    const speech::BmlPlanned stretched = plannedTag(job, "point", {1.2, 0.3, 0.3, {}});
+    EXPECT_TRUE(stretched.fit.warp.empty());
+    EXPECT_NEAR(stretched.fit.stretch, stretched.fit.duration / 1.2, 1e-9);
+}
+
+// One planner for tags and BML (issue 33): a tagged gesture and the same gesture written as BML —
+// ready as its first word starts, stroke on its stressed word, relax as its last word ends — become
+// the same action on the timeline, stroke and fades included.
+TEST(GestureFit, TaggedTextAndTheSameBmlInsertTheSameGesture)
+{
+    Scenario scenario = demo();
+    auto& gestures = scenario.characters[0].gestures;
+    const auto greet = std::find_if(gestures.begin(), gestures.end(), [](const auto& g) { return g.name == "greet"; });
+    ASSERT_NE(greet, gestures.end());
+    greet->stroke = 0.5; // so that where the stroke goes counts too
+    auto runtime = core::scenario::buildRuntime(scenario, resources());
+    ASSERT_TRUE(runtime) << core::describe(runtime.error());
+    const speech::SpeakJob tagged =
+        spoken("Look at <begin_gesture id=\"g1\" anim=\"greet\"/>the old bench<end_gesture id=\"g1\"/> there.");
+    // The same words as BML, said alike (the tagged text's utterance, so that only planning differs).
+    const auto bml = speech::parseBml(
+        R"(<bml id="b"><speech id="s1"><text>Look at <sync id="a"/>the <sync id="old"/>old bench<sync id="z"/> there.</text>)"
+        R"(</speech><gesture id="g1" name="greet" ready="s1:a" stroke="s1:old" relax="s1:z"/></bml>)");
+    ASSERT_TRUE(bml) << bml.error().message;
+    ASSERT_EQ(bml->behaviors[0].text, tagged.tagged.text);
+    const std::map<std::string, speech::Utterance> said{{"s1", tagged.utterance}};
+
+    const auto gestureAction = [](const Scenario& before, const core::edit::Edit& edit) {
+        Scenario after = before;
+        EXPECT_TRUE(edit.apply(after).ok());
+        const auto& layers = after.characters[0].layers;
+        const auto layer = std::find_if(layers.begin(), layers.end(), [](const auto& l) { return l.name == "Gestures"; });
+        EXPECT_NE(layer, layers.end());
+        return layer == layers.end() || layer->actions.empty() ? core::scenario::ActionSpec{} : layer->actions.back();
+    };
+    auto fromTags = core::edit::insertSpeech(scenario, 0, lineOf(tagged, 1.0), tagged.visemeCues, tagged.gestureBml, &*runtime);
+    ASSERT_TRUE(fromTags) << fromTags.error().message;
+    auto fromBml = core::edit::insertBml(scenario, *runtime, 0, *bml, said, {}, core::secondsToTicks(1.0));
+    ASSERT_TRUE(fromBml) << fromBml.error().message;
+    const core::scenario::ActionSpec a = gestureAction(scenario, fromTags->edit), b = gestureAction(scenario, fromBml->edit);
+    EXPECT_EQ(a.name, "g1 greet");
+    EXPECT_EQ(a, b);
+    ASSERT_FALSE(a.modifiers.empty());
+    EXPECT_EQ(a.modifiers.front().kind, core::scenario::ModifierKind::TimeWarp) << "its stroke kept on \"old\"";
 }
 
 TEST(GestureFit, AHoldingGesturePlaysAtItsOwnSpeedAndHoldsItsStroke)
 {
-    speech::GestureCue cue;
-    cue.start = 1.0;
-    cue.end = 4.0; // three seconds of words for a one-second gesture
-    const speech::GestureFit fit = speech::fitGesture(cue, 1.0, 0.2, 0.2, {.hold = true, .stroke = 0.4});
+    // Three seconds of words (1 … 4 s) for a one-second gesture with 0.2 s fades, stroke on its first word.
+    const speech::GestureSpan span{0.8, 4.2, 1.0};
+    const speech::GestureFit fit = speech::fitGesture(span, 1.0, {.hold = true, .stroke = 0.4});
     EXPECT_NEAR(fit.start, 0.8, 1e-9);
     EXPECT_NEAR(fit.duration, 3.4, 1e-9);
     // Into the stroke at its own speed (it was at 0.4 s on its first word), held, then out at its own speed.
-    EXPECT_NEAR(warpAt(fit, cue.start - fit.start), 0.4, 1e-6);
+    EXPECT_NEAR(warpAt(fit, span.stroke - fit.start), 0.4, 1e-6);
     EXPECT_NEAR(warpAt(fit, 2.0), 0.4, 1e-6);
     EXPECT_NEAR(warpAt(fit, fit.duration - 0.6), 0.4, 1e-6);
     EXPECT_NEAR(warpAt(fit, fit.duration), 1.0, 1e-6);
     EXPECT_NEAR(warpAt(fit, fit.duration - 0.3) , 0.7, 0.08) << "the way out at about its own speed";
     // Stretched instead, the same gesture plays three times slower.
-    EXPECT_NEAR(speech::fitGesture(cue, 1.0, 0.2, 0.2).stretch, 3.4, 1e-9);
+    EXPECT_NEAR(speech::fitGesture(span, 1.0).stretch, 3.4, 1e-9);
 }
 
 TEST(GestureFit, AnInsertedHoldingGestureHoldsOnTheTimeline)
@@ -343,7 +410,7 @@ TEST(GestureFit, AnInsertedHoldingGestureHoldsOnTheTimeline)
     greet->stroke = 0.5;
     const speech::SpeakJob job = spoken(
         "<begin_gesture id=\"g1\" anim=\"greet\"/>Welcome, all of you, to the old palace of Thebes.<end_gesture id=\"g1\"/>");
-    auto inserted = core::edit::insertSpeech(scenario, 0, lineOf(job, 1.0), job.visemeCues, job.gestureCues);
+    auto inserted = insertedSpeech(scenario, job, 1.0);
     ASSERT_TRUE(inserted) << inserted.error().message;
     Scenario after = scenario;
     ASSERT_TRUE(inserted->edit.apply(after));
