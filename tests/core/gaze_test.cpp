@@ -9,10 +9,12 @@
 #include <tuple>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "anim/hanim.h"
 #include "anim/keyframe_clip.h"
 #include "motion/gaze.h"
+#include "motion/gaze_target.h"
 #include "motion/saccades.h"
 #include "runtime/stage.h"
 #include "scene/fap.h"
@@ -64,6 +66,18 @@ double headTurn(const Look& look)
 {
     const Vec3d forward = core::anim::rotate(core::anim::conjugate(look.chest) * look.head, Vec3d{0, 0, 1});
     return std::atan2(forward.x, forward.z) / kDegree;
+}
+
+// Heading (+ left) of the eyes in the head, degrees: their FAP 23.
+double eyeYaw(const runtime::CharacterPose& pose)
+{
+    return pose.face[std::size_t(core::scene::fapChannel(23))] * 1e-5 / kDegree;
+}
+
+// Heading (+ left) and pitch (+ down) of a direction, degrees, as the gaze measures them.
+std::pair<double, double> anglesOf(const Vec3d& d)
+{
+    return {std::atan2(d.x, d.z) / kDegree, std::atan2(-d.y, std::hypot(d.x, d.z)) / kDegree};
 }
 
 class GazeTest : public ::testing::Test {
@@ -222,6 +236,114 @@ TEST_F(GazeTest, ChestAndBackTurnWithinTheirSpeedsAndStopWithoutOvershoot)
         EXPECT_GT(peak[p], limits.maxSpeed * 0.3) << "it speeds up toward its top speed";
         EXPECT_LE(highest[p], previous[p] + 0.1) << "no overshoot";
         EXPECT_GE(started[p], limits.latency - step) << "it waits for its latency";
+    }
+}
+
+// Smooth onset (Pejsa et al.): a shift starts from rest, not with a jump in speed. The eyes'
+// jump is minimum-jerk, so it leaves with no speed; the head, after its latency, speeds up no
+// faster than its acceleration (1200°/s²), so its first frames turn at a small share of its top
+// speed. A head that set off at its top speed, or eyes that jumped at a constant speed, fail here.
+TEST_F(GazeTest, AShiftStartsSmoothlyTheEyesAndTheHeadSpeedUpFromRest)
+{
+    constexpr double kStep = 1.0 / 240;      // seconds a frame
+    constexpr int kFirstFrames = 2;          // frames after each part starts that must be slow
+    constexpr double kSlowHeadShare = 0.1;   // of the neck's top speed (they are 2.5 % and 5 %)
+    constexpr double kSlowEyeShare = 0.1;    // of the jump's peak speed (they are 0.7 % and 4.4 %)
+    motion::GazeSettings settings;
+    settings.saccades = false;
+    settings.influence = motion::GazeInfluence::Head;
+    ASSERT_TRUE(stage.gaze("Ann", {runtime::GazeTarget::Kind::Point, around(70, 0), {}, {}}, settings, 0));
+    std::vector<double> head, eyes; // degrees, one a frame
+    play(0, 1, kStep, [&](double, const Look& look) {
+        head.push_back(headTurn(look));
+        eyes.push_back(eyeYaw(poses.characters[0]));
+    });
+    const auto speeds = [&](const std::vector<double>& angles) {
+        std::vector<double> v(angles.size(), 0);
+        for (std::size_t i = 1; i < angles.size(); ++i)
+            v[i] = (angles[i] - angles[i - 1]) / kStep;
+        return v;
+    };
+    const std::vector<double> headSpeed = speeds(head), eyeSpeed = speeds(eyes);
+
+    // The head: slow on its first frames, and never speeding up faster than its acceleration.
+    const auto headStart = std::find_if(headSpeed.begin(), headSpeed.end(), [](double v) { return v > 1e-3; });
+    ASSERT_NE(headStart, headSpeed.end()) << "the head turns";
+    ASSERT_LT(headStart + kFirstFrames, headSpeed.end());
+    for (int i = 0; i < kFirstFrames; ++i)
+        EXPECT_LE(headStart[i], kSlowHeadShare * settings.neck.maxSpeed) << "degrees a second, frame " << i;
+    double speedingUp = 0;
+    for (std::size_t i = 1; i < headSpeed.size(); ++i)
+        speedingUp = std::max(speedingUp, (headSpeed[i] - headSpeed[i - 1]) / kStep);
+    EXPECT_LE(speedingUp, settings.neck.acceleration * 1.05) << "degrees a second²";
+    EXPECT_GT(*std::max_element(headSpeed.begin(), headSpeed.end()), 0.9 * settings.neck.maxSpeed) << "it gets going";
+
+    // The eyes: their jump starts at the shift and speeds up smoothly to its peak.
+    ASSERT_NEAR(eyes[0], 0, 1e-6) << "the jump starts from rest";
+    const double eyePeak = *std::max_element(eyeSpeed.begin(), eyeSpeed.end());
+    EXPECT_GT(eyePeak, 100) << "degrees a second: a saccade, not a drift";
+    for (int i = 1; i <= kFirstFrames; ++i)
+        EXPECT_LE(eyeSpeed[std::size_t(i)], kSlowEyeShare * eyePeak) << "degrees a second, frame " << i;
+}
+
+// Pejsa et al.'s eye range that shrinks while the head moves (after Guitton and Volle): for a
+// target behind, beyond the eyes' and head's reach, the eyes press against their limit; at the
+// head's top speed that limit is 75 % of their range (30° of 40°), and once the head has stopped
+// it is their whole range again.
+TEST_F(GazeTest, TheEyesRangeShrinksWhileTheHeadTurnsFast)
+{
+    constexpr double kStep = 1.0 / 240;        // seconds a frame
+    constexpr double kShrunk = 0.75;           // of the eyes' range left at the head's top speed
+    constexpr double kFast = 0.98;             // of the head's top speed that counts as at it
+    constexpr double kTolerance = 0.5;         // degrees
+    motion::GazeSettings settings;
+    settings.saccades = false;
+    settings.influence = motion::GazeInfluence::Head;
+    ASSERT_TRUE(stage.gaze("Ann", {runtime::GazeTarget::Kind::Point, around(150, 0), {}, {}}, settings, 0));
+    double previous = 0, fastLeast = 1e9, fastMost = -1e9, last = 0;
+    int fastFrames = 0;
+    play(0, 2, kStep, [&](double, const Look& look) {
+        const double turn = headTurn(look), speed = (turn - previous) / kStep;
+        previous = turn;
+        last = eyeYaw(poses.characters[0]);
+        if (speed >= kFast * settings.neck.maxSpeed) {
+            ++fastFrames;
+            fastLeast = std::min(fastLeast, last);
+            fastMost = std::max(fastMost, last);
+        }
+    });
+    ASSERT_GT(fastFrames, 10) << "the head turns at its top speed for a while";
+    EXPECT_NEAR(fastMost, kShrunk * settings.eyes.heading, kTolerance) << "degrees in the head, the head at its top speed";
+    EXPECT_NEAR(fastLeast, kShrunk * settings.eyes.heading, kTolerance) << "pressed against the shrunk limit all along";
+    EXPECT_NEAR(last, settings.eyes.heading, kTolerance) << "degrees in the head, the head stopped";
+}
+
+// BML's offsetAngle and offsetDirection: the eyes settle that many degrees off the target, toward
+// that side of the character (RIGHT is her right, UP up), and on the target with no offset.
+TEST_F(GazeTest, AnOffsetSettlesTheGazeThatFarOffTheTargetInItsDirection)
+{
+    constexpr double kOffset = 20;    // degrees
+    constexpr double kTolerance = 1;  // degrees
+    struct Case {
+        double heading, pitch;        // of the target: degrees left, down
+        const char* direction;
+        double headingOff, pitchOff;  // where the gaze should be from the target, per degree of offset
+    };
+    for (const Case& c : {Case{30, 0, "RIGHT", -1, 0}, Case{-20, 0, "LEFT", 1, 0}, Case{0, 10, "UP", 0, -1}, Case{0, -5, "DOWN", 0, 1}}) {
+        for (const double angle : {kOffset, 0.0}) {
+            SCOPED_TRACE(std::to_string(angle) + "° " + c.direction + " of a target " + std::to_string(c.heading) + "° left, " +
+                         std::to_string(c.pitch) + "° down");
+            stage.resetLive();
+            motion::GazeSettings settings;
+            ASSERT_TRUE(motion::setGazeOffset(settings, angle, c.direction));
+            const Vec3d target = around(c.heading, c.pitch);
+            const Look look = settleAt(target, settings);
+            const auto [heading, pitch] = anglesOf(look.direction);
+            const auto [targetHeading, targetPitch] = anglesOf(target - look.eyes);
+            EXPECT_NEAR(heading - targetHeading, c.headingOff * angle, kTolerance) << "degrees left of the target";
+            EXPECT_NEAR(pitch - targetPitch, c.pitchOff * angle, kTolerance) << "degrees below the target";
+            EXPECT_NEAR(angleBetween(look.direction, target - look.eyes), angle, kTolerance) << "degrees off the target";
+        }
     }
 }
 
