@@ -71,6 +71,7 @@ Result<BmlPerformance> BmlRealizer::perform(const std::string& character, const 
     if (block.composition == speech::BmlComposition::Append)
         start = std::max(start, played.end);
     if (block.composition == speech::BmlComposition::Replace) {
+        cutOff(character, start);
         for (const auto& [track, name] : played.actions)
             (void)stage.cutOffAction(character, track, name, at, kReplaceFade);
         for (const std::string& sound : played.sounds)
@@ -187,7 +188,48 @@ Result<BmlPerformance> BmlRealizer::perform(const std::string& character, const 
     std::stable_sort(performance.events.begin(), performance.events.end(),
                      [](const BmlEvent& a, const BmlEvent& b) { return a.time < b.time; });
     played.end = std::max(played.end, performance.end);
+    remember(character, performance);
     return performance;
+}
+
+void BmlRealizer::cutOff(const std::string& character, double at)
+{
+    for (Feedback& f : m_feedback) {
+        if (f.character != character || f.events.empty() || f.events.back().time <= at)
+            continue;
+        const auto first = std::upper_bound(f.events.begin() + std::ptrdiff_t(f.taken), f.events.end(), at,
+                                            [](double t, const BmlEvent& e) { return t < e.time; });
+        f.events.erase(first, f.events.end());
+        f.events.push_back({at, f.block + ":end"});
+    }
+}
+
+void BmlRealizer::remember(const std::string& character, const BmlPerformance& performance)
+{
+    std::erase_if(m_feedback, [&](const Feedback& f) { return f.character == character && f.block == performance.block; });
+    if (m_feedback.size() >= kRememberedBlocks)
+        m_feedback.erase(m_feedback.begin());
+    m_feedback.push_back({character, performance.block, performance.events, 0});
+}
+
+std::vector<BmlEvent> BmlRealizer::events(const std::string& character, const std::string& block) const
+{
+    const std::lock_guard lock(m_mutex);
+    for (const Feedback& f : m_feedback)
+        if (f.character == character && f.block == block)
+            return f.events;
+    return {};
+}
+
+std::vector<std::pair<std::string, BmlEvent>> BmlRealizer::takeEvents(double now)
+{
+    const std::lock_guard lock(m_mutex);
+    std::vector<std::pair<std::string, BmlEvent>> due;
+    for (Feedback& f : m_feedback)
+        for (; f.taken < f.events.size() && f.events[f.taken].time <= now; ++f.taken)
+            due.emplace_back(f.character, f.events[f.taken]);
+    std::stable_sort(due.begin(), due.end(), [](const auto& a, const auto& b) { return a.second.time < b.second.time; });
+    return due;
 }
 
 } // namespace thespis::core::runtime

@@ -62,6 +62,17 @@ public:
     Result<BmlPerformance> perform(const std::string& character, const speech::BmlBlock& block,
                                    const BmlOptions& options, Tick at);
 
+    /// The events of `block` played for `character` as they now stand, in time order: a block a
+    /// later one replaced keeps those up to the replacement and ends there ("bml1:end" then).
+    /// Empty for a block not played (or played long ago: the last kRememberedBlocks are kept).
+    std::vector<BmlEvent> events(const std::string& character, const std::string& block) const;
+
+    /// For a script's own loop: each event of any block that `now` (seconds on the stage's time)
+    /// has reached and no earlier call took, in time order, with its character.
+    std::vector<std::pair<std::string, BmlEvent>> takeEvents(double now);
+
+    static constexpr std::size_t kRememberedBlocks = 64;
+
 private:
     struct Played {
         double end = 0;
@@ -69,10 +80,20 @@ private:
         std::vector<std::string> sounds;
         bool gaze = false, pointing = false;
     };
+    // What a block's events are now, and how many of them takeEvents() gave.
+    struct Feedback {
+        std::string character, block;
+        std::vector<BmlEvent> events;
+        std::size_t taken = 0;
+    };
+    void cutOff(const std::string& character, double at);
+    void remember(const std::string& character, const BmlPerformance& performance);
+
     std::shared_ptr<Stage> m_stage;
     std::shared_ptr<SoundService> m_sound;
-    std::mutex m_mutex;
+    mutable std::mutex m_mutex;
     std::map<std::string, Played> m_played; // by character
+    std::vector<Feedback> m_feedback;       // oldest first
 };
 
 } // namespace thespis::core::runtime

@@ -103,21 +103,32 @@ void bindBml(py::module_& m)
                 py::list events;
                 for (const runtime::BmlEvent& e : performed.events)
                     events.append(py::make_tuple(e.time, e.name));
-                if (!onEvent.is_none())
-                    for (const runtime::BmlEvent& e : performed.events) {
-                        while (true) {
-                            core::Result<bool> reached = false;
-                            {
-                                py::gil_scoped_release release;
-                                reached = r.service().waitUntil(core::secondsToTicks(e.time), std::chrono::milliseconds(50));
-                            }
-                            if (unwrap(std::move(reached)))
-                                break;
-                            if (PyErr_CheckSignals() != 0)
-                                throw py::error_already_set();
+                // Each event as the clock reaches it, as the block then stands: a block another
+                // thread replaces meanwhile ends where it was cut off.
+                const auto eventAt = [&](std::size_t i) {
+                    const auto now = r.realizer().events(character, block.id);
+                    return i < now.size() ? std::optional(now[i]) : std::nullopt;
+                };
+                for (std::size_t next = 0; !onEvent.is_none(); ++next) {
+                    std::optional<runtime::BmlEvent> e = eventAt(next);
+                    while (e) {
+                        core::Result<bool> reached = false;
+                        {
+                            py::gil_scoped_release release;
+                            reached = r.service().waitUntil(core::secondsToTicks(e->time), std::chrono::milliseconds(50));
                         }
-                        onEvent(e.name, e.time);
+                        const bool due = unwrap(std::move(reached));
+                        const auto still = eventAt(next);
+                        if (due && still && still->time == e->time && still->name == e->name)
+                            break;
+                        e = still;
+                        if (PyErr_CheckSignals() != 0)
+                            throw py::error_already_set();
                     }
+                    if (!e)
+                        break;
+                    onEvent(e->name, e->time);
+                }
                 return py::dict("block"_a = performed.block, "start"_a = performed.start, "end"_a = performed.end,
                                 "events"_a = events, "warnings"_a = performed.warnings);
             },
@@ -126,7 +137,29 @@ void bindBml(py::module_& m)
             "Plays the block for `character` from `at` (default: now) and returns its start, end and events "
             "(`lexicon`: {lexeme: gesture} rows over the character's own BML lexicon, Character.bml_lexicon) "
             "[(seconds, \"g1:stroke\"), …]. With `on_event`, waits through the block calling on_event(name, seconds) "
-            "as the clock reaches each (\"bml1:start\", \"s1:t1\", …, \"bml1:end\").");
+            "as the clock reaches each (\"bml1:start\", \"s1:t1\", …, \"bml1:end\"); without, returns at once — "
+            "poll() then gives the events as the clock reaches them.")
+        .def(
+            "events",
+            [](Realizer& r, const std::string& character, const std::string& block) {
+                py::list out;
+                for (const runtime::BmlEvent& e : r.realizer().events(character, block))
+                    out.append(py::make_tuple(e.time, e.name));
+                return out;
+            },
+            "character"_a, "block"_a,
+            "The block's events as they now stand [(seconds, name), …]: one a later block replaced ends where it "
+            "was cut off.")
+        .def(
+            "poll",
+            [](Realizer& r) {
+                py::list out;
+                for (const auto& [character, e] : r.realizer().takeEvents(core::ticksToSeconds(r.service().now())))
+                    out.append(py::make_tuple(e.time, e.name, character));
+                return out;
+            },
+            "Without waiting: the events of every block the clock has reached since the last poll, in time order "
+            "[(seconds, name, character), …] — for a script with its own loop.");
 }
 
 } // namespace thespis::python

@@ -81,6 +81,16 @@ def test_bml_plays_on_the_words_and_calls_back_its_sync_points():
     assert times["bml1:start"] == 0.5 and times["bml1:end"] > times["s1:t1"] > 0.5
     assert [n for n, _ in heard] == [name for _, name in performed["events"]]
     assert all(lag == 0 for _, lag in heard), "each called back when the clock reached it"
+    assert realizer.events("Creon", "bml1") == performed["events"]
+    # Without on_event perform returns at once; poll() gives each event once as the clock reaches it.
+    again = realizer.perform("Creon", BLOCK.replace('id="bml1"', 'id="bml2"'), voice="en-gb")
+    first = realizer.poll()
+    assert ("bml2:start", "Creon") in [e[1:] for e in first] and all(t <= service.now() for t, _, _ in first)
+    stroke = dict((name, t) for t, name in again["events"])["g1:stroke"]
+    service.clock.wait_until(stroke)
+    polled = realizer.poll()
+    assert polled and polled[-1][0] <= stroke and "g1:stroke" in [name for _, name, _ in polled]
+    assert realizer.poll() == []
     assert service.gaze_state("Creon") is not None
     with pytest.raises(thespis.FormatError, match="line 1, column"):
         thespis.bml.parse("<bml id='b'><gesture lexeme='BEAT'/></bml>")

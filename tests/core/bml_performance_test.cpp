@@ -115,6 +115,46 @@ TEST(BmlRealizer, BehavioursPlayAtTheirSyncPointsOnTheSpeechsWords)
     ASSERT_TRUE(replacing);
     ASSERT_TRUE(realizer.perform(d.creon, *replacing, options, secondsToTicks(word)));
     EXPECT_FALSE(*d.stage->isPlaying(d.creon, runtime::Track::Body, "bml1:g1", secondsToTicks(word + 0.5)));
+    // Its feedback ends where it was cut off: nothing it would have done later is reported.
+    const std::vector<runtime::BmlEvent> cut = realizer.events(d.creon, "bml1");
+    ASSERT_FALSE(cut.empty());
+    EXPECT_EQ(cut.back().name, "bml1:end");
+    EXPECT_DOUBLE_EQ(cut.back().time, word);
+    EXPECT_LT(cut.size(), performed->events.size());
+    EXPECT_TRUE(std::all_of(cut.begin(), cut.end(), [&](const runtime::BmlEvent& e) { return e.time <= word; }));
+}
+
+// A script's own loop takes each event once, as the clock reaches it, in time order.
+TEST(BmlRealizer, EventsAreTakenOnceAsTheClockReachesThem)
+{
+    Demo d = demo();
+    auto block = speech::parseBml(kBlock);
+    ASSERT_TRUE(block) << block.error().message;
+    runtime::BmlRealizer realizer(d.stage, d.sound);
+    runtime::BmlOptions options;
+    options.gaze.saccades = false;
+    auto performed = realizer.perform(d.creon, *block, options, secondsToTicks(1.0));
+    ASSERT_TRUE(performed) << performed.error().message;
+    EXPECT_TRUE(realizer.takeEvents(0.5).empty()) << "nothing before the block starts";
+    const double stroke = eventTime(*performed, "g1:stroke");
+    std::vector<std::string> taken;
+    for (double now : {1.0, stroke, stroke, performed->end + 1}) {
+        double last = -1;
+        for (const auto& [character, e] : realizer.takeEvents(now)) {
+            EXPECT_EQ(character, d.creon);
+            EXPECT_LE(e.time, now);
+            EXPECT_GE(e.time, last);
+            last = e.time;
+            taken.push_back(e.name);
+        }
+        if (now == 1.0) {
+            EXPECT_NE(std::find(taken.begin(), taken.end(), "bml1:start"), taken.end());
+        }
+    }
+    std::vector<std::string> all;
+    for (const runtime::BmlEvent& e : performed->events)
+        all.push_back(e.name);
+    EXPECT_EQ(taken, all) << "each once, in order";
 }
 
 // The point where the arm's line meets the target, in the body frame the pose is in.

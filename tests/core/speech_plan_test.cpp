@@ -374,7 +374,8 @@ TEST(GestureFit, TaggedTextAndTheSameBmlInsertTheSameGesture)
     };
     auto fromTags = core::edit::insertSpeech(scenario, 0, lineOf(tagged, 1.0), tagged.visemeCues, tagged.gestureBml, &*runtime);
     ASSERT_TRUE(fromTags) << fromTags.error().message;
-    auto fromBml = core::edit::insertBml(scenario, *runtime, 0, *bml, said, {}, core::secondsToTicks(1.0));
+    const core::edit::BmlInsertOptions options;
+    auto fromBml = core::edit::insertBml(scenario, *runtime, 0, *bml, said, options, core::secondsToTicks(1.0));
     ASSERT_TRUE(fromBml) << fromBml.error().message;
     const core::scenario::ActionSpec a = gestureAction(scenario, fromTags->edit), b = gestureAction(scenario, fromBml->edit);
     EXPECT_EQ(a.name, "g1 greet");
