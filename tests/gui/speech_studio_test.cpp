@@ -4,7 +4,11 @@
 // pause, starts again where a seek goes) — without changing the document; Insert puts it on the
 // timeline as one undo step that the timeline's audio then plays; a LibriVox recording is
 // lip-synced from its transcript; the viseme table edits α and refuses what the set cannot hold.
+// BML (issue 33): Preview plays a block live on the Stage — the gesture, the nod, the gaze —
+// without editing; Insert and Character ▸ Add Gaze at Playhead put gaze on the timeline, its
+// target picked in Properties.
 
+#include <QAction>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDir>
@@ -12,6 +16,7 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QLabel>
+#include <QPushButton>
 #include <QScrollBar>
 #include <QSignalSpy>
 #include <QToolButton>
@@ -38,6 +43,7 @@
 #include "gui_support.h"
 #include "studio_support.h"
 #include "main_window.h"
+#include "runtime/stage.h"
 #include "scene/fap.h"
 #include "speech/espeak_voice.h"
 #include "editor/timeline_panel.h"
@@ -55,6 +61,28 @@ namespace {
 QString demoPath() { return QStringLiteral(THESPIS_RESOURCES "/demo.thespis"); }
 constexpr const char* kLine = "Maybe mum may come by.";
 
+// The rotation of `joint` (x y z w) in a body frame of the character.
+core::anim::Quat rotationOf(const core::scenario::CharacterRuntime& character, std::span<const float> frame,
+                            const std::string& joint)
+{
+    const auto& layout = *character.skeleton.frameLayout();
+    const int element = layout.find(joint, core::anim::ElementKind::Rotation);
+    if (element < 0)
+        qFatal("no joint %s", joint.c_str());
+    const std::size_t at = layout.floatOffset(element);
+    return core::anim::Quat{frame[at], frame[at + 1], frame[at + 2], frame[at + 3]};
+}
+
+// The angle between two rotations in degrees (lengths divided out).
+double angleBetween(const core::anim::Quat& a, const core::anim::Quat& b)
+{
+    const auto dot = [](const core::anim::Quat& p, const core::anim::Quat& q) {
+        return double(p.x) * q.x + double(p.y) * q.y + double(p.z) * q.z + double(p.w) * q.w;
+    };
+    const double cosine = std::abs(dot(a, b)) / std::sqrt(dot(a, a) * dot(b, b));
+    return 2.0 * std::acos(std::min(1.0, cosine)) * 180.0 / M_PI;
+}
+
 } // namespace
 
 class SpeechStudioTest : public QObject {
@@ -70,6 +98,8 @@ private slots:
     void bmlInsertsSpeechGesturesAndAGazeWithItsTargetPicker();
     void aBmlPointingKeepsItsTargetWhichThePropertiesEdit();
     void aLexemeRowEditedInTheGesticonDockChangesWhatBmlInserts();
+    void bmlPreviewPlaysTheBlockLiveWithoutEditing();
+    void addGazeAtPlayheadIsOneUndoStepWithItsTargetPicker();
 
 private:
     editor::SpeechPanel* panel() { return m_window->speech(); }
@@ -454,6 +484,170 @@ void SpeechStudioTest::aLexemeRowEditedInTheGesticonDockChangesWhatBmlInserts()
     document.undoStack()->undo();
     document.undoStack()->undo();
     QVERIFY(document.scenario() == original);
+}
+
+void SpeechStudioTest::bmlPreviewPlaysTheBlockLiveWithoutEditing()
+{
+    editor::Document& document = *m_window->document();
+    const auto original = document.scenario();
+    const int steps = document.undoStack()->count();
+    const int creon = characterIndex(document, "Creon");
+    const auto stage = m_window->session()->stage();
+    // After the demo's wave, Creon's arms at rest: what waves now is the preview.
+    m_window->clock()->seek(core::secondsToTicks(4.6));
+    panel()->setCurrentCharacter(creon);
+    panel()->setText(QStringLiteral(
+        "<bml id=\"b1\">\n"
+        "  <speech id=\"s1\"><text>Hear me, <sync id=\"t1\"/>Antigone.</text></speech>\n"
+        "  <gesture id=\"g1\" lexeme=\"GREET\" stroke=\"s1:t1\"/>\n"
+        "  <head id=\"h1\" lexeme=\"NOD\" start=\"g1:stroke\"/>\n"
+        "  <gaze id=\"z1\" target=\"Antigone\" influence=\"HEAD\" start=\"s1:start\"/>\n"
+        "</bml>"));
+    QVERIFY(!stage->gazeState("Creon").value().has_value()); // nobody looks anywhere in the demo
+
+    // The user clicks Preview: the block is spoken (a job), then played from the playhead.
+    auto* preview = panel()->findChild<QPushButton*>(QStringLiteral("speechPreview"));
+    QVERIFY(preview && preview->isVisible() && preview->isEnabled());
+    QTest::mouseClick(preview, Qt::LeftButton);
+    QVERIFY(panel()->isBusy());
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isBusy(), 20000);
+    // Paused at once: a live action finished by the time the stage shows is dropped, and the
+    // checks below scrub back over the gesture.
+    m_window->clock()->pause();
+    QVERIFY2(panel()->message().startsWith(QStringLiteral("Previewing BML block “b1” from 4.60 s")),
+             qPrintable(panel()->message()));
+    QVERIFY(document.scenario() == original); // a preview edits nothing
+    QCOMPARE(document.undoStack()->count(), steps);
+    QCOMPARE(document.undoStack()->index(), steps);
+    QVERIFY(!document.isModified());
+
+    // The gesture is a live action "BLOCK:ID" on Creon's body; find where it shows most: the
+    // right shoulder (greet waves that arm) against a stage of the document alone.
+    const std::string gesture = "b1:g1";
+    const auto gestureEnd = stage->actionEnd("Creon", core::runtime::Track::Body, gesture);
+    QVERIFY2(gestureEnd, gestureEnd ? "" : gestureEnd.error().message.c_str());
+    const double end = *gestureEnd;
+    QVERIFY2(end > 5.0 && end < 8.0, qPrintable(QString::number(end)));
+    // The nod is live too, after the stroke (asked before the scrubbing below passes its end).
+    const auto nodEnd = stage->actionEnd("Creon", core::runtime::Track::Body, "b1:h1");
+    QVERIFY2(nodEnd && *nodEnd > 5.0, nodEnd ? "" : nodEnd.error().message.c_str());
+    QVERIFY(*stage->isPlaying("Creon", core::runtime::Track::Body, "b1:h1", core::secondsToTicks(*nodEnd - 0.1)));
+    core::runtime::Stage reference(stage->runtimeCopy());
+    core::runtime::PoseSet without = reference.makePoseSet();
+    const core::scenario::CharacterRuntime& creonNow = reference.runtime().characters[std::size_t(creon)];
+    const auto shoulderTurn = [&](core::Tick t) {
+        m_window->clock()->seek(t);
+        reference.evaluate(t, without);
+        return angleBetween(rotationOf(creonNow, m_window->session()->poses().characters[std::size_t(creon)].body, "r_shoulder"),
+                            rotationOf(creonNow, without.characters[std::size_t(creon)].body, "r_shoulder"));
+    };
+    core::Tick most = 0;
+    double largest = 0;
+    for (double s = 4.6; s < end; s += 0.1)
+        if (const double turn = shoulderTurn(core::secondsToTicks(s)); turn > largest) {
+            largest = turn;
+            most = core::secondsToTicks(s);
+        }
+    QVERIFY2(largest > 10, qPrintable(QStringLiteral("the right shoulder turns %1° at most").arg(largest)));
+    QVERIFY(*stage->isPlaying("Creon", core::runtime::Track::Body, gesture, most));
+    QVERIFY(!reference.gazeState("Creon").value().has_value());
+
+    // Where the arm is up, Creon looks at Antigone: she stands on his left (heading + turns left).
+    QVERIFY(shoulderTurn(most) > 10);
+    const auto gaze = stage->gazeState("Creon").value();
+    QVERIFY(gaze.has_value());
+    QVERIFY(!gaze->released);
+    const double neck = gaze->heading[std::size_t(core::motion::GazePart::Neck)];
+    QVERIFY2(neck > 10, qPrintable(QStringLiteral("the neck turns %1°").arg(neck)));
+    QVERIFY(document.scenario() == original);
+    QTest::qWait(200);
+    saveScreenshot(m_window.get(), QStringLiteral("studio_bml_preview.png"));
+}
+
+void SpeechStudioTest::addGazeAtPlayheadIsOneUndoStepWithItsTargetPicker()
+{
+    editor::Document& document = *m_window->document();
+    const auto original = document.scenario();
+    const int steps = document.undoStack()->count();
+    const int creon = characterIndex(document, "Creon");
+    const auto stage = m_window->session()->stage();
+    m_window->selectCharacter(creon);
+    QCOMPARE(m_window->currentCharacter(), creon);
+    const core::Tick playhead = core::secondsToTicks(4.0);
+    m_window->clock()->seek(playhead);
+
+    // How far Creon's head is turned from where the demo alone has it, the gaze settled (a seek of
+    // more than a quarter second settles it at once).
+    core::runtime::Stage demo(stage->runtimeCopy());
+    const auto headTurnAt = [&](double seconds) {
+        m_window->clock()->seek(core::secondsToTicks(seconds + 0.5));
+        m_window->clock()->seek(core::secondsToTicks(seconds));
+        core::runtime::PoseSet alone = demo.makePoseSet();
+        demo.evaluate(core::secondsToTicks(seconds), alone);
+        const auto& creonNow = demo.runtime().characters[std::size_t(creon)];
+        return angleBetween(rotationOf(creonNow, m_window->session()->poses().characters[std::size_t(creon)].body, "skullbase"),
+                            rotationOf(creonNow, alone.characters[std::size_t(creon)].body, "skullbase"));
+    };
+
+    // Character ▸ Add Gaze at Playhead, the menu's own action.
+    auto* addGaze = m_window->findChild<QAction*>(QStringLiteral("addGaze"));
+    QVERIFY(addGaze && addGaze->isEnabled());
+    addGaze->trigger();
+    QCOMPARE(document.undoStack()->count(), steps + 1);
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Add Gaze"));
+    const auto& layers = document.scenario().characters[std::size_t(creon)].layers;
+    const auto found = std::find_if(layers.begin(), layers.end(), [](const auto& l) { return l.name == "Gaze"; });
+    QVERIFY(found != layers.end());
+    QCOMPARE(found->kind, core::scenario::LayerKind::Gaze);
+    QCOMPARE(int(found->actions.size()), 1);
+    const int gazeLayer = int(found - layers.begin());
+    const auto actionOf = [&] { return document.scenario().characters[std::size_t(creon)].layers[std::size_t(gazeLayer)].actions[0]; };
+    QCOMPARE(actionOf().start, playhead);
+    QVERIFY(actionOf().gaze.has_value());
+    QCOMPARE(actionOf().gaze->target, std::string("Antigone")); // with two characters, the other one
+    for (const auto& other : document.scenario().characters)
+        if (other.name != "Creon")
+            QVERIFY(std::none_of(other.layers.begin(), other.layers.end(), [](const auto& l) { return l.name == "Gaze"; }));
+
+    // The timeline shows Creon's gaze track; the Stage turns his head from the playhead, not before.
+    const auto& tracks = m_window->timeline()->view()->tracks();
+    QVERIFY(std::any_of(tracks.begin(), tracks.end(), [](const widgets::TimelineTrack& t) {
+        return t.kind == QStringLiteral("gaze") && t.group == QStringLiteral("Creon") && t.name == QStringLiteral("Gaze");
+    }));
+    QVERIFY2(headTurnAt(3.5) < 0.01, qPrintable(QString::number(headTurnAt(3.5))));
+    const double atAntigone = headTurnAt(5.0);
+    QVERIFY2(atAntigone > 10, qPrintable(QString::number(atAntigone)));
+    const auto neck = [&] { return stage->gazeState("Creon").value()->heading[std::size_t(core::motion::GazePart::Neck)]; };
+    QVERIFY2(neck() > 10, qPrintable(QString::number(neck()))); // to his left, where she stands (heading + turns left)
+
+    // Selected, it shows its target picker; picking the camera is one undo step.
+    m_window->timeline()->selectActions({{creon, gazeLayer, 0}});
+    editor::GazeProperties* gaze = m_window->properties()->gazeProperties();
+    raiseDock(m_window->properties());
+    QTRY_VERIFY(gaze->isVisible());
+    QCOMPARE(gaze->targetChoice()->currentData().toString(), QStringLiteral("Antigone"));
+    m_window->timeline()->view()->setPixelsPerSecond(200);
+    m_window->timeline()->view()->horizontalScrollBar()->setValue(int(3.0 * 200));
+    QTest::qWait(200);
+    saveScreenshot(m_window.get(), QStringLiteral("studio_add_gaze.png"));
+    const int camera = gaze->targetChoice()->findData(QStringLiteral("camera"));
+    QVERIFY(camera >= 0);
+    gaze->targetChoice()->setCurrentIndex(camera);
+    emit gaze->targetChoice()->activated(camera);
+    QCOMPARE(document.undoStack()->count(), steps + 2);
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Change Gaze"));
+    QCOMPARE(actionOf().gaze->target, std::string("camera"));
+    QCOMPARE(actionOf().start, playhead);
+    const double atCamera = headTurnAt(5.0); // the camera is before him, not on his left
+    QVERIFY2(atCamera < atAntigone - 5, qPrintable(QStringLiteral("%1° against %2°").arg(atCamera).arg(atAntigone)));
+
+    // Undo puts Antigone back, then takes the gaze and its layer away.
+    document.undoStack()->undo();
+    QCOMPARE(actionOf().gaze->target, std::string("Antigone"));
+    document.undoStack()->undo();
+    QCOMPARE(document.undoStack()->index(), steps);
+    QVERIFY(document.scenario() == original);
+    QVERIFY2(headTurnAt(5.0) < 0.01, qPrintable(QString::number(headTurnAt(5.0))));
 }
 
 QTEST_MAIN(SpeechStudioTest)
