@@ -12,6 +12,7 @@
 
 #include "runtime/animation_service.h"
 #include "runtime/clock.h"
+#include "motion/eye_ray.h"
 #include "motion/gaze_target.h"
 #include "runtime/sound.h"
 #include "runtime/voice_service.h"
@@ -345,6 +346,22 @@ void bindRuntime(py::module_& m)
             "character"_a,
             "What the gaze does (degrees): (heading, pitch) of back, chest, neck and eyes, heading + left, pitch + "
             "down; None when no gaze is on.")
+        .def(
+            "eye_ray",
+            [](AnimationService& s, const std::string& character, double seconds) {
+                const core::anim::Skeleton skeleton = unwrap(s.stage().skeleton(character));
+                const auto rig = unwrap(core::motion::GazeRig::create(skeleton));
+                PoseSet poses = s.stage().makePoseSet();
+                s.stage().evaluate(secondsToTicks(seconds), poses);
+                const CharacterPose& pose = poses.characters[std::size_t(s.stage().findCharacter(character))];
+                const auto ray = core::motion::placed(core::motion::eyeRay(rig, skeleton, pose.body, pose.face),
+                                                      pose.placement);
+                return py::make_tuple(py::make_tuple(ray.origin.x, ray.origin.y, ray.origin.z),
+                                      py::make_tuple(ray.direction.x, ray.direction.y, ray.direction.z));
+            },
+            "character"_a, "seconds"_a,
+            "Where the character looks at `seconds` in the scene (metres): ((x, y, z) between its eyes, unit (x, y, z) "
+            "of its line of sight) — its head turned by its eyes, as a viewer sees it.")
         .def(
             "set_camera_position",
             [](AnimationService& s, std::optional<std::vector<double>> xyz) {

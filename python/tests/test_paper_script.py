@@ -10,6 +10,7 @@ from pathlib import Path
 from types import SimpleNamespace
 
 import numpy as np
+import pytest
 
 import thespis
 from conftest import REPO, demo_scenario
@@ -20,8 +21,16 @@ TIMES = [0.5, 1.5, 2.5, 3.5, 5.0, 8.0, 9.0]
 NAMES = ("Creon", "Antigone")
 
 
-def run_script():
-    """Runs the script; returns the service and the poses at TIMES."""
+def angle_to(ray, point):
+    """Degrees between a line of sight ((origin), (direction)) and the line from its origin to `point`."""
+    origin, direction = np.asarray(ray[0]), np.asarray(ray[1])
+    to = np.asarray(point) - origin
+    return float(np.degrees(np.arccos(np.clip(to @ direction / np.linalg.norm(to), -1.0, 1.0))))
+
+
+def run_script(watch=None):
+    """Runs the script; returns the service and the poses at TIMES — or, given `watch`, calls
+    watch(service, start, end) before each jump of the clock instead."""
     scenario = thespis.load_scenario(demo_scenario())
     runtime = thespis.build_runtime(scenario, demo_scenario().parent)
     clock = thespis.ManualClock()
@@ -33,7 +42,7 @@ def run_script():
             if start <= t < end:
                 poses.update({f"{name}@{t}": service.evaluate_body(name, t).tolist() for name in NAMES})
 
-    clock.set_jump_hook(record)
+    clock.set_jump_hook((lambda start, end: watch(service, start, end)) if watch else record)
     sound = thespis.SoundService(demo_scenario().parent, clock)
     voice = thespis.VoiceService(service.stage, sound)
     interaction = thespis.dialogue.InteractionService(service, sound)
@@ -60,6 +69,36 @@ def test_the_script_plays_the_recorded_poses():
     antigone = authored.find_character("Antigone")
     assert 9.0 < service.now() < 10.0
     assert np.abs(np.asarray(poses["Antigone@8.0"]) - antigone.evaluate_body(8.0)).max() > 0.05
+
+
+def test_creon_greets_on_his_first_word_and_they_look_at_each_other_as_they_speak():
+    """The demo as a visitor sees it: Creon's greeting (tagged on "Now") spans that word with its
+    fades, and through the act each looks the other in the eyes — between Eyes Alive's glances
+    away — where before the gaze they looked past each other."""
+    scenario = thespis.load_scenario(demo_scenario())
+    creon = next(c for c in scenario.characters if c.name == "Creon")
+    greet = next(g for g in creon.gestures if g.name == "greet")
+    fade_out = greet.fade_out / thespis.TICKS_PER_SECOND
+    seen = {"greeting": None, "off": []}
+
+    def watch(service, start, end):
+        if seen["greeting"] is None:  # the first wait: Creon has just begun his line
+            seen["greeting"] = service.action_end_body("Creon", "CreonSpeech.Cam01CreonP1:g1")
+        for t in np.arange(np.ceil(start * 10) / 10, min(end, 9.5), 0.1):
+            to_creon = service.eye_ray("Creon", t)
+            to_antigone = service.eye_ray("Antigone", t)
+            seen["off"].append((t, angle_to(to_creon, to_antigone[0]), angle_to(to_antigone, to_creon[0])))
+
+    run_script(watch)
+    line = creon.speech[0]  # kept as text: espeak-ng says it the same way when it plays
+    said = thespis.speech.speak(line.text, voice=line.voice, rate=line.rate, pitch=line.pitch)
+    now = next(w for w in said.words if w[0] == "Now")
+    assert seen["greeting"] == pytest.approx(now[2] + fade_out, abs=0.05), "the greeting ends as 'Now' is said"
+    off = np.asarray(seen["off"])
+    assert off[0, 1] > 20 and off[0, 2] > 20, "before they look at each other"
+    act = off[off[:, 0] >= 0.5]
+    assert np.median(act[:, 1]) < 5 and np.median(act[:, 2]) < 5, "each looks the other in the eyes"
+    assert (act[:, 1:] < 5).mean() > 0.5, "more often than not (the speaker glances away more)"
 
 
 def test_creon_and_antigone_say_their_lines_in_two_voices():

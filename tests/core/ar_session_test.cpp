@@ -11,6 +11,7 @@
 #include "ar/frame_source.h"
 #include "ar/synthetic_source.h"
 #include "anim/quat.h"
+#include "motion/eye_ray.h"
 #include "motion/gaze.h"
 #include "render/ar_view.h"
 #include "scene/fap.h"
@@ -263,8 +264,6 @@ TEST(ArSession, TheCharacterLooksAtTheTrackedCamera)
 
     ArSnapshot snapshot;
     runtime::PoseSet poses = settings.stage->makePoseSet();
-    std::vector<anim::Vec3d> positions(std::size_t(skeleton.jointCount()));
-    std::vector<anim::Quatd> orientations(positions.size());
     double worst = 0, worstCamera = 0;
     int checked = 0;
     std::int64_t last = -1;
@@ -287,22 +286,12 @@ TEST(ArSession, TheCharacterLooksAtTheTrackedCamera)
                 continue;
             const anim::Vec3d real = arCameraView(scene.camera, (*truth)->truth(frame), target, placement).eye;
             worstCamera = std::max(worstCamera, std::sqrt(anim::dot(*camera - real, *camera - real)));
-            skeleton.worldTransforms(poses.characters[0].body, positions, orientations);
-            const auto head = std::size_t(skeleton.find("skullbase"));
-            const anim::Vec3d eyes = positions[head] + anim::rotate(orientations[head], rig->eyes);
-            const auto& face = poses.characters[0].face;
-            const double yaw = face[std::size_t(thespis::core::scene::fapChannel(23))] * 1e-5,
-                         pitch = face[std::size_t(thespis::core::scene::fapChannel(25))] * 1e-5;
-            const anim::Quatd eye = anim::Quatd{0, std::sin(yaw / 2), 0, std::cos(yaw / 2)} *
-                                    anim::Quatd{std::sin(pitch / 2), 0, 0, std::cos(pitch / 2)};
-            const anim::Vec3d gaze = anim::rotate(orientations[head] * eye, anim::Vec3d{0, 0, 1});
-            const anim::Vec3d toCamera = *camera - eyes;
-            const double cosine = anim::dot(gaze, toCamera) / std::sqrt(anim::dot(toCamera, toCamera));
+            const motion::EyeRay eyes = motion::eyeRay(*rig, skeleton, poses.characters[0].body, poses.characters[0].face);
             // Settled: passing overhead the camera makes the head swing round, the eyes' range
             // shrunk while it does (as people's is), and the gaze catch up after.
             if ((**settings.stage->gazeState("Hero")).shifting)
                 continue;
-            worst = std::max(worst, std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / 3.14159265358979);
+            worst = std::max(worst, motion::degreesOff(eyes, *camera));
             ++checked;
             continue;
         }

@@ -13,6 +13,7 @@
 
 #include "anim/hanim.h"
 #include "anim/keyframe_clip.h"
+#include "motion/eye_ray.h"
 #include "motion/gaze.h"
 #include "motion/gaze_target.h"
 #include "motion/saccades.h"
@@ -53,11 +54,9 @@ Look lookOf(const runtime::CharacterPose& pose, const motion::GazeRig& rig)
     const auto head = std::size_t(skeleton.find("skullbase")), chest = std::size_t(skeleton.find("vt1"));
     look.head = orientations[head];
     look.chest = orientations[chest];
-    look.eyes = positions[head] + core::anim::rotate(look.head, rig.eyes);
-    const auto fap = [&](int n) { return double(pose.face[std::size_t(core::scene::fapChannel(n))]) * 1e-5; };
-    const double yaw = fap(23), pitch = fap(25);
-    const Quatd eye = Quatd{0, std::sin(yaw / 2), 0, std::cos(yaw / 2)} * Quatd{std::sin(pitch / 2), 0, 0, std::cos(pitch / 2)};
-    look.direction = core::anim::rotate(look.head * eye, Vec3d{0, 0, 1});
+    const motion::EyeRay ray = motion::eyeRay(rig, skeleton, pose.body, pose.face);
+    look.eyes = ray.origin;
+    look.direction = ray.direction;
     return look;
 }
 
