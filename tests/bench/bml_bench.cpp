@@ -1,6 +1,6 @@
 // BML → Stage actions (runtime/bml_performance.h): a block with a 20-word speech and four
-// gestures on its words (two beats, a wave, a nod of the head), a faceLexeme over the speech and
-// a gaze, realised for the demo's Creon — timing resolved, the speech's visemes built, every
+// gestures on its words (two beats, a wave, an agreeing nod whose stroke the words pin), a head
+// nod, a faceLexeme over the speech and a gaze, realised for the demo's Creon — timing resolved, the speech's visemes built, every
 // action put on the Stage. The speech is synthesised once beforehand: synthesis is excluded.
 // Goal (issue 33): ≤ 5 ms.
 #include <benchmark/benchmark.h>
@@ -19,6 +19,7 @@ constexpr const char* kBlock = R"(<bml id="bml1">
   <gesture id="g1" lexeme="BEAT" stroke="s1:t1"/>
   <gesture id="g2" lexeme="WAVE" start="s1:start" end="s1:t1"/>
   <gesture id="g3" lexeme="BEAT" stroke="s1:t2"/>
+  <gesture id="g4" name="agree" ready="s1:t3" stroke="s1:t3" relax="s1:end"/>
   <head id="h1" lexeme="NOD" start="s1:t3"/>
   <faceLexeme id="f1" lexeme="LOWER_BROWS" start="s1:start" end="s1:end"/>
   <gaze id="z1" target="Antigone" influence="HEAD" start="s1:start"/>

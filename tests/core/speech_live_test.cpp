@@ -234,3 +234,60 @@ TEST(SpeechGestures, ATaggedBodyGestureSpansItsWordsWithItsFades)
 }
 
 } // namespace thespis::test
+
+namespace thespis::test {
+
+// Overlapping tags (neither inside the other): a greeting over "My dear friend" and a nod over
+// "friend and guest". Both play on the Stage while "friend" is said, each over its own words, and
+// each shows: the pose in the overlap is neither the greeting's alone nor the nod's alone.
+TEST(SpeechGestures, OverlappingGesturesBothPlayWhereTheirWordsMeet)
+{
+    const auto spoken = [](const std::string& text) {
+        speech::SpeakJob job;
+        job.text = text;
+        job.voice = {.voice = "en-gb", .wordsPerMinute = 140};
+        core::JobContext context;
+        EXPECT_TRUE(job.run(context).ok());
+        return job;
+    };
+    const speech::SpeakJob both = spoken(
+        "Welcome home. <begin_gesture id=\"g1\" anim=\"greet\"/>My dear <begin_gesture id=\"g2\" anim=\"agree\"/>friend"
+        "<end_gesture id=\"g1\"/> and guest<end_gesture id=\"g2\"/>, to Thebes.");
+    const speech::SpeakJob greetOnly = spoken(
+        "Welcome home. <begin_gesture id=\"g1\" anim=\"greet\"/>My dear friend<end_gesture id=\"g1\"/> and guest, to Thebes.");
+    const speech::SpeakJob nodOnly = spoken(
+        "Welcome home. My dear <begin_gesture id=\"g2\" anim=\"agree\"/>friend and guest<end_gesture id=\"g2\"/>, to Thebes.");
+    ASSERT_EQ(both.gestureCues.size(), 2u);
+    const speech::GestureCue &greet = both.gestureCues[0], &nod = both.gestureCues[1];
+    ASSERT_LT(greet.start, nod.start);
+    ASSERT_LT(nod.start, greet.end);
+    ASSERT_LT(greet.end, nod.end);
+    const Scenario scenario = demo();
+    const std::string creon = scenario.characters[0].name;
+    const double at = 1.0, friendWord = at + (nod.start + greet.end) / 2;
+
+    const auto poseWith = [&](const speech::SpeakJob& job, std::shared_ptr<core::runtime::Stage>& stage) {
+        stage = stageOf(scenario);
+        EXPECT_TRUE(core::runtime::performSpeech(*stage, creon, "line", job.visemeCues, job.gestureBml, secondsToTicks(at)));
+        core::runtime::PoseSet poses = stage->makePoseSet();
+        stage->evaluate(secondsToTicks(friendWord), poses);
+        return poses.characters[0].body;
+    };
+    std::shared_ptr<core::runtime::Stage> live, greeting, nodding;
+    const std::vector<float> together = poseWith(both, live), greeted = poseWith(greetOnly, greeting),
+                             nodded = poseWith(nodOnly, nodding);
+    EXPECT_TRUE(*live->isPlaying(creon, core::runtime::Track::Body, "line:g1", secondsToTicks(friendWord)));
+    EXPECT_TRUE(*live->isPlaying(creon, core::runtime::Track::Body, "line:g2", secondsToTicks(friendWord)));
+    EXPECT_LT(*live->actionEnd(creon, core::runtime::Track::Body, "line:g1"),
+              *live->actionEnd(creon, core::runtime::Track::Body, "line:g2"));
+    const auto largestDifference = [](const std::vector<float>& a, const std::vector<float>& b) {
+        float largest = 0;
+        for (std::size_t i = 0; i < a.size(); ++i)
+            largest = std::max(largest, std::abs(a[i] - b[i]));
+        return largest;
+    };
+    EXPECT_GT(largestDifference(together, greeted), 0.01f) << "the nod shows over the greeting";
+    EXPECT_GT(largestDifference(together, nodded), 0.01f) << "the greeting shows under the nod";
+}
+
+} // namespace thespis::test
