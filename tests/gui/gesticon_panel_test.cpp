@@ -31,10 +31,13 @@
 #include "editor/session.h"
 #include "editor/translations.h"
 #include "render/character_node.h"
+#include "studio_support.h"
 #include "util/tick.h"
 #include "widgets/osg_viewport.h"
 
 using namespace thespis;
+using test::angleBetween;
+using test::rotationOf;
 using editor::GesticonModel;
 using editor::GesticonPanel;
 
@@ -59,30 +62,6 @@ std::unique_ptr<editor::Document> openDemo()
     if (!document)
         qFatal("cannot open the demo: %s", document.error().message.c_str());
     return std::move(document).value();
-}
-
-// The rotation of `joint` (x y z w) in a body frame.
-core::anim::Quat rotationOf(const core::scenario::CharacterRuntime& character, std::span<const float> frame,
-                            const std::string& joint)
-{
-    const auto& layout = *character.skeleton.frameLayout();
-    const int element = layout.find(joint, core::anim::ElementKind::Rotation);
-    if (element < 0)
-        qFatal("no joint %s", joint.c_str());
-    const std::size_t at = layout.floatOffset(element);
-    return core::anim::Quat{frame[at], frame[at + 1], frame[at + 2], frame[at + 3]};
-}
-
-// Angle in degrees between two rotations.
-/// The angle between two rotations in degrees. Lengths are divided out: near 1, acos turns a
-/// quaternion length one float ulp short of 1 into 0.05°.
-double angleBetween(const core::anim::Quat& a, const core::anim::Quat& b)
-{
-    const auto dot = [](const core::anim::Quat& p, const core::anim::Quat& q) {
-        return double(p.x) * q.x + double(p.y) * q.y + double(p.z) * q.z + double(p.w) * q.w;
-    };
-    const double cosine = std::abs(dot(a, b)) / std::sqrt(dot(a, a) * dot(b, b));
-    return 2.0 * std::acos(std::min(1.0, cosine)) * 180.0 / M_PI;
 }
 
 float largestDistance(std::span<const core::anim::Vec3> a, std::span<const core::anim::Vec3> b)

@@ -51,6 +51,8 @@
 #include "widgets/timeline_view.h"
 
 using namespace thespis;
+using test::angleBetween;
+using test::rotationOf;
 using test::raiseDock;
 using test::characterIndex;
 using test::changedPixels;
@@ -60,28 +62,6 @@ namespace {
 
 QString demoPath() { return QStringLiteral(THESPIS_RESOURCES "/demo.thespis"); }
 constexpr const char* kLine = "Maybe mum may come by.";
-
-// The rotation of `joint` (x y z w) in a body frame of the character.
-core::anim::Quat rotationOf(const core::scenario::CharacterRuntime& character, std::span<const float> frame,
-                            const std::string& joint)
-{
-    const auto& layout = *character.skeleton.frameLayout();
-    const int element = layout.find(joint, core::anim::ElementKind::Rotation);
-    if (element < 0)
-        qFatal("no joint %s", joint.c_str());
-    const std::size_t at = layout.floatOffset(element);
-    return core::anim::Quat{frame[at], frame[at + 1], frame[at + 2], frame[at + 3]};
-}
-
-// The angle between two rotations in degrees (lengths divided out).
-double angleBetween(const core::anim::Quat& a, const core::anim::Quat& b)
-{
-    const auto dot = [](const core::anim::Quat& p, const core::anim::Quat& q) {
-        return double(p.x) * q.x + double(p.y) * q.y + double(p.z) * q.z + double(p.w) * q.w;
-    };
-    const double cosine = std::abs(dot(a, b)) / std::sqrt(dot(a, a) * dot(b, b));
-    return 2.0 * std::acos(std::min(1.0, cosine)) * 180.0 / M_PI;
-}
 
 } // namespace
 
@@ -504,6 +484,7 @@ void SpeechStudioTest::bmlPreviewPlaysTheBlockLiveWithoutEditing()
         "  <gaze id=\"z1\" target=\"Antigone\" influence=\"HEAD\" start=\"s1:start\"/>\n"
         "</bml>"));
     QVERIFY(!stage->gazeState("Creon").value().has_value()); // nobody looks anywhere in the demo
+    panel()->setCloseUp(false); // the whole body in view: the wave shows in the picture
 
     // The user clicks Preview: the block is spoken (a job), then played from the playhead.
     auto* preview = panel()->findChild<QPushButton*>(QStringLiteral("speechPreview"));
