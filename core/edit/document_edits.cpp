@@ -8,6 +8,7 @@
 #include <set>
 
 #include "anim/modifiers.h"
+#include "edit/lexicon_edits.h"
 #include "util/text.h"
 
 namespace thespis::core::edit {
@@ -634,13 +635,17 @@ Result<Edit> replaceGesture(const Scenario& scenario, const CharacterItemPath& p
     const Character& who = scenario.characters[std::size_t(path.character)];
     const Gesture& before = who.gestures[std::size_t(path.index)];
     Edit edit(GestureChange{path, before, value});
-    // A renamed gesture keeps the lexemes of the character's own BML lexicon that it played.
-    if (who.bmlLexicon && before.name != value.name) {
-        auto rows = who.bmlLexicon;
-        for (auto& [lexeme, entry] : *rows)
-            if (entry == before.name)
+    // A renamed gesture keeps the lexemes it played: the character's own rows, or the defaults'
+    // (it then gets its own table, as when a row is set).
+    if (before.name != value.name) {
+        auto rows = who.bmlLexicon ? *who.bmlLexicon : bmlLexiconRows(who);
+        bool renamed = false;
+        for (auto& [lexeme, entry] : rows)
+            if (entry == before.name) {
                 entry = value.name;
-        if (rows != who.bmlLexicon)
+                renamed = true;
+            }
+        if (renamed)
             edit.add(BmlLexiconChange{path.character, who.bmlLexicon, std::move(rows)});
     }
     return edit;

@@ -111,7 +111,9 @@ Result<Edit> removeMask(const scenario::Scenario& scenario, int index);
 
 Result<Edit> addGesture(const scenario::Scenario& scenario, int character, scenario::Gesture gesture);
 /// Replaces a gesture (validated as addGesture: a unique name, a clip of the character, a mask
-/// of the scenario). Renamed, it keeps the rows of the character's own BML lexicon that name it.
+/// of the scenario). Renamed, it keeps the BML lexemes it played: the rows of the character's own
+/// lexicon that name it, or, for a character on the defaults, the defaults' (it then gets its
+/// own table, as edit::setBmlLexeme gives).
 Result<Edit> replaceGesture(const scenario::Scenario& scenario, const CharacterItemPath& gesture,
                             scenario::Gesture value);
 Result<Edit> removeGesture(const scenario::Scenario& scenario, const CharacterItemPath& gesture);

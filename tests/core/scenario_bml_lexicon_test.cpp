@@ -216,6 +216,21 @@ TEST(ScenarioBmlLexicon, TheEditsSetARowOrTheTableAndTheirInverseTakesItBack)
     EXPECT_EQ(kept.characters[0].bmlLexicon->at("BEAT"), "hail");
     EXPECT_EQ(kept.characters[0].bmlLexicon->at("GREET"), "hail");
     EXPECT_EQ(kept.characters[0].bmlLexicon->at("WAVE"), "gone");
+
+    // On the defaults, a renamed gesture keeps its lexemes too: BEAT still nods.
+    Scenario defaults = demo();
+    Gesture agree = *defaults.characters[0].findGesture("agree");
+    const int index = int(defaults.characters[0].findGesture("agree") - defaults.characters[0].gestures.data());
+    agree.name = "assent";
+    auto renamedDefault = edit::replaceGesture(defaults, {0, index}, agree);
+    ASSERT_TRUE(renamedDefault) << renamedDefault.error().message;
+    ASSERT_TRUE(renamedDefault->apply(defaults));
+    ASSERT_TRUE(defaults.characters[0].bmlLexicon);
+    EXPECT_EQ(defaults.characters[0].bmlLexicon->at("BEAT"), "assent");
+    EXPECT_EQ(defaults.characters[0].bmlLexicon->at("WAVE"), "greet");
+    EXPECT_EQ(insertedGesture(defaults, kBeat), "g1 assent (nod)");
+    ASSERT_TRUE(renamedDefault->inverse().apply(defaults));
+    EXPECT_EQ(defaults, demo());
 }
 
 TEST(ScenarioBmlLexicon, ARowChangesTheGestureInsertBmlPutsOnTheTimeline)
