@@ -68,6 +68,10 @@ void Session::onDocumentEdited()
         makeStage();
     else
         ++m_runtimesSet;
+    // Paused, an edit shows settled: gaze and pointing move with time, which a paused clock does
+    // not give them; evaluated a tick back first, they settle at once, as on a seek back.
+    if (!replaced && !m_clock->isPlaying())
+        m_stage->evaluate(m_clock->time() - 1, m_poses);
     m_samples.reset();
     emit edited(replaced);
     const core::Tick before = m_clock->time();

@@ -560,14 +560,18 @@ void SpeechStudioTest::addGazeAtPlayheadIsOneUndoStepWithItsTargetPicker()
     // How far Creon's head is turned from where the demo alone has it, the gaze settled (a seek of
     // more than a quarter second settles it at once).
     core::runtime::Stage demo(stage->runtimeCopy());
-    const auto headTurnAt = [&](double seconds) {
-        m_window->clock()->seek(core::secondsToTicks(seconds + 0.5));
-        m_window->clock()->seek(core::secondsToTicks(seconds));
+    const auto headTurnNow = [&] {
+        const double seconds = core::ticksToSeconds(m_window->clock()->time());
         core::runtime::PoseSet alone = demo.makePoseSet();
         demo.evaluate(core::secondsToTicks(seconds), alone);
         const auto& creonNow = demo.runtime().characters[std::size_t(creon)];
         return angleBetween(rotationOf(creonNow, m_window->session()->poses().characters[std::size_t(creon)].body, "skullbase"),
                             rotationOf(creonNow, alone.characters[std::size_t(creon)].body, "skullbase"));
+    };
+    const auto headTurnAt = [&](double seconds) {
+        m_window->clock()->seek(core::secondsToTicks(seconds + 0.5));
+        m_window->clock()->seek(core::secondsToTicks(seconds));
+        return headTurnNow();
     };
 
     // Character ▸ Add Gaze at Playhead, the menu's own action.
@@ -619,15 +623,20 @@ void SpeechStudioTest::addGazeAtPlayheadIsOneUndoStepWithItsTargetPicker()
     QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Change Gaze"));
     QCOMPARE(actionOf().gaze->target, std::string("camera"));
     QCOMPARE(actionOf().start, playhead);
+    // Paused on 5 s, the new target shows at once, settled, as after a seek.
+    const double shownAtOnce = headTurnNow();
     const double atCamera = headTurnAt(5.0); // the camera is before him, not on his left
+    QVERIFY2(std::abs(shownAtOnce - atCamera) < 0.5, qPrintable(QStringLiteral("%1° against %2°").arg(shownAtOnce).arg(atCamera)));
     QVERIFY2(atCamera < atAntigone - 5, qPrintable(QStringLiteral("%1° against %2°").arg(atCamera).arg(atAntigone)));
 
-    // Undo puts Antigone back, then takes the gaze and its layer away.
+    // Undo puts Antigone back, then takes the gaze and its layer away — each shown at once.
     document.undoStack()->undo();
     QCOMPARE(actionOf().gaze->target, std::string("Antigone"));
+    QVERIFY2(std::abs(headTurnNow() - atAntigone) < 0.5, qPrintable(QString::number(headTurnNow())));
     document.undoStack()->undo();
     QCOMPARE(document.undoStack()->index(), steps);
     QVERIFY(document.scenario() == original);
+    QVERIFY2(headTurnNow() < 0.01, qPrintable(QString::number(headTurnNow())));
     QVERIFY2(headTurnAt(5.0) < 0.01, qPrintable(QString::number(headTurnAt(5.0))));
 }
 
