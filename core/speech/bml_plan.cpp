@@ -47,14 +47,6 @@ void placeGesture(BmlPlanned& p)
     p.fit = fitGesture({at[kStart], at[kEnd], stroke}, p.entry.seconds, p.entry.shape);
 }
 
-std::string namesOf(const std::vector<std::string>& names)
-{
-    std::string out;
-    for (const std::string& name : names)
-        out += (out.empty() ? "" : ", ") + name;
-    return out.empty() ? "none" : out;
-}
-
 // Checks what `b` needs and fills what its playing takes, but its times.
 Result<void> prepare(const BmlBehavior& b, const std::map<std::string, SpeechTiming>& speech,
                      const BmlGesticon& gesticon, const BmlLexicon& lexicon, const motion::GazeSettings& gazeDefaults,
@@ -73,7 +65,7 @@ Result<void> prepare(const BmlBehavior& b, const std::map<std::string, SpeechTim
         if (!entry && b.byName)
             return bmlBehaviorError(ErrorCode::NotFound, b,
                                     "the gesticon has no gesture \"" + name + "\" the character can play (it has: " +
-                                        namesOf(gesticon.names) + ").");
+                                        (gesticon.names.empty() ? std::string("none") : joined(gesticon.names, ", ")) + ").");
         if (!entry)
             return bmlBehaviorError(ErrorCode::NotFound, b,
                                     "no gesture for \"" + lexeme + "\" (the lexicon and the gesticon name none "
