@@ -426,3 +426,68 @@ TEST(GestureFit, AnInsertedHoldingGestureHoldsOnTheTimeline)
 }
 
 } // namespace thespis::test
+
+namespace thespis::test {
+
+// Real motion capture as a tagged gesture: CMU 141_16 ("wave hello", 2.5 s at 120 fps) is Creon's
+// gesture "hello" on his right arm. Tagged over five words, it is fitted to them — fading in before
+// the first and out after the last, its recording stretched to fill that — and his right wrist
+// waves while they are said. (A gesture whose clip was a file was once inserted unfitted.)
+TEST(GestureFit, AMotionCaptureGestureIsFittedToItsWords)
+{
+    Scenario scenario = demo();
+    auto& creon = scenario.characters[0];
+    core::scenario::ClipAsset wave;
+    wave.name = "cmu wave hello";
+    wave.file = sharedData("mocap/cmu/141_16.bvh").string();
+    creon.clips.push_back(wave);
+    const double fade = 0.3;
+    creon.gestures.push_back({.name = "hello", .clip = wave.name, .mask = "rightArm",
+                              .fadeIn = core::secondsToTicks(fade), .fadeOut = core::secondsToTicks(fade)});
+    const speech::SpeakJob job = spoken(
+        "Well then, <begin_gesture id=\"w\" anim=\"hello\"/>good morning to you all<end_gesture id=\"w\"/>, friends.");
+    ASSERT_EQ(job.gestureCues.size(), 1u);
+    const speech::GestureCue& words = job.gestureCues[0];
+    const double at = 1.0, frame = 1.0 / 60;
+
+    Played played = insertedAndPlayed(scenario, job, at);
+    ASSERT_TRUE(played.stage);
+    const std::string name = creon.name;
+    const auto end = played.stage->actionEnd(name, core::runtime::Track::Body, "w hello");
+    ASSERT_TRUE(end) << end.error().message;
+    EXPECT_NEAR(*end, at + words.end + fade, frame) << "it fades out after its last word";
+    const auto& layers = played.scenario.characters[0].layers;
+    const auto gestures = std::find_if(layers.begin(), layers.end(), [](const auto& l) { return l.name == "Gestures"; });
+    ASSERT_NE(gestures, layers.end());
+    ASSERT_EQ(gestures->actions.size(), 1u);
+    EXPECT_NEAR(core::ticksToSeconds(gestures->actions[0].start), at + words.start - fade, frame)
+        << "it fades in before its first word";
+    EXPECT_FALSE(*played.stage->isPlaying(name, core::runtime::Track::Body, "w hello",
+                                          core::secondsToTicks(at + words.start - fade - frame)));
+
+    // The right wrist waves while the words are said; the left one is left alone.
+    auto alone = core::scenario::buildRuntime(scenario, resources());
+    ASSERT_TRUE(alone) << core::describe(alone.error());
+    core::runtime::Stage still(std::move(alone).value());
+    const auto& skeleton = played.stage->runtime().characters[0].skeleton;
+    const auto wrist = [&](core::runtime::Stage& stage, double t, const char* joint) {
+        core::runtime::PoseSet poses = stage.makePoseSet();
+        stage.evaluate(core::secondsToTicks(t), poses);
+        return skeleton.worldPositions(poses.characters[0].body)[std::size_t(skeleton.find(joint))];
+    };
+    ASSERT_GE(skeleton.find("r_radiocarpal"), 0);
+    ASSERT_GE(skeleton.find("l_radiocarpal"), 0);
+    double right = 0, left = 0;
+    for (double t = at + words.start; t <= at + words.end; t += 0.1) {
+        const auto moved = [&](const char* joint) {
+            const auto a = wrist(*played.stage, t, joint), b = wrist(still, t, joint);
+            return std::sqrt(core::anim::dot(a - b, a - b));
+        };
+        right = std::max(right, moved("r_radiocarpal"));
+        left = std::max(left, moved("l_radiocarpal"));
+    }
+    EXPECT_GT(right, 0.10) << "metres: the right hand waves";
+    EXPECT_LT(left, 0.02) << "metres: the left hand stays";
+}
+
+} // namespace thespis::test
