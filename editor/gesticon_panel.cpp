@@ -542,16 +542,17 @@ void GesticonPanel::startPreview(std::optional<bool> filter)
     }
     const core::Tick start = clock.time();
     const std::string live = previewActionName(current->name);
-    if (auto played = stage.playAction(characterName, core::runtime::Track::Body, live,
+    const core::runtime::Track track = gesture->face ? core::runtime::Track::Face : core::runtime::Track::Body;
+    if (auto played = stage.playAction(characterName, track, live,
                                        {action.source, action.params, action.renderOutsideDomain},
                                        start, {.fadeIn = 0});
         !played) {
         showMessage(tr("Cannot preview gesture \"%1\": %2").arg(name, fromUtf8(played.error().message)));
         return;
     }
-    const auto end = stage.actionEnd(characterName, core::runtime::Track::Body, live);
+    const auto end = stage.actionEnd(characterName, track, live);
     if (!end || !std::isfinite(*end) || core::secondsToTicks(*end) <= start) {
-        (void)stage.removeAction(characterName, core::runtime::Track::Body, live);
+        (void)stage.removeAction(characterName, track, live);
         showMessage(tr("Cannot preview gesture \"%1\": its clip has no finite length.").arg(name));
         return;
     }
@@ -560,6 +561,7 @@ void GesticonPanel::startPreview(std::optional<bool> filter)
     ++m_previewSerial;
     m_previewCharacter = characterName;
     m_previewAction = live;
+    m_previewOnFace = gesture->face;
     m_previewStart = start;
     m_previewEnd = core::secondsToTicks(*end);
     m_savedLooping = clock.isLooping();
@@ -587,7 +589,8 @@ void GesticonPanel::stopPreview()
     m_comparePass = 0;
     m_playing->hide();
     if (m_session && m_session->stage())
-        (void)m_session->stage()->removeAction(m_previewCharacter, core::runtime::Track::Body, m_previewAction);
+        (void)m_session->stage()->removeAction(
+            m_previewCharacter, m_previewOnFace ? core::runtime::Track::Face : core::runtime::Track::Body, m_previewAction);
     if (m_session) {
         PlaybackClock* clock = m_session->clock();
         clock->pause();

@@ -122,6 +122,7 @@ private:
     core::Tick m_previewClockDuration = 0; // what the preview set the clock's duration to
     core::Tick m_savedClockDuration = 0;
     bool m_savedLooping = false;
+    bool m_previewOnFace = false; // a face gesture plays on the face track
     std::string m_previewCharacter, m_previewAction; // the live action the preview plays, and whose
 };
 

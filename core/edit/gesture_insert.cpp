@@ -14,19 +14,14 @@ speech::BmlGesticon timelineGesticon(const scenario::Character& who, const scena
         const scenario::Gesture* gesture = who.findGesture(name);
         if (!gesture)
             return std::nullopt;
-        const scenario::ClipAsset* clip = who.findClip(gesture->clip);
-        const bool face = clip && clip->joints.empty() && !clip->scalars.empty();
-        anim::BlendablePtr source;
-        if (face) {
-            const auto found = built.faceClips.find(gesture->clip);
-            source = found == built.faceClips.end() ? nullptr : found->second;
-        } else if (const auto found = built.gestures.find(name); found != built.gestures.end()) {
-            source = found->second.played().source;
-        }
+        const auto found = built.gestures.find(name);
+        if (found == built.gestures.end())
+            return std::nullopt;
+        const anim::BlendablePtr& source = found->second.played().source;
         if (!source || source->domain().openEnded())
             return std::nullopt;
         return speech::BmlGestureEntry{source->domain().duration(), ticksToSeconds(gesture->fadeIn),
-                                       ticksToSeconds(gesture->fadeOut), {gesture->hold, gesture->stroke}, face};
+                                       ticksToSeconds(gesture->fadeOut), {gesture->hold, gesture->stroke}, found->second.face};
     };
     return gesticon;
 }

@@ -113,7 +113,7 @@ void Stage::fillLibrary(Performer& performer, scenario::CharacterRuntime& charac
     }
     for (const auto& [name, gesture] : character.gestures) {
         const BlendingAction& played = gesture.played();
-        performer.body.library[name] =
+        (gesture.face ? performer.face : performer.body).library[name] =
             ActionTemplate{played.source, played.params, played.renderOutsideDomain, gesture.fadeIn, gesture.fadeOut,
                            {gesture.hold, gesture.stroke}};
     }

@@ -11,24 +11,26 @@ void buildGestures(const Scenario& scenario, const Character& character, const B
         if (gesture.name.empty() || runtime.gestures.contains(gesture.name))
             continue; // reported by the builder's checks
         GestureActions actions;
-        actions.filter = gesture.dependentJointFilter;
+        actions.face = !runtime.clips.contains(gesture.clip) && runtime.faceClips.contains(gesture.clip);
+        actions.filter = gesture.dependentJointFilter && !actions.face;
         actions.fadeIn = ticksToSeconds(gesture.fadeIn);
         actions.fadeOut = ticksToSeconds(gesture.fadeOut);
         actions.hold = gesture.hold;
         actions.stroke = gesture.stroke;
         const std::string where = "Character \"" + character.name + "\", gesture \"" + gesture.name + "\"";
         for (const bool filter : {false, true}) {
-            if (filter && !basesReadable)
+            if (filter && (!basesReadable || actions.face))
                 continue;
             Gesture variant = gesture;
             variant.dependentJointFilter = filter;
             GestureSpec spec = gestureSpec(scenario, variant, 0);
-            if (auto built = build(spec.action, spec.widenedMask ? &*spec.widenedMask : nullptr, where))
+            const LayerKind kind = actions.face ? LayerKind::Face : LayerKind::Body;
+            if (auto built = build(spec.action, kind, spec.widenedMask ? &*spec.widenedMask : nullptr, where))
                 (filter ? actions.withFilter : actions.withoutFilter) = std::move(*built);
         }
         if (actions.played().source) {
             runtime.gestures.emplace(gesture.name, std::move(actions));
-        } else if (gesture.dependentJointFilter && !basesReadable) {
+        } else if (actions.filter && !basesReadable) {
             runtime.warnings.push_back(where + ": its dependent-joint filter needs the scenario's posture bases, which "
                                                "cannot be read; scripts cannot play this gesture.");
             runtime.warningClips.resize(runtime.warnings.size(), gesture.clip);

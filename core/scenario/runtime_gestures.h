@@ -12,15 +12,17 @@
 
 namespace thespis::core::scenario {
 
-/// Builds a body action of the character as the runtime builds an authored one (problems are
-/// the builder's to report); `widened` is the mask the action plays over when the scenario has
-/// none of its name yet.
-using BuildGestureAction =
-    std::function<std::optional<anim::BlendingAction>(const ActionSpec&, const NamedMask* widened, const std::string& where)>;
+/// Builds an action of the character on a layer of `kind` as the runtime builds an authored one
+/// (problems are the builder's to report); `widened` is the mask the action plays over when the
+/// scenario has none of its name yet.
+using BuildGestureAction = std::function<std::optional<anim::BlendingAction>(
+    const ActionSpec&, LayerKind kind, const NamedMask* widened, const std::string& where)>;
 
-/// Fills runtime.gestures from the character's gesticon. The filtered action is built only when
-/// `basesReadable` (the dependent-joint filter needs the scenario's posture bases); a gesture
-/// with its filter on is then left out, with a warning.
+/// Fills runtime.gestures from the character's gesticon. A gesture whose clip moves no joint of
+/// the skeleton but has face values (runtime.faceClips) is a face gesture: built on the face
+/// layout, without the dependent-joint filter (a body's). The filtered action is built only when
+/// `basesReadable` (the filter needs the scenario's posture bases); a gesture with its filter on
+/// is then left out, with a warning.
 void buildGestures(const Scenario& scenario, const Character& character, const BuildGestureAction& build,
                    bool basesReadable, CharacterRuntime& runtime);
 

@@ -450,18 +450,19 @@ private:
         return false;
     }
 
-    // A gesture's action as a body action of the character. What keeps it from being built is a
-    // warning, not an error: the gesture is left out of what scripts can play, the rest plays.
-    std::optional<anim::BlendingAction> buildGestureAction(const ActionSpec& spec, const NamedMask* widened,
-                                                           const std::string& where, Context& ctx,
-                                                           CharacterRuntime& runtime)
+    // A gesture's action as a body or face action of the character. What keeps it from being
+    // built is a warning, not an error: the gesture is left out of what scripts can play, the
+    // rest plays.
+    std::optional<anim::BlendingAction> buildGestureAction(const ActionSpec& spec, LayerKind kind,
+                                                           const NamedMask* widened, const std::string& where,
+                                                           Context& ctx, CharacterRuntime& runtime)
     {
         if (widened && !m_masks.contains(widened->name))
             m_masks[widened->name] = std::make_shared<const anim::JointMask>(widened->mask);
-        Layer body;
-        body.kind = LayerKind::Body;
+        Layer layer;
+        layer.kind = kind;
         const std::size_t before = errors.size();
-        auto built = buildAction(spec, body, ctx, where, runtime);
+        auto built = buildAction(spec, layer, ctx, where, runtime);
         // The gesture's own problems become warnings; the scenario's (its posture bases cannot be
         // read) stay errors, as for any action.
         const auto own = std::stable_partition(errors.begin() + std::ptrdiff_t(before), errors.end(),
@@ -576,8 +577,9 @@ private:
         Context ctx{character, sources, {}};
         buildFaceClips(ctx, runtime, who);
         if (errors.size() == before)
-            buildGestures(m_scenario, character, [&](const ActionSpec& spec, const NamedMask* widened, const std::string& where) {
-                return buildGestureAction(spec, widened, where, ctx, runtime);
+            buildGestures(m_scenario, character, [&](const ActionSpec& spec, LayerKind kind, const NamedMask* widened,
+                                                     const std::string& where) {
+                return buildGestureAction(spec, kind, widened, where, ctx, runtime);
             }, postureBasesReadable(), runtime);
 
         const bool anySolo = std::any_of(character.layers.begin(), character.layers.end(),

@@ -34,6 +34,7 @@ struct GestureActions {
     double fadeIn = 0, fadeOut = 0; ///< seconds
     bool hold = false;              ///< Gesture::hold
     double stroke = -1;             ///< Gesture::stroke, seconds into the clip (−1: none)
+    bool face = false;              ///< its clip moves no joint, only the face: it plays on the face track
     const anim::BlendingAction& played() const { return filter ? withFilter : withoutFilter; }
 };
 

@@ -291,3 +291,47 @@ TEST(SpeechGestures, OverlappingGesturesBothPlayWhereTheirWordsMeet)
 }
 
 } // namespace thespis::test
+
+namespace thespis::test {
+
+// A face gesture of the gesticon (its clip moves no joint, only the face: Creon's stern look)
+// tagged in a line plays live on the face track over its words, as a body gesture plays on the
+// body: the runtime builds it on the face, with no warning that scripts cannot play it.
+TEST(SpeechGestures, ATaggedFaceGesturePlaysLiveOnTheFaceTrack)
+{
+    Scenario scenario = demo();
+    auto& creon = scenario.characters[0];
+    creon.gestures.push_back({.name = "frown", .clip = "stern", .fadeIn = secondsToTicks(0.15),
+                              .fadeOut = secondsToTicks(0.15), .dependentJointFilter = true});
+    auto runtime = core::scenario::buildRuntime(scenario, resources());
+    ASSERT_TRUE(runtime) << core::describe(runtime.error());
+    const auto* built = runtime->findCharacter(creon.name);
+    ASSERT_TRUE(built);
+    for (const std::string& warning : built->warnings)
+        EXPECT_EQ(warning.find("frown"), std::string::npos) << warning;
+    ASSERT_TRUE(built->gestures.contains("frown"));
+    EXPECT_TRUE(built->gestures.at("frown").face);
+
+    speech::SpeakJob job;
+    job.text = R"(You <begin_gesture id="g1" anim="frown"/>dare defy the law<end_gesture id="g1"/> of Thebes?)";
+    core::JobContext context;
+    ASSERT_TRUE(job.run(context).ok());
+    ASSERT_EQ(job.gestureCues.size(), 1u);
+    const speech::GestureCue& cue = job.gestureCues[0];
+    const double at = 1.0, middle = at + (cue.start + cue.end) / 2;
+    auto stage = std::make_shared<core::runtime::Stage>(std::move(runtime).value());
+    auto performed = core::runtime::performSpeech(*stage, creon.name, "line", job.visemeCues, job.gestureBml,
+                                                  secondsToTicks(at));
+    ASSERT_TRUE(performed) << performed.error().message;
+    EXPECT_EQ(performed->gestures, 1);
+    EXPECT_TRUE(performed->unknownGestures.empty());
+    EXPECT_TRUE(*stage->isPlaying(creon.name, core::runtime::Track::Face, "line:g1", secondsToTicks(middle)));
+    EXPECT_FALSE(*stage->isPlaying(creon.name, core::runtime::Track::Body, "line:g1", secondsToTicks(middle)));
+
+    const int stern = core::scene::expressionChannel(3);
+    EXPECT_GT(faceAt(*stage, 0, middle)[std::size_t(stern)], 0.5f) << "the stern look shows on 'dare defy the law'";
+    EXPECT_LT(faceAt(*stage, 0, at + cue.start - 0.2)[std::size_t(stern)], 0.05f) << "not before";
+    EXPECT_LT(faceAt(*stage, 0, at + cue.end + 0.4)[std::size_t(stern)], 0.05f) << "nor after";
+}
+
+} // namespace thespis::test

@@ -31,6 +31,7 @@
 #include "editor/session.h"
 #include "editor/translations.h"
 #include "render/character_node.h"
+#include "scene/fap.h"
 #include "studio_support.h"
 #include "util/tick.h"
 #include "widgets/osg_viewport.h"
@@ -85,6 +86,7 @@ private slots:
     void editorsInTheTableEditTheDocument();
     void previewIsDisabledWithoutASession();
     void previewPlaysTheGestureOnTheCharacter();
+    void aFaceGesturePreviewsOnTheFace();
 };
 
 void GesticonPanelTest::initTestCase()
@@ -517,6 +519,43 @@ void GesticonPanelTest::previewPlaysTheGestureOnTheCharacter()
     QVERIFY(panel->playing().isEmpty());
     QCOMPARE(clock.time(), start);
     QVERIFY(document->scenario() == original);
+}
+
+// A gesture whose clip moves only the face (Creon's "stern" expression) plays on the face track:
+// the preview shows it on his face, and Stop takes it off there.
+void GesticonPanelTest::aFaceGesturePreviewsOnTheFace()
+{
+    editor::PlaybackClock clock;
+    editor::Session session(&clock);
+    GesticonPanel panel;
+    session.addPanel(&panel);
+    panel.setSession(&session);
+    session.setDocument(openDemo());
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    GesticonModel& model = *panel.model();
+    panel.addGesture();
+    const int row = model.rowCount() - 1;
+    QVERIFY(model.setData(model.index(row, GesticonModel::NameColumn), QStringLiteral("frown")));
+    QVERIFY(model.setData(model.index(row, GesticonModel::ClipColumn), QStringLiteral("stern")));
+    panel.selectRow(row);
+    QVERIFY(panel.previewButton()->isEnabled());
+
+    core::runtime::Stage& stage = *session.stage();
+    const std::string live = "frown (gesture preview)";
+    const int stern = core::scene::expressionChannel(3);
+    const float before = session.poses().characters[0].face[std::size_t(stern)];
+    panel.preview();
+    QVERIFY2(panel.isPreviewing(), qPrintable(panel.message()));
+    QVERIFY(*stage.isPlaying("Creon", core::runtime::Track::Face, live, clock.time()));
+    QVERIFY(!*stage.isPlaying("Creon", core::runtime::Track::Body, live, clock.time()));
+    QTRY_VERIFY_WITH_TIMEOUT(session.poses().characters[0].face[std::size_t(stern)] > before + 0.3f
+                                 || !panel.isPreviewing(),
+                             15000);
+    QVERIFY2(panel.isPreviewing(), "the stern look shows while the preview plays");
+    QTest::mouseClick(panel.previewButton(), Qt::LeftButton);
+    QVERIFY(!panel.isPreviewing());
+    QVERIFY(!*stage.isPlaying("Creon", core::runtime::Track::Face, live, clock.time()));
 }
 
 QTEST_MAIN(GesticonPanelTest)
