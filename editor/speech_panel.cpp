@@ -85,7 +85,7 @@ SpeechPanel::SpeechPanel(QWidget* parent) : QWidget(parent), m_runner(new JobRun
                                   "Or a BML block:\n"
                                   "<bml id=\"b1\"><speech id=\"s1\"><text>Hello <sync id=\"t1\"/>there.</text></speech>\n"
                                   "<gesture id=\"g1\" lexeme=\"BEAT\" stroke=\"s1:t1\"/><gaze id=\"z1\" target=\"camera\"/></bml>"));
-    auto* visemeBox = new QGroupBox(tr("Visemes (MPEG-4) and their coarticulation"), split);
+    auto* visemeBox = new QGroupBox(tr("Visemes and their coarticulation"), split);
     auto* visemeLayout = new QVBoxLayout(visemeBox);
     m_visemes = new VisemeTable(visemeBox);
     visemeLayout->addWidget(m_visemes);

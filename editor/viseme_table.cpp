@@ -1,5 +1,6 @@
 #include "editor/viseme_table.h"
 
+#include <QComboBox>
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -13,7 +14,7 @@
 namespace thespis::editor {
 namespace {
 
-enum Column { Name, Phonemes, Alpha, Weight, Spread, ColumnCount };
+enum Column { Name, Phonemes, Alpha, Weight, Spread, ShownAs, ColumnCount };
 
 } // namespace
 
@@ -23,10 +24,12 @@ VisemeTable::VisemeTable(QWidget* parent) : QWidget(parent), m_set(core::speech:
     layout->setContentsMargins(0, 0, 0, 0);
     m_table = new QTableWidget(0, ColumnCount, this);
     m_table->setObjectName(QStringLiteral("visemeTable"));
-    m_table->setHorizontalHeaderLabels({tr("Viseme"), tr("Phonemes"), tr("α"), tr("Weight"), tr("Spread")});
+    m_table->setHorizontalHeaderLabels({tr("Viseme"), tr("Phonemes"), tr("α"), tr("Weight"), tr("Spread"), tr("Shows as (MPEG-4)")});
     m_table->horizontalHeaderItem(Alpha)->setToolTip(tr("Dominance α (paper eq. 3): larger keeps the mouth shape to its own phoneme"));
     m_table->horizontalHeaderItem(Weight)->setToolTip(tr("How far the shape is reached at the phoneme's centre (0 … 1)"));
     m_table->horizontalHeaderItem(Spread)->setToolTip(tr("How far the shape reaches past its phoneme, as a share of the phoneme's length on each side (0 … 2)"));
+    m_table->horizontalHeaderItem(ShownAs)->setToolTip(
+        tr("The MPEG-4 viseme (1 … 14) the face shows this one as; 0 keeps the mouth at rest"));
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setSectionResizeMode(Phonemes, QHeaderView::Stretch);
     m_table->verticalHeader()->setVisible(false);
@@ -39,11 +42,16 @@ VisemeTable::VisemeTable(QWidget* parent) : QWidget(parent), m_set(core::speech:
     auto* buttons = new QHBoxLayout;
     auto* load = new QPushButton(tr("Load…"), this);
     auto* save = new QPushButton(tr("Save…"), this);
-    auto* reset = new QPushButton(tr("Reset to MPEG-4"), this);
+    m_builtIn = new QComboBox(this);
+    m_builtIn->setObjectName(QStringLiteral("visemeBuiltIn"));
+    m_builtIn->setToolTip(tr("Start again from a built-in set: MPEG-4's 14, Oculus Lipsync's 15 or Microsoft's SAPI 21"));
+    for (const auto& [name, label] : {std::pair{"mpeg4", tr("MPEG-4 (14)")}, {"oculus", tr("Oculus (15)")}, {"sapi", tr("SAPI (21)")}})
+        m_builtIn->addItem(label, QString::fromLatin1(name));
     buttons->addWidget(load);
     buttons->addWidget(save);
     buttons->addStretch(1);
-    buttons->addWidget(reset);
+    buttons->addWidget(new QLabel(tr("Built-in:"), this));
+    buttons->addWidget(m_builtIn);
     layout->addLayout(buttons);
     connect(load, &QPushButton::clicked, this, [this] {
         const QString path = QFileDialog::getOpenFileName(this, tr("Load Visemes"), {}, tr("Viseme sets (*.json)"));
@@ -58,7 +66,9 @@ VisemeTable::VisemeTable(QWidget* parent) : QWidget(parent), m_set(core::speech:
             if (auto saved = this->save(path); !saved)
                 showProblem(fromUtf8(saved.error().message));
     });
-    connect(reset, &QPushButton::clicked, this, [this] { (void)setVisemes(core::speech::mpeg4Visemes()); });
+    connect(m_builtIn, &QComboBox::activated, this, [this](int index) {
+        (void)setVisemes(*core::speech::builtInVisemeSet(m_builtIn->itemData(index).toString().toStdString()));
+    });
     connect(m_table, &QTableWidget::itemChanged, this, &VisemeTable::onEdited);
     fill();
 }
@@ -87,6 +97,7 @@ core::Result<void> VisemeTable::save(const QString& path) const { return core::s
 void VisemeTable::fill()
 {
     m_filling = true;
+    m_builtIn->setCurrentIndex(m_builtIn->findData(fromUtf8(m_set.name))); // none for the user's own
     m_table->setRowCount(0);
     for (const core::speech::Viseme& v : m_set.visemes) {
         if (v.id == 0)
@@ -107,6 +118,11 @@ void VisemeTable::fill()
             item->setData(Qt::EditRole, value);
             m_table->setItem(row, column, item);
         }
+        auto* shownAs = new QTableWidgetItem;
+        shownAs->setData(Qt::EditRole, v.mpeg4);
+        if (const core::speech::Viseme* mpeg4 = core::speech::mpeg4Visemes().find(v.mpeg4); mpeg4 && v.mpeg4 != 0)
+            shownAs->setToolTip(fromUtf8(mpeg4->name));
+        m_table->setItem(row, ShownAs, shownAs);
     }
     m_filling = false;
 }
@@ -125,6 +141,8 @@ void VisemeTable::onEdited(QTableWidgetItem* item)
         for (const QString& phoneme : item->text().toUpper().split(QLatin1Char(' '), Qt::SkipEmptyParts))
             next.phonemes[phoneme.toStdString()].push_back(id);
         std::erase_if(next.phonemes, [](const auto& entry) { return entry.second.empty(); });
+    } else if (item->column() == ShownAs) {
+        viseme->mpeg4 = item->data(Qt::EditRole).toInt();
     } else {
         const double value = item->data(Qt::EditRole).toDouble();
         (item->column() == Alpha ? viseme->alpha : item->column() == Weight ? viseme->weight : viseme->spread) = value;

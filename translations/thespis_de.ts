@@ -4340,8 +4340,8 @@ Use File ▸ Open… (Ctrl+O) to open a .thespis file.</source>
         <translation>Tonhöhe:</translation>
     </message>
     <message>
-        <source>Visemes (MPEG-4) and their coarticulation</source>
-        <translation>Viseme (MPEG-4) und ihre Koartikulation</translation>
+        <source>Visemes and their coarticulation</source>
+        <translation>Viseme und ihre Koartikulation</translation>
     </message>
     <message>
         <source>Preview</source>
@@ -4667,10 +4667,6 @@ Oder ein BML-Block:
         <translation>Speichern…</translation>
     </message>
     <message>
-        <source>Reset to MPEG-4</source>
-        <translation>Auf MPEG-4 zurücksetzen</translation>
-    </message>
-    <message>
         <source>Load Visemes</source>
         <translation>Viseme laden</translation>
     </message>
@@ -4681,6 +4677,34 @@ Oder ein BML-Block:
     <message>
         <source>Save Visemes</source>
         <translation>Viseme speichern</translation>
+    </message>
+    <message>
+        <source>Shows as (MPEG-4)</source>
+        <translation>Erscheint als (MPEG-4)</translation>
+    </message>
+    <message>
+        <source>The MPEG-4 viseme (1 … 14) the face shows this one as; 0 keeps the mouth at rest</source>
+        <translation>Das MPEG-4-Visem (1 … 14), als das das Gesicht dieses zeigt; 0 lässt den Mund in Ruhe</translation>
+    </message>
+    <message>
+        <source>Start again from a built-in set: MPEG-4&apos;s 14, Oculus Lipsync&apos;s 15 or Microsoft&apos;s SAPI 21</source>
+        <translation>Neu beginnen mit einem eingebauten Satz: den 14 von MPEG-4, den 15 von Oculus Lipsync oder den 21 von Microsofts SAPI</translation>
+    </message>
+    <message>
+        <source>MPEG-4 (14)</source>
+        <translation>MPEG-4 (14)</translation>
+    </message>
+    <message>
+        <source>Oculus (15)</source>
+        <translation>Oculus (15)</translation>
+    </message>
+    <message>
+        <source>SAPI (21)</source>
+        <translation>SAPI (21)</translation>
+    </message>
+    <message>
+        <source>Built-in:</source>
+        <translation>Eingebaut:</translation>
     </message>
 </context>
 <context>

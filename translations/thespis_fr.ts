@@ -4340,8 +4340,8 @@ Utilisez Fichier ▸ Ouvrir… (Ctrl+O) pour ouvrir un fichier .thespis.</transl
         <translation>Hauteur :</translation>
     </message>
     <message>
-        <source>Visemes (MPEG-4) and their coarticulation</source>
-        <translation>Visèmes (MPEG-4) et leur coarticulation</translation>
+        <source>Visemes and their coarticulation</source>
+        <translation>Visèmes et leur coarticulation</translation>
     </message>
     <message>
         <source>Preview</source>
@@ -4667,10 +4667,6 @@ Ou un bloc BML :
         <translation>Enregistrer…</translation>
     </message>
     <message>
-        <source>Reset to MPEG-4</source>
-        <translation>Revenir à MPEG-4</translation>
-    </message>
-    <message>
         <source>Load Visemes</source>
         <translation>Charger des visèmes</translation>
     </message>
@@ -4681,6 +4677,34 @@ Ou un bloc BML :
     <message>
         <source>Save Visemes</source>
         <translation>Enregistrer les visèmes</translation>
+    </message>
+    <message>
+        <source>Shows as (MPEG-4)</source>
+        <translation>Apparaît comme (MPEG-4)</translation>
+    </message>
+    <message>
+        <source>The MPEG-4 viseme (1 … 14) the face shows this one as; 0 keeps the mouth at rest</source>
+        <translation>Le visème MPEG-4 (1 … 14) que le visage montre pour celui-ci ; 0 laisse la bouche au repos</translation>
+    </message>
+    <message>
+        <source>Start again from a built-in set: MPEG-4&apos;s 14, Oculus Lipsync&apos;s 15 or Microsoft&apos;s SAPI 21</source>
+        <translation>Repartir d’un jeu intégré : les 14 de MPEG-4, les 15 d’Oculus Lipsync ou les 21 de SAPI de Microsoft</translation>
+    </message>
+    <message>
+        <source>MPEG-4 (14)</source>
+        <translation>MPEG-4 (14)</translation>
+    </message>
+    <message>
+        <source>Oculus (15)</source>
+        <translation>Oculus (15)</translation>
+    </message>
+    <message>
+        <source>SAPI (21)</source>
+        <translation>SAPI (21)</translation>
+    </message>
+    <message>
+        <source>Built-in:</source>
+        <translation>Intégré :</translation>
     </message>
 </context>
 <context>

@@ -25,15 +25,19 @@ constexpr const char* kSpeechMask = "Speech";
 
 Error invalid(std::string message) { return makeError(ErrorCode::InvalidArgument, std::move(message)); }
 
-std::string visemeClipName(const std::string& viseme) { return "viseme " + viseme; }
+// Named after the MPEG-4 viseme the face shows: the visemes of any set that show alike share it.
+std::string visemeClipName(const speech::VisemeCue& cue)
+{
+    return "viseme " + speech::mpeg4Visemes().find(cue.mpeg4)->name;
+}
 
 // One face channel at 1, held for a second: stretched, it lasts as long as its cue.
 ClipAsset visemeClip(const speech::VisemeCue& cue)
 {
     ClipAsset clip;
-    clip.name = visemeClipName(cue.name);
+    clip.name = visemeClipName(cue);
     clip.frameRate = 1;
-    clip.scalars = {"viseme" + std::to_string(cue.viseme)};
+    clip.scalars = {"viseme" + std::to_string(cue.mpeg4)};
     clip.frames = {1.0f, 1.0f};
     return clip;
 }
@@ -70,8 +74,8 @@ Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, sc
     if (at < 0)
         return invalid("Speech cannot start before the timeline does.");
     for (const speech::VisemeCue& cue : visemes)
-        if (cue.viseme < 1 || cue.viseme > scene::kVisemeCount || !(cue.duration > 0))
-            return invalid("The viseme " + inQuotes(cue.name) + " is not one of MPEG-4's 14 the face shows.");
+        if (cue.mpeg4 < 0 || cue.mpeg4 > scene::kVisemeCount || !(cue.duration > 0))
+            return invalid("The viseme " + inQuotes(cue.name) + " shows as none of MPEG-4's 14 the face has.");
     const scenario::Character& speaker = scenario.characters[std::size_t(character)];
     std::optional<speech::BmlPlan> plan;
     if (!gestures.empty()) {
@@ -94,8 +98,8 @@ Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, sc
             return added.error();
     std::vector<ClipAsset> missing;
     for (const speech::VisemeCue& cue : visemes)
-        if (!who.findClip(visemeClipName(cue.name))
-            && std::none_of(missing.begin(), missing.end(), [&](const ClipAsset& c) { return c.name == visemeClipName(cue.name); }))
+        if (cue.mpeg4 != 0 && !who.findClip(visemeClipName(cue))
+            && std::none_of(missing.begin(), missing.end(), [&](const ClipAsset& c) { return c.name == visemeClipName(cue); }))
             missing.push_back(visemeClip(cue));
     if (!missing.empty())
         if (auto added = take(addClips(after, character, std::move(missing)), after); !added)
@@ -103,9 +107,11 @@ Result<SpeechInsertion> insertSpeech(const Scenario& scenario, int character, sc
 
     std::vector<ActionSpec> face, body;
     for (const speech::VisemeCue& cue : visemes) {
+        if (cue.mpeg4 == 0)
+            continue; // the mouth at rest
         ActionSpec action;
         action.name = cue.phoneme;
-        action.clip = visemeClipName(cue.name);
+        action.clip = visemeClipName(cue);
         action.start = at + secondsToTicks(cue.start);
         action.modifiers.push_back(stretchTo(cue.duration, 1.0));
         action.weight = cue.weight;

@@ -17,12 +17,14 @@ Result<std::shared_ptr<anim::BlendingSchedule>> speechFace(const std::vector<spe
     const std::vector<float> neutral = anim::neutralFrame(*layout);
     std::vector<float> frames;
     for (const speech::VisemeCue& cue : cues) {
-        if (cue.viseme < 1 || cue.viseme > scene::kVisemeCount || !(cue.duration > 0))
+        if (cue.mpeg4 < 0 || cue.mpeg4 > scene::kVisemeCount || !(cue.duration > 0))
             return makeError(ErrorCode::InvalidArgument,
-                             "The viseme \"" + cue.name + "\" is not one of MPEG-4's 14 the face shows.");
+                             "The viseme \"" + cue.name + "\" shows as none of MPEG-4's 14 the face has.");
+        if (cue.mpeg4 == 0)
+            continue; // the mouth at rest
         // The viseme held over its cue: two frames one cue apart, as the timeline's stretched clip.
         frames = neutral;
-        frames[std::size_t(scene::visemeChannel(cue.viseme))] = 1.0f;
+        frames[std::size_t(scene::visemeChannel(cue.mpeg4))] = 1.0f;
         frames.resize(2 * neutral.size());
         std::copy_n(frames.begin(), neutral.size(), frames.begin() + std::ptrdiff_t(neutral.size()));
         auto clip = anim::KeyframeClip::create(layout, 1.0 / cue.duration, frames, "viseme " + cue.name);

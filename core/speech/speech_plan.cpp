@@ -26,6 +26,7 @@ std::vector<VisemeCue> visemeCues(const SpeechTiming& timing, const VisemeSet& s
             const double reach = std::min({part * viseme->spread, from, std::max(0.0, end - to)});
             VisemeCue cue;
             cue.viseme = viseme->id;
+            cue.mpeg4 = viseme->mpeg4;
             cue.name = viseme->name;
             cue.phoneme = p.phoneme;
             cue.phonemeIndex = int(i);

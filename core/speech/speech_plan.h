@@ -17,7 +17,8 @@
 namespace thespis::core::speech {
 
 struct VisemeCue {
-    int viseme = 0;           ///< the set's id (MPEG-4's are the face's viseme channels)
+    int viseme = 0;           ///< the set's id
+    int mpeg4 = 0;            ///< the MPEG-4 viseme the face shows it as (Viseme::mpeg4; 0: at rest)
     std::string name;         ///< the viseme's name ("p_b_m")
     std::string phoneme;      ///< the ARPAbet phoneme it shows
     int phonemeIndex = 0;     ///< into SpeechTiming::phonemes

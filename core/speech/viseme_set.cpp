@@ -24,10 +24,11 @@ using json_document::Range;
 // must be reached, so they are at full weight and reach little past their phoneme; shapes made
 // with the tongue behind the teeth show less and borrow more from their neighbours; vowels open
 // the mouth and carry into the consonants around them.
-const Viseme kSilence{0, "sil", 4, 1, 0.5};
-Viseme lips(int id, std::string name) { return {id, std::move(name), 3, 1, 0.3}; }
-Viseme tongue(int id, std::string name) { return {id, std::move(name), 5, 0.8, 0.5}; }
-Viseme vowel(int id, std::string name) { return {id, std::move(name), 4, 1, 0.6}; }
+// The last argument is the MPEG-4 viseme the shape shows as on the face.
+const Viseme kSilence{0, "sil", 4, 1, 0.5, 0};
+Viseme lips(int id, std::string name, int mpeg4) { return {id, std::move(name), 3, 1, 0.3, mpeg4}; }
+Viseme tongue(int id, std::string name, int mpeg4) { return {id, std::move(name), 5, 0.8, 0.5, mpeg4}; }
+Viseme vowel(int id, std::string name, int mpeg4) { return {id, std::move(name), 4, 1, 0.6, mpeg4}; }
 
 using PhonemeTable = std::initializer_list<std::pair<std::string_view, std::vector<int>>>;
 
@@ -52,7 +53,7 @@ VisemeSet groupedSet(std::string name, const std::vector<std::string>& names)
     std::vector<Viseme> visemes{kSilence};
     for (int id = 1; id <= 14; ++id) {
         const std::string& n = names[std::size_t(id - 1)];
-        visemes.push_back(id <= 2 ? lips(id, n) : id <= 9 ? tongue(id, n) : vowel(id, n));
+        visemes.push_back(id <= 2 ? lips(id, n, id) : id <= 9 ? tongue(id, n, id) : vowel(id, n, id));
     }
     VisemeSet set{std::move(name), std::move(visemes), {}};
     for (const auto& [phoneme, id] : kMpeg4Groups)
@@ -84,7 +85,8 @@ Result<void> VisemeSet::validate() const
     std::set<int> ids;
     for (std::size_t i = 0; i < visemes.size(); ++i) {
         const Viseme& v = visemes[i];
-        const std::string at = "visemes[" + std::to_string(i) + "]";
+        const std::string at =
+            "visemes[" + std::to_string(i) + "]" + (v.name.empty() ? std::string() : " (" + v.name + ")");
         if (v.id < 0 || v.id > 99)
             return invalid(at + ".id", "must be 0 … 99");
         if (!ids.insert(v.id).second)
@@ -97,6 +99,8 @@ Result<void> VisemeSet::validate() const
             return invalid(at + ".weight", "must be 0 … 1");
         if (!(v.spread >= 0 && v.spread <= 2))
             return invalid(at + ".spread", "must be 0 … 2");
+        if (v.mpeg4 < 0 || v.mpeg4 > 14)
+            return invalid(at + ".mpeg4", "must be an MPEG-4 viseme, 1 … 14, or 0 for the mouth at rest");
     }
     for (const auto& [phoneme, list] : phonemes) {
         if (!isPhoneme(phoneme))
@@ -127,10 +131,12 @@ const VisemeSet& sapiVisemes()
     // Microsoft's numbering, as its speech service documents it for en-US.
     static const VisemeSet set = makeSet(
         "sapi",
-        {kSilence, vowel(1, "ae_ax_ah"), vowel(2, "aa"), vowel(3, "ao"), vowel(4, "ey_eh_uh"), vowel(5, "er"),
-         vowel(6, "y_iy_ih_ix"), vowel(7, "w_uw"), vowel(8, "ow"), vowel(9, "aw"), vowel(10, "oy"), vowel(11, "ay"),
-         tongue(12, "h"), tongue(13, "r"), tongue(14, "l"), tongue(15, "s_z"), tongue(16, "sh_ch_jh_zh"),
-         tongue(17, "th_dh"), lips(18, "f_v"), tongue(19, "d_t_n"), tongue(20, "k_g_ng"), lips(21, "p_b_m")},
+        // Each shown as the MPEG-4 viseme of the phonemes it stands for (its first, for a diphthong).
+        {kSilence, vowel(1, "ae_ax_ah", 10), vowel(2, "aa", 10), vowel(3, "ao", 13), vowel(4, "ey_eh_uh", 11),
+         vowel(5, "er", 9), vowel(6, "y_iy_ih_ix", 12), vowel(7, "w_uw", 14), vowel(8, "ow", 13), vowel(9, "aw", 10),
+         vowel(10, "oy", 13), vowel(11, "ay", 10), tongue(12, "h", 5), tongue(13, "r", 9), tongue(14, "l", 8),
+         tongue(15, "s_z", 7), tongue(16, "sh_ch_jh_zh", 6), tongue(17, "th_dh", 3), lips(18, "f_v", 2),
+         tongue(19, "d_t_n", 4), tongue(20, "k_g_ng", 5), lips(21, "p_b_m", 1)},
         {{"IY", {6}},  {"IH", {6}},  {"EY", {4, 6}}, {"EH", {4}},      {"AE", {1}},  {"AA", {2}},  {"AO", {3}},
          {"UH", {4}},  {"OW", {8, 4}}, {"UW", {7}},  {"AH", {1}},      {"AY", {11}}, {"AW", {9}},  {"OY", {10}},
          {"ER", {5}},  {"W", {7}},   {"Y", {6}},     {"P", {21}},      {"B", {21}},  {"T", {19}},  {"D", {19}},
@@ -162,7 +168,7 @@ std::string serializeVisemeSet(const VisemeSet& set)
     document["visemes"] = nlohmann::ordered_json::array();
     for (const Viseme& v : set.visemes)
         document["visemes"].push_back(
-            {{"id", v.id}, {"name", v.name}, {"alpha", v.alpha}, {"weight", v.weight}, {"spread", v.spread}});
+            {{"id", v.id}, {"name", v.name}, {"alpha", v.alpha}, {"weight", v.weight}, {"spread", v.spread}, {"mpeg4", v.mpeg4}});
     document["phonemes"] = nlohmann::ordered_json::object();
     for (const auto& [phoneme, ids] : set.phonemes)
         document["phonemes"][phoneme] = ids;
@@ -186,6 +192,7 @@ Result<VisemeSet> readDocument(std::string_view text, const std::string& what)
         (void)reader.find("version");
         VisemeSet set;
         set.name = reader.string("name", false);
+        const VisemeSet* builtIn = builtInVisemeSet(set.name);
         const json& visemes = reader.array("visemes", true);
         for (std::size_t i = 0; i < visemes.size(); ++i) {
             ObjectReader v(visemes[i], indexed("visemes", i), {});
@@ -197,6 +204,13 @@ Result<VisemeSet> readDocument(std::string_view text, const std::string& what)
             viseme.spread = v.number("spread", false, viseme.spread, Range::NonNegative);
             if (viseme.spread > 2)
                 fail(v.fieldPath("spread"), "must be 0 … 2");
+            if (parsed->version >= 2) {
+                viseme.mpeg4 = int(v.integer("mpeg4", true, 0, 0, 14));
+            } else if (const Viseme* same = builtIn ? builtIn->find(viseme.id) : nullptr) {
+                viseme.mpeg4 = same->mpeg4;
+            } else {
+                viseme.mpeg4 = viseme.id <= 14 ? viseme.id : 0;
+            }
             if (set.find(viseme.id))
                 fail(v.fieldPath("id"), "the id " + std::to_string(viseme.id) + " is used twice");
             v.refuseUnknown("a viseme");

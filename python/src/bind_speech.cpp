@@ -97,6 +97,8 @@ void bindSpeech(py::module_& m)
         .def_readwrite("alpha", &speech::Viseme::alpha, "dominance: larger keeps the shape to its own phoneme")
         .def_readwrite("weight", &speech::Viseme::weight, "how far the shape is reached (0 ... 1)")
         .def_readwrite("spread", &speech::Viseme::spread, "reach past the phoneme, a fraction of its length each side")
+        .def_readwrite("mpeg4", &speech::Viseme::mpeg4,
+                       "the MPEG-4 viseme (1 ... 14) it shows as on the face; 0: the mouth at rest")
         .def("__repr__", [](const speech::Viseme& v) { return "Viseme(" + std::to_string(v.id) + ", '" + v.name + "')"; });
 
     py::class_<speech::VisemeSet>(s, "VisemeSet", "Visemes and which ARPAbet phonemes show each one (data: edit, load, save).")
@@ -144,11 +146,12 @@ void bindSpeech(py::module_& m)
         .def_property_readonly("visemes", [](const speech::SpeakJob& j) {
             py::list out;
             for (const speech::VisemeCue& c : j.visemeCues)
-                out.append(py::dict("viseme"_a = c.viseme, "name"_a = c.name, "phoneme"_a = c.phoneme, "start"_a = c.start,
+                out.append(py::dict("viseme"_a = c.viseme, "mpeg4"_a = c.mpeg4, "name"_a = c.name, "phoneme"_a = c.phoneme, "start"_a = c.start,
                                     "duration"_a = c.duration, "centre"_a = c.centre, "alpha"_a = c.weight.envelope().alpha,
                                     "weight"_a = c.weight.envelope().peak));
             return out;
-        }, "one dict per viseme action: viseme id, name, phoneme, start, duration, centre, alpha, weight")
+        }, "one dict per viseme action: viseme id, the MPEG-4 viseme it shows as, name, phoneme, start, duration, "
+           "centre, alpha, weight")
         .def_property_readonly("gestures", [](const speech::SpeakJob& j) {
             py::list out;
             for (const speech::GestureCue& c : j.gestureCues)

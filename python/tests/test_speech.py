@@ -67,6 +67,10 @@ def test_viseme_sets_are_data(tmp_path):
     sapi = speech.VisemeSet.builtin("sapi")
     assert sapi.visemes_of("EY") == [4, 6]
     assert speech.mpeg4_viseme("M") == 1
+    # Each SAPI viseme shows on the face as an MPEG-4 one: p_b_m (21) as MPEG-4's 1.
+    assert (sapi.visemes[21].name, sapi.visemes[21].mpeg4) == ("p_b_m", 1)
+    bob = speech.speak("Bob", visemes=sapi)
+    assert {(v["viseme"], v["mpeg4"]) for v in bob.visemes if v["phoneme"] == "B"} == {(21, 1)}
     sapi.visemes[1].alpha = 6.5
     sapi.save(tmp_path / "mine.json")
     assert speech.VisemeSet.load(tmp_path / "mine.json") == sapi

@@ -50,6 +50,19 @@ std::vector<float> faceAt(core::runtime::Stage& stage, int character, double sec
 
 float visemeOf(const std::vector<float>& face, int viseme) { return face[std::size_t(core::scene::visemeChannel(viseme))]; }
 
+// The demo with `job`'s visemes inserted for Creon at `at` seconds, as the studio's Insert does.
+Scenario insertedInDemo(const speech::SpeakJob& job, double at)
+{
+    Scenario inserted = demo();
+    auto insertion = core::edit::insertSpeech(
+        inserted, 0, core::edit::speechLine(job.text, job.voice, job.utterance.timing, "", secondsToTicks(at)),
+        job.visemeCues);
+    EXPECT_TRUE(insertion) << (insertion ? "" : insertion.error().message);
+    if (insertion)
+        EXPECT_TRUE(insertion->edit.apply(inserted).ok());
+    return inserted;
+}
+
 } // namespace
 
 TEST(SpeechLive, PreviewShowsTheFaceInsertPutsOnTheTimeline)
@@ -60,13 +73,7 @@ TEST(SpeechLive, PreviewShowsTheFaceInsertPutsOnTheTimeline)
     ASSERT_TRUE(job.run(context).ok());
     const double at = 1.0;
 
-    Scenario inserted = demo();
-    auto insertion = core::edit::insertSpeech(
-        inserted, 0, core::edit::speechLine(job.text, job.voice, job.utterance.timing, "", secondsToTicks(at)),
-        job.visemeCues);
-    ASSERT_TRUE(insertion) << insertion.error().message;
-    ASSERT_TRUE(insertion->edit.apply(inserted).ok());
-    auto authored = stageOf(inserted);
+    auto authored = stageOf(insertedInDemo(job, at));
 
     auto live = stageOf(demo());
     const std::string creon = demo().characters[0].name;
@@ -332,6 +339,52 @@ TEST(SpeechGestures, ATaggedFaceGesturePlaysLiveOnTheFaceTrack)
     EXPECT_GT(faceAt(*stage, 0, middle)[std::size_t(stern)], 0.5f) << "the stern look shows on 'dare defy the law'";
     EXPECT_LT(faceAt(*stage, 0, at + cue.start - 0.2)[std::size_t(stern)], 0.05f) << "not before";
     EXPECT_LT(faceAt(*stage, 0, at + cue.end + 0.4)[std::size_t(stern)], 0.05f) << "nor after";
+}
+
+} // namespace thespis::test
+
+namespace thespis::test {
+
+// Spoken with Microsoft's SAPI visemes (or Oculus'), the built-in face shows each as its MPEG-4
+// viseme: live and inserted on the timeline alike, the lips shut on every p, b and m and open on
+// every "aa"; the timeline's clips are named after the MPEG-4 viseme they show.
+TEST(SpeechLive, AnyVisemeSetSpeaksOnTheFace)
+{
+    for (const speech::VisemeSet* set : {&speech::sapiVisemes(), &speech::oculusVisemes()}) {
+        SCOPED_TRACE(set->name);
+        speech::SpeakJob job;
+        job.text = "Pop the bubble, Bob. Father may come by the mill.";
+        job.visemes = *set;
+        core::JobContext context;
+        ASSERT_TRUE(job.run(context).ok());
+        const double at = 1.0;
+        const std::string creon = demo().characters[0].name;
+        auto live = stageOf(demo());
+        auto performed = core::runtime::performSpeech(*live, creon, "line", job.visemeCues, {}, secondsToTicks(at));
+        ASSERT_TRUE(performed) << performed.error().message;
+
+        const Scenario inserted = insertedInDemo(job, at);
+        EXPECT_TRUE(inserted.characters[0].findClip("viseme p_b_m"));
+        auto authored = stageOf(inserted);
+
+        int shut = 0, open = 0;
+        for (const auto& p : job.utterance.timing.phonemes) {
+            const double middle = at + (p.start + p.end) / 2;
+            for (auto* stage : {live.get(), authored.get()}) {
+                const auto face = faceAt(*stage, 0, middle);
+                if (p.phoneme == "P" || p.phoneme == "B" || p.phoneme == "M") {
+                    EXPECT_GT(visemeOf(face, 1), 0.6f) << p.phoneme << " at " << p.start;
+                    ++shut;
+                } else if (p.phoneme == "AA") {
+                    EXPECT_GT(visemeOf(face, 10), 0.5f) << p.phoneme << " at " << p.start;
+                    EXPECT_LT(visemeOf(face, 1), 0.3f) << p.phoneme << " at " << p.start;
+                    ++open;
+                }
+            }
+        }
+        EXPECT_GE(shut, 2 * 7);
+        EXPECT_GE(open, 2 * 1);
+    }
 }
 
 } // namespace thespis::test

@@ -134,6 +134,70 @@ TEST(VisemeSets, SapiMatchesMicrosoftsTable)
     EXPECT_GE(checked, 39);
 }
 
+// Every set shows on the built-in face as MPEG-4 visemes: Oculus is MPEG-4's 14 renamed, and the
+// SAPI 21 show a phoneme as MPEG-4 does for most phonemes (34 of 39: SAPI groups "th" and "n"
+// with d/t, "uh" with e, and begins "ch" and "jh" as d/t) — the lips close on p/b/m and open on
+// "aa" in every set.
+TEST(VisemeSets, EverySetShowsOnTheFaceAsMpeg4Visemes)
+{
+    for (const speech::Viseme& v : speech::mpeg4Visemes().visemes)
+        EXPECT_EQ(v.mpeg4, v.id) << v.name;
+    for (const speech::Viseme& v : speech::oculusVisemes().visemes)
+        EXPECT_EQ(v.mpeg4, v.id) << v.name;
+    for (const speech::VisemeSet* set : {&speech::oculusVisemes(), &speech::sapiVisemes()}) {
+        int same = 0, all = 0;
+        for (std::string_view p : speech::arpabetPhonemes()) {
+            const int shown = set->find(set->visemesOf(p).front())->mpeg4;
+            ++all;
+            same += shown == speech::mpeg4Viseme(p);
+        }
+        EXPECT_GE(same, all * 85 / 100) << set->name << ": " << same << " of " << all;
+        for (std::string_view p : {"P", "B", "M"})
+            EXPECT_EQ(set->find(set->visemesOf(p).front())->mpeg4, 1) << set->name << " " << p;
+        EXPECT_EQ(set->find(set->visemesOf("AA").front())->mpeg4, 10) << set->name;
+    }
+}
+
+// Version 1 had no "mpeg4": a copy of a built-in set shows as that set does, another set's
+// visemes as the MPEG-4 viseme of their id (what version 1 did), above 14 at rest.
+TEST(VisemeSets, AVersionOneSetIsUpgraded)
+{
+    auto sapi = speech::parseVisemeSet(
+        R"({"format":"thespis-visemes","version":1,"name":"sapi","visemes":[{"id":0,"name":"sil"},)"
+        R"({"id":21,"name":"p_b_m","alpha":2.5},{"id":1,"name":"ae_ax_ah"}],"phonemes":{"P":[21],"AE":[1]}})");
+    ASSERT_TRUE(sapi.ok()) << sapi.error().message;
+    EXPECT_EQ(sapi->find(21)->mpeg4, 1);
+    EXPECT_EQ(sapi->find(21)->alpha, 2.5);
+    EXPECT_EQ(sapi->find(1)->mpeg4, 10);
+    auto mine = speech::parseVisemeSet(
+        R"({"format":"thespis-visemes","version":1,"name":"mine","visemes":[{"id":0,"name":"sil"},)"
+        R"({"id":3,"name":"teeth"},{"id":20,"name":"odd"}],"phonemes":{"TH":[3],"K":[20]}})");
+    ASSERT_TRUE(mine.ok()) << mine.error().message;
+    EXPECT_EQ(mine->find(3)->mpeg4, 3);
+    EXPECT_EQ(mine->find(20)->mpeg4, 0);
+    // Written again, it is version 2 and reads back the same.
+    const std::string written = speech::serializeVisemeSet(*mine);
+    EXPECT_NE(written.find("\"version\": 2"), std::string::npos) << written;
+    auto again = speech::parseVisemeSet(written);
+    ASSERT_TRUE(again.ok()) << again.error().message;
+    EXPECT_EQ(*again, *mine);
+    // Version 2 must say it.
+    auto unsaid = speech::parseVisemeSet(
+        R"({"format":"thespis-visemes","version":2,"visemes":[{"id":0,"name":"sil"}],"phonemes":{}})");
+    ASSERT_FALSE(unsaid.ok());
+    EXPECT_NE(unsaid.error().message.find("visemes[0].mpeg4"), std::string::npos) << unsaid.error().message;
+    auto beyond = speech::parseVisemeSet(
+        R"({"format":"thespis-visemes","version":2,"visemes":[{"id":0,"name":"sil","mpeg4":15}],"phonemes":{}})");
+    ASSERT_FALSE(beyond.ok());
+    EXPECT_NE(beyond.error().message.find("visemes[0].mpeg4"), std::string::npos) << beyond.error().message;
+    // A set edited in memory is checked with the viseme's name in the field.
+    speech::VisemeSet edited = speech::sapiVisemes();
+    edited.visemes.back().mpeg4 = 15;
+    ASSERT_FALSE(edited.validate().ok());
+    EXPECT_NE(edited.validate().error().message.find("visemes[21] (p_b_m).mpeg4"), std::string::npos)
+        << edited.validate().error().message;
+}
+
 TEST(VisemeSets, RoundTripAndErrorsNameTheField)
 {
     speech::VisemeSet set = speech::mpeg4Visemes();

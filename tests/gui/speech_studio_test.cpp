@@ -266,7 +266,43 @@ void SpeechStudioTest::visemeTableEditsAndRefuses()
     QTRY_COMPARE(cells->item(0, 3)->data(Qt::EditRole).toDouble(), 1.0);
     QVERIFY(table->findChild<QLabel*>() != nullptr);
     saveScreenshot(panel(), QStringLiteral("speech_dock.png"));
-    QVERIFY(table->setVisemes(core::speech::mpeg4Visemes()).ok());
+
+    // Microsoft's SAPI 21 chosen: each row says the MPEG-4 viseme the face shows it as.
+    QComboBox* builtIn = table->builtInChoice();
+    emit builtIn->activated(builtIn->findData(QStringLiteral("sapi")));
+    QCOMPARE(table->visemes(), core::speech::sapiVisemes());
+    QCOMPARE(builtIn->currentData().toString(), QStringLiteral("sapi"));
+    QCOMPARE(cells->rowCount(), 21);
+    const int lips = cells->rowCount() - 1; // SAPI's last, 21 p_b_m
+    QVERIFY(cells->item(lips, 0)->text().contains(QStringLiteral("p_b_m")));
+    const int shownAs = cells->columnCount() - 1;
+    QCOMPARE(cells->horizontalHeaderItem(shownAs)->text(), QStringLiteral("Shows as (MPEG-4)"));
+    QCOMPARE(cells->item(lips, shownAs)->data(Qt::EditRole).toInt(), 1);
+    cells->item(lips, shownAs)->setData(Qt::EditRole, 15); // MPEG-4 has 14: refused, named, put back
+    QCOMPARE(table->visemes().find(21)->mpeg4, 1);
+    QTRY_COMPARE(cells->item(lips, shownAs)->data(Qt::EditRole).toInt(), 1);
+    const QLabel* problem = table->findChild<QLabel*>();
+    QVERIFY2(problem->text().contains(QStringLiteral("(p_b_m).mpeg4")), qPrintable(problem->text()));
+    saveScreenshot(panel(), QStringLiteral("speech_dock_sapi.png"));
+
+    // Previewed with them, Antigone's lips shut on every "m" and "b" as with MPEG-4's own.
+    const int antigone = characterIndex(*m_window->document(), "Antigone");
+    panel()->preview();
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isBusy(), 20000);
+    QVERIFY2(panel()->message().startsWith(QStringLiteral("Previewing")), qPrintable(panel()->message()));
+    m_window->clock()->pause();
+    auto spoken = core::speech::speak(kLine, {.voice = "en-gb", .wordsPerMinute = 150});
+    QVERIFY(spoken.ok());
+    int shut = 0;
+    for (const auto& p : spoken->timing.phonemes)
+        if (p.phoneme == "M" || p.phoneme == "B") {
+            m_window->clock()->seek(core::secondsToTicks(9.0 + (p.start + p.end) / 2));
+            QVERIFY2(visemeNow(antigone, 1) > 0.6f, qPrintable(QStringLiteral("%1 at %2 s").arg(QString::fromStdString(p.phoneme)).arg(p.start)));
+            ++shut;
+        }
+    QVERIFY(shut >= 4);
+    emit builtIn->activated(builtIn->findData(QStringLiteral("mpeg4")));
+    QCOMPARE(table->visemes(), core::speech::mpeg4Visemes());
 }
 
 void SpeechStudioTest::badTagsAreNamedWithLineAndColumn()
